@@ -1,0 +1,45 @@
+#version 420 core
+// Sun glow: the surface texture plus an in-shader box blur whose strength pulses between
+// minBI and maxBI at bFrequency (seed 000). The seed's fragment stage declared
+// `in vert_vars`, which does not link with the vertex stage's `out vert_out`: fixed here.
+
+in vert_out
+{
+    vec2 outputTexCoords;
+    vec3 swirlPosVector;
+} frag_in;
+
+out vec4 fragColor;
+
+uniform sampler2D textureSamplerVar;
+uniform float timeVarFrag; // Time in seconds
+uniform float minBI;       // Minimum bloom intensity
+uniform float maxBI;       // Maximum bloom intensity
+uniform float bFrequency;  // Bloom pulse frequency (radians per second)
+
+const int blurEffectRadius = 6; // (2r+1)^2 = 169 taps
+
+void main()
+{
+    vec4 textureColour = texture(textureSamplerVar, frag_in.outputTexCoords);
+
+    float currentBI = mix(minBI, maxBI, 0.5 + 0.5 * sin(timeVarFrag * bFrequency));
+
+    vec3 bloomEffectColour = vec3(0.0);
+    vec2 texelSize = 1.0 / vec2(textureSize(textureSamplerVar, 0));
+    for (int x = -blurEffectRadius; x <= blurEffectRadius; x++)
+    {
+        for (int y = -blurEffectRadius; y <= blurEffectRadius; y++)
+        {
+            vec2 offsetVector = vec2(x, y);
+            vec4 bloomEffectSample = texture(textureSamplerVar, frag_in.outputTexCoords + offsetVector * texelSize);
+            bloomEffectColour += bloomEffectSample.rgb;
+        }
+    }
+
+    bloomEffectColour /= float((blurEffectRadius * 2 + 1) * (blurEffectRadius * 2 + 1));
+    bloomEffectColour *= currentBI;
+
+    vec3 outputColour = textureColour.rgb + bloomEffectColour;
+    fragColor = vec4(outputColour, 1.0);
+}

@@ -1,0 +1,375 @@
+//! Diagnostics as plain data, and the emitters that render them.
+//!
+//! Every problem effectc finds — in a manifest, a GLSL stage, a link between stages — is a
+//! [`Diagnostic`]: severity, a stable code, a primary location in one of the user's files,
+//! secondary labels (possibly in other files), notes and an optional help line. Spans are
+//! byte ranges into the *original* text registered in [`Files`]; never into generated code.
+//! One set of emitters renders them: human (codespan-reporting), JSON, GitHub workflow
+//! commands and SARIF 2.1.0.
+
+use std::ops::Range;
+
+mod github;
+mod human;
+mod json;
+mod sarif;
+
+pub use github::render_github;
+pub use human::render_human;
+pub use json::render_json;
+pub use sarif::render_sarif;
+
+/// How bad a diagnostic is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    Note,
+    Warning,
+    Error,
+}
+
+/// Index of a file registered in [`Files`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FileId(pub usize);
+
+/// A secondary (or extra primary) span with its own message.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Label {
+    pub file: FileId,
+    pub span: Range<usize>,
+    pub message: String,
+}
+
+/// One problem found in the user's input.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Diagnostic {
+    pub severity: Severity,
+    /// Stable code such as `E0101` / `W0201`, documented in the README.
+    pub code: &'static str,
+    /// Primary location: file and byte span (None for whole-run problems).
+    pub file: Option<FileId>,
+    pub span: Option<Range<usize>>,
+    pub message: String,
+    /// Message attached to the primary span (may be empty).
+    pub primary_label: String,
+    pub labels: Vec<Label>,
+    pub notes: Vec<String>,
+    pub help: Option<String>,
+}
+
+impl Diagnostic {
+    pub fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Self {
+        Diagnostic {
+            severity,
+            code,
+            file: None,
+            span: None,
+            message: message.into(),
+            primary_label: String::new(),
+            labels: Vec::new(),
+            notes: Vec::new(),
+            help: None,
+        }
+    }
+    pub fn error(code: &'static str, message: impl Into<String>) -> Self {
+        Self::new(Severity::Error, code, message)
+    }
+    pub fn warning(code: &'static str, message: impl Into<String>) -> Self {
+        Self::new(Severity::Warning, code, message)
+    }
+    pub fn note(code: &'static str, message: impl Into<String>) -> Self {
+        Self::new(Severity::Note, code, message)
+    }
+    /// Set the primary location and its label.
+    pub fn at(mut self, file: FileId, span: Range<usize>, label: impl Into<String>) -> Self {
+        self.file = Some(file);
+        self.span = Some(span);
+        self.primary_label = label.into();
+        self
+    }
+    /// Set the primary file without a span (e.g. a file that could not be read).
+    pub fn in_file(mut self, file: FileId) -> Self {
+        self.file = Some(file);
+        self
+    }
+    pub fn with_label(
+        mut self,
+        file: FileId,
+        span: Range<usize>,
+        message: impl Into<String>,
+    ) -> Self {
+        self.labels.push(Label {
+            file,
+            span,
+            message: message.into(),
+        });
+        self
+    }
+    pub fn with_note(mut self, note: impl Into<String>) -> Self {
+        self.notes.push(note.into());
+        self
+    }
+    pub fn with_help(mut self, help: impl Into<String>) -> Self {
+        self.help = Some(help.into());
+        self
+    }
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+}
+
+/// One registered source file: the path as the user should see it and its original text.
+#[derive(Debug, Clone)]
+pub struct SourceFile {
+    pub path: String,
+    pub text: String,
+}
+
+/// All files diagnostics may point into.
+#[derive(Debug, Clone, Default)]
+pub struct Files {
+    files: Vec<SourceFile>,
+}
+
+impl Files {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn add(&mut self, path: impl Into<String>, text: impl Into<String>) -> FileId {
+        self.files.push(SourceFile {
+            path: path.into(),
+            text: text.into(),
+        });
+        FileId(self.files.len() - 1)
+    }
+    pub fn get(&self, id: FileId) -> &SourceFile {
+        &self.files[id.0]
+    }
+    pub fn path(&self, id: FileId) -> &str {
+        &self.files[id.0].path
+    }
+    pub fn text(&self, id: FileId) -> &str {
+        &self.files[id.0].text
+    }
+    /// Number of registered files.
+    pub fn len(&self) -> usize {
+        self.files.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.files.is_empty()
+    }
+    /// Like [`Files::get`], but `None` for an id that was not registered here.
+    pub fn try_get(&self, id: FileId) -> Option<&SourceFile> {
+        self.files.get(id.0)
+    }
+    pub fn iter(&self) -> impl Iterator<Item = (FileId, &SourceFile)> {
+        self.files.iter().enumerate().map(|(i, f)| (FileId(i), f))
+    }
+    /// 1-based line and column (in characters) of a byte offset. A `\r\n` line end counts
+    /// as one line break; offsets past the end clamp to the end.
+    pub fn line_col(&self, id: FileId, offset: usize) -> (usize, usize) {
+        let text = &self.files[id.0].text;
+        let mut offset = offset.min(text.len());
+        while !text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let before = &text[..offset];
+        let line = before.matches('\n').count() + 1;
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let col = before[line_start..].chars().count() + 1;
+        (line, col)
+    }
+}
+
+impl Files {
+    /// Clamp a byte span so it is safe to slice the file's text with: both ends lie within
+    /// the text and on char boundaries (the start rounds down, the end rounds up so a
+    /// partially covered character is included), and `start <= end`; an empty or reversed span
+    /// becomes empty at the clamped start.
+    /// Returns `None` only for an unregistered `id`.
+    pub fn clamp_span(&self, id: FileId, span: Range<usize>) -> Option<Range<usize>> {
+        let text = &self.try_get(id)?.text;
+        let mut start = span.start.min(text.len());
+        while !text.is_char_boundary(start) {
+            start -= 1;
+        }
+        // An empty (or reversed) span stays empty at `start`.
+        let mut end = if span.end <= span.start {
+            start
+        } else {
+            span.end.clamp(start, text.len())
+        };
+        while !text.is_char_boundary(end) {
+            end += 1;
+        }
+        Some(start..end)
+    }
+
+    /// The clamped span (see [`Files::clamp_span`]) with 1-based line/column of both ends
+    /// (columns in characters, as [`Files::line_col`]). `None` for an unregistered `id`.
+    pub fn span_location(&self, id: FileId, span: Range<usize>) -> Option<SpanLocation> {
+        let span = self.clamp_span(id, span)?;
+        let (line, column) = self.line_col(id, span.start);
+        let (end_line, end_column) = self.line_col(id, span.end);
+        Some(SpanLocation {
+            start: span.start,
+            end: span.end,
+            line,
+            column,
+            end_line,
+            end_column,
+        })
+    }
+}
+
+/// A resolved, clamped span: byte offsets plus 1-based line and character column of both
+/// ends. The end is exclusive (`end_column` is the column just after the last character).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+pub struct SpanLocation {
+    pub start: usize,
+    pub end: usize,
+    pub line: usize,
+    pub column: usize,
+    pub end_line: usize,
+    pub end_column: usize,
+}
+
+/// `true` if any diagnostic is an error (the run should fail).
+pub fn has_errors(diags: &[Diagnostic]) -> bool {
+    diags.iter().any(Diagnostic::is_error)
+}
+
+/// Number of diagnostics of the given severity.
+pub fn count(diags: &[Diagnostic], severity: Severity) -> usize {
+    diags.iter().filter(|d| d.severity == severity).count()
+}
+
+/// Stable sort into reporting order: diagnostics without a file first, then by file id,
+/// span start (no span before any span), severity (errors first) and code. Diagnostics
+/// equal on all of these keep their relative order.
+pub fn sort(diags: &mut [Diagnostic]) {
+    diags.sort_by(|a, b| {
+        let key = |d: &Diagnostic| {
+            (
+                d.file,
+                d.span.as_ref().map(|s| s.start),
+                std::cmp::Reverse(d.severity),
+                d.code,
+            )
+        };
+        key(a).cmp(&key(b))
+    });
+}
+
+/// One-line run summary, without a trailing newline:
+/// `checked 3 programs: 1 error, 2 warnings` (counts that are zero are left out, notes are
+/// listed last, singular/plural follow the count) or `checked 1 program: no problems` when
+/// there are no diagnostics at all.
+pub fn summary_line(diags: &[Diagnostic], programs: usize) -> String {
+    fn plural(n: usize, word: &str) -> String {
+        format!("{n} {word}{}", if n == 1 { "" } else { "s" })
+    }
+    let parts: Vec<String> = [
+        (Severity::Error, "error"),
+        (Severity::Warning, "warning"),
+        (Severity::Note, "note"),
+    ]
+    .into_iter()
+    .filter_map(|(sev, word)| match count(diags, sev) {
+        0 => None,
+        n => Some(plural(n, word)),
+    })
+    .collect();
+    let found = if parts.is_empty() {
+        "no problems".to_string()
+    } else {
+        parts.join(", ")
+    };
+    format!("checked {}: {found}", plural(programs, "program"))
+}
+
+/// Text shared by the non-human emitters: the message, then each note, then
+/// `help: ...`, one per line.
+pub(crate) fn full_message(d: &Diagnostic) -> String {
+    let mut text = d.message.clone();
+    for note in &d.notes {
+        text.push('\n');
+        text.push_str(note);
+    }
+    if let Some(help) = &d.help {
+        text.push_str("\nhelp: ");
+        text.push_str(help);
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    #[allow(clippy::reversed_empty_ranges)] // deliberately reversed spans
+    fn clamp_span_handles_out_of_range_and_char_boundaries() {
+        let mut files = Files::new();
+        let id = files.add("a.glsl", "aé\nb"); // 'é' is bytes 1..3
+        assert_eq!(files.clamp_span(id, 2..2), Some(1..1));
+        assert_eq!(files.clamp_span(id, 0..2), Some(0..3));
+        assert_eq!(files.clamp_span(id, 10..20), Some(5..5));
+        assert_eq!(files.clamp_span(id, 4..1), Some(4..4));
+        assert_eq!(files.clamp_span(FileId(7), 0..1), None);
+        let loc = files.span_location(id, 4..5).unwrap();
+        assert_eq!(
+            (loc.line, loc.column, loc.end_line, loc.end_column),
+            (2, 1, 2, 2)
+        );
+    }
+
+    #[test]
+    fn summary_line_plurals() {
+        let e = Diagnostic::error("E1", "x");
+        let w = Diagnostic::warning("W1", "y");
+        let n = Diagnostic::note("N1", "z");
+        assert_eq!(summary_line(&[], 1), "checked 1 program: no problems");
+        assert_eq!(
+            summary_line(&[e.clone(), w.clone(), w.clone()], 3),
+            "checked 3 programs: 1 error, 2 warnings"
+        );
+        assert_eq!(
+            summary_line(&[e.clone(), e, n], 0),
+            "checked 0 programs: 2 errors, 1 note"
+        );
+        assert_eq!(summary_line(&[w], 2), "checked 2 programs: 1 warning");
+    }
+
+    #[test]
+    fn counts_and_has_errors() {
+        let diags = vec![
+            Diagnostic::warning("W1", "a"),
+            Diagnostic::error("E1", "b"),
+            Diagnostic::warning("W2", "c"),
+        ];
+        assert!(has_errors(&diags));
+        assert!(!has_errors(&diags[..1]));
+        assert_eq!(count(&diags, Severity::Warning), 2);
+        assert_eq!(count(&diags, Severity::Error), 1);
+        assert_eq!(count(&diags, Severity::Note), 0);
+    }
+
+    #[test]
+    fn sort_orders_by_file_span_severity_code() {
+        let (f0, f1) = (FileId(0), FileId(1));
+        let mut diags = vec![
+            Diagnostic::warning("W2", "1").at(f1, 0..1, ""),
+            Diagnostic::warning("W1", "2").at(f0, 5..6, ""),
+            Diagnostic::error("E9", "3").at(f0, 5..6, ""),
+            Diagnostic::warning("W1", "4").at(f0, 1..2, ""),
+            Diagnostic::error("E1", "5"),
+            Diagnostic::warning("W1", "6").at(f0, 5..9, ""),
+            Diagnostic::error("E2", "7").in_file(f0),
+        ];
+        sort(&mut diags);
+        let order: Vec<&str> = diags.iter().map(|d| d.message.as_str()).collect();
+        // "6" equals "2" on every key and came later: stable.
+        assert_eq!(order, ["5", "7", "4", "3", "2", "6", "1"]);
+    }
+}

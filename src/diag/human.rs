@@ -1,0 +1,243 @@
+//! Human-readable rendering through codespan-reporting.
+//!
+//! [`Files`] implements codespan's `Files` trait directly (no copy of the sources), so
+//! labels may point into any registered file. Spans are clamped before rendering, so a bad
+//! span can never make codespan panic.
+
+use std::borrow::Cow;
+use std::ops::Range;
+
+use codespan_reporting::diagnostic as cs;
+use codespan_reporting::files::{self as csfiles, line_starts};
+use codespan_reporting::term::{self, termcolor::Buffer};
+
+use super::{Diagnostic, FileId, Files, Severity};
+
+impl<'a> csfiles::Files<'a> for Files {
+    type FileId = FileId;
+    type Name = &'a str;
+    type Source = Cow<'a, str>;
+
+    fn name(&'a self, id: FileId) -> Result<&'a str, csfiles::Error> {
+        Ok(&self.try_get(id).ok_or(csfiles::Error::FileMissing)?.path)
+    }
+
+    /// The original text, except that a lone `\r` (not part of `\r\n`) becomes a space so
+    /// it cannot garble the terminal. Byte offsets are unchanged. (The `\r` of `\r\n` is
+    /// trimmed by codespan itself together with the `\n`.)
+    fn source(&'a self, id: FileId) -> Result<Cow<'a, str>, csfiles::Error> {
+        let text = &self.try_get(id).ok_or(csfiles::Error::FileMissing)?.text;
+        let lone_cr = |(i, _): &(usize, char)| !text[i + 1..].starts_with('\n');
+        if !text
+            .char_indices()
+            .filter(|(_, c)| *c == '\r')
+            .any(|ic| lone_cr(&ic))
+        {
+            return Ok(Cow::Borrowed(text));
+        }
+        let mut out = String::with_capacity(text.len());
+        for (i, c) in text.char_indices() {
+            out.push(if c == '\r' && lone_cr(&(i, c)) {
+                ' '
+            } else {
+                c
+            });
+        }
+        Ok(Cow::Owned(out))
+    }
+
+    fn line_index(&'a self, id: FileId, byte_index: usize) -> Result<usize, csfiles::Error> {
+        let text = &self.try_get(id).ok_or(csfiles::Error::FileMissing)?.text;
+        Ok(line_starts(text)
+            .take_while(|&start| start <= byte_index)
+            .count()
+            - 1)
+    }
+
+    fn line_range(&'a self, id: FileId, line_index: usize) -> Result<Range<usize>, csfiles::Error> {
+        let text = &self.try_get(id).ok_or(csfiles::Error::FileMissing)?.text;
+        let mut starts = line_starts(text).skip(line_index);
+        let start = starts.next().ok_or_else(|| csfiles::Error::LineTooLarge {
+            given: line_index,
+            max: line_starts(text).count() - 1,
+        })?;
+        Ok(start..starts.next().unwrap_or(text.len()))
+    }
+}
+
+fn to_codespan(d: &Diagnostic, files: &Files) -> cs::Diagnostic<FileId> {
+    let severity = match d.severity {
+        Severity::Error => cs::Severity::Error,
+        Severity::Warning => cs::Severity::Warning,
+        Severity::Note => cs::Severity::Note,
+    };
+    let mut labels = Vec::new();
+    let mut notes = Vec::new();
+    if let (Some(file), Some(span)) = (d.file, &d.span) {
+        if let Some(span) = files.clamp_span(file, span.clone()) {
+            labels.push(cs::Label::primary(file, span).with_message(&d.primary_label));
+        }
+    } else if let Some(f) = d.file.and_then(|file| files.try_get(file)) {
+        notes.push(format!("in {}", f.path));
+    }
+    for label in &d.labels {
+        if let Some(span) = files.clamp_span(label.file, label.span.clone()) {
+            labels.push(cs::Label::secondary(label.file, span).with_message(&label.message));
+        }
+    }
+    notes.extend(d.notes.iter().cloned());
+    if let Some(help) = &d.help {
+        notes.push(format!("help: {help}"));
+    }
+    cs::Diagnostic::new(severity)
+        .with_code(d.code)
+        .with_message(&d.message)
+        .with_labels(labels)
+        .with_notes(notes)
+}
+
+/// Render diagnostics for a terminal, rustc style (`error[E0101]: message`, source
+/// snippets with the primary span underlined with `^` and secondary labels with `-`,
+/// possibly in other files, then notes and `help: ...`). A diagnostic with a file but no
+/// span gets an `in PATH` note instead of a snippet. `color` selects ANSI colors; without it
+/// the output is plain text. Each diagnostic ends with a blank line; no diagnostics give "".
+/// Labels pointing at unregistered files are left out; spans are clamped to their file.
+pub fn render_human(diags: &[Diagnostic], files: &Files, color: bool) -> String {
+    let mut buffer = if color {
+        Buffer::ansi()
+    } else {
+        Buffer::no_color()
+    };
+    let config = term::Config::default();
+    for d in diags {
+        let diagnostic = to_codespan(d, files);
+        if term::emit_to_write_style(&mut buffer, &config, files, &diagnostic).is_err() {
+            // Cannot happen with clamped spans and known files; never lose the message.
+            let fallback = cs::Diagnostic::new(diagnostic.severity)
+                .with_code(d.code)
+                .with_message(&d.message)
+                .with_notes(diagnostic.notes.clone());
+            let _ = term::emit_to_write_style(&mut buffer, &config, files, &fallback);
+        }
+    }
+    String::from_utf8_lossy(buffer.as_slice()).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_file_diagnostic_shows_both_files_and_lines() {
+        let mut files = Files::new();
+        let vs = files.add("shaders/a.vert", "#version 330\nout vec3 vColor;\n");
+        let fs = files.add(
+            "shaders/a.frag",
+            "#version 330\n\nin vec4 vColor;\nvoid main() {}\n",
+        );
+        let d = Diagnostic::error("E0301", "interface mismatch for `vColor`")
+            .at(fs, 17..28, "declared as vec4 here")
+            .with_label(vs, 17..28, "declared as vec3 here")
+            .with_note("outputs and inputs must have the same type")
+            .with_help("change one of the declarations");
+        let out = render_human(&[d], &files, false);
+        assert!(
+            out.starts_with("error[E0301]: interface mismatch for `vColor`\n"),
+            "{out}"
+        );
+        assert!(out.contains("┌─ shaders/a.frag:3:4"), "{out}");
+        assert!(out.contains("┌─ shaders/a.vert:2:5"), "{out}");
+        assert!(out.contains("3 │ in vec4 vColor;"), "{out}");
+        assert!(out.contains("2 │ out vec3 vColor;"), "{out}");
+        assert!(out.contains("^^^^^^^^^^^ declared as vec4 here"), "{out}");
+        assert!(out.contains("----------- declared as vec3 here"), "{out}");
+        assert!(
+            out.contains("= outputs and inputs must have the same type"),
+            "{out}"
+        );
+        assert!(
+            out.contains("= help: change one of the declarations"),
+            "{out}"
+        );
+        assert!(
+            !out.contains('\u{1b}'),
+            "no ANSI escapes without color: {out}"
+        );
+        let colored = render_human(&[Diagnostic::error("E1", "x")], &files, true);
+        assert!(colored.contains('\u{1b}'), "{colored}");
+    }
+
+    #[test]
+    fn crlf_file_has_right_position_and_no_carriage_returns() {
+        let mut files = Files::new();
+        let text = "#version 330\r\nuniform float t;\r\nvoid main() {\r\n  x = 1;\r\n}\r\n";
+        let id = files.add("a.frag", text);
+        let start = text.find("x = 1").unwrap();
+        assert_eq!(files.line_col(id, start), (4, 3));
+        // One single-line and one multi-line label (which spans the `\r\n`s).
+        let m = text.find("void").unwrap();
+        let d = Diagnostic::error("E0101", "undeclared identifier `x`")
+            .at(id, start..start + 1, "not declared")
+            .with_label(id, m..text.len() - 2, "in this function");
+        let out = render_human(&[d], &files, false);
+        assert!(out.contains("┌─ a.frag:4:3"), "{out}");
+        assert!(out.contains("4 │ │   x = 1;\n"), "{out}");
+        assert!(!out.contains('\r'), "{out:?}");
+    }
+
+    #[test]
+    fn lone_carriage_return_is_blanked_with_offsets_kept() {
+        let mut files = Files::new();
+        let id = files.add("a.frag", "int a;\rint b;\n");
+        let d = Diagnostic::warning("W1", "w").at(id, 7..10, "here");
+        let out = render_human(&[d], &files, false);
+        assert!(!out.contains('\r'), "{out:?}");
+        assert!(out.contains("1 │ int a; int b;\n"), "{out}");
+        assert!(out.contains("┌─ a.frag:1:8"), "{out}");
+    }
+
+    #[test]
+    fn no_file_and_file_without_span() {
+        let mut files = Files::new();
+        let id = files.add("missing.frag", "");
+        let out = render_human(
+            &[
+                Diagnostic::error("E0001", "no effect.toml found")
+                    .with_help("run in an effect directory"),
+                Diagnostic::error("E0002", "cannot read file").in_file(id),
+            ],
+            &files,
+            false,
+        );
+        assert_eq!(
+            out,
+            "error[E0001]: no effect.toml found\n = help: run in an effect directory\n\n\
+             error[E0002]: cannot read file\n = in missing.frag\n\n"
+        );
+    }
+
+    #[test]
+    #[allow(clippy::reversed_empty_ranges)] // deliberately reversed spans
+    fn bad_spans_and_unknown_files_do_not_panic() {
+        let mut files = Files::new();
+        let id = files.add("a.frag", "é\nvoid main() {}");
+        let empty = files.add("empty.frag", "");
+        let diags = vec![
+            Diagnostic::error("E1", "past the end").at(id, 100..200, "here"),
+            Diagnostic::error("E2", "inside a char").at(id, 1..1, "here"),
+            Diagnostic::error("E3", "reversed")
+                .at(id, 9..3, "here")
+                .with_label(empty, 5..9, "empty file"),
+            Diagnostic::error("E4", "unknown file")
+                .at(FileId(42), 0..1, "x")
+                .with_label(FileId(9), 0..1, "y"),
+        ];
+        let out = render_human(&diags, &files, false);
+        for code in ["E1", "E2", "E3", "E4"] {
+            assert!(out.contains(&format!("error[{code}]")), "{out}");
+        }
+        assert!(out.contains("┌─ a.frag:2:15"), "{out}"); // clamped to the end of the text
+        assert!(out.contains("┌─ a.frag:1:1"), "{out}"); // rounded down to the char start
+        assert!(out.contains("┌─ empty.frag:1:1"), "{out}");
+    }
+}

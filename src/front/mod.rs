@@ -1,0 +1,15 @@
+//! The GLSL front: syntax analysis of desktop GLSL, rewrite to GLSL 4.50, naga parse.
+//!
+//! - [`version`]: the `#version` line and identifiers that are keywords in 4.50 only.
+//! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
+//! - [`edits`]: text edits with an offset map back to the user's file.
+//! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
+//! - [`naga_run`]: naga parse + validate, panics contained; [`program`]: all of it per program.
+
+pub mod edits;
+pub mod syntax;
+pub mod version;
+pub mod plan;
+pub mod rewrite;
+pub mod naga_run;
+pub mod program;

@@ -1,0 +1,371 @@
+//! The program-wide resource plan every stage's rewrite shares.
+//!
+//! OpenGL links uniforms and varyings by name across the whole program; naga and WGSL bind
+//! by (group, binding) and `@location`. The plan fixes those numbers once for all stages:
+//! one uniform block `EffectcUniforms` at binding 0 holding every loose non-opaque uniform
+//! of every stage (in a representation that validates: `bool` → `uint`, scalar and `vec2`
+//! arrays → `vec4` arrays, `mat2` → `vec4`), a texture + sampler binding pair per combined
+//! sampler, a binding per user uniform block (by block name), and a location per varying
+//! name or block name.
+
+use std::collections::{BTreeMap, HashMap};
+
+use crate::front::syntax::{sampler_parts, GlslType, StageSyntax, Storage};
+use crate::stage::StageKind;
+
+/// Name of the generated uniform block (its WGSL struct keeps this name).
+pub const UNIFORM_BLOCK: &str = "EffectcUniforms";
+
+/// How a user uniform is stored in the generated block.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Repr {
+    /// Stored as declared.
+    Plain,
+    /// `bool`/`bvecN` stored as `uint`/`uvecN`.
+    Bool { components: u8 },
+    /// Array of scalars or 2-vectors stored as 4-vectors; `swizzle` selects the element.
+    Padded { swizzle: &'static str, bool_elems: bool },
+    /// `mat2` stored as `vec4` (column-major: xy = column 0, zw = column 1).
+    Mat2,
+    /// `mat2[N]` stored as `vec4[N]`.
+    Mat2Array,
+}
+
+/// One user uniform in the generated block.
+#[derive(Debug, Clone)]
+pub struct BlockMember {
+    pub name: String,
+    /// Type as the user declared it.
+    pub user_ty: GlslType,
+    /// Type in the generated block.
+    pub block_ty: GlslType,
+    pub repr: Repr,
+    /// First stage declaring it.
+    pub stage: StageKind,
+}
+
+/// A combined sampler split into texture + sampler bindings.
+#[derive(Debug, Clone)]
+pub struct TextureBinding {
+    /// The texture global's name in the rewritten code (the user's name, or
+    /// `struct_member` / `array_index` for flattened ones).
+    pub name: String,
+    /// The GLSL expression the user wrote to reach it (`tex`, `material.diffuse`, `maps[2]`).
+    pub user_path: String,
+    pub user_ty: String,
+    pub texture_ty: &'static str,
+    pub sampler_ty: &'static str,
+    pub sampler_name: String,
+    pub texture_binding: u32,
+    pub sampler_binding: u32,
+}
+
+/// Bindings and locations shared by all stages of a program.
+#[derive(Debug, Clone, Default)]
+pub struct Plan {
+    pub members: Vec<BlockMember>,
+    /// Struct names the block needs, in dependency order.
+    pub block_structs: Vec<String>,
+    pub textures: Vec<TextureBinding>,
+    /// User uniform blocks by block name → binding.
+    pub user_blocks: BTreeMap<String, u32>,
+    /// Varying (loose name or block name) → first location.
+    pub varyings: HashMap<String, u32>,
+    /// Source text of every struct the block needs, for stages that lack it.
+    pub struct_texts: BTreeMap<String, String>,
+    /// std140 size in bytes of every struct the block needs.
+    pub struct_sizes: BTreeMap<String, u32>,
+    /// Non-opaque member types of those structs.
+    pub struct_members: BTreeMap<String, Vec<GlslType>>,
+}
+
+impl Plan {
+    pub fn member(&self, name: &str) -> Option<&BlockMember> {
+        self.members.iter().find(|m| m.name == name)
+    }
+    pub fn texture(&self, user_path: &str) -> Option<&TextureBinding> {
+        self.textures.iter().find(|t| t.user_path == user_path)
+    }
+    pub fn has_block(&self) -> bool {
+        !self.members.is_empty()
+    }
+}
+
+/// Number of locations a varying of this type uses.
+pub fn location_slots(ty: &GlslType, stage: &StageSyntax) -> u32 {
+    let per = match ty.base.as_str() {
+        "mat2" | "mat2x2" | "mat2x3" | "mat2x4" | "dmat2" => 2,
+        "mat3" | "mat3x3" | "mat3x2" | "mat3x4" | "dmat3" => 3,
+        "mat4" | "mat4x4" | "mat4x2" | "mat4x3" | "dmat4" => 4,
+        other => match stage.struct_def(other) {
+            Some(s) => s.members.iter().map(|m| location_slots(&m.ty, stage)).sum::<u32>().max(1),
+            None => 1,
+        },
+    };
+    per * ty.dims.iter().map(|d| d.unwrap_or(1)).product::<u32>()
+}
+
+fn repr_for(ty: &GlslType) -> (GlslType, Repr) {
+    let base = ty.base.as_str();
+    if !ty.is_array() {
+        return match base {
+            "bool" => (GlslType::scalar("uint"), Repr::Bool { components: 1 }),
+            "bvec2" | "bvec3" | "bvec4" => {
+                let n = base.as_bytes()[4] - b'0';
+                (GlslType::scalar(&format!("uvec{n}")), Repr::Bool { components: n })
+            }
+            "mat2" | "mat2x2" => (GlslType::scalar("vec4"), Repr::Mat2),
+            _ => (ty.clone(), Repr::Plain),
+        };
+    }
+    if ty.dims.len() != 1 {
+        return (ty.clone(), Repr::Plain);
+    }
+    let padded = |b: &str, swizzle, bool_elems| {
+        (GlslType { base: b.to_string(), dims: ty.dims.clone() }, Repr::Padded { swizzle, bool_elems })
+    };
+    match base {
+        "float" => padded("vec4", "x", false),
+        "int" => padded("ivec4", "x", false),
+        "uint" => padded("uvec4", "x", false),
+        "bool" => padded("uvec4", "x", true),
+        "vec2" => padded("vec4", "xy", false),
+        "ivec2" => padded("ivec4", "xy", false),
+        "uvec2" => padded("uvec4", "xy", false),
+        "mat2" | "mat2x2" => (GlslType { base: "vec4".into(), dims: ty.dims.clone() }, Repr::Mat2Array),
+        _ => (ty.clone(), Repr::Plain),
+    }
+}
+
+/// A name not used by any global of any stage.
+fn fresh(base: String, stages: &[StageSyntax], taken: &[String]) -> String {
+    let mut name = base;
+    while stages.iter().any(|s| s.global(&name).is_some() || s.text.contains(&format!(" {name}")))
+        || taken.contains(&name)
+    {
+        name.push('_');
+    }
+    name
+}
+
+/// Builds the plan for a program (stages in pipeline order).
+pub fn plan(stages: &[StageSyntax]) -> Plan {
+    let mut plan = Plan::default();
+    let mut taken: Vec<String> = Vec::new();
+    let mut next_binding = 1u32;
+    // Uniforms, in stage order then declaration order.
+    for s in stages {
+        for g in &s.globals {
+            if g.storage != Storage::Uniform {
+                continue;
+            }
+            if let Some(b) = &g.block {
+                if !plan.user_blocks.contains_key(&b.block_name) {
+                    plan.user_blocks.insert(b.block_name.clone(), 0);
+                }
+                continue;
+            }
+            if plan.member(&g.name).is_some() || plan.textures.iter().any(|t| t.user_path == g.name) {
+                continue;
+            }
+            if let Some((tex, samp)) = sampler_parts(&g.ty.base) {
+                let count = g.ty.dims.first().copied().flatten();
+                let paths: Vec<(String, String)> = match count {
+                    Some(n) if g.ty.dims.len() == 1 => {
+                        (0..n).map(|i| (format!("{}[{i}]", g.name), format!("{}_{i}", g.name))).collect()
+                    }
+                    _ => vec![(g.name.clone(), g.name.clone())],
+                };
+                for (user_path, name) in paths {
+                    let sampler_name = fresh(format!("{name}_sampler"), stages, &taken);
+                    taken.push(sampler_name.clone());
+                    plan.textures.push(TextureBinding {
+                        name,
+                        user_path,
+                        user_ty: g.ty.base.clone(),
+                        texture_ty: tex,
+                        sampler_ty: samp,
+                        sampler_name,
+                        texture_binding: 0,
+                        sampler_binding: 0,
+                    });
+                }
+                continue;
+            }
+            // Struct uniforms: sampler members become their own bindings.
+            if let Some(st) = s.struct_def(&g.ty.base) {
+                let instances: Vec<(String, String)> = match g.ty.dims.first().copied().flatten() {
+                    Some(n) if g.ty.dims.len() == 1 => {
+                        (0..n).map(|i| (format!("{}[{i}]", g.name), format!("{}_{i}", g.name))).collect()
+                    }
+                    _ => vec![(g.name.clone(), g.name.clone())],
+                };
+                for m in st.members.iter().filter(|m| m.ty.is_sampler() && !m.ty.is_array()) {
+                    let (tex, samp) = sampler_parts(&m.ty.base).expect("checked is_sampler");
+                    for (path, flat) in &instances {
+                        let name = fresh(format!("{flat}_{}", m.name), stages, &taken);
+                        taken.push(name.clone());
+                        let sampler_name = fresh(format!("{name}_sampler"), stages, &taken);
+                        taken.push(sampler_name.clone());
+                        plan.textures.push(TextureBinding {
+                            name,
+                            user_path: format!("{path}.{}", m.name),
+                            user_ty: m.ty.base.clone(),
+                            texture_ty: tex,
+                            sampler_ty: samp,
+                            sampler_name,
+                            texture_binding: 0,
+                            sampler_binding: 0,
+                        });
+                    }
+                }
+                need_struct(&g.ty.base, s, &mut plan.block_structs);
+            }
+            let (block_ty, repr) = repr_for(&g.ty);
+            plan.members.push(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
+        }
+    }
+    for t in &mut plan.textures {
+        t.texture_binding = next_binding;
+        t.sampler_binding = next_binding + 1;
+        next_binding += 2;
+    }
+    for b in plan.user_blocks.values_mut() {
+        *b = next_binding;
+        next_binding += 1;
+    }
+    plan.varyings = varying_locations(stages);
+    for name in &plan.block_structs {
+        if let Some(def) = stages.iter().find_map(|s| s.struct_def(name)) {
+            plan.struct_texts.insert(name.clone(), struct_text(def));
+            plan.struct_members.insert(name.clone(), def.members.iter().filter(|m| !m.ty.is_sampler()).map(|m| m.ty.clone()).collect());
+        }
+    }
+    for name in plan.block_structs.clone() {
+        let size = block_size_align(&GlslType::scalar(&name), &plan).0;
+        plan.struct_sizes.insert(name, size);
+    }
+    plan
+}
+
+/// (size, alignment) of a type as naga lays it out in a uniform block; structs are looked up in the plan's struct texts'
+/// sources (sampler members excluded, as in the rewritten code).
+pub fn block_size_align(ty: &GlslType, plan: &Plan) -> (u32, u32) {
+    let (size, align) = match ty.base.as_str() {
+        "float" | "int" | "uint" | "bool" => (4, 4),
+        "vec2" | "ivec2" | "uvec2" | "bvec2" => (8, 8),
+        "vec3" | "ivec3" | "uvec3" | "bvec3" => (12, 16),
+        "vec4" | "ivec4" | "uvec4" | "bvec4" => (16, 16),
+        "mat2" | "mat2x2" => (32, 16),
+        "mat3" | "mat3x3" => (48, 16),
+        "mat4" | "mat4x4" => (64, 16),
+        "mat2x3" | "mat2x4" => (32, 16),
+        "mat3x2" | "mat3x4" => (48, 16),
+        "mat4x2" | "mat4x3" => (64, 16),
+        other => match plan.struct_members.get(other) {
+            Some(members) => {
+                // naga's GLSL front rounds a struct's size to its largest member alignment
+                // only (not to 16 as std140 says), so that is the size WGSL's rules see.
+                let mut offset = 0u32;
+                let mut align = 4u32;
+                for m in members {
+                    let (s, a) = block_size_align(m, plan);
+                    offset = offset.next_multiple_of(a) + s;
+                    align = align.max(a);
+                }
+                (offset.next_multiple_of(align), align)
+            }
+            None => (16, 16),
+        },
+    };
+    if ty.is_array() {
+        let stride = size.next_multiple_of(16);
+        let n: u32 = ty.dims.iter().map(|d| d.unwrap_or(1)).product();
+        (stride * n, 16)
+    } else {
+        (size, align)
+    }
+}
+
+/// A struct definition as the rewritten code declares it: sampler members removed.
+pub fn struct_text(def: &crate::front::syntax::StructDef) -> String {
+    let mut text = format!("struct {} {{", def.name);
+    let mut any = false;
+    for m in def.members.iter().filter(|m| !m.ty.is_sampler()) {
+        any = true;
+        text.push_str(&format!(" {} {}{};", m.ty.base, m.name, crate::front::rewrite::dims_text(&m.ty)));
+    }
+    if !any {
+        text.push_str(" int effectc_unused;");
+    }
+    text.push_str(" };");
+    text
+}
+
+/// Adds `name` and the structs it uses (first) to `out`.
+fn need_struct(name: &str, s: &StageSyntax, out: &mut Vec<String>) {
+    if out.iter().any(|n| n == name) {
+        return;
+    }
+    if let Some(st) = s.struct_def(name) {
+        for m in &st.members {
+            need_struct(&m.ty.base, s, out);
+        }
+        out.push(name.to_string());
+    }
+}
+
+/// Locations for every varying name across the program. Explicit locations are kept;
+/// the rest are numbered after them in first-seen order, by slot count.
+fn varying_locations(stages: &[StageSyntax]) -> HashMap<String, u32> {
+    let mut map = HashMap::new();
+    let mut used: Vec<(u32, u32)> = Vec::new();
+    let is_varying = |s: &StageSyntax, g: &crate::front::syntax::Global| match g.storage {
+        Storage::Varying => true,
+        Storage::In => s.stage != StageKind::Vertex,
+        Storage::Out => s.stage != StageKind::Fragment,
+        _ => false,
+    };
+    for s in stages {
+        for g in s.globals.iter().filter(|g| is_varying(s, g)) {
+            if let Some(loc) = g.location {
+                let slots = slots_of(g, s);
+                map.entry(g.name.clone()).or_insert(loc);
+                used.push((loc, loc + slots));
+            }
+        }
+    }
+    let mut next = 0u32;
+    for s in stages {
+        for g in s.globals.iter().filter(|g| is_varying(s, g)) {
+            if map.contains_key(&g.name) {
+                continue;
+            }
+            let slots = slots_of(g, s);
+            while used.iter().any(|&(a, b)| next < b && a < next + slots) {
+                next += 1;
+            }
+            map.insert(g.name.clone(), next);
+            used.push((next, next + slots));
+            next += slots;
+        }
+    }
+    map
+}
+
+fn slots_of(g: &crate::front::syntax::Global, s: &StageSyntax) -> u32 {
+    match &g.block {
+        Some(b) => b.members.iter().map(|m| location_slots(&m.ty, s)).sum::<u32>().max(1),
+        None => {
+            // Geometry/tessellation inputs are per-vertex arrays of the varying.
+            let ty = if matches!(s.stage, StageKind::Geometry | StageKind::TessControl | StageKind::TessEval)
+                && g.storage == Storage::In
+            {
+                g.ty.element()
+            } else {
+                g.ty.clone()
+            };
+            location_slots(&ty, s)
+        }
+    }
+}

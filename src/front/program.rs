@@ -1,0 +1,102 @@
+//! One GLSL program (the stages of an effect) through the whole front.
+//!
+//! analyse every stage → plan shared bindings and locations → rewrite each stage to 4.50 →
+//! naga parse + validate. Stages naga has no notion of (geometry, tessellation) are checked
+//! at the syntax and interface level only, and a note says so.
+
+use crate::diag::{Diagnostic, FileId, Files};
+use crate::front::naga_run::{self, Validated};
+use crate::front::plan::{self, Plan};
+use crate::front::rewrite::{self, Rewritten};
+use crate::front::syntax::{self, StageSyntax};
+use crate::stage::StageKind;
+
+/// Options for the front.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FrontOptions {
+    /// Constructs the declared GLSL version forbids are errors, not warnings.
+    pub strict: bool,
+}
+
+/// A stage as compiled by the front.
+#[derive(Debug)]
+pub struct CompiledStage {
+    pub syntax: StageSyntax,
+    pub rewritten: Option<Rewritten>,
+    pub naga: Option<Validated>,
+}
+
+/// The front's result for a program: per-stage results, the shared plan, and diagnostics.
+#[derive(Debug)]
+pub struct CompiledProgram {
+    pub stages: Vec<CompiledStage>,
+    pub plan: Plan,
+}
+
+/// Runs the front over `stages` (file ids registered in `files`, any order).
+pub fn compile(
+    files: &Files,
+    stages: &[(FileId, StageKind)],
+    options: FrontOptions,
+    diags: &mut Vec<Diagnostic>,
+) -> Option<CompiledProgram> {
+    let mut ordered: Vec<(FileId, StageKind)> = stages.to_vec();
+    ordered.sort_by_key(|(_, k)| *k);
+    let mut syntaxes = Vec::new();
+    let mut ok = true;
+    for (file, kind) in &ordered {
+        match syntax::analyse(*file, files.text(*file), *kind) {
+            Ok(s) => syntaxes.push(s),
+            Err(errs) => {
+                diags.extend(errs);
+                ok = false;
+            }
+        }
+    }
+    if !ok {
+        return None;
+    }
+    for s in &syntaxes {
+        if !s.has_main {
+            diags.push(
+                Diagnostic::error("E0103", format!("the {} stage has no `main` function", s.stage))
+                    .in_file(s.file)
+                    .with_note("every stage of a GL program needs `void main()`"),
+            );
+        }
+    }
+    let plan = plan::plan(&syntaxes);
+    let mut compiled = Vec::new();
+    for s in syntaxes {
+        let Some(naga_stage) = s.stage.naga() else {
+            diags.push(
+                Diagnostic::note("N0101", format!("the {} stage is checked for syntax and interface only", s.stage))
+                    .in_file(s.file)
+                    .with_note("naga and WGSL have no geometry or tessellation stages, so it is not validated by naga"),
+            );
+            compiled.push(CompiledStage { syntax: s, rewritten: None, naga: None });
+            continue;
+        };
+        let (rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
+        if let Some(dir) = std::env::var_os("EFFECTC_DUMP_REWRITE") {
+            // Debugging aid: the 4.50 text naga sees.
+            let name = std::path::Path::new(files.path(s.file)).file_name().map(|n| n.to_os_string()).unwrap_or_default();
+            let _ = std::fs::write(std::path::Path::new(&dir).join(name), &rewritten.text);
+        }
+        let blocked = rdiags.iter().any(Diagnostic::is_error);
+        diags.extend(rdiags);
+        let naga = if blocked || !s.has_main {
+            None
+        } else {
+            match naga_run::parse_and_validate(s.file, &rewritten, naga_stage) {
+                Ok(v) => Some(v),
+                Err(errs) => {
+                    diags.extend(errs);
+                    None
+                }
+            }
+        };
+        compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga });
+    }
+    Some(CompiledProgram { stages: compiled, plan })
+}

@@ -1,0 +1,611 @@
+//! Rewrites one stage's desktop GLSL into GLSL 4.50 that naga accepts.
+//!
+//! Every change is a text edit on the user's file (see [`edits`](super::edits)), so naga's
+//! errors map back to the user's line and column. What changes:
+//! `#version` → 450; loose uniforms → members of the shared `EffectcUniforms` block;
+//! combined samplers → texture + sampler pairs (declarations, uses, function parameters and
+//! call arguments); locations on every varying, vertex input and fragment output;
+//! 1xx `attribute`/`varying`; legacy built-ins (`texture2D`, `gl_FragColor`, …).
+
+use std::collections::BTreeMap;
+use std::fmt::Write;
+use std::ops::Range;
+
+use crate::diag::Diagnostic;
+use crate::front::edits::{Edits, OffsetMap};
+use crate::front::plan::{block_size_align, location_slots, struct_text, Plan, Repr, UNIFORM_BLOCK};
+use crate::front::syntax::{GlslType, StageSyntax, Storage, Target};
+use crate::stage::StageKind;
+
+/// A stage rewritten to 4.50, with the map back to the user's file.
+#[derive(Debug, Clone)]
+pub struct Rewritten {
+    pub text: String,
+    pub map: OffsetMap,
+}
+
+/// Legacy built-in functions and their 4.50 names; `true` when the result must be widened
+/// to `vec4` (the 1xx shadow functions returned vec4).
+const LEGACY_FUNCTIONS: &[(&str, &str, bool)] = &[
+    ("texture1D", "texture", false),
+    ("texture2D", "texture", false),
+    ("texture3D", "texture", false),
+    ("textureCube", "texture", false),
+    ("texture2DRect", "texture", false),
+    ("texture1DLod", "textureLod", false),
+    ("texture2DLod", "textureLod", false),
+    ("texture3DLod", "textureLod", false),
+    ("textureCubeLod", "textureLod", false),
+    ("texture2DProj", "textureProj", false),
+    ("texture2DProjLod", "textureProjLod", false),
+    ("texture2DGrad", "textureGrad", false),
+    ("texture2DLodEXT", "textureLod", false),
+    ("textureCubeLodEXT", "textureLod", false),
+    ("texture2DGradEXT", "textureGrad", false),
+    ("shadow2D", "texture", true),
+    ("shadow2DProj", "textureProj", true),
+];
+
+struct Ctx<'a> {
+    s: &'a StageSyntax,
+    plan: &'a Plan,
+    strict: bool,
+    edits: Edits,
+    diags: Vec<Diagnostic>,
+    header: String,
+    need_mat2_helper: bool,
+}
+
+/// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
+/// constructs go to the returned diagnostics.
+pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Diagnostic>) {
+    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), header: String::new(), need_mat2_helper: false };
+    c.version();
+    c.declarations();
+    c.uses();
+    c.functions();
+    c.calls();
+    c.struct_samplers();
+    c.insert_header();
+    let Ctx { edits, mut diags, .. } = c;
+    let (text, map, dropped) = edits.apply(&s.text);
+    for e in dropped {
+        diags.push(
+            Diagnostic::warning("W0190", "effectc could not rewrite this expression for naga")
+                .at(s.file, e.range.clone(), "overlapping rewrites here")
+                .with_note("this is a limitation of effectc; naga may report an error nearby"),
+        );
+    }
+    (Rewritten { text, map }, diags)
+}
+
+impl Ctx<'_> {
+    fn legacy(&mut self, span: Range<usize>, what: &str, replacement: &str) {
+        if !self.s.version.forbids_legacy_builtins() && !self.s.version.forbids_attribute_varying() {
+            return;
+        }
+        let v = &self.s.version;
+        let profile = if v.is_es() { "es".to_string() } else { "core".to_string() };
+        let msg = format!("`{what}` is not part of GLSL {} {profile}", v.number);
+        let d = if self.strict { Diagnostic::error("E0120", msg) } else { Diagnostic::warning("W0120", msg) };
+        self.diags.push(
+            d.at(self.s.file, span, format!("removed from the {profile} profile"))
+                .with_note("strict compilers such as glslangValidator reject this; effectc accepts it")
+                .with_help(format!("use `{replacement}` instead")),
+        );
+    }
+
+    fn version(&mut self) {
+        let v = &self.s.version;
+        match (&v.number_span, &v.profile_span) {
+            (Some(num), profile) => {
+                self.edits.replace(num.clone(), "450");
+                if let Some(p) = profile {
+                    // naga accepts only the core profile word.
+                    self.edits.replace(p.clone(), "core");
+                }
+            }
+            (None, _) => self.edits.insert(0, "#version 450 core\n"),
+        }
+    }
+
+    fn declarations(&mut self) {
+        let s = self.s;
+        // Group declarators by declaration span (`uniform float a, b;`).
+        let mut by_decl: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+        for (i, g) in s.globals.iter().enumerate() {
+            by_decl.entry(g.decl_span.start).or_default().push(i);
+        }
+        let mut vertex_inputs = LocationAllocator::new(s.globals.iter().filter(|g| is_vertex_input(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))));
+        let mut fragment_outputs = LocationAllocator::new(s.globals.iter().filter(|g| is_fragment_output(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))));
+        if s.stage == StageKind::Fragment && s.uses.iter().any(|u| u.name == "gl_FragColor" && u.target == Target::Unresolved) {
+            fragment_outputs.reserve(0, 1);
+        }
+        for (_, idxs) in by_decl {
+            let first = &s.globals[idxs[0]];
+            let decl = first.decl_span.clone();
+            match first.storage {
+                Storage::Uniform if first.block.is_some() => {
+                    let b = first.block.as_ref().expect("block");
+                    if first.layout.iter().any(|(k, _)| k == "binding") {
+                        // The user's own binding numbers live in set 1, clear of ours.
+                        self.add_layout(first, "set = 1", "set");
+                    } else {
+                        let binding = self.plan.user_blocks.get(&b.block_name).copied().unwrap_or(0);
+                        self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
+                    }
+                }
+                Storage::Uniform => {
+                    let mut text = String::new();
+                    // `uniform struct S { … } s;` keeps the struct type declared.
+                    for def in s.structs.iter().filter(|d| decl.start <= d.span.start && d.span.end <= decl.end) {
+                        text.push_str(&struct_text(def));
+                        text.push(' ');
+                    }
+                    for &i in &idxs {
+                        let g = &s.globals[i];
+                        for t in self.plan.textures.iter().filter(|t| t.user_path == g.name || t.user_path.starts_with(&format!("{}[", g.name))) {
+                            let _ = write!(
+                                text,
+                                "layout(set = 0, binding = {}) uniform {} {}; layout(set = 0, binding = {}) uniform {} {};",
+                                t.texture_binding, t.texture_ty, t.name, t.sampler_binding, t.sampler_ty, t.sampler_name
+                            );
+                        }
+                        if g.initializer.is_some() {
+                            self.diags.push(
+                                Diagnostic::warning("W0130", format!("initializer of uniform `{}` is ignored", s.original_name(&g.name)))
+                                    .at(s.file, g.initializer.clone().unwrap_or(g.name_span.clone()), "this value is not used")
+                                    .with_help("set the default in the effect manifest's [uniforms] table"),
+                            );
+                        }
+                    }
+                    self.edits.replace(decl, text);
+                }
+                Storage::In | Storage::Out | Storage::Attribute | Storage::Varying => {
+                    if first.name.starts_with("gl_") {
+                        // Redeclared built-ins (`out gl_PerVertex {…}`, `in vec4 gl_FragCoord`).
+                        self.edits.delete(decl);
+                        continue;
+                    }
+                    self.storage_keyword(first);
+                    let kind = if is_vertex_input(s, first.storage) {
+                        Some(&mut vertex_inputs)
+                    } else if is_fragment_output(s, first.storage) {
+                        Some(&mut fragment_outputs)
+                    } else {
+                        None
+                    };
+                    if idxs.len() == 1 {
+                        if first.location.is_some() {
+                            continue;
+                        }
+                        let loc = match kind {
+                            Some(alloc) => alloc.next(location_slots(&first.ty, s)),
+                            None => self.plan.varyings.get(&first.name).copied().unwrap_or(0),
+                        };
+                        self.add_layout(first, &format!("location = {loc}"), "location");
+                    } else {
+                        // Split `out vec3 a, b;` so each name gets its own location.
+                        let mut text = String::new();
+                        let mut alloc = kind;
+                        for &i in &idxs {
+                            let g = &s.globals[i];
+                            let loc = match (&mut alloc, g.location) {
+                                (_, Some(l)) => l,
+                                (Some(a), None) => a.next(location_slots(&g.ty, s)),
+                                (None, None) => self.plan.varyings.get(&g.name).copied().unwrap_or(0),
+                            };
+                            let interp = match g.interp {
+                                Some(i) => format!("{} ", interp_word(i)),
+                                None => String::new(),
+                            };
+                            let dir = storage_word(s.stage, g.storage);
+                            let _ = write!(text, "layout(location = {loc}) {interp}{dir} {} {}{};", g.ty.base, g.name, dims_text(&g.ty));
+                        }
+                        self.edits.replace(decl, text);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// `attribute`/`varying` → `in`/`out`.
+    fn storage_keyword(&mut self, g: &crate::front::syntax::Global) {
+        if !matches!(g.storage, Storage::Attribute | Storage::Varying) {
+            return;
+        }
+        if let Some(span) = &g.storage_span {
+            let word = storage_word(self.s.stage, g.storage);
+            let what = if g.storage == Storage::Attribute { "attribute" } else { "varying" };
+            self.legacy(span.clone(), what, word);
+            self.edits.replace(span.clone(), word);
+        }
+    }
+
+    /// Adds `item` to the declaration's layout qualifier (or a new one), unless `key` is set.
+    fn add_layout(&mut self, g: &crate::front::syntax::Global, item: &str, key: &str) {
+        if g.layout.iter().any(|(k, _)| k == key) {
+            return;
+        }
+        match &g.layout_span {
+            Some(span) => {
+                let open = self.s.text[span.clone()].find('(').map(|i| span.start + i + 1).unwrap_or(span.start);
+                self.edits.insert(open, format!("{item}, "));
+            }
+            None => self.edits.insert(g.decl_span.start, format!("layout({item}) ")),
+        }
+    }
+
+    fn uses(&mut self) {
+        let s = self.s;
+        for u in &s.uses {
+            match &u.target {
+                Target::Global(gi) => {
+                    let g = &s.globals[*gi];
+                    if g.storage != Storage::Uniform || g.block.is_some() {
+                        continue;
+                    }
+                    if g.ty.is_sampler() {
+                        self.sampler_use(u, &g.name, &g.ty);
+                    } else if let Some((field, dot_span)) = &u.field {
+                        // `material.diffuse` where the member is a sampler.
+                        let path = match &u.index {
+                            Some((_, _, Some(k))) => format!("{}[{k}].{field}", g.name),
+                            Some((_, isp, None)) => {
+                                if self.plan.textures.iter().any(|t| t.user_path.starts_with(&format!("{}[", g.name)) && t.user_path.ends_with(&format!(".{field}"))) {
+                                    self.dynamic_sampler_index(isp.clone(), &g.name);
+                                    continue;
+                                }
+                                String::new()
+                            }
+                            None => format!("{}.{field}", g.name),
+                        };
+                        if let Some(t) = self.plan.texture(&path) {
+                            let text = if u.user_call_arg {
+                                format!("{}, {}", t.name, t.sampler_name)
+                            } else {
+                                format!("{}({}, {})", t.user_ty, t.name, t.sampler_name)
+                            };
+                            self.edits.replace(dot_span.clone(), text);
+                            continue;
+                        }
+                        self.member_use(u, &g.name);
+                    } else {
+                        self.member_use(u, &g.name);
+                    }
+                }
+                Target::Param(fi, pi) => {
+                    let p = &s.functions[*fi].params[*pi];
+                    let name = p.name.clone().unwrap_or_default();
+                    let text = if u.user_call_arg {
+                        format!("{name}, {name}_sampler")
+                    } else {
+                        format!("{}({name}, {name}_sampler)", p.ty.base)
+                    };
+                    self.edits.replace(u.span.clone(), text);
+                }
+                Target::Unresolved => self.builtin_use(u),
+            }
+        }
+    }
+
+    fn sampler_use(&mut self, u: &crate::front::syntax::Use, name: &str, ty: &GlslType) {
+        let (span, path) = match &u.index {
+            Some((bracket, _, Some(k))) if ty.is_array() => (bracket.clone(), format!("{name}[{k}]")),
+            Some((_, isp, None)) if ty.is_array() => {
+                self.dynamic_sampler_index(isp.clone(), name);
+                return;
+            }
+            _ => (u.span.clone(), name.to_string()),
+        };
+        let Some(t) = self.plan.texture(&path) else { return };
+        let text = if u.user_call_arg {
+            format!("{}, {}", t.name, t.sampler_name)
+        } else {
+            format!("{}({}, {})", t.user_ty, t.name, t.sampler_name)
+        };
+        self.edits.replace(span, text);
+    }
+
+    fn dynamic_sampler_index(&mut self, span: Range<usize>, name: &str) {
+        self.diags.push(
+            Diagnostic::error("E0110", format!("`{}` is indexed with a non-constant expression", self.s.original_name(name)))
+                .at(self.s.file, span, "not a constant index")
+                .with_note("effectc splits sampler arrays into one texture binding per element; WGSL and naga have no arrays of combined samplers")
+                .with_help("index with a literal or a `const int`, e.g. unroll the loop"),
+        );
+    }
+
+    fn member_use(&mut self, u: &crate::front::syntax::Use, name: &str) {
+        let Some(m) = self.plan.member(name) else { return };
+        match &m.repr {
+            Repr::Plain => {}
+            Repr::Bool { components: 1 } => self.edits.replace(u.span.clone(), format!("({name} != 0u)")),
+            Repr::Bool { components } => self.edits.replace(u.span.clone(), format!("bvec{components}({name})")),
+            Repr::Padded { swizzle, bool_elems } => match &u.index {
+                Some((bracket, _, _)) => {
+                    if *bool_elems {
+                        self.edits.insert(bracket.start, "(");
+                        self.edits.insert(bracket.end, format!(".{swizzle} != 0u)"));
+                    } else {
+                        self.edits.insert(bracket.end, format!(".{swizzle}"));
+                    }
+                }
+                None => {
+                    let n = m.user_ty.dims.first().copied().flatten().unwrap_or(0);
+                    let elems: Vec<String> = (0..n)
+                        .map(|i| if *bool_elems { format!("({name}[{i}].x != 0u)") } else { format!("{name}[{i}].{swizzle}") })
+                        .collect();
+                    self.edits.replace(u.span.clone(), format!("{}[{n}]({})", m.user_ty.base, elems.join(", ")));
+                }
+            },
+            Repr::Mat2 => {
+                self.need_mat2_helper = true;
+                self.edits.insert(u.span.start, "effectc_mat2(");
+                self.edits.insert(u.span.end, ")");
+            }
+            Repr::Mat2Array => {
+                self.need_mat2_helper = true;
+                if let Some((bracket, _, _)) = &u.index {
+                    self.edits.insert(bracket.start, "effectc_mat2(");
+                    self.edits.insert(bracket.end, ")");
+                }
+            }
+        }
+    }
+
+    fn builtin_use(&mut self, u: &crate::front::syntax::Use) {
+        let stage = self.s.stage;
+        match (u.name.as_str(), stage) {
+            ("gl_FragColor", StageKind::Fragment) => {
+                self.legacy(u.span.clone(), "gl_FragColor", "a declared `out vec4`");
+                self.edits.replace(u.span.clone(), "effectc_FragColor");
+            }
+            ("gl_FragData", StageKind::Fragment) => match &u.index {
+                Some((bracket, _, Some(k))) => {
+                    self.legacy(bracket.clone(), "gl_FragData", "declared `out vec4` outputs");
+                    self.edits.replace(bracket.clone(), format!("effectc_FragData{k}"));
+                }
+                Some((_, isp, None)) => self.diags.push(
+                    Diagnostic::error("E0111", "`gl_FragData` is indexed with a non-constant expression")
+                        .at(self.s.file, isp.clone(), "not a constant index")
+                        .with_help("declare `layout(location = N) out vec4 name;` outputs and write them by name"),
+                ),
+                None => {}
+            },
+            ("gl_VertexID", StageKind::Vertex) => self.edits.replace(u.span.clone(), "gl_VertexIndex"),
+            ("gl_InstanceID", StageKind::Vertex) => self.edits.replace(u.span.clone(), "gl_InstanceIndex"),
+            ("gl_PointSize", _) => self.edits.replace(u.span.clone(), "effectc_PointSize"),
+            _ => {}
+        }
+    }
+
+    fn functions(&mut self) {
+        let s = self.s;
+        for f in &s.functions {
+            for p in f.params.iter().filter(|p| p.ty.is_sampler()) {
+                let (tex, samp) = crate::front::syntax::sampler_parts(&p.ty.base).expect("sampler");
+                let text = match &p.name {
+                    Some(n) => format!("{tex} {n}, {samp} {n}_sampler"),
+                    None => format!("{tex}, {samp}"),
+                };
+                self.edits.replace(p.span.clone(), text);
+            }
+        }
+    }
+
+    fn calls(&mut self) {
+        let s = self.s;
+        for c in &s.calls {
+            if s.functions.iter().any(|f| f.name == c.name) {
+                continue;
+            }
+            let implicit_lod = matches!(c.name.as_str(), "texture" | "texture2D" | "textureCube" | "texture3D" | "texture1D");
+            if s.stage == StageKind::Vertex && implicit_lod {
+                // Vertex shaders have no derivatives: GL samples the base level; naga wants it explicit.
+                if c.name != "texture" {
+                    self.legacy(c.name_span.clone(), &c.name, "textureLod");
+                }
+                self.edits.replace(c.name_span.clone(), "textureLod");
+                let close = s.text[..c.span.end].rfind(')').unwrap_or(c.span.end);
+                self.edits.insert(close, ", 0.0");
+                continue;
+            }
+            if let Some((old, new, widen)) = LEGACY_FUNCTIONS.iter().find(|(o, _, _)| *o == c.name) {
+                self.legacy(c.name_span.clone(), old, new);
+                if *widen {
+                    self.edits.insert(c.span.start, "vec4(");
+                    self.edits.replace(c.name_span.clone(), *new);
+                    self.edits.insert(c.span.end, ")");
+                } else {
+                    self.edits.replace(c.name_span.clone(), *new);
+                }
+            }
+        }
+    }
+
+    /// Sampler members leave struct definitions (they became their own bindings).
+    fn struct_samplers(&mut self) {
+        let s = self.s;
+        for st in &s.structs {
+            let mut done: Vec<Range<usize>> = Vec::new();
+            let opaque: Vec<_> = st.members.iter().filter(|m| m.ty.is_sampler()).collect();
+            if opaque.is_empty() {
+                continue;
+            }
+            for m in &opaque {
+                if !done.contains(&m.field_span) {
+                    done.push(m.field_span.clone());
+                    self.edits.delete(m.field_span.clone());
+                }
+            }
+            if opaque.len() == st.members.len() {
+                // GLSL structs cannot be empty.
+                if let Some(m) = opaque.first() {
+                    self.edits.insert(m.field_span.start, "int effectc_unused;");
+                }
+            }
+        }
+    }
+
+    fn insert_header(&mut self) {
+        let s = self.s;
+        let mut h = String::new();
+        if self.plan.has_block() {
+            for name in &self.plan.block_structs {
+                if s.struct_def(name).is_none() {
+                    // The block needs a struct this stage does not declare: copy it.
+                    if let Some(def) = self.plan_struct_text(name) {
+                        let _ = writeln!(h, "{def}");
+                    }
+                }
+            }
+            let _ = writeln!(h, "layout(std140, set = 0, binding = 0) uniform {UNIFORM_BLOCK} {{");
+            // naga's GLSL front aligns a struct member only to its largest member, but WGSL
+            // wants structs in uniform buffers 16-aligned and followed by at least
+            // roundUp(16, size) bytes: fillers make the layout valid (reflection reads the
+            // final offsets from naga's IR).
+            let mut pad = 0;
+            let mut offset = 0u32;
+            let mut filler = |h: &mut String, ty: &str, size: u32, offset: &mut u32| {
+                let _ = writeln!(h, "    {ty} effectc_pad{pad};");
+                pad += 1;
+                *offset = offset.next_multiple_of(size) + size;
+            };
+            for (i, m) in self.plan.members.iter().enumerate() {
+                let is_struct = self.plan.struct_sizes.contains_key(&m.block_ty.base);
+                if is_struct {
+                    while offset % 16 != 0 {
+                        filler(&mut h, "uint", 4, &mut offset);
+                    }
+                }
+                let (size, align) = block_size_align(&m.block_ty, self.plan);
+                offset = offset.next_multiple_of(align) + size;
+                let _ = writeln!(h, "    {} {}{};", m.block_ty.base, m.name, dims_text(&m.block_ty));
+                if is_struct && !m.block_ty.is_array() && i + 1 < self.plan.members.len() {
+                    filler(&mut h, "vec4", 16, &mut offset);
+                }
+            }
+            h.push_str("};\n");
+        }
+        // Textures flattened out of struct uniforms are declared here.
+        for t in &self.plan.textures {
+            if t.user_path.contains('.') {
+                let root = t.user_path.split(['.', '[']).next().unwrap_or("");
+                if s.global(root).is_some() {
+                    let _ = writeln!(
+                        h,
+                        "layout(set = 0, binding = {}) uniform {} {}; layout(set = 0, binding = {}) uniform {} {};",
+                        t.texture_binding, t.texture_ty, t.name, t.sampler_binding, t.sampler_ty, t.sampler_name
+                    );
+                }
+            }
+        }
+        let unresolved = |n: &str| s.uses.iter().any(|u| u.name == n && u.target == Target::Unresolved);
+        if s.stage == StageKind::Fragment && unresolved("gl_FragColor") {
+            h.push_str("layout(location = 0) out vec4 effectc_FragColor;\n");
+        }
+        if s.stage == StageKind::Fragment {
+            let mut ks: Vec<i64> = s.uses.iter().filter(|u| u.name == "gl_FragData" && u.target == Target::Unresolved).filter_map(|u| u.index.as_ref().and_then(|i| i.2)).collect();
+            ks.sort();
+            ks.dedup();
+            for k in ks {
+                let _ = writeln!(h, "layout(location = {k}) out vec4 effectc_FragData{k};");
+            }
+        }
+        if unresolved("gl_PointSize") {
+            h.push_str("float effectc_PointSize;\n");
+        }
+        if self.need_mat2_helper {
+            h.push_str("mat2 effectc_mat2(vec4 v) { return mat2(v.xy, v.zw); }\n");
+        }
+        if h.is_empty() {
+            return;
+        }
+        // After every struct the block needs, before the first function.
+        let structs_end = self
+            .plan
+            .block_structs
+            .iter()
+            .filter_map(|n| s.struct_def(n))
+            .map(|d| line_end(&s.text, d.span.end))
+            .max()
+            .unwrap_or(0);
+        let at = s.first_function.unwrap_or(s.text.len()).max(structs_end);
+        let at = if at >= s.text.len() && !s.text.ends_with('\n') {
+            h.insert(0, '\n');
+            s.text.len()
+        } else {
+            at
+        };
+        self.edits.insert(at, h);
+    }
+
+    fn plan_struct_text(&self, _name: &str) -> Option<String> {
+        // Filled by the program driver, which has every stage's text.
+        self.plan_struct_defs().get(_name).cloned()
+    }
+
+    fn plan_struct_defs(&self) -> &BTreeMap<String, String> {
+        &self.plan.struct_texts
+    }
+}
+
+fn line_end(text: &str, at: usize) -> usize {
+    text[at.min(text.len())..].find('\n').map(|i| at + i + 1).unwrap_or(text.len())
+}
+
+fn is_vertex_input(s: &StageSyntax, storage: Storage) -> bool {
+    s.stage == StageKind::Vertex && matches!(storage, Storage::In | Storage::Attribute)
+}
+
+fn is_fragment_output(s: &StageSyntax, storage: Storage) -> bool {
+    s.stage == StageKind::Fragment && storage == Storage::Out
+}
+
+fn storage_word(stage: StageKind, storage: Storage) -> &'static str {
+    match (storage, stage) {
+        (Storage::Attribute, _) | (Storage::In, _) => "in",
+        (Storage::Varying, StageKind::Vertex) => "out",
+        (Storage::Varying, _) => "in",
+        _ => "out",
+    }
+}
+
+fn interp_word(i: crate::front::syntax::Interp) -> &'static str {
+    match i {
+        crate::front::syntax::Interp::Smooth => "smooth",
+        crate::front::syntax::Interp::Flat => "flat",
+        crate::front::syntax::Interp::NoPerspective => "noperspective",
+    }
+}
+
+/// `[4][2]` for a type's dimensions.
+pub fn dims_text(ty: &GlslType) -> String {
+    ty.dims.iter().map(|d| d.map_or("[]".to_string(), |n| format!("[{n}]"))).collect()
+}
+
+/// Hands out locations, skipping ones taken explicitly.
+struct LocationAllocator {
+    used: Vec<(u32, u32)>,
+    next: u32,
+}
+
+impl LocationAllocator {
+    fn new(explicit: impl Iterator<Item = (u32, u32)>) -> Self {
+        LocationAllocator { used: explicit.map(|(l, n)| (l, l + n)).collect(), next: 0 }
+    }
+    fn reserve(&mut self, at: u32, n: u32) {
+        self.used.push((at, at + n));
+    }
+    fn next(&mut self, slots: u32) -> u32 {
+        while self.used.iter().any(|&(a, b)| self.next < b && a < self.next + slots) {
+            self.next += 1;
+        }
+        let loc = self.next;
+        self.used.push((loc, loc + slots));
+        self.next += slots;
+        loc
+    }
+}

@@ -1,0 +1,20 @@
+//! effectc: a shader toolchain for desktop-GLSL effects.
+//!
+//! # Steps
+//! 1. [`inputs`]: command-line paths → programs (manifests, directories, stage files).
+//! 2. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures, mesh).
+//! 3. [`front`]: each GLSL stage → syntax facts (glsl-lang, spans) → GLSL 4.50 rewrite with an
+//!    offset map → naga parse + validate.
+//! 4. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader uniforms.
+//! 5. [`check`]: all of the above per program, one bad program never stopping the others.
+//! 6. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
+//!    (human, JSON, GitHub annotations, SARIF).
+
+pub mod check;
+pub mod cli;
+pub mod diag;
+pub mod front;
+pub mod inputs;
+pub mod link;
+pub mod manifest;
+pub mod stage;

@@ -1,0 +1,671 @@
+//! `effect.toml` against the shaders: `[uniforms]` defaults and `[textures]` entries.
+//!
+//! A default names a uniform some stage declares — a loose non-opaque uniform or a member
+//! of a uniform block without an instance name, optionally followed by a path (`lights[1]`,
+//! `material.color`) — and its value must fit the declared type ([`super::values`]). A
+//! `semantic` must provide the declared type and `range` needs a scalar number. In the
+//! other direction every uniform a stage reads should get a default (samplers a
+//! `[textures]` entry), and uniforms nothing reads are reported.
+
+use std::collections::HashSet;
+use std::ops::Range;
+
+use super::values::Shape;
+use super::{is_read, list, member_read, stage_title, type_text};
+use super::{
+    E_MANIFEST_PATH, E_MANIFEST_RANGE, E_MANIFEST_SEMANTIC, E_MANIFEST_UNKNOWN, E_MANIFEST_VALUE,
+    E_TEXTURE_KIND, E_TEXTURE_UNKNOWN, W_DEFAULT_UNREAD, W_NO_DEFAULT, W_NO_TEXTURE,
+    W_UNREAD_UNIFORM,
+};
+use crate::diag::{Diagnostic, FileId, Files};
+use crate::front::syntax::{GlslType, StageSyntax, Storage};
+use crate::manifest::{did_you_mean, Effect, Semantic, TextureKind, UniformDefault};
+
+/// One uniform the manifest can name: a loose uniform or a member of an anonymous block.
+struct Decl<'a> {
+    /// The user's name.
+    name: String,
+    /// Stage of the first declaration, where types are resolved.
+    stage: &'a StageSyntax,
+    ty: &'a GlslType,
+    /// Every declaration (file, name span, stage), first one first.
+    sites: Vec<(FileId, Range<usize>, &'a StageSyntax)>,
+    /// Some stage reads it.
+    read: bool,
+    /// A member of an anonymous uniform block.
+    in_block: bool,
+}
+
+impl Decl<'_> {
+    fn file(&self) -> FileId {
+        self.sites[0].0
+    }
+    fn span(&self) -> Range<usize> {
+        self.sites[0].1.clone()
+    }
+    fn type_text(&self) -> String {
+        type_text(self.stage, self.ty)
+    }
+    fn shape(&self, ty: &GlslType) -> Shape {
+        Shape::of(ty, &|b| self.stage.struct_def(b).is_some())
+    }
+}
+
+/// A uniform block the manifest cannot address member by member.
+struct NamedBlock<'a> {
+    stage: &'a StageSyntax,
+    index: usize,
+}
+
+struct Decls<'a> {
+    list: Vec<Decl<'a>>,
+    named_blocks: Vec<NamedBlock<'a>>,
+    /// Blocks (named or not) no stage reads: stage, global index.
+    unread_blocks: Vec<(&'a StageSyntax, usize)>,
+}
+
+impl<'a> Decls<'a> {
+    fn collect(stages: &'a [StageSyntax]) -> Self {
+        let mut d = Decls {
+            list: Vec::new(),
+            named_blocks: Vec::new(),
+            unread_blocks: Vec::new(),
+        };
+        let mut read_blocks: HashSet<String> = HashSet::new();
+        let mut block_decls: Vec<(&StageSyntax, usize, String)> = Vec::new();
+        for s in stages {
+            for (i, g) in s.globals.iter().enumerate() {
+                if g.storage != Storage::Uniform || s.original_name(&g.name).starts_with("gl_") {
+                    continue;
+                }
+                match &g.block {
+                    None => d.add(s, s.original_name(&g.name), &g.ty, g.name_span.clone(), is_read(s, i), false),
+                    Some(b) => {
+                        let bn = s.original_name(&b.block_name).to_string();
+                        if is_read(s, i) {
+                            read_blocks.insert(bn.clone());
+                        }
+                        block_decls.push((s, i, bn));
+                        if b.instance.is_some() {
+                            d.named_blocks.push(NamedBlock { stage: s, index: i });
+                            continue;
+                        }
+                        for m in &b.members {
+                            let read = member_read(s, i, &m.name);
+                            d.add(s, s.original_name(&m.name), &m.ty, m.span.clone(), read, true);
+                        }
+                    }
+                }
+            }
+        }
+        let mut seen = HashSet::new();
+        for (s, i, bn) in block_decls {
+            if !read_blocks.contains(&bn) && seen.insert(bn) {
+                d.unread_blocks.push((s, i));
+            }
+        }
+        d
+    }
+
+    fn add(
+        &mut self,
+        s: &'a StageSyntax,
+        name: &str,
+        ty: &'a GlslType,
+        span: Range<usize>,
+        read: bool,
+        in_block: bool,
+    ) {
+        if let Some(d) = self.list.iter_mut().find(|d| d.name == name) {
+            d.read |= read;
+            d.sites.push((s.file, span, s));
+            return;
+        }
+        self.list.push(Decl {
+            name: name.to_string(),
+            stage: s,
+            ty,
+            sites: vec![(s.file, span, s)],
+            read,
+            in_block,
+        });
+    }
+
+    fn get(&self, name: &str) -> Option<&Decl<'a>> {
+        self.list.iter().find(|d| d.name == name)
+    }
+
+    /// Every sampler the manifest can bind: its path (`tex`, `material.diffuse`), the
+    /// sampler type and the declaration it lives in.
+    fn samplers(&self) -> Vec<(String, GlslType, &Decl<'a>)> {
+        fn walk<'d, 'a>(
+            decl: &'d Decl<'a>,
+            path: String,
+            ty: &GlslType,
+            depth: usize,
+            out: &mut Vec<(String, GlslType, &'d Decl<'a>)>,
+        ) {
+            if ty.is_sampler() || ty.base.contains("sampler") {
+                out.push((path, ty.clone(), decl));
+            } else if let Some(def) = decl.stage.struct_def(&ty.base) {
+                if depth < 4 {
+                    for m in &def.members {
+                        let p = format!("{path}.{}", decl.stage.original_name(&m.name));
+                        walk(decl, p, &m.ty, depth + 1, out);
+                    }
+                }
+            }
+        }
+        let mut out = Vec::new();
+        for d in &self.list {
+            walk(d, d.name.clone(), d.ty, 0, &mut out);
+        }
+        out
+    }
+}
+
+/// One step of a manifest uniform path.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Step {
+    Index(u64),
+    Field(String),
+}
+
+/// `lights[1].color` → (`lights`, [Index(1), Field(color)]); `None` if it is not a path.
+fn parse_path(s: &str) -> Option<(String, Vec<Step>)> {
+    let ident = |s: &str| -> usize {
+        s.char_indices()
+            .take_while(|&(i, c)| c == '_' || c.is_ascii_alphabetic() || (i > 0 && c.is_ascii_digit()))
+            .count()
+    };
+    let n = ident(s);
+    if n == 0 {
+        return None;
+    }
+    let base = s[..n].to_string();
+    let mut rest = &s[n..];
+    let mut steps = Vec::new();
+    while !rest.is_empty() {
+        if let Some(r) = rest.strip_prefix('[') {
+            let close = r.find(']')?;
+            steps.push(Step::Index(r[..close].trim().parse().ok()?));
+            rest = &r[close + 1..];
+        } else if let Some(r) = rest.strip_prefix('.') {
+            let n = ident(r);
+            if n == 0 {
+                return None;
+            }
+            steps.push(Step::Field(r[..n].to_string()));
+            rest = &r[n..];
+        } else {
+            return None;
+        }
+    }
+    Some((base, steps))
+}
+
+/// A texture name without array indices (`maps[2]` → `maps`).
+fn texture_path(name: &str) -> String {
+    match parse_path(name) {
+        Some((base, steps)) => {
+            let mut p = base;
+            for s in steps {
+                if let Step::Field(f) = s {
+                    p.push('.');
+                    p.push_str(&f);
+                }
+            }
+            p
+        }
+        None => name.to_string(),
+    }
+}
+
+pub fn check(effect: &Effect, stages: &[StageSyntax], files: &Files) -> Vec<Diagnostic> {
+    let decls = Decls::collect(stages);
+    let mut out = Vec::new();
+    let mut covered: HashSet<String> = HashSet::new();
+    for u in &effect.uniforms {
+        let base = parse_path(&u.name).map_or(u.name.clone(), |(b, _)| b);
+        covered.insert(base);
+        default(effect, u, &decls, stages, files, &mut out);
+    }
+    textures(effect, &decls, &mut out);
+    let textured: HashSet<String> = effect.textures.iter().map(|t| texture_path(&t.name)).collect();
+    missing(&decls, &covered, &textured, &mut out);
+    out
+}
+
+/// Checks one `[uniforms]` entry.
+fn default(
+    effect: &Effect,
+    u: &UniformDefault,
+    decls: &Decls,
+    stages: &[StageSyntax],
+    files: &Files,
+    out: &mut Vec<Diagnostic>,
+) {
+    let mf = effect.file;
+    let (base, steps) = parse_path(&u.name).unwrap_or_else(|| (u.name.clone(), Vec::new()));
+    let Some(decl) = decls.get(&base) else {
+        out.push(unknown(effect, u, &base, decls, stages, files));
+        return;
+    };
+    // Follow the path to the type being set.
+    let mut ty = decl.ty.clone();
+    let mut shown = decl.name.clone();
+    for step in &steps {
+        match step {
+            Step::Index(i) => {
+                let Some(first) = ty.dims.first().copied() else {
+                    out.push(
+                        Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` is not an array"))
+                            .at(mf, u.name_span.clone(), format!("indexes `{shown}`"))
+                            .with_label(decl.file(), decl.span(), format!("`{shown}` is a `{}`", type_text(decl.stage, &ty))),
+                    );
+                    return;
+                };
+                if let Some(k) = first {
+                    if *i >= u64::from(k) {
+                        out.push(
+                            Diagnostic::error(E_MANIFEST_PATH, format!("index {i} is out of bounds for `{shown}`"))
+                                .at(mf, u.name_span.clone(), format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)))
+                                .with_label(decl.file(), decl.span(), format!("declared as `{}`", type_text(decl.stage, &ty))),
+                        );
+                        return;
+                    }
+                }
+                ty = ty.element();
+                shown = format!("{shown}[{i}]");
+            }
+            Step::Field(f) => {
+                let def = (!ty.is_array()).then(|| decl.stage.struct_def(&ty.base)).flatten();
+                let Some(def) = def else {
+                    out.push(
+                        Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` has no field `{f}`"))
+                            .at(mf, u.name_span.clone(), format!("`{shown}` is a `{}`, not a struct", type_text(decl.stage, &ty)))
+                            .with_label(decl.file(), decl.span(), "declared here"),
+                    );
+                    return;
+                };
+                let Some(m) = def.members.iter().find(|m| decl.stage.original_name(&m.name) == f) else {
+                    let names: Vec<&str> = def.members.iter().map(|m| decl.stage.original_name(&m.name)).collect();
+                    let sname = decl.stage.original_name(&def.name);
+                    let mut d = Diagnostic::error(E_MANIFEST_PATH, format!("struct `{sname}` has no member `{f}`"))
+                        .at(mf, u.name_span.clone(), format!("`{shown}` is a `{sname}`"))
+                        .with_label(decl.stage.file, def.name_span.clone(), format!("`{sname}` is defined here"));
+                    d = match did_you_mean(f, &names) {
+                        Some(c) => d.with_help(format!("did you mean `{shown}.{c}`?")),
+                        None => d.with_note(format!(
+                            "its members are {}",
+                            list(&names.iter().map(|n| n.to_string()).collect::<Vec<_>>())
+                        )),
+                    };
+                    out.push(d);
+                    return;
+                };
+                ty = m.ty.clone();
+                shown = format!("{shown}.{f}");
+            }
+        }
+    }
+    let shape = decl.shape(&ty);
+    let tt = type_text(decl.stage, &ty);
+    let decl_label = format!("`{}` is declared as `{}` here", decl.name, decl.type_text());
+    match (&u.value, &shape) {
+        (_, Shape::Sampler) => out.push(
+            Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
+                .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
+                .with_label(decl.file(), decl.span(), decl_label.clone())
+                .with_help(format!("bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`")),
+        ),
+        (_, Shape::Struct(sname)) => {
+            let sname = decl.stage.original_name(sname).to_string();
+            let members: Vec<String> = decl
+                .stage
+                .struct_def(&ty.base)
+                .map(|def| {
+                    def.members
+                        .iter()
+                        .map(|m| format!("{shown}.{}", decl.stage.original_name(&m.name)))
+                        .collect()
+                })
+                .unwrap_or_default();
+            out.push(
+                Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a struct (`{sname}`) and cannot take one value"))
+                    .at(mf, u.value_span.clone(), "a value for a whole struct")
+                    .with_label(decl.file(), decl.span(), decl_label.clone())
+                    .with_help(format!("set the members one by one: {}", list(&members))),
+            );
+        }
+        (Some(v), _) => {
+            if let Err(why) = shape.fit(v) {
+                out.push(
+                    Diagnostic::error(E_MANIFEST_VALUE, format!("the default for `{shown}` does not fit its type `{tt}`"))
+                        .at(mf, u.value_span.clone(), why)
+                        .with_label(decl.file(), decl.span(), decl_label.clone())
+                        .with_note(format!("a `{tt}` takes {}", shape.expected())),
+                );
+            }
+        }
+        (None, _) => {}
+    }
+    if let Some(sem) = u.semantic {
+        let fits = !ty.is_array() && sem.glsl_types().contains(&tt.as_str());
+        if !fits {
+            let span = u.semantic_span.clone().unwrap_or_else(|| u.value_span.clone());
+            let provides = sem.glsl_types().join("` or `");
+            let others: Vec<String> = Semantic::ALL
+                .iter()
+                .filter(|s| !ty.is_array() && s.glsl_types().contains(&tt.as_str()))
+                .map(|s| s.name().to_string())
+                .collect();
+            let help = if others.is_empty() {
+                format!("declare `{shown}` as `{provides}`; no semantic provides a `{tt}`")
+            } else {
+                format!("declare `{shown}` as `{provides}`, or use a semantic that provides a `{tt}`: {}", list(&others))
+            };
+            out.push(
+                Diagnostic::error(
+                    E_MANIFEST_SEMANTIC,
+                    format!("semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`", sem.name()),
+                )
+                .at(mf, span, format!("provides `{provides}`"))
+                .with_label(decl.file(), decl.span(), decl_label.clone())
+                .with_help(help),
+            );
+        }
+    }
+    if let Some(span) = &u.range_span {
+        if !shape.is_scalar_number() {
+            out.push(
+                Diagnostic::error(E_MANIFEST_RANGE, format!("`range` needs a scalar number, but `{shown}` is a `{tt}`"))
+                    .at(mf, span.clone(), "a range on a non-scalar uniform")
+                    .with_label(decl.file(), decl.span(), decl_label.clone())
+                    .with_note("`range` bounds one number (`float`, `int`, `uint` or `double`)")
+                    .with_help("remove `range` from this entry"),
+            );
+        }
+    }
+    if !decl.read {
+        out.push(
+            Diagnostic::warning(W_DEFAULT_UNREAD, format!("`{}` has a default, but no stage reads it", decl.name))
+                .at(mf, u.name_span.clone(), "default for an unread uniform")
+                .with_label(decl.file(), decl.span(), "declared here, never read")
+                .with_help("remove the entry, or use the uniform in a shader"),
+        );
+    }
+}
+
+/// A `[uniforms]` entry whose base name no stage declares as a settable uniform.
+fn unknown(
+    effect: &Effect,
+    u: &UniformDefault,
+    base: &str,
+    decls: &Decls,
+    stages: &[StageSyntax],
+    files: &Files,
+) -> Diagnostic {
+    let mut d = Diagnostic::error(
+        E_MANIFEST_UNKNOWN,
+        format!("`[uniforms]` entry `{}` names no uniform declared by the shaders", u.name),
+    )
+    .at(effect.file, u.name_span.clone(), format!("no stage declares a uniform `{base}`"));
+    // A member (or the instance / block name) of a named uniform block?
+    for nb in &decls.named_blocks {
+        let s = nb.stage;
+        let Some(b) = &s.globals[nb.index].block else { continue };
+        let bn = s.original_name(&b.block_name);
+        let inst = b.instance.as_deref().map_or("", |i| s.original_name(i));
+        let member = b.members.iter().find(|m| s.original_name(&m.name) == base);
+        if member.is_some() || bn == base || inst == base {
+            let span = member.map_or(b.block_name_span.clone(), |m| m.span.clone());
+            return d
+                .with_label(s.file, span, format!("in uniform block `{bn}` (instance `{inst}`)"))
+                .with_note("defaults address loose uniforms and members of uniform blocks without an instance name")
+                .with_help(format!("drop the instance name (`uniform {bn} {{ … }};`) so its members become settable by name, or declare the value as a loose uniform"));
+        }
+    }
+    // Declared, but not as a uniform?
+    for s in stages {
+        if let Some(g) = s.globals.iter().find(|g| !g.is_block() && s.original_name(&g.name) == base) {
+            let what = match g.storage {
+                Storage::In | Storage::Attribute => "an input",
+                Storage::Out => "an output",
+                Storage::Varying => "a varying",
+                Storage::Const => "a `const`",
+                Storage::Buffer => "a buffer variable",
+                _ => "a global variable",
+            };
+            let st = stage_title(s.stage);
+            return d
+                .with_label(s.file, g.name_span.clone(), format!("{what} of the {st} stage, not a uniform"))
+                .with_help(format!("only uniforms take defaults; declare `uniform {} {base};` to make it settable", type_text(s, &g.ty)));
+        }
+    }
+    let names: Vec<&str> = decls
+        .list
+        .iter()
+        .filter(|d| !d.ty.is_sampler())
+        .map(|d| d.name.as_str())
+        .collect();
+    if let Some(c) = did_you_mean(base, &names) {
+        let decl = decls.get(c).expect("a candidate is declared");
+        return d
+            .with_label(decl.file(), decl.span(), format!("`{c}` is declared here"))
+            .with_help(format!("did you mean `{c}`?"));
+    }
+    if names.is_empty() {
+        return d.with_note("no stage declares a uniform that takes a default");
+    }
+    // Where the uniforms are declared, one label per stage.
+    for s in stages {
+        let here: Vec<&Decl> = decls
+            .list
+            .iter()
+            .filter(|d| !d.ty.is_sampler() && std::ptr::eq(d.stage, s))
+            .collect();
+        if let Some(first) = here.first() {
+            let names: Vec<String> = here.iter().map(|d| d.name.clone()).collect();
+            let path = files.try_get(s.file).map_or("", |f| f.path.as_str());
+            d = d.with_label(
+                s.file,
+                first.span(),
+                format!("the {} stage ({path}) declares {}", stage_title(s.stage), list(&names)),
+            );
+        }
+    }
+    d
+}
+
+/// `[textures]` entries against sampler uniforms.
+fn textures(effect: &Effect, decls: &Decls, out: &mut Vec<Diagnostic>) {
+    let samplers = decls.samplers();
+    for t in &effect.textures {
+        let path = texture_path(&t.name);
+        if let Some((_, ty, decl)) = samplers.iter().find(|(p, _, _)| *p == path) {
+            let fits = match t.kind {
+                TextureKind::D2 => matches!(
+                    ty.base.as_str(),
+                    "sampler2D" | "sampler2DShadow" | "isampler2D" | "usampler2D" | "sampler2DRect"
+                ),
+                TextureKind::Cube => matches!(
+                    ty.base.as_str(),
+                    "samplerCube" | "samplerCubeShadow" | "isamplerCube" | "usamplerCube"
+                ),
+            };
+            if !fits {
+                let tt = type_text(decl.stage, ty);
+                out.push(
+                    Diagnostic::error(
+                        E_TEXTURE_KIND,
+                        format!("texture `{}` is a {} texture, but `{path}` is a `{tt}`", t.name, t.kind.name()),
+                    )
+                    .at(effect.file, t.span.clone(), format!("a {} texture", t.kind.name()))
+                    .with_label(decl.file(), decl.span(), format!("declared as `{tt}` here"))
+                    .with_note("effectc textures are `2d` (for `sampler2D`) or `cube` (for `samplerCube`, six faces)")
+                    .with_help(format!("declare `{path}` as `{}`, or change the texture", t.kind.glsl_sampler())),
+                );
+            }
+            continue;
+        }
+        let mut d = Diagnostic::error(
+            E_TEXTURE_UNKNOWN,
+            format!("`[textures]` entry `{}` names no sampler uniform", t.name),
+        )
+        .at(effect.file, t.name_span.clone(), format!("no stage declares a sampler `{path}`"));
+        if let Some(decl) = decls.get(&path) {
+            d = d
+                .with_label(decl.file(), decl.span(), format!("`{path}` is a `{}` uniform", decl.type_text()))
+                .with_note("textures bind to sampler uniforms (`sampler2D`, `samplerCube`)");
+        } else {
+            let names: Vec<&str> = samplers.iter().map(|(p, _, _)| p.as_str()).collect();
+            match did_you_mean(&path, &names) {
+                Some(c) => {
+                    let (_, _, decl) = samplers.iter().find(|(p, _, _)| p == c).expect("a candidate");
+                    d = d
+                        .with_label(decl.file(), decl.span(), format!("`{c}` is declared here"))
+                        .with_help(format!("did you mean `{c}`?"));
+                }
+                None if names.is_empty() => d = d.with_note("no stage declares a sampler uniform"),
+                None => {
+                    let all: Vec<String> = names.iter().map(|n| n.to_string()).collect();
+                    d = d.with_note(format!("the sampler uniforms are {}", list(&all)));
+                }
+            }
+        }
+        out.push(d);
+    }
+}
+
+/// Uniforms without a default, samplers without a texture, uniforms nothing reads.
+fn missing(
+    decls: &Decls,
+    covered: &HashSet<String>,
+    textured: &HashSet<String>,
+    out: &mut Vec<Diagnostic>,
+) {
+    let samplers = decls.samplers();
+    for decl in &decls.list {
+        let shape = decl.shape(decl.ty);
+        if !decl.read {
+            if decl.in_block {
+                continue; // reported per block below
+            }
+            let mut d = Diagnostic::warning(
+                W_UNREAD_UNIFORM,
+                format!("uniform `{}` is declared but never read", decl.name),
+            )
+            .at(decl.file(), decl.span(), "declared here");
+            for (file, span, s) in decl.sites.iter().skip(1) {
+                d = d.with_label(*file, span.clone(), format!("also declared in the {} stage, not read there either", stage_title(s.stage)));
+            }
+            out.push(d.with_help("remove the declaration, or use it"));
+            continue;
+        }
+        match shape {
+            Shape::Sampler => {
+                if !textured.contains(&decl.name) {
+                    out.push(no_texture(decl, &decl.name, decl.ty));
+                }
+            }
+            Shape::Other(_) => {}
+            _ if covered.contains(&decl.name) => {
+                // Struct members with samplers still need textures.
+                for (path, ty, d) in samplers.iter().filter(|(p, _, d)| std::ptr::eq(*d, decl) && *p != decl.name) {
+                    if !textured.contains(path) {
+                        out.push(no_texture(d, path, ty));
+                    }
+                }
+            }
+            Shape::Struct(ref sname) => {
+                let def = decl.stage.struct_def(sname);
+                let members: Vec<String> = def
+                    .map(|def| {
+                        def.members
+                            .iter()
+                            .filter(|m| !m.ty.is_sampler())
+                            .map(|m| format!("{}.{} = {}", decl.name, decl.stage.original_name(&m.name), decl.shape(&m.ty).example()))
+                            .collect()
+                    })
+                    .unwrap_or_default();
+                out.push(
+                    Diagnostic::warning(W_NO_DEFAULT, format!("uniform `{}` has no default in effect.toml", decl.name))
+                        .at(decl.file(), decl.span(), format!("a `{}` read without a default", decl.type_text()))
+                        .with_help(format!("add its members under [uniforms] in effect.toml: {}", list(&members))),
+                );
+                for (path, ty, d) in samplers.iter().filter(|(_, _, d)| std::ptr::eq(*d, decl)) {
+                    if !textured.contains(path) {
+                        out.push(no_texture(d, path, ty));
+                    }
+                }
+            }
+            _ => {
+                let tt = decl.type_text();
+                let mut help = format!("add `{} = {}` under [uniforms] in effect.toml", decl.name, shape.example());
+                if let Some(sem) = semantic_hint(&decl.name, &tt) {
+                    help.push_str(&format!(
+                        " (or `{} = {{ semantic = \"{}\" }}` to have the runtime supply it)",
+                        decl.name,
+                        sem.name()
+                    ));
+                }
+                out.push(
+                    Diagnostic::warning(W_NO_DEFAULT, format!("uniform `{}` has no default in effect.toml", decl.name))
+                        .at(decl.file(), decl.span(), format!("a `{tt}` read without a default"))
+                        .with_help(help),
+                );
+            }
+        }
+    }
+    for (s, i) in &decls.unread_blocks {
+        let Some(b) = &s.globals[*i].block else { continue };
+        let bn = s.original_name(&b.block_name);
+        out.push(
+            Diagnostic::warning(W_UNREAD_UNIFORM, format!("uniform block `{bn}` is declared but never read"))
+                .at(s.file, b.block_name_span.clone(), "no stage reads any of its members")
+                .with_help("remove the block, or use it"),
+        );
+    }
+}
+
+fn no_texture(decl: &Decl, path: &str, ty: &GlslType) -> Diagnostic {
+    let tt = type_text(decl.stage, ty);
+    let example = if tt.contains("Cube") {
+        "{ cube = [\"px.png\", \"nx.png\", \"py.png\", \"ny.png\", \"pz.png\", \"nz.png\"] }"
+    } else {
+        "{ file = \"….png\" }"
+    };
+    Diagnostic::warning(W_NO_TEXTURE, format!("sampler `{path}` has no entry in [textures]"))
+        .at(decl.file(), decl.span(), format!("a `{tt}` read without a texture"))
+        .with_help(format!(
+            "add `{path} = {example}` under [textures] in effect.toml (or `{{ generate = \"checker\" }}`)"
+        ))
+}
+
+/// A semantic the uniform's name and type suggest (`timeVar: float` → `time`).
+fn semantic_hint(name: &str, ty: &str) -> Option<Semantic> {
+    let n: String = name.to_ascii_lowercase().chars().filter(|c| *c != '_').collect();
+    const KEYS: &[(&str, Semantic)] = &[
+        ("modelviewprojection", Semantic::ModelViewProjection),
+        ("mvp", Semantic::ModelViewProjection),
+        ("viewprojection", Semantic::ViewProjection),
+        ("viewproj", Semantic::ViewProjection),
+        ("modelview", Semantic::ModelView),
+        ("normalmatrix", Semantic::NormalMatrix),
+        ("deltatime", Semantic::DeltaTime),
+        ("time", Semantic::Time),
+        ("frame", Semantic::Frame),
+        ("resolution", Semantic::Resolution),
+        ("mouse", Semantic::Mouse),
+        ("camerapos", Semantic::CameraPosition),
+        ("campos", Semantic::CameraPosition),
+        ("eyepos", Semantic::CameraPosition),
+        ("projection", Semantic::Projection),
+        ("model", Semantic::Model),
+        ("view", Semantic::View),
+    ];
+    KEYS.iter()
+        .find(|(k, s)| n.contains(k) && s.glsl_types().contains(&ty))
+        .map(|(_, s)| *s)
+}

@@ -1,0 +1,221 @@
+//! Cross-stage checks by OpenGL link rules, and the manifest ↔ shader uniform checks.
+//!
+//! naga sees one stage at a time and, after our rewrite to 4.50, loses block and instance
+//! names, so everything the GL linker would check between stages runs here on the syntax
+//! facts of [`StageSyntax`]. glslang's `linkValidate` is the reference for what is an
+//! error; the messages try to say *why* two declarations do not link and what to change.
+//!
+//! - [`interface`]: outputs of one stage against inputs of the next (loose varyings by
+//!   name, interface blocks by block name).
+//! - [`blocks`]: member-by-member comparison of two blocks, shared by the interface and
+//!   uniform checks.
+//! - [`names`]: uses of a name that only another stage declares (`vert_out.x` in the
+//!   fragment stage).
+//! - [`uniforms`]: uniforms are program-wide, so declarations of one name must agree.
+//! - [`manifest`] (with [`values`]): `effect.toml` `[uniforms]` / `[textures]` against the
+//!   declarations.
+//!
+//! Names are compared and displayed as the user wrote them ([`StageSyntax::original_name`]):
+//! each stage renames newer keywords on its own, so internal names may differ per stage.
+//!
+//! # Diagnostic codes
+//! | code    | severity | meaning |
+//! |---------|----------|---------|
+//! | `E0201` | error    | an input block has no output block of the same *block* name in the previous stage (paired with the likely intended block when there is one) |
+//! | `E0202` | error    | a loose input the stage reads has no output of that name in the previous stage |
+//! | `E0203` | error    | a use of a name this stage does not declare but another stage does (block instance or block name, varying, uniform), or of a block by its block name |
+//! | `E0204` | error    | one loose uniform name declared with different types in two stages |
+//! | `E0205` | error    | one uniform / buffer block name declared with different members in two stages |
+//! | `E0206` | error    | a struct used by uniforms defined differently in two stages |
+//! | `E0207` | error    | an output and the input of the same name have different types or array sizes |
+//! | `E0208` | error    | interpolation qualifiers (`flat`, `noperspective`, `smooth`) differ (GLSL before 4.30) |
+//! | `E0209` | error    | `centroid` differs (GLSL before 4.30) |
+//! | `E0210` | error    | explicit `layout(location)` values differ |
+//! | `E0211` | error    | interface blocks of the same block name differ (members, order, types, qualifiers, array size, location) |
+//! | `E0212` | error    | a geometry-stage input is not an array |
+//! | `E0220` | error    | a `[uniforms]` entry names no declared uniform |
+//! | `E0221` | error    | a `[uniforms]` default does not fit the declared type |
+//! | `E0222` | error    | a `semantic` provides a type the uniform is not declared with |
+//! | `E0223` | error    | `range` on a uniform that is not a scalar number |
+//! | `E0224` | error    | a `[textures]` entry names no sampler uniform |
+//! | `E0225` | error    | a `[uniforms]` path (`a[2]`, `s.field`) does not fit the declaration |
+//! | `E0226` | error    | a texture's kind (`2d` / `cube`) does not match its sampler's type |
+//! | `W0201` | warning  | an output the next stage never reads (declares no input for) |
+//! | `W0202` | warning  | an input (or input block) with no producer, which the stage never reads |
+//! | `W0203` | warning  | interpolation qualifiers differ (allowed since GLSL 4.30: the later stage's wins) |
+//! | `W0204` | warning  | `centroid` differs (allowed since GLSL 4.30: the later stage's wins) |
+//! | `W0220` | warning  | a uniform some stage reads has no default in `effect.toml` |
+//! | `W0221` | warning  | a uniform (or uniform block) no stage reads |
+//! | `W0222` | warning  | a sampler uniform some stage reads has no `[textures]` entry |
+//! | `W0223` | warning  | a `[uniforms]` default for a uniform no stage reads |
+
+pub mod blocks;
+pub mod interface;
+pub mod manifest;
+pub mod names;
+pub mod uniforms;
+pub mod values;
+
+#[cfg(test)]
+mod tests;
+
+use crate::diag::{Diagnostic, Files};
+use crate::front::syntax::{GlslType, Global, Interp, StageSyntax, Target};
+use crate::stage::StageKind;
+
+pub const E_BLOCK_UNMATCHED: &str = "E0201";
+pub const E_NO_PRODUCER: &str = "E0202";
+pub const E_OTHER_STAGE_NAME: &str = "E0203";
+pub const E_UNIFORM_TYPE: &str = "E0204";
+pub const E_UNIFORM_BLOCK: &str = "E0205";
+pub const E_UNIFORM_STRUCT: &str = "E0206";
+pub const E_VARYING_TYPE: &str = "E0207";
+pub const E_INTERP: &str = "E0208";
+pub const E_CENTROID: &str = "E0209";
+pub const E_LOCATION: &str = "E0210";
+pub const E_BLOCK_MISMATCH: &str = "E0211";
+pub const E_NOT_ARRAYED: &str = "E0212";
+pub const E_MANIFEST_UNKNOWN: &str = "E0220";
+pub const E_MANIFEST_VALUE: &str = "E0221";
+pub const E_MANIFEST_SEMANTIC: &str = "E0222";
+pub const E_MANIFEST_RANGE: &str = "E0223";
+pub const E_TEXTURE_UNKNOWN: &str = "E0224";
+pub const E_MANIFEST_PATH: &str = "E0225";
+pub const E_TEXTURE_KIND: &str = "E0226";
+pub const W_UNREAD_OUTPUT: &str = "W0201";
+pub const W_UNUSED_INPUT: &str = "W0202";
+pub const W_INTERP: &str = "W0203";
+pub const W_CENTROID: &str = "W0204";
+pub const W_NO_DEFAULT: &str = "W0220";
+pub const W_UNREAD_UNIFORM: &str = "W0221";
+pub const W_NO_TEXTURE: &str = "W0222";
+pub const W_DEFAULT_UNREAD: &str = "W0223";
+
+/// Every code this module emits, with a one-line description.
+pub const CODES: &[(&str, &str)] = &[
+    (E_BLOCK_UNMATCHED, "input block has no output block of the same block name"),
+    (E_NO_PRODUCER, "input read by the stage has no matching output"),
+    (E_OTHER_STAGE_NAME, "name declared only in another stage"),
+    (E_UNIFORM_TYPE, "uniform declared with different types in two stages"),
+    (E_UNIFORM_BLOCK, "uniform block declared differently in two stages"),
+    (E_UNIFORM_STRUCT, "struct used by uniforms defined differently in two stages"),
+    (E_VARYING_TYPE, "output and input types differ"),
+    (E_INTERP, "interpolation qualifiers differ"),
+    (E_CENTROID, "centroid qualifiers differ"),
+    (E_LOCATION, "explicit locations differ"),
+    (E_BLOCK_MISMATCH, "interface blocks of the same name differ"),
+    (E_NOT_ARRAYED, "geometry input is not an array"),
+    (E_MANIFEST_UNKNOWN, "manifest uniform is not declared by any stage"),
+    (E_MANIFEST_VALUE, "manifest default does not fit the declared type"),
+    (E_MANIFEST_SEMANTIC, "semantic does not fit the declared type"),
+    (E_MANIFEST_RANGE, "range on a uniform that is not a scalar number"),
+    (E_TEXTURE_UNKNOWN, "texture entry names no sampler uniform"),
+    (E_MANIFEST_PATH, "manifest uniform path does not fit the declaration"),
+    (E_TEXTURE_KIND, "texture kind does not match the sampler type"),
+    (W_UNREAD_OUTPUT, "output never read by the next stage"),
+    (W_UNUSED_INPUT, "unread input with no producer"),
+    (W_INTERP, "interpolation qualifiers differ (allowed since GLSL 4.30)"),
+    (W_CENTROID, "centroid qualifiers differ (allowed since GLSL 4.30)"),
+    (W_NO_DEFAULT, "uniform has no default in effect.toml"),
+    (W_UNREAD_UNIFORM, "uniform declared but never read"),
+    (W_NO_TEXTURE, "sampler has no [textures] entry"),
+    (W_DEFAULT_UNREAD, "manifest default for a uniform no stage reads"),
+];
+
+/// OpenGL link rules between consecutive stages of one program, plus the program-wide
+/// uniform rules. `stages` are in pipeline order (vertex → [tess] → [geometry] →
+/// fragment); compute stages are checked on their own (uniforms only).
+pub fn check_interface(stages: &[StageSyntax]) -> Vec<Diagnostic> {
+    let graphics: Vec<&StageSyntax> = stages
+        .iter()
+        .filter(|s| s.stage != StageKind::Compute)
+        .collect();
+    let mut out = Vec::new();
+    for pair in graphics.windows(2) {
+        interface::check_pair(pair[0], pair[1], &mut out);
+    }
+    names::check(&graphics, &mut out);
+    uniforms::check(&graphics, &mut out);
+    out
+}
+
+/// `effect.toml` against the stages' declarations: every `[uniforms]` default names a
+/// declared uniform and fits its type, every read uniform has a default, every sampler a
+/// texture.
+pub fn check_manifest(
+    effect: &crate::manifest::Effect,
+    stages: &[StageSyntax],
+    files: &Files,
+) -> Vec<Diagnostic> {
+    manifest::check(effect, stages, files)
+}
+
+/// How the user calls a stage in prose.
+pub(crate) fn stage_title(kind: StageKind) -> &'static str {
+    match kind {
+        StageKind::Vertex => "vertex",
+        StageKind::TessControl => "tessellation control",
+        StageKind::TessEval => "tessellation evaluation",
+        StageKind::Geometry => "geometry",
+        StageKind::Fragment => "fragment",
+        StageKind::Compute => "compute",
+    }
+}
+
+/// Built-in variables and blocks (`gl_Position`, `gl_PerVertex`, `gl_in`).
+pub(crate) fn is_builtin(s: &StageSyntax, g: &Global) -> bool {
+    s.original_name(&g.name).starts_with("gl_")
+        || g.block
+            .as_ref()
+            .is_some_and(|b| s.original_name(&b.block_name).starts_with("gl_"))
+}
+
+/// A global's type as the user wrote it (struct names through the renames).
+pub(crate) fn type_text(s: &StageSyntax, ty: &GlslType) -> String {
+    GlslType {
+        base: s.original_name(&ty.base).to_string(),
+        dims: ty.dims.clone(),
+    }
+    .to_string()
+}
+
+/// Types of two stages' declarations equal (base names compared as written).
+pub(crate) fn same_type(a: &StageSyntax, at: &GlslType, b: &StageSyntax, bt: &GlslType) -> bool {
+    a.original_name(&at.base) == b.original_name(&bt.base) && at.dims == bt.dims
+}
+
+/// The qualifier as written in GLSL.
+pub(crate) fn interp_text(i: Interp) -> &'static str {
+    match i {
+        Interp::Smooth => "smooth",
+        Interp::Flat => "flat",
+        Interp::NoPerspective => "noperspective",
+    }
+}
+
+/// Some use in the stage refers to global `index` (for a block: any member or the instance).
+pub(crate) fn is_read(s: &StageSyntax, index: usize) -> bool {
+    s.uses.iter().any(|u| u.target == Target::Global(index))
+}
+
+/// Some use reads member `member` of the anonymous block `index` (by its bare name).
+pub(crate) fn member_read(s: &StageSyntax, index: usize, member: &str) -> bool {
+    s.uses
+        .iter()
+        .any(|u| u.target == Target::Global(index) && u.name == member)
+}
+
+/// `a`, `b` and `c` — names in backticks joined for prose; long lists are cut.
+pub(crate) fn list(names: &[String]) -> String {
+    const MAX: usize = 8;
+    let quoted: Vec<String> = names.iter().take(MAX).map(|n| format!("`{n}`")).collect();
+    let mut text = match quoted.len() {
+        0 => String::new(),
+        1 => quoted[0].clone(),
+        n => format!("{} and {}", quoted[..n - 1].join(", "), quoted[n - 1]),
+    };
+    if names.len() > MAX {
+        text = format!("{}, … ({} in all)", quoted.join(", "), names.len());
+    }
+    text
+}
