@@ -54,12 +54,16 @@ struct Ctx<'a> {
     diags: Vec<Diagnostic>,
     header: String,
     need_mat2_helper: bool,
+    /// Statements run first in `main` (matrix inputs assembled from columns).
+    prologue: String,
+    /// Statements run before `main` returns (matrix outputs split into columns).
+    epilogue: String,
 }
 
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
 /// constructs go to the returned diagnostics.
 pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Diagnostic>) {
-    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), header: String::new(), need_mat2_helper: false };
+    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), header: String::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new() };
     c.version();
     c.declarations();
     c.uses();
@@ -67,6 +71,7 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
     c.calls();
     c.struct_samplers();
     c.insert_header();
+    c.insert_main_hooks();
     let Ctx { edits, mut diags, .. } = c;
     let (text, map, dropped) = edits.apply(&s.text);
     for e in dropped {
@@ -175,6 +180,15 @@ impl Ctx<'_> {
                     } else {
                         None
                     };
+                    if idxs.len() == 1 && first.block.is_none() && !first.ty.is_array() && matrix_shape(&first.ty.base).is_some() {
+                        let loc = match (first.location, kind) {
+                            (Some(l), _) => l,
+                            (None, Some(alloc)) => alloc.next(location_slots(&first.ty, s)),
+                            (None, None) => self.plan.varyings.get(&first.name).copied().unwrap_or(0),
+                        };
+                        self.split_matrix(first, loc);
+                        continue;
+                    }
                     if idxs.len() == 1 {
                         if first.location.is_some() {
                             continue;
@@ -207,6 +221,42 @@ impl Ctx<'_> {
                 }
                 _ => {}
             }
+        }
+    }
+
+    /// A matrix input/output becomes one vector per column plus a private matrix.
+    fn split_matrix(&mut self, g: &crate::front::syntax::Global, loc: u32) {
+        let (cols, rows) = matrix_shape(&g.ty.base).expect("matrix");
+        let dir = storage_word(self.s.stage, g.storage);
+        let interp = g.interp.map(|i| format!("{} ", interp_word(i))).unwrap_or_default();
+        let mut text = String::new();
+        let names: Vec<String> = (0..cols).map(|c| format!("{}_effectc_col{c}", g.name)).collect();
+        for (c, n) in names.iter().enumerate() {
+            let _ = write!(text, "layout(location = {}) {interp}{dir} vec{rows} {n}; ", loc + c as u32);
+        }
+        let _ = write!(text, "{} {};", g.ty.base, g.name);
+        self.edits.replace(g.decl_span.clone(), text);
+        if dir == "in" {
+            let _ = write!(self.prologue, " {} = {}({});", g.name, g.ty.base, names.join(", "));
+        } else {
+            for (c, n) in names.iter().enumerate() {
+                let _ = write!(self.epilogue, " {n} = {}[{c}];", g.name);
+            }
+        }
+    }
+
+    fn insert_main_hooks(&mut self) {
+        let Some(body) = self.s.main_body.clone() else { return };
+        if !self.prologue.is_empty() {
+            self.edits.insert(body.start + 1, self.prologue.clone());
+        }
+        if !self.epilogue.is_empty() {
+            for r in &self.s.main_returns {
+                self.edits.insert(r.start, format!("{{{} ", self.epilogue));
+                self.edits.insert(r.end, " }");
+            }
+            let close = self.s.text[..body.end].rfind('}').unwrap_or(body.end);
+            self.edits.insert(close, format!("{}\n", self.epilogue));
         }
     }
 
@@ -265,7 +315,7 @@ impl Ctx<'_> {
                             let text = if u.user_call_arg {
                                 format!("{}, {}", t.name, t.sampler_name)
                             } else {
-                                format!("{}({}, {})", t.user_ty, t.name, t.sampler_name)
+                                format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name)
                             };
                             self.edits.replace(dot_span.clone(), text);
                             continue;
@@ -281,7 +331,7 @@ impl Ctx<'_> {
                     let text = if u.user_call_arg {
                         format!("{name}, {name}_sampler")
                     } else {
-                        format!("{}({name}, {name}_sampler)", p.ty.base)
+                        format!("{}({name}, {name}_sampler)", combined_ctor(&p.ty.base))
                     };
                     self.edits.replace(u.span.clone(), text);
                 }
@@ -303,7 +353,7 @@ impl Ctx<'_> {
         let text = if u.user_call_arg {
             format!("{}, {}", t.name, t.sampler_name)
         } else {
-            format!("{}({}, {})", t.user_ty, t.name, t.sampler_name)
+            format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name)
         };
         self.edits.replace(span, text);
     }
@@ -377,6 +427,7 @@ impl Ctx<'_> {
             ("gl_VertexID", StageKind::Vertex) => self.edits.replace(u.span.clone(), "gl_VertexIndex"),
             ("gl_InstanceID", StageKind::Vertex) => self.edits.replace(u.span.clone(), "gl_InstanceIndex"),
             ("gl_PointSize", _) => self.edits.replace(u.span.clone(), "effectc_PointSize"),
+            ("gl_ClipDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
             _ => {}
         }
     }
@@ -515,7 +566,12 @@ impl Ctx<'_> {
             }
         }
         if unresolved("gl_PointSize") {
+            // WebGPU draws points one pixel wide: the size is computed but not used.
             h.push_str("float effectc_PointSize;\n");
+        }
+        if s.stage == StageKind::Vertex && unresolved("gl_ClipDistance") {
+            // User clip planes need a WebGPU feature; the distances are computed, not used.
+            h.push_str("float effectc_ClipDistance[8];\n");
         }
         if self.need_mat2_helper {
             h.push_str("mat2 effectc_mat2(vec4 v) { return mat2(v.xy, v.zw); }\n");
@@ -549,6 +605,25 @@ impl Ctx<'_> {
 
     fn plan_struct_defs(&self) -> &BTreeMap<String, String> {
         &self.plan.struct_texts
+    }
+}
+
+/// (columns, rows) of a matrix type name.
+fn matrix_shape(base: &str) -> Option<(u32, u32)> {
+    let rest = base.strip_prefix("mat")?;
+    let d = |c: u8| (b'2'..=b'4').contains(&c).then(|| u32::from(c - b'0'));
+    match rest.as_bytes() {
+        [n] => d(*n).map(|n| (n, n)),
+        [c, b'x', r] => Some((d(*c)?, d(*r)?)),
+        _ => None,
+    }
+}
+
+/// The combined-sampler constructor naga knows for a user's sampler type.
+fn combined_ctor(user_ty: &str) -> &str {
+    match user_ty {
+        "sampler2DRect" => "sampler2D",
+        other => other,
     }
 }
 

@@ -246,6 +246,10 @@ pub struct StageSyntax {
     /// Names of integer constants (`const int N = 4;`) with their values.
     pub int_consts: HashMap<String, i64>,
     pub has_main: bool,
+    /// Span of `main`'s body `{ … }`.
+    pub main_body: Option<Range<usize>>,
+    /// `return` statements inside `main`.
+    pub main_returns: Vec<Range<usize>>,
 }
 
 impl StageSyntax {
@@ -274,7 +278,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
-    let (text, renames) = version::rename_new_keywords(original, &version);
+    let (text, renames) = version::rename_new_keywords(&version::blank_extensions(original), &version);
     let opts = glsl_lang::parse::ParseOptions {
         default_version: 110,
         ..Default::default()
@@ -314,6 +318,8 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         first_function: None,
         int_consts: HashMap::new(),
         has_main: false,
+        main_body: None,
+        main_returns: Vec::new(),
     };
     Collector::run(&mut syntax, &tu);
     Ok(syntax)
@@ -387,6 +393,7 @@ impl<'a> Collector<'a> {
                 let name = def.prototype.name.0.to_string();
                 if name == "main" {
                     self.s.has_main = true;
+                    self.s.main_body = Some(span_of(&def.statement));
                 }
                 self.current_function = Some((name, idx));
                 let mut scope = HashMap::new();
@@ -785,6 +792,11 @@ impl<'a> Collector<'a> {
                 self.scopes.pop();
             }
             ast::StatementData::Jump(j) => {
+                if matches!(j.content, ast::JumpStatementData::Return(_))
+                    && self.current_function.as_ref().is_some_and(|(n, _)| n == "main")
+                {
+                    self.s.main_returns.push(span_of(st));
+                }
                 if let ast::JumpStatementData::Return(Some(e)) = &j.content {
                     self.expr(e);
                 }

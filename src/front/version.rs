@@ -196,6 +196,27 @@ impl Renames {
     }
 }
 
+/// Blanks `#extension` lines (keeping offsets): glsl-lang stops at extensions it does not
+/// know (`GL_EXT_geometry_shader4`), and naga ignores them anyway.
+pub fn blank_extensions(text: &str) -> String {
+    let clean = blank_comments(text);
+    let mut out = text.as_bytes().to_vec();
+    let mut start = 0;
+    for line in clean.split_inclusive(|b| *b == b'\n') {
+        let s = String::from_utf8_lossy(line);
+        let t = s.trim_start();
+        if t.starts_with('#') && t[1..].trim_start().starts_with("extension") {
+            for b in &mut out[start..start + line.len()] {
+                if *b != b'\n' && *b != b'\r' {
+                    *b = b' ';
+                }
+            }
+        }
+        start += line.len();
+    }
+    String::from_utf8(out).unwrap_or_else(|_| text.to_string())
+}
+
 /// Renames identifiers that are keywords in 4.50 but not in `version`, keeping lengths.
 pub fn rename_new_keywords(text: &str, version: &Version) -> (String, Renames) {
     let v = version.desktop_equivalent();
