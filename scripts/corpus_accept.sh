@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Acceptance on a corpus of real-world programs, side by side with glslangValidator.
+# A corpus is a directory of program directories, each holding .vert/.frag(/.geom) files.
+# For each program: does glslangValidator link it (-l), does effectc check it without
+# errors? Prints the programs where the two disagree and the totals.
+#
+# Usage: scripts/corpus_accept.sh CORPUS_DIR
+set -uo pipefail
+cd "$(dirname "$0")/.."
+corpus=${1:?usage: scripts/corpus_accept.sh CORPUS_DIR}
+bin=target/release/effectc
+[ -x "$bin" ] || cargo build --release
+both=0; only_glslang=0; only_effectc=0; neither=0
+for d in "$corpus"/*/; do
+    files=$(ls "$d" | grep -E '\.(vert|frag|geom)$' | sed "s|^|$d|")
+    [ -n "$files" ] || continue
+    glslangValidator -l $files >/dev/null 2>&1; g=$?
+    "$bin" check --color never $files > /tmp/effectc-corpus.out 2>&1; e=$?
+    if [ $g -eq 0 ] && [ $e -eq 0 ]; then both=$((both + 1))
+    elif [ $g -eq 0 ]; then only_glslang=$((only_glslang + 1)); echo "glslang only: $d  $(grep -m1 -E '^error' /tmp/effectc-corpus.out)"
+    elif [ $e -eq 0 ]; then only_effectc=$((only_effectc + 1)); echo "effectc only: $d"
+    else neither=$((neither + 1)); fi
+done
+total=$((both + only_glslang))
+echo "glslang accepts $total; effectc accepts $both of those ($(( total ? 100 * both / total : 0 ))%); effectc-only $only_effectc; both reject $neither"

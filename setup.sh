@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs what effectc needs on a fresh Debian machine, then builds it (release).
+# System packages: glslang-tools and spirv-tools (peer tools for the benchmark and corpus
+# scripts), mesa-vulkan-drivers + libvulkan1 (lavapipe, the CPU Vulkan used for rendering).
+set -euo pipefail
+cd "$(dirname "$0")"
+SUDO=""
+if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+if command -v apt-get >/dev/null; then
+    missing=""
+    for pkg in glslang-tools spirv-tools mesa-vulkan-drivers libvulkan1; do
+        dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
+    done
+    if [ -n "$missing" ]; then
+        $SUDO apt-get update -qq
+        DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing
+    fi
+fi
+command -v cargo >/dev/null || { echo "setup.sh: cargo not found; install Rust (rustup) first" >&2; exit 2; }
+cargo build --release
