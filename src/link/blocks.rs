@@ -64,9 +64,10 @@ pub struct MemberDiff {
 /// Same member names and types in the same order (qualifiers not compared).
 pub fn same_members(a: Side, b: Side) -> bool {
     a.members.len() == b.members.len()
-        && a.members.iter().zip(b.members).all(|(ma, mb)| {
-            a.name(ma) == b.name(mb) && same_type(a.stage, &ma.ty, b.stage, &mb.ty)
-        })
+        && a.members
+            .iter()
+            .zip(b.members)
+            .all(|(ma, mb)| a.name(ma) == b.name(mb) && same_type(a.stage, &ma.ty, b.stage, &mb.ty))
 }
 
 /// Number of member names the two sides share.
@@ -129,8 +130,8 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
                     common_a.join(", "),
                     common_b.join(", ")
                 ),
-                a: ma.map(|m| (m.span.clone(), format!("{}{} member here", pos + 1, ordinal(pos + 1)))),
-                b: mb.map(|m| (m.span.clone(), format!("{}{} member here", pos + 1, ordinal(pos + 1)))),
+                a: ma.map(|m| (m.span.clone(), comes(common_a[pos], pos))),
+                b: mb.map(|m| (m.span.clone(), comes(common_b[pos], pos))),
             });
         }
     }
@@ -141,7 +142,9 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
             let (ta, tb) = (type_text(a.stage, &ma.ty), type_text(b.stage, &mb.ty));
             out.push(MemberDiff {
                 qualifier: false,
-                note: format!("member `{name}` is `{ta}` in the {at} stage but `{tb}` in the {bt} stage"),
+                note: format!(
+                    "member `{name}` is `{ta}` in the {at} stage but `{tb}` in the {bt} stage"
+                ),
                 a: Some((ma.span.clone(), format!("`{ta}` here"))),
                 b: Some((mb.span.clone(), format!("`{tb}` here"))),
             });
@@ -178,6 +181,11 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
         }
     }
     out
+}
+
+/// "`b` comes 1st here" for the member at 0-based position `pos`.
+fn comes(name: &str, pos: usize) -> String {
+    format!("`{name}` comes {}{} here", pos + 1, ordinal(pos + 1))
 }
 
 fn ordinal(n: usize) -> &'static str {

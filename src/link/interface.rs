@@ -21,7 +21,7 @@ use super::{
     E_NO_PRODUCER, E_VARYING_TYPE, W_CENTROID, W_INTERP, W_UNREAD_OUTPUT, W_UNUSED_INPUT,
 };
 use crate::diag::Diagnostic;
-use crate::front::syntax::{GlslType, Global, Interp, StageSyntax, Storage};
+use crate::front::syntax::{Global, GlslType, Interp, StageSyntax, Storage};
 use crate::manifest::did_you_mean;
 use crate::stage::StageKind;
 
@@ -177,9 +177,15 @@ impl Pair<'_> {
             let bn = b.original_name(&blk.block_name);
             let (span, label) = match &blk.instance_span {
                 Some(s) => (s.clone(), "instance declared without `[]`"),
-                None => (blk.block_name_span.clone(), "block declared without an instance array"),
+                None => (
+                    blk.block_name_span.clone(),
+                    "block declared without an instance array",
+                ),
             };
-            let inst = blk.instance.as_deref().map_or("gs_in", |n| b.original_name(n));
+            let inst = blk
+                .instance
+                .as_deref()
+                .map_or("gs_in", |n| b.original_name(n));
             self.out.push(
                 Diagnostic::error(
                     E_NOT_ARRAYED,
@@ -239,7 +245,10 @@ impl Pair<'_> {
         // A member of an output block with that name?
         let member = self.outs.blocks.iter().find_map(|&ai| {
             let blk = a.globals[ai].block.as_ref()?;
-            let m = blk.members.iter().find(|m| a.original_name(&m.name) == name)?;
+            let m = blk
+                .members
+                .iter()
+                .find(|m| a.original_name(&m.name) == name)?;
             Some((ai, a.original_name(&blk.block_name), m))
         });
         if let Some((ai, block, m)) = member {
@@ -259,7 +268,12 @@ impl Pair<'_> {
                 .collect();
             match did_you_mean(name, &candidates) {
                 Some(c) => {
-                    let ai = self.outs.loose.iter().copied().find(|&ai| a.original_name(&a.globals[ai].name) == c);
+                    let ai = self
+                        .outs
+                        .loose
+                        .iter()
+                        .copied()
+                        .find(|&ai| a.original_name(&a.globals[ai].name) == c);
                     if let Some(ai) = ai {
                         self.consumed.insert(ai);
                         d = d.with_label(
@@ -268,7 +282,9 @@ impl Pair<'_> {
                             format!("the {at} stage writes `{c}`"),
                         );
                     }
-                    d = d.with_help(format!("did you mean `{c}`? rename one of the two so the names agree"));
+                    d = d.with_help(format!(
+                        "did you mean `{c}`? rename one of the two so the names agree"
+                    ));
                 }
                 None => {
                     let outs: Vec<String> = self
@@ -285,17 +301,22 @@ impl Pair<'_> {
                     if read {
                         d = d.with_help(format!(
                             "declare `out {} {name};` in the {at} stage and write it there",
-                            type_text(b, &GlslType {
-                                base: g.ty.base.clone(),
-                                dims: per_vertex(&g.ty.dims, arrayed_inputs(b.stage)),
-                            })
+                            type_text(
+                                b,
+                                &GlslType {
+                                    base: g.ty.base.clone(),
+                                    dims: per_vertex(&g.ty.dims, arrayed_inputs(b.stage)),
+                                }
+                            )
                         ));
                     }
                 }
             }
         }
         if !read {
-            d = d.with_note("GL only rejects an unmatched input the stage reads; this one is dead code");
+            d = d.with_note(
+                "GL only rejects an unmatched input the stage reads; this one is dead code",
+            );
         }
         self.out.push(d);
     }
@@ -321,14 +342,28 @@ impl Pair<'_> {
                 want_dims.push(gb.ty.dims[0]);
             }
             want_dims.extend(ta.dims.iter().copied());
-            let want = format!("in {} {name}{}", a.original_name(&ta.base), dims_text(&want_dims));
+            let want = format!(
+                "in {} {name}{}",
+                a.original_name(&ta.base),
+                dims_text(&want_dims)
+            );
             let mut d = Diagnostic::error(
                 E_VARYING_TYPE,
                 format!("`{name}` is `{sa}` in the {at} stage but `{sb}` in the {bt} stage"),
             )
-            .at(b.file, gb.name_span.clone(), format!("{bt} input declared as `{sb}`"))
-            .with_label(a.file, ga.name_span.clone(), format!("{at} output declared as `{sa}`"))
-            .with_note("an output and the input of the same name must have the same type and array size");
+            .at(
+                b.file,
+                gb.name_span.clone(),
+                format!("{bt} input declared as `{sb}`"),
+            )
+            .with_label(
+                a.file,
+                ga.name_span.clone(),
+                format!("{at} output declared as `{sa}`"),
+            )
+            .with_note(
+                "an output and the input of the same name must have the same type and array size",
+            );
             if b_arrayed {
                 d = d.with_note(format!(
                     "{bt} inputs are arrays with one element per vertex: `in {} {name}[]` matches `out {} {name}`",
@@ -336,10 +371,14 @@ impl Pair<'_> {
                     type_text(a, &ta)
                 ));
             }
-            self.out.push(d.with_help(format!("declare the {bt} input as `{want};`")));
+            self.out
+                .push(d.with_help(format!("declare the {bt} input as `{want};`")));
         }
         let relaxed = qualifiers_relaxed(a, b);
-        let (ia, ib) = (ga.interp.unwrap_or(Interp::Smooth), gb.interp.unwrap_or(Interp::Smooth));
+        let (ia, ib) = (
+            ga.interp.unwrap_or(Interp::Smooth),
+            gb.interp.unwrap_or(Interp::Smooth),
+        );
         if ia != ib {
             let shown = |g: &Global, i: Interp| match g.interp {
                 Some(_) => format!("`{}`", interp_text(i)),
@@ -362,9 +401,17 @@ impl Pair<'_> {
                 )
             };
             self.out.push(
-                d.at(b.file, gb.name_span.clone(), format!("{} here", shown(gb, ib)))
-                    .with_label(a.file, ga.name_span.clone(), format!("{} here", shown(ga, ia)))
-                    .with_help("write the same interpolation qualifier in both stages"),
+                d.at(
+                    b.file,
+                    gb.name_span.clone(),
+                    format!("{} here", shown(gb, ib)),
+                )
+                .with_label(
+                    a.file,
+                    ga.name_span.clone(),
+                    format!("{} here", shown(ga, ia)),
+                )
+                .with_help("write the same interpolation qualifier in both stages"),
             );
         }
         if ga.centroid != gb.centroid {
@@ -379,9 +426,8 @@ impl Pair<'_> {
                     "since GLSL 4.30 auxiliary qualifiers may differ and the {bt} stage's declaration is used"
                 ))
             } else {
-                Diagnostic::error(E_CENTROID, message).with_note(
-                    "before GLSL 4.30 an output and its input must agree on `centroid`",
-                )
+                Diagnostic::error(E_CENTROID, message)
+                    .with_note("before GLSL 4.30 an output and its input must agree on `centroid`")
             };
             self.out.push(
                 d.at(b.file, gb.name_span.clone(), word(gb.centroid))
@@ -391,8 +437,14 @@ impl Pair<'_> {
         }
         if let (Some(la), Some(lb)) = (ga.location, gb.location) {
             if la != lb {
-                let span_a = ga.layout_span.clone().unwrap_or_else(|| ga.name_span.clone());
-                let span_b = gb.layout_span.clone().unwrap_or_else(|| gb.name_span.clone());
+                let span_a = ga
+                    .layout_span
+                    .clone()
+                    .unwrap_or_else(|| ga.name_span.clone());
+                let span_b = gb
+                    .layout_span
+                    .clone()
+                    .unwrap_or_else(|| gb.name_span.clone());
                 self.out.push(
                     Diagnostic::error(
                         E_LOCATION,
@@ -420,7 +472,13 @@ impl Pair<'_> {
         let mut matched_a = HashSet::new();
         for bi in self.ins.blocks.clone() {
             let name = block_name(b, bi);
-            match self.outs.blocks.iter().copied().find(|&ai| block_name(a, ai) == name) {
+            match self
+                .outs
+                .blocks
+                .iter()
+                .copied()
+                .find(|&ai| block_name(a, ai) == name)
+            {
                 Some(ai) => {
                     matched_a.insert(ai);
                     self.consumed.insert(ai);
@@ -492,16 +550,24 @@ impl Pair<'_> {
         let Some(blk) = &g.block else { return };
         let bname = b.original_name(&blk.block_name);
         let read = is_read(b, bi);
-        let message = format!("{bt} input block `{bname}` has no matching output block in the {at} stage");
+        let message =
+            format!("{bt} input block `{bname}` has no matching output block in the {at} stage");
         let mut d = if read {
             Diagnostic::error(E_BLOCK_UNMATCHED, message)
         } else {
             Diagnostic::warning(W_UNUSED_INPUT, format!("{message} (it is never read)"))
         }
-        .at(b.file, blk.block_name_span.clone(), format!("no {at} output block is named `{bname}`"));
+        .at(
+            b.file,
+            blk.block_name_span.clone(),
+            format!("no {at} output block is named `{bname}`"),
+        );
         if let Some(ai) = pair {
             self.consumed.insert(ai);
-            let ablk = a.globals[ai].block.as_ref().expect("output blocks are blocks");
+            let ablk = a.globals[ai]
+                .block
+                .as_ref()
+                .expect("output blocks are blocks");
             let aname = a.original_name(&ablk.block_name);
             d = d
                 .with_label(
@@ -514,7 +580,9 @@ impl Pair<'_> {
                 ));
             let (sa, sb) = (Self::side(a, ai), Self::side(b, bi));
             if blocks::same_members(sa, sb) {
-                d = d.with_help(format!("rename `in {bname}` to `in {aname}` (the members match)"));
+                d = d.with_help(format!(
+                    "rename `in {bname}` to `in {aname}` (the members match)"
+                ));
             } else {
                 for diff in blocks::diff(sa, sb, !qualifiers_relaxed(a, b)) {
                     d = self.add_diff(d, diff);
@@ -531,10 +599,15 @@ impl Pair<'_> {
                 .loose
                 .iter()
                 .copied()
-                .filter(|&ai| blk.members.iter().any(|m| b.original_name(&m.name) == self.aname(ai)))
+                .filter(|&ai| {
+                    blk.members
+                        .iter()
+                        .any(|m| b.original_name(&m.name) == self.aname(ai))
+                })
                 .collect();
             if !loose.is_empty() {
-                let names: Vec<String> = loose.iter().map(|&ai| self.aname(ai).to_string()).collect();
+                let names: Vec<String> =
+                    loose.iter().map(|&ai| self.aname(ai).to_string()).collect();
                 for &ai in &loose {
                     self.consumed.insert(ai);
                     d = d.with_label(
@@ -556,7 +629,10 @@ impl Pair<'_> {
                     .map(|ob| a.original_name(&ob.block_name).to_string())
                     .collect();
                 if !others.is_empty() {
-                    d = d.with_note(format!("the {at} stage's output blocks are {}", list(&others)));
+                    d = d.with_note(format!(
+                        "the {at} stage's output blocks are {}",
+                        list(&others)
+                    ));
                 }
                 d = d.with_help(format!(
                     "declare `out {bname} {{ … }}` with the same members in the {at} stage"
@@ -564,7 +640,9 @@ impl Pair<'_> {
             }
         }
         if !read {
-            d = d.with_note("GL only rejects an unmatched input the stage reads; this one is dead code");
+            d = d.with_note(
+                "GL only rejects an unmatched input the stage reads; this one is dead code",
+            );
         }
         self.out.push(d);
     }
@@ -583,14 +661,19 @@ impl Pair<'_> {
     fn compare_blocks(&mut self, ai: usize, bi: usize) {
         let (a, b, at, bt) = (self.a, self.b, self.at, self.bt);
         let (ga, gb) = (&a.globals[ai], &b.globals[bi]);
-        let (Some(ba), Some(bb)) = (&ga.block, &gb.block) else { return };
+        let (Some(ba), Some(bb)) = (&ga.block, &gb.block) else {
+            return;
+        };
         let name = b.original_name(&bb.block_name);
         let relaxed = qualifiers_relaxed(a, b);
         let all = blocks::diff(Self::side(a, ai), Self::side(b, bi), true);
         let (mut errors, warnings): (Vec<MemberDiff>, Vec<MemberDiff>) =
             all.into_iter().partition(|d| !(relaxed && d.qualifier));
         let da = per_vertex(&ba.instance_dims, arrayed_outputs(a.stage));
-        let db = per_vertex(&bb.instance_dims, arrayed_inputs(b.stage) && !bb.instance_dims.is_empty());
+        let db = per_vertex(
+            &bb.instance_dims,
+            arrayed_inputs(b.stage) && !bb.instance_dims.is_empty(),
+        );
         if da != db {
             let shown = |d: &[Option<u32>]| {
                 if d.is_empty() {
@@ -621,8 +704,16 @@ impl Pair<'_> {
             }
         }
         let head = |d: Diagnostic| {
-            d.at(b.file, bb.block_name_span.clone(), format!("{bt} input block"))
-                .with_label(a.file, ba.block_name_span.clone(), format!("{at} output block"))
+            d.at(
+                b.file,
+                bb.block_name_span.clone(),
+                format!("{bt} input block"),
+            )
+            .with_label(
+                a.file,
+                ba.block_name_span.clone(),
+                format!("{at} output block"),
+            )
         };
         if !errors.is_empty() {
             let mut d = head(Diagnostic::error(
@@ -640,7 +731,9 @@ impl Pair<'_> {
         if !warnings.is_empty() {
             let mut d = head(Diagnostic::warning(
                 W_INTERP,
-                format!("interface block `{name}` has different qualifiers in the {at} and {bt} stages"),
+                format!(
+                    "interface block `{name}` has different qualifiers in the {at} and {bt} stages"
+                ),
             ));
             for diff in warnings {
                 d = self.add_diff(d, diff);
@@ -667,7 +760,10 @@ impl Pair<'_> {
             .at(a.file, g.name_span.clone(), "written here, read nowhere");
             let member = self.ins.blocks.iter().find_map(|&bi| {
                 let blk = b.globals[bi].block.as_ref()?;
-                let m = blk.members.iter().find(|m| b.original_name(&m.name) == name)?;
+                let m = blk
+                    .members
+                    .iter()
+                    .find(|m| b.original_name(&m.name) == name)?;
                 Some((b.original_name(&blk.block_name), m))
             });
             match member {
@@ -689,7 +785,9 @@ impl Pair<'_> {
             if self.consumed.contains(&ai) {
                 continue;
             }
-            let Some(blk) = &a.globals[ai].block else { continue };
+            let Some(blk) = &a.globals[ai].block else {
+                continue;
+            };
             let name = a.original_name(&blk.block_name);
             self.out.push(
                 Diagnostic::warning(

@@ -11,7 +11,7 @@ use std::collections::HashSet;
 use std::ops::Range;
 
 use super::values::Shape;
-use super::{is_read, list, member_read, stage_title, type_text};
+use super::{is_opaque, is_read, is_sampler_like, list, member_read, stage_title, type_text};
 use super::{
     E_MANIFEST_PATH, E_MANIFEST_RANGE, E_MANIFEST_SEMANTIC, E_MANIFEST_UNKNOWN, E_MANIFEST_VALUE,
     E_TEXTURE_KIND, E_TEXTURE_UNKNOWN, W_DEFAULT_UNREAD, W_NO_DEFAULT, W_NO_TEXTURE,
@@ -79,7 +79,14 @@ impl<'a> Decls<'a> {
                     continue;
                 }
                 match &g.block {
-                    None => d.add(s, s.original_name(&g.name), &g.ty, g.name_span.clone(), is_read(s, i), false),
+                    None => d.add(
+                        s,
+                        s.original_name(&g.name),
+                        &g.ty,
+                        g.name_span.clone(),
+                        is_read(s, i),
+                        false,
+                    ),
                     Some(b) => {
                         let bn = s.original_name(&b.block_name).to_string();
                         if is_read(s, i) {
@@ -92,7 +99,14 @@ impl<'a> Decls<'a> {
                         }
                         for m in &b.members {
                             let read = member_read(s, i, &m.name);
-                            d.add(s, s.original_name(&m.name), &m.ty, m.span.clone(), read, true);
+                            d.add(
+                                s,
+                                s.original_name(&m.name),
+                                &m.ty,
+                                m.span.clone(),
+                                read,
+                                true,
+                            );
                         }
                     }
                 }
@@ -145,7 +159,7 @@ impl<'a> Decls<'a> {
             depth: usize,
             out: &mut Vec<(String, GlslType, &'d Decl<'a>)>,
         ) {
-            if ty.is_sampler() || ty.base.contains("sampler") {
+            if is_sampler_like(ty) {
                 out.push((path, ty.clone(), decl));
             } else if let Some(def) = decl.stage.struct_def(&ty.base) {
                 if depth < 4 {
@@ -175,7 +189,9 @@ enum Step {
 fn parse_path(s: &str) -> Option<(String, Vec<Step>)> {
     let ident = |s: &str| -> usize {
         s.char_indices()
-            .take_while(|&(i, c)| c == '_' || c.is_ascii_alphabetic() || (i > 0 && c.is_ascii_digit()))
+            .take_while(|&(i, c)| {
+                c == '_' || c.is_ascii_alphabetic() || (i > 0 && c.is_ascii_digit())
+            })
             .count()
     };
     let n = ident(s);
@@ -231,7 +247,11 @@ pub fn check(effect: &Effect, stages: &[StageSyntax], files: &Files) -> Vec<Diag
         default(effect, u, &decls, stages, files, &mut out);
     }
     textures(effect, &decls, &mut out);
-    let textured: HashSet<String> = effect.textures.iter().map(|t| texture_path(&t.name)).collect();
+    let textured: HashSet<String> = effect
+        .textures
+        .iter()
+        .map(|t| texture_path(&t.name))
+        .collect();
     missing(&decls, &covered, &textured, &mut out);
     out
 }
@@ -261,16 +281,31 @@ fn default(
                     out.push(
                         Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` is not an array"))
                             .at(mf, u.name_span.clone(), format!("indexes `{shown}`"))
-                            .with_label(decl.file(), decl.span(), format!("`{shown}` is a `{}`", type_text(decl.stage, &ty))),
+                            .with_label(
+                                decl.file(),
+                                decl.span(),
+                                format!("`{shown}` is a `{}`", type_text(decl.stage, &ty)),
+                            ),
                     );
                     return;
                 };
                 if let Some(k) = first {
                     if *i >= u64::from(k) {
                         out.push(
-                            Diagnostic::error(E_MANIFEST_PATH, format!("index {i} is out of bounds for `{shown}`"))
-                                .at(mf, u.name_span.clone(), format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)))
-                                .with_label(decl.file(), decl.span(), format!("declared as `{}`", type_text(decl.stage, &ty))),
+                            Diagnostic::error(
+                                E_MANIFEST_PATH,
+                                format!("index {i} is out of bounds for `{shown}`"),
+                            )
+                            .at(
+                                mf,
+                                u.name_span.clone(),
+                                format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)),
+                            )
+                            .with_label(
+                                decl.file(),
+                                decl.span(),
+                                format!("declared as `{}`", type_text(decl.stage, &ty)),
+                            ),
                         );
                         return;
                     }
@@ -279,21 +314,45 @@ fn default(
                 shown = format!("{shown}[{i}]");
             }
             Step::Field(f) => {
-                let def = (!ty.is_array()).then(|| decl.stage.struct_def(&ty.base)).flatten();
+                let def = (!ty.is_array())
+                    .then(|| decl.stage.struct_def(&ty.base))
+                    .flatten();
                 let Some(def) = def else {
                     out.push(
                         Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` has no field `{f}`"))
-                            .at(mf, u.name_span.clone(), format!("`{shown}` is a `{}`, not a struct", type_text(decl.stage, &ty)))
+                            .at(
+                                mf,
+                                u.name_span.clone(),
+                                format!(
+                                    "`{shown}` is a `{}`, not a struct",
+                                    type_text(decl.stage, &ty)
+                                ),
+                            )
                             .with_label(decl.file(), decl.span(), "declared here"),
                     );
                     return;
                 };
-                let Some(m) = def.members.iter().find(|m| decl.stage.original_name(&m.name) == f) else {
-                    let names: Vec<&str> = def.members.iter().map(|m| decl.stage.original_name(&m.name)).collect();
+                let Some(m) = def
+                    .members
+                    .iter()
+                    .find(|m| decl.stage.original_name(&m.name) == f)
+                else {
+                    let names: Vec<&str> = def
+                        .members
+                        .iter()
+                        .map(|m| decl.stage.original_name(&m.name))
+                        .collect();
                     let sname = decl.stage.original_name(&def.name);
-                    let mut d = Diagnostic::error(E_MANIFEST_PATH, format!("struct `{sname}` has no member `{f}`"))
-                        .at(mf, u.name_span.clone(), format!("`{shown}` is a `{sname}`"))
-                        .with_label(decl.stage.file, def.name_span.clone(), format!("`{sname}` is defined here"));
+                    let mut d = Diagnostic::error(
+                        E_MANIFEST_PATH,
+                        format!("struct `{sname}` has no member `{f}`"),
+                    )
+                    .at(mf, u.name_span.clone(), format!("`{shown}` is a `{sname}`"))
+                    .with_label(
+                        decl.stage.file,
+                        def.name_span.clone(),
+                        format!("`{sname}` is defined here"),
+                    );
                     d = match did_you_mean(f, &names) {
                         Some(c) => d.with_help(format!("did you mean `{shown}.{c}`?")),
                         None => d.with_note(format!(
@@ -313,11 +372,16 @@ fn default(
     let tt = type_text(decl.stage, &ty);
     let decl_label = format!("`{}` is declared as `{}` here", decl.name, decl.type_text());
     match (&u.value, &shape) {
-        (_, Shape::Sampler) => out.push(
-            Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
-                .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
-                .with_label(decl.file(), decl.span(), decl_label.clone())
-                .with_help(format!("bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`")),
+        _ if is_sampler_like(&ty) => out.push(
+            Diagnostic::error(
+                E_MANIFEST_VALUE,
+                format!("`{shown}` is a sampler (`{tt}`) and takes no value"),
+            )
+            .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
+            .with_label(decl.file(), decl.span(), decl_label.clone())
+            .with_help(format!(
+                "bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`"
+            )),
         ),
         (_, Shape::Struct(sname)) => {
             let sname = decl.stage.original_name(sname).to_string();
@@ -332,19 +396,25 @@ fn default(
                 })
                 .unwrap_or_default();
             out.push(
-                Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a struct (`{sname}`) and cannot take one value"))
-                    .at(mf, u.value_span.clone(), "a value for a whole struct")
-                    .with_label(decl.file(), decl.span(), decl_label.clone())
-                    .with_help(format!("set the members one by one: {}", list(&members))),
+                Diagnostic::error(
+                    E_MANIFEST_VALUE,
+                    format!("`{shown}` is a struct (`{sname}`) and cannot take one value"),
+                )
+                .at(mf, u.value_span.clone(), "a value for a whole struct")
+                .with_label(decl.file(), decl.span(), decl_label.clone())
+                .with_help(format!("set the members one by one: {}", list(&members))),
             );
         }
         (Some(v), _) => {
             if let Err(why) = shape.fit(v) {
                 out.push(
-                    Diagnostic::error(E_MANIFEST_VALUE, format!("the default for `{shown}` does not fit its type `{tt}`"))
-                        .at(mf, u.value_span.clone(), why)
-                        .with_label(decl.file(), decl.span(), decl_label.clone())
-                        .with_note(format!("a `{tt}` takes {}", shape.expected())),
+                    Diagnostic::error(
+                        E_MANIFEST_VALUE,
+                        format!("the default for `{shown}` does not fit its type `{tt}`"),
+                    )
+                    .at(mf, u.value_span.clone(), why)
+                    .with_label(decl.file(), decl.span(), decl_label.clone())
+                    .with_note(format!("a `{tt}` takes {}", shape.expected())),
                 );
             }
         }
@@ -353,7 +423,10 @@ fn default(
     if let Some(sem) = u.semantic {
         let fits = !ty.is_array() && sem.glsl_types().contains(&tt.as_str());
         if !fits {
-            let span = u.semantic_span.clone().unwrap_or_else(|| u.value_span.clone());
+            let span = u
+                .semantic_span
+                .clone()
+                .unwrap_or_else(|| u.value_span.clone());
             let provides = sem.glsl_types().join("` or `");
             let others: Vec<String> = Semantic::ALL
                 .iter()
@@ -368,7 +441,10 @@ fn default(
             out.push(
                 Diagnostic::error(
                     E_MANIFEST_SEMANTIC,
-                    format!("semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`", sem.name()),
+                    format!(
+                        "semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`",
+                        sem.name()
+                    ),
                 )
                 .at(mf, span, format!("provides `{provides}`"))
                 .with_label(decl.file(), decl.span(), decl_label.clone())
@@ -379,20 +455,26 @@ fn default(
     if let Some(span) = &u.range_span {
         if !shape.is_scalar_number() {
             out.push(
-                Diagnostic::error(E_MANIFEST_RANGE, format!("`range` needs a scalar number, but `{shown}` is a `{tt}`"))
-                    .at(mf, span.clone(), "a range on a non-scalar uniform")
-                    .with_label(decl.file(), decl.span(), decl_label.clone())
-                    .with_note("`range` bounds one number (`float`, `int`, `uint` or `double`)")
-                    .with_help("remove `range` from this entry"),
+                Diagnostic::error(
+                    E_MANIFEST_RANGE,
+                    format!("`range` needs a scalar number, but `{shown}` is a `{tt}`"),
+                )
+                .at(mf, span.clone(), "a range on a non-scalar uniform")
+                .with_label(decl.file(), decl.span(), decl_label.clone())
+                .with_note("`range` bounds one number (`float`, `int`, `uint` or `double`)")
+                .with_help("remove `range` from this entry"),
             );
         }
     }
     if !decl.read {
         out.push(
-            Diagnostic::warning(W_DEFAULT_UNREAD, format!("`{}` has a default, but no stage reads it", decl.name))
-                .at(mf, u.name_span.clone(), "default for an unread uniform")
-                .with_label(decl.file(), decl.span(), "declared here, never read")
-                .with_help("remove the entry, or use the uniform in a shader"),
+            Diagnostic::warning(
+                W_DEFAULT_UNREAD,
+                format!("`{}` has a default, but no stage reads it", decl.name),
+            )
+            .at(mf, u.name_span.clone(), "default for an unread uniform")
+            .with_label(decl.file(), decl.span(), "declared here, never read")
+            .with_help("remove the entry, or use the uniform in a shader"),
         );
     }
 }
@@ -408,13 +490,22 @@ fn unknown(
 ) -> Diagnostic {
     let mut d = Diagnostic::error(
         E_MANIFEST_UNKNOWN,
-        format!("`[uniforms]` entry `{}` names no uniform declared by the shaders", u.name),
+        format!(
+            "`[uniforms]` entry `{}` names no uniform declared by the shaders",
+            u.name
+        ),
     )
-    .at(effect.file, u.name_span.clone(), format!("no stage declares a uniform `{base}`"));
+    .at(
+        effect.file,
+        u.name_span.clone(),
+        format!("no stage declares a uniform `{base}`"),
+    );
     // A member (or the instance / block name) of a named uniform block?
     for nb in &decls.named_blocks {
         let s = nb.stage;
-        let Some(b) = &s.globals[nb.index].block else { continue };
+        let Some(b) = &s.globals[nb.index].block else {
+            continue;
+        };
         let bn = s.original_name(&b.block_name);
         let inst = b.instance.as_deref().map_or("", |i| s.original_name(i));
         let member = b.members.iter().find(|m| s.original_name(&m.name) == base);
@@ -428,7 +519,11 @@ fn unknown(
     }
     // Declared, but not as a uniform?
     for s in stages {
-        if let Some(g) = s.globals.iter().find(|g| !g.is_block() && s.original_name(&g.name) == base) {
+        if let Some(g) = s
+            .globals
+            .iter()
+            .find(|g| !g.is_block() && s.original_name(&g.name) == base)
+        {
             let what = match g.storage {
                 Storage::In | Storage::Attribute => "an input",
                 Storage::Out => "an output",
@@ -439,14 +534,21 @@ fn unknown(
             };
             let st = stage_title(s.stage);
             return d
-                .with_label(s.file, g.name_span.clone(), format!("{what} of the {st} stage, not a uniform"))
-                .with_help(format!("only uniforms take defaults; declare `uniform {} {base};` to make it settable", type_text(s, &g.ty)));
+                .with_label(
+                    s.file,
+                    g.name_span.clone(),
+                    format!("{what} of the {st} stage, not a uniform"),
+                )
+                .with_help(format!(
+                    "only uniforms take defaults; declare `uniform {} {base};` to make it settable",
+                    type_text(s, &g.ty)
+                ));
         }
     }
     let names: Vec<&str> = decls
         .list
         .iter()
-        .filter(|d| !d.ty.is_sampler())
+        .filter(|d| !is_opaque(d.ty))
         .map(|d| d.name.as_str())
         .collect();
     if let Some(c) = did_you_mean(base, &names) {
@@ -463,7 +565,7 @@ fn unknown(
         let here: Vec<&Decl> = decls
             .list
             .iter()
-            .filter(|d| !d.ty.is_sampler() && std::ptr::eq(d.stage, s))
+            .filter(|d| !is_opaque(d.ty) && std::ptr::eq(d.stage, s))
             .collect();
         if let Some(first) = here.first() {
             let names: Vec<String> = here.iter().map(|d| d.name.clone()).collect();
@@ -471,7 +573,11 @@ fn unknown(
             d = d.with_label(
                 s.file,
                 first.span(),
-                format!("the {} stage ({path}) declares {}", stage_title(s.stage), list(&names)),
+                format!(
+                    "the {} stage ({path}) declares {}",
+                    stage_title(s.stage),
+                    list(&names)
+                ),
             );
         }
     }
@@ -513,16 +619,27 @@ fn textures(effect: &Effect, decls: &Decls, out: &mut Vec<Diagnostic>) {
             E_TEXTURE_UNKNOWN,
             format!("`[textures]` entry `{}` names no sampler uniform", t.name),
         )
-        .at(effect.file, t.name_span.clone(), format!("no stage declares a sampler `{path}`"));
+        .at(
+            effect.file,
+            t.name_span.clone(),
+            format!("no stage declares a sampler `{path}`"),
+        );
         if let Some(decl) = decls.get(&path) {
             d = d
-                .with_label(decl.file(), decl.span(), format!("`{path}` is a `{}` uniform", decl.type_text()))
+                .with_label(
+                    decl.file(),
+                    decl.span(),
+                    format!("`{path}` is a `{}` uniform", decl.type_text()),
+                )
                 .with_note("textures bind to sampler uniforms (`sampler2D`, `samplerCube`)");
         } else {
             let names: Vec<&str> = samplers.iter().map(|(p, _, _)| p.as_str()).collect();
             match did_you_mean(&path, &names) {
                 Some(c) => {
-                    let (_, _, decl) = samplers.iter().find(|(p, _, _)| p == c).expect("a candidate");
+                    let (_, _, decl) = samplers
+                        .iter()
+                        .find(|(p, _, _)| p == c)
+                        .expect("a candidate");
                     d = d
                         .with_label(decl.file(), decl.span(), format!("`{c}` is declared here"))
                         .with_help(format!("did you mean `{c}`?"));
@@ -558,21 +675,32 @@ fn missing(
             )
             .at(decl.file(), decl.span(), "declared here");
             for (file, span, s) in decl.sites.iter().skip(1) {
-                d = d.with_label(*file, span.clone(), format!("also declared in the {} stage, not read there either", stage_title(s.stage)));
+                d = d.with_label(
+                    *file,
+                    span.clone(),
+                    format!(
+                        "also declared in the {} stage, not read there either",
+                        stage_title(s.stage)
+                    ),
+                );
             }
             out.push(d.with_help("remove the declaration, or use it"));
             continue;
         }
-        match shape {
-            Shape::Sampler => {
-                if !textured.contains(&decl.name) {
-                    out.push(no_texture(decl, &decl.name, decl.ty));
-                }
+        if is_opaque(decl.ty) {
+            if is_sampler_like(decl.ty) && !textured.contains(&decl.name) {
+                out.push(no_texture(decl, &decl.name, decl.ty));
             }
+            continue;
+        }
+        match shape {
             Shape::Other(_) => {}
             _ if covered.contains(&decl.name) => {
                 // Struct members with samplers still need textures.
-                for (path, ty, d) in samplers.iter().filter(|(p, _, d)| std::ptr::eq(*d, decl) && *p != decl.name) {
+                for (path, ty, d) in samplers
+                    .iter()
+                    .filter(|(p, _, d)| std::ptr::eq(*d, decl) && *p != decl.name)
+                {
                     if !textured.contains(path) {
                         out.push(no_texture(d, path, ty));
                     }
@@ -584,16 +712,35 @@ fn missing(
                     .map(|def| {
                         def.members
                             .iter()
-                            .filter(|m| !m.ty.is_sampler())
-                            .map(|m| format!("{}.{} = {}", decl.name, decl.stage.original_name(&m.name), decl.shape(&m.ty).example()))
+                            .filter(|m| !is_opaque(&m.ty))
+                            .map(|m| {
+                                format!(
+                                    "{}.{} = {}",
+                                    decl.name,
+                                    decl.stage.original_name(&m.name),
+                                    decl.shape(&m.ty).example()
+                                )
+                            })
                             .collect()
                     })
                     .unwrap_or_default();
-                out.push(
-                    Diagnostic::warning(W_NO_DEFAULT, format!("uniform `{}` has no default in effect.toml", decl.name))
-                        .at(decl.file(), decl.span(), format!("a `{}` read without a default", decl.type_text()))
-                        .with_help(format!("add its members under [uniforms] in effect.toml: {}", list(&members))),
-                );
+                if !members.is_empty() {
+                    out.push(
+                        Diagnostic::warning(
+                            W_NO_DEFAULT,
+                            format!("uniform `{}` has no default in effect.toml", decl.name),
+                        )
+                        .at(
+                            decl.file(),
+                            decl.span(),
+                            format!("a `{}` read without a default", decl.type_text()),
+                        )
+                        .with_help(format!(
+                            "add its members under [uniforms] in effect.toml: {}",
+                            list(&members)
+                        )),
+                    );
+                }
                 for (path, ty, d) in samplers.iter().filter(|(_, _, d)| std::ptr::eq(*d, decl)) {
                     if !textured.contains(path) {
                         out.push(no_texture(d, path, ty));
@@ -602,7 +749,11 @@ fn missing(
             }
             _ => {
                 let tt = decl.type_text();
-                let mut help = format!("add `{} = {}` under [uniforms] in effect.toml", decl.name, shape.example());
+                let mut help = format!(
+                    "add `{} = {}` under [uniforms] in effect.toml",
+                    decl.name,
+                    shape.example()
+                );
                 if let Some(sem) = semantic_hint(&decl.name, &tt) {
                     help.push_str(&format!(
                         " (or `{} = {{ semantic = \"{}\" }}` to have the runtime supply it)",
@@ -611,20 +762,36 @@ fn missing(
                     ));
                 }
                 out.push(
-                    Diagnostic::warning(W_NO_DEFAULT, format!("uniform `{}` has no default in effect.toml", decl.name))
-                        .at(decl.file(), decl.span(), format!("a `{tt}` read without a default"))
-                        .with_help(help),
+                    Diagnostic::warning(
+                        W_NO_DEFAULT,
+                        format!("uniform `{}` has no default in effect.toml", decl.name),
+                    )
+                    .at(
+                        decl.file(),
+                        decl.span(),
+                        format!("a `{tt}` read without a default"),
+                    )
+                    .with_help(help),
                 );
             }
         }
     }
     for (s, i) in &decls.unread_blocks {
-        let Some(b) = &s.globals[*i].block else { continue };
+        let Some(b) = &s.globals[*i].block else {
+            continue;
+        };
         let bn = s.original_name(&b.block_name);
         out.push(
-            Diagnostic::warning(W_UNREAD_UNIFORM, format!("uniform block `{bn}` is declared but never read"))
-                .at(s.file, b.block_name_span.clone(), "no stage reads any of its members")
-                .with_help("remove the block, or use it"),
+            Diagnostic::warning(
+                W_UNREAD_UNIFORM,
+                format!("uniform block `{bn}` is declared but never read"),
+            )
+            .at(
+                s.file,
+                b.block_name_span.clone(),
+                "no stage reads any of its members",
+            )
+            .with_help("remove the block, or use it"),
         );
     }
 }
@@ -645,7 +812,11 @@ fn no_texture(decl: &Decl, path: &str, ty: &GlslType) -> Diagnostic {
 
 /// A semantic the uniform's name and type suggest (`timeVar: float` → `time`).
 fn semantic_hint(name: &str, ty: &str) -> Option<Semantic> {
-    let n: String = name.to_ascii_lowercase().chars().filter(|c| *c != '_').collect();
+    let n: String = name
+        .to_ascii_lowercase()
+        .chars()
+        .filter(|c| *c != '_')
+        .collect();
     const KEYS: &[(&str, Semantic)] = &[
         ("modelviewprojection", Semantic::ModelViewProjection),
         ("mvp", Semantic::ModelViewProjection),

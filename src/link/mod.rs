@@ -60,7 +60,7 @@ pub mod values;
 mod tests;
 
 use crate::diag::{Diagnostic, Files};
-use crate::front::syntax::{GlslType, Global, Interp, StageSyntax, Target};
+use crate::front::syntax::{Global, GlslType, Interp, StageSyntax, Target};
 use crate::stage::StageKind;
 
 pub const E_BLOCK_UNMATCHED: &str = "E0201";
@@ -93,38 +93,80 @@ pub const W_DEFAULT_UNREAD: &str = "W0223";
 
 /// Every code this module emits, with a one-line description.
 pub const CODES: &[(&str, &str)] = &[
-    (E_BLOCK_UNMATCHED, "input block has no output block of the same block name"),
-    (E_NO_PRODUCER, "input read by the stage has no matching output"),
+    (
+        E_BLOCK_UNMATCHED,
+        "input block has no output block of the same block name",
+    ),
+    (
+        E_NO_PRODUCER,
+        "input read by the stage has no matching output",
+    ),
     (E_OTHER_STAGE_NAME, "name declared only in another stage"),
-    (E_UNIFORM_TYPE, "uniform declared with different types in two stages"),
-    (E_UNIFORM_BLOCK, "uniform block declared differently in two stages"),
-    (E_UNIFORM_STRUCT, "struct used by uniforms defined differently in two stages"),
+    (
+        E_UNIFORM_TYPE,
+        "uniform declared with different types in two stages",
+    ),
+    (
+        E_UNIFORM_BLOCK,
+        "uniform block declared differently in two stages",
+    ),
+    (
+        E_UNIFORM_STRUCT,
+        "struct used by uniforms defined differently in two stages",
+    ),
     (E_VARYING_TYPE, "output and input types differ"),
     (E_INTERP, "interpolation qualifiers differ"),
     (E_CENTROID, "centroid qualifiers differ"),
     (E_LOCATION, "explicit locations differ"),
     (E_BLOCK_MISMATCH, "interface blocks of the same name differ"),
     (E_NOT_ARRAYED, "geometry input is not an array"),
-    (E_MANIFEST_UNKNOWN, "manifest uniform is not declared by any stage"),
-    (E_MANIFEST_VALUE, "manifest default does not fit the declared type"),
-    (E_MANIFEST_SEMANTIC, "semantic does not fit the declared type"),
-    (E_MANIFEST_RANGE, "range on a uniform that is not a scalar number"),
+    (
+        E_MANIFEST_UNKNOWN,
+        "manifest uniform is not declared by any stage",
+    ),
+    (
+        E_MANIFEST_VALUE,
+        "manifest default does not fit the declared type",
+    ),
+    (
+        E_MANIFEST_SEMANTIC,
+        "semantic does not fit the declared type",
+    ),
+    (
+        E_MANIFEST_RANGE,
+        "range on a uniform that is not a scalar number",
+    ),
     (E_TEXTURE_UNKNOWN, "texture entry names no sampler uniform"),
-    (E_MANIFEST_PATH, "manifest uniform path does not fit the declaration"),
-    (E_TEXTURE_KIND, "texture kind does not match the sampler type"),
+    (
+        E_MANIFEST_PATH,
+        "manifest uniform path does not fit the declaration",
+    ),
+    (
+        E_TEXTURE_KIND,
+        "texture kind does not match the sampler type",
+    ),
     (W_UNREAD_OUTPUT, "output never read by the next stage"),
     (W_UNUSED_INPUT, "unread input with no producer"),
-    (W_INTERP, "interpolation qualifiers differ (allowed since GLSL 4.30)"),
-    (W_CENTROID, "centroid qualifiers differ (allowed since GLSL 4.30)"),
+    (
+        W_INTERP,
+        "interpolation qualifiers differ (allowed since GLSL 4.30)",
+    ),
+    (
+        W_CENTROID,
+        "centroid qualifiers differ (allowed since GLSL 4.30)",
+    ),
     (W_NO_DEFAULT, "uniform has no default in effect.toml"),
     (W_UNREAD_UNIFORM, "uniform declared but never read"),
     (W_NO_TEXTURE, "sampler has no [textures] entry"),
-    (W_DEFAULT_UNREAD, "manifest default for a uniform no stage reads"),
+    (
+        W_DEFAULT_UNREAD,
+        "manifest default for a uniform no stage reads",
+    ),
 ];
 
 /// OpenGL link rules between consecutive stages of one program, plus the program-wide
-/// uniform rules. `stages` are in pipeline order (vertex → [tess] → [geometry] →
-/// fragment); compute stages are checked on their own (uniforms only).
+/// uniform rules. `stages` are in pipeline order (vertex → tessellation → geometry →
+/// fragment, the middle ones optional); compute stages are checked on their own (uniforms only).
 pub fn check_interface(stages: &[StageSyntax]) -> Vec<Diagnostic> {
     let graphics: Vec<&StageSyntax> = stages
         .iter()
@@ -191,6 +233,22 @@ pub(crate) fn interp_text(i: Interp) -> &'static str {
         Interp::Flat => "flat",
         Interp::NoPerspective => "noperspective",
     }
+}
+
+/// Opaque types (samplers, separate textures, images, atomic counters): not settable by
+/// value. Arrays of them too.
+pub(crate) fn is_opaque(ty: &GlslType) -> bool {
+    let b = ty.base.as_str();
+    ty.is_sampler()
+        || b.contains("sampler")
+        || b.contains("texture")
+        || b.contains("image")
+        || b == "atomic_uint"
+}
+
+/// A sampler (combined or separate), the kind of uniform `[textures]` binds.
+pub(crate) fn is_sampler_like(ty: &GlslType) -> bool {
+    ty.is_sampler() || ty.base.contains("sampler")
 }
 
 /// Some use in the stage refers to global `index` (for a block: any member or the instance).

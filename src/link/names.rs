@@ -14,6 +14,9 @@ use super::{stage_title, type_text, E_OTHER_STAGE_NAME};
 use crate::diag::Diagnostic;
 use crate::front::syntax::{BlockInfo, Global, StageSyntax, Storage, Target};
 
+/// Use sites of one name: span and the field accessed (`name.field`), if any.
+type Sites = Vec<(Range<usize>, Option<String>)>;
+
 /// How many further uses get their own label.
 const MAX_EXTRA_LABELS: usize = 3;
 
@@ -27,7 +30,7 @@ pub fn check(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
     for (si, s) in stages.iter().enumerate() {
         // Unresolved uses grouped by the user's name, in order of first use.
         let mut order: Vec<String> = Vec::new();
-        let mut uses: HashMap<String, Vec<(Range<usize>, Option<String>)>> = HashMap::new();
+        let mut uses: HashMap<String, Sites> = HashMap::new();
         for u in &s.uses {
             if u.target != Target::Unresolved {
                 continue;
@@ -36,7 +39,10 @@ pub fn check(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
             if name.starts_with("gl_") {
                 continue;
             }
-            let field = u.field.as_ref().map(|(f, _)| s.original_name(f).to_string());
+            let field = u
+                .field
+                .as_ref()
+                .map(|(f, _)| s.original_name(f).to_string());
             uses.entry(name.clone())
                 .or_insert_with(|| {
                     order.push(name.clone());
@@ -46,14 +52,17 @@ pub fn check(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
         }
         for name in order {
             let sites = &uses[&name];
-            let diag = own_block_name(s, &name, sites)
-                .or_else(|| other_stage(stages, si, &name, sites));
+            let diag =
+                own_block_name(s, &name, sites).or_else(|| other_stage(stages, si, &name, sites));
             if let Some(mut d) = diag {
                 for (span, _) in sites.iter().skip(1).take(MAX_EXTRA_LABELS) {
                     d = d.with_label(s.file, span.clone(), "also used here");
                 }
                 if sites.len() > 1 + MAX_EXTRA_LABELS {
-                    d = d.with_note(format!("`{name}` is used {} times in this stage", sites.len()));
+                    d = d.with_note(format!(
+                        "`{name}` is used {} times in this stage",
+                        sites.len()
+                    ));
                 }
                 out.push(d);
             }
@@ -83,15 +92,21 @@ fn how_to_reach(s: &StageSyntax, blk: &BlockInfo, field: Option<&str>) -> String
         Some(inst) => {
             let inst = s.original_name(inst);
             match field {
-                Some(f) => format!("in this stage the block instance is called `{inst}`: write `{inst}.{f}`"),
+                Some(f) => format!(
+                    "in this stage the block instance is called `{inst}`: write `{inst}.{f}`"
+                ),
                 None => format!("in this stage the block instance is called `{inst}`"),
             }
         }
         None => {
             let bn = s.original_name(&blk.block_name);
             match field {
-                Some(f) => format!("in this stage the block `{bn}` has no instance name: write `{f}` directly"),
-                None => format!("in this stage the block `{bn}` has no instance name: use its members directly"),
+                Some(f) => format!(
+                    "in this stage the block `{bn}` has no instance name: write `{f}` directly"
+                ),
+                None => format!(
+                    "in this stage the block `{bn}` has no instance name: use its members directly"
+                ),
             }
         }
     }
@@ -150,7 +165,10 @@ fn other_stage(
                         || t.original_name(&b.block_name) == name
                 })
             })
-            .map(|g| Found { stage: t, global: g })
+            .map(|g| Found {
+                stage: t,
+                global: g,
+            })
     });
     if let Some(f) = block {
         return Some(foreign_block(s, f, name, sites));
@@ -162,7 +180,10 @@ fn other_stage(
             if b.instance.is_some() {
                 return None;
             }
-            let m = b.members.iter().find(|m| t.original_name(&m.name) == name)?;
+            let m = b
+                .members
+                .iter()
+                .find(|m| t.original_name(&m.name) == name)?;
             Some((t, g, b, m))
         })
     });
@@ -170,13 +191,30 @@ fn other_stage(
         let tt = stage_title(t.stage);
         let bn = t.original_name(&b.block_name);
         let kind = storage_word(g, t);
-        let keyword = if g.storage == Storage::Uniform { "uniform".to_string() } else { decl_keyword(s, t) };
+        let keyword = if g.storage == Storage::Uniform {
+            "uniform".to_string()
+        } else {
+            decl_keyword(s, t)
+        };
         return Some(
-            Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
-                .at(s.file, sites[0].0.clone(), format!("`{name}` is a member of the {tt} stage's {kind} block `{bn}`"))
-                .with_label(t.file, m.span.clone(), format!("declared here in the {tt} stage"))
-                .with_note("each stage sees only its own declarations")
-                .with_help(format!("declare `{keyword} {bn} {{ … }};` in the {st} stage too")),
+            Diagnostic::error(
+                E_OTHER_STAGE_NAME,
+                format!("`{name}` is not declared in the {st} stage"),
+            )
+            .at(
+                s.file,
+                sites[0].0.clone(),
+                format!("`{name}` is a member of the {tt} stage's {kind} block `{bn}`"),
+            )
+            .with_label(
+                t.file,
+                m.span.clone(),
+                format!("declared here in the {tt} stage"),
+            )
+            .with_note("each stage sees only its own declarations")
+            .with_help(format!(
+                "declare `{keyword} {bn} {{ … }};` in the {st} stage too"
+            )),
         );
     }
     // A loose global of another stage.
@@ -193,8 +231,11 @@ fn other_stage(
         let dims = GlslDims(&g.ty.dims);
         format!("{kw} {base} {name}{dims};")
     };
-    let d = Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
-        .with_note("each stage sees only its own declarations");
+    let d = Diagnostic::error(
+        E_OTHER_STAGE_NAME,
+        format!("`{name}` is not declared in the {st} stage"),
+    )
+    .with_note("each stage sees only its own declarations");
     let (label, help) = match (g.storage, direction(t.stage, g)) {
         (Storage::Uniform, _) => (
             format!("`{name}` is a uniform of the {tt} stage"),
@@ -220,7 +261,11 @@ fn other_stage(
     };
     Some(
         d.at(s.file, sites[0].0.clone(), label)
-            .with_label(t.file, g.name_span.clone(), format!("declared here in the {tt} stage"))
+            .with_label(
+                t.file,
+                g.name_span.clone(),
+                format!("declared here in the {tt} stage"),
+            )
             .with_help(help),
     )
 }
@@ -259,8 +304,14 @@ fn foreign_block(
     let kind = storage_word(g, t);
     let is_instance = blk.instance.as_deref().map(|i| t.original_name(i)) == Some(name);
     let (what, span) = match (&blk.instance_span, is_instance) {
-        (Some(span), true) => (format!("the instance name of the {tt} stage's {kind} block `{bn}`"), span.clone()),
-        _ => (format!("the block name of a {kind} block in the {tt} stage"), blk.block_name_span.clone()),
+        (Some(span), true) => (
+            format!("the instance name of the {tt} stage's {kind} block `{bn}`"),
+            span.clone(),
+        ),
+        _ => (
+            format!("the block name of a {kind} block in the {tt} stage"),
+            blk.block_name_span.clone(),
+        ),
     };
     let field = first_field(sites);
     let mut d = Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
@@ -270,13 +321,27 @@ fn foreign_block(
     match corresponding_block(s, t, g, field) {
         Some(c) => {
             let cb = c.block.as_ref().expect("a block");
-            let label_span = cb.instance_span.clone().unwrap_or_else(|| cb.block_name_span.clone());
+            let label_span = cb
+                .instance_span
+                .clone()
+                .unwrap_or_else(|| cb.block_name_span.clone());
             d = d
-                .with_label(s.file, label_span, format!("the {st} stage's block `{}`", s.original_name(&cb.block_name)))
+                .with_label(
+                    s.file,
+                    label_span,
+                    format!(
+                        "the {st} stage's block `{}`",
+                        s.original_name(&cb.block_name)
+                    ),
+                )
                 .with_help(how_to_reach(s, cb, field));
         }
         None => {
-            let inst = blk.instance.as_deref().map(|i| t.original_name(i)).unwrap_or("");
+            let inst = blk
+                .instance
+                .as_deref()
+                .map(|i| t.original_name(i))
+                .unwrap_or("");
             let keyword = if g.storage == Storage::Uniform || g.storage == Storage::Buffer {
                 kind.to_string()
             } else {
@@ -326,7 +391,8 @@ fn corresponding_block<'a>(
                     .any(|n| t.original_name(&n.name) == s.original_name(&m.name))
             })
             .count();
-        let has_field = field.is_some_and(|f| cb.members.iter().any(|m| s.original_name(&m.name) == f));
+        let has_field =
+            field.is_some_and(|f| cb.members.iter().any(|m| s.original_name(&m.name) == f));
         shared + usize::from(has_field) * 100
     };
     candidates

@@ -72,13 +72,27 @@ fn blocks_by_name(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
-            let kind = if g.storage == Storage::Buffer { "buffer" } else { "uniform" };
+            let kind = if g.storage == Storage::Buffer {
+                "buffer"
+            } else {
+                "uniform"
+            };
             let mut d = Diagnostic::error(
                 E_UNIFORM_BLOCK,
-                format!("{kind} block `{name}` is declared differently in the {ft} and {st} stages"),
+                format!(
+                    "{kind} block `{name}` is declared differently in the {ft} and {st} stages"
+                ),
             )
-            .at(s.file, blk.block_name_span.clone(), format!("declared here in the {st} stage"))
-            .with_label(f.file, fb.block_name_span.clone(), format!("declared here in the {ft} stage"));
+            .at(
+                s.file,
+                blk.block_name_span.clone(),
+                format!("declared here in the {st} stage"),
+            )
+            .with_label(
+                f.file,
+                fb.block_name_span.clone(),
+                format!("declared here in the {ft} stage"),
+            );
             for diff in diffs {
                 if let Some((span, label)) = diff.a {
                     d = d.with_label(f.file, span, label);
@@ -113,7 +127,9 @@ fn uniform_structs(s: &StageSyntax) -> BTreeSet<String> {
     }
     let mut seen = BTreeSet::new();
     while let Some(name) = todo.pop() {
-        let Some(def) = s.struct_def(name) else { continue };
+        let Some(def) = s.struct_def(name) else {
+            continue;
+        };
         if seen.insert(name.to_string()) {
             todo.extend(def.members.iter().map(|m| m.ty.base.as_str()));
         }

@@ -6,7 +6,8 @@ mod uniforms;
 
 use std::ops::Range;
 
-use crate::diag::{Diagnostic, FileId, Files, Severity};
+pub(super) use crate::diag::Severity;
+use crate::diag::{Diagnostic, FileId, Files};
 use crate::front::syntax::{analyse, StageSyntax};
 use crate::stage::StageKind;
 
@@ -39,7 +40,11 @@ impl Program {
     }
 
     pub fn file(&self, kind: StageKind) -> FileId {
-        self.stages.iter().find(|s| s.stage == kind).expect("stage").file
+        self.stages
+            .iter()
+            .find(|s| s.stage == kind)
+            .expect("stage")
+            .file
     }
 
     /// The text a span covers.
@@ -74,9 +79,9 @@ pub(super) fn primary<'a>(p: &'a Program, d: &Diagnostic) -> (FileId, &'a str) {
 
 /// Texts covered by the labels in `file`.
 pub(super) fn label_texts<'a>(p: &'a Program, d: &Diagnostic, file: FileId) -> Vec<&'a str> {
-    d.labels.iter().filter(|l| l.file == file).map(|l| p.text(file, &l.span)).collect()
-}
-
-pub(super) fn severity_of(d: &Diagnostic) -> Severity {
-    d.severity
+    d.labels
+        .iter()
+        .filter(|l| l.file == file)
+        .map(|l| p.text(file, &l.span))
+        .collect()
 }

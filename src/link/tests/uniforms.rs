@@ -11,7 +11,10 @@ fn uniform_type_conflict_labels_both_stages() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0204"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(d.message, "uniform `tint` is `vec3` in the vertex stage but `vec4` in the fragment stage");
+    assert_eq!(
+        d.message,
+        "uniform `tint` is `vec3` in the vertex stage but `vec4` in the fragment stage"
+    );
     assert_eq!(primary(&p, d), (p.file(Fragment), "tint"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["tint"]);
 }
