@@ -1,1 +1,22 @@
-fn main(){}
+//! The one integration-test binary of effectc.
+//!
+//! The modules live in `tests/suite/`: cargo would build every `tests/*.rs` as a test
+//! binary of its own, so only this file sits at the top level.
+//!
+//! - [`fail`]: every directory under `tests/fail/` produces its expected diagnostic;
+//!   the human rendering is snapshotted under `snapshots/fail/`.
+//! - [`rewrite`]: legal desktop GLSL under `tests/rewrite/` checks clean; the 4.50 text
+//!   naga sees is snapshotted under `snapshots/rewrite/`.
+//! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
+//! - [`robust`]: truncated, mutated and garbage input never panics.
+
+#[path = "suite/cli.rs"]
+mod cli;
+#[path = "suite/common.rs"]
+mod common;
+#[path = "suite/fail.rs"]
+mod fail;
+#[path = "suite/rewrite.rs"]
+mod rewrite;
+#[path = "suite/robust.rs"]
+mod robust;

@@ -6,7 +6,7 @@ out vert_out // Outputs read by the fragment stage (block matched by name: vert_
 {
     vec2 outputTexCoords;
     vec3 swirlPosVector; // Swirled world position
-} vert_out;
+} vs_out;
 
 layout(location = 0) in vec3 vertPosition;
 layout(location = 1) in vec2 vertTexCoords;
@@ -30,8 +30,8 @@ void main()
 
     float angle = length(transformPosition.xy) * swirlIntensity + timeVar * random(swirlSeed);
     mat2 swirlAngleMatrix = mat2(cos(angle), sin(angle), -sin(angle), cos(angle));
-    vert_out.swirlPosVector = vec3(swirlAngleMatrix * transformPosition.xy, transformPosition.z);
+    vs_out.swirlPosVector = vec3(swirlAngleMatrix * transformPosition.xy, transformPosition.z);
 
-    gl_Position = projection * view * vec4(vert_out.swirlPosVector, 1.0);
-    vert_out.outputTexCoords = vertTexCoords;
+    gl_Position = projection * view * vec4(vs_out.swirlPosVector, 1.0);
+    vs_out.outputTexCoords = vertTexCoords;
 }

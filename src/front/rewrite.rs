@@ -533,7 +533,11 @@ impl Ctx<'_> {
                 }
                 let (size, align) = block_size_align(&m.block_ty, self.plan);
                 offset = offset.next_multiple_of(align) + size;
-                let _ = writeln!(h, "    {} {}{};", m.block_ty.base, m.name, dims_text(&m.block_ty));
+                // A uniform another stage declares must not shadow this stage's own
+                // variable of that name: keep its bytes, not its name.
+                let shadowed = s.global(&m.name).is_some_and(|g| g.storage != Storage::Uniform);
+                let name = if shadowed { format!("effectc_other_{}", m.name) } else { m.name.clone() };
+                let _ = writeln!(h, "    {} {name}{};", m.block_ty.base, dims_text(&m.block_ty));
                 if is_struct && !m.block_ty.is_array() && i + 1 < self.plan.members.len() {
                     filler(&mut h, "vec4", 16, &mut offset);
                 }

@@ -1,0 +1,12 @@
+#version 330 core
+layout(location = 0) in vec2 aPos;
+
+uniform float scale = 1.0;
+
+out vec2 uv;
+
+void main()
+{
+    uv = aPos * 0.5 + 0.5;
+    gl_Position = vec4(aPos * scale, 0.0, 1.0);
+}

@@ -1,0 +1,8 @@
+#version 330 core
+in vec3 vColor;
+uniform vec3 color;
+out vec4 fragColor;
+void main()
+{
+    fragColor = vec4(vColor * color, 1.0);
+}

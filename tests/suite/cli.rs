@@ -1,0 +1,169 @@
+//! The `effectc` binary: exit codes (0 clean, 1 problems, 2 IO/usage), output formats,
+//! `--strict`, `--deny-warnings`, `--stage`, and how directories become programs.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const SEED: &str = "tests/fail/01-vert-out-vs-vert-vars";
+
+fn effectc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(args)
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("run effectc")
+}
+
+fn code(out: &Output) -> i32 {
+    out.status.code().expect("exit code")
+}
+
+fn stdout(out: &Output) -> String {
+    String::from_utf8(out.stdout.clone()).expect("UTF-8 stdout")
+}
+
+/// A fresh, empty scratch directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+const GOOD_VERT: &str = "#version 330 core\nlayout(location = 0) in vec2 aPos;\nout vec2 uv;\nvoid main()\n{\n    uv = aPos;\n    gl_Position = vec4(aPos, 0.0, 1.0);\n}\n";
+const GOOD_FRAG: &str = "#version 330 core\nin vec2 uv;\nout vec4 fragColor;\nvoid main()\n{\n    fragColor = vec4(uv, 0.0, 1.0);\n}\n";
+
+#[test]
+fn effects_dir_is_clean() {
+    let out = effectc(&["check", "effects/"]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+}
+
+#[test]
+fn seed_block_mismatch_names_both_blocks_and_files() {
+    let out = effectc(&["check", "--color", "never", SEED]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    for needle in ["vert_vars", "vert_out", "sun.vert", "sun.frag", "E0201"] {
+        assert!(text.contains(needle), "missing `{needle}` in:\n{text}");
+    }
+}
+
+#[test]
+fn missing_path_exits_2() {
+    let out = effectc(&["check", "tests/fail/does-not-exist.frag"]);
+    assert_eq!(code(&out), 2, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0010"));
+}
+
+#[test]
+fn json_parses_and_counts_errors() {
+    let out = effectc(&["check", "--format", "json", SEED]);
+    assert_eq!(code(&out), 1);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("valid JSON");
+    assert!(v["summary"]["errors"].as_u64().unwrap() > 0, "{v}");
+    let d = &v["diagnostics"][0];
+    assert_eq!(d["code"], "E0201");
+    assert!(d["file"].as_str().unwrap().ends_with("sun.frag"));
+    assert!(d["labels"][0]["file"]
+        .as_str()
+        .unwrap()
+        .ends_with("sun.vert"));
+}
+
+#[test]
+fn github_lines_are_error_commands() {
+    let out = effectc(&["check", "--format", "github", SEED]);
+    assert_eq!(code(&out), 1);
+    let text = stdout(&out);
+    assert!(!text.is_empty());
+    for line in text.lines() {
+        assert!(line.starts_with("::error file="), "{line}");
+    }
+}
+
+#[test]
+fn sarif_is_2_1_0() {
+    let out = effectc(&["check", "--format", "sarif", SEED]);
+    assert_eq!(code(&out), 1);
+    let text = stdout(&out);
+    assert!(text.contains("\"version\": \"2.1.0\""), "{text}");
+    let v: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
+    assert_eq!(v["runs"][0]["results"][0]["ruleId"], "E0201");
+}
+
+#[test]
+fn deny_warnings_fails_a_warning_only_input() {
+    let dir = "tests/fail/05-unread-output-warning";
+    assert_eq!(code(&effectc(&["check", dir])), 0);
+    assert_eq!(code(&effectc(&["check", "--deny-warnings", dir])), 1);
+}
+
+#[test]
+fn strict_turns_legacy_warning_into_error() {
+    let dir = "tests/fail/16-texture2d-in-420-core-warning";
+    let out = effectc(&["check", dir]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains("W0120"));
+    let out = effectc(&["check", "--strict", dir]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0120"));
+}
+
+#[test]
+fn stage_flag_for_glsl_extension() {
+    let dir = scratch("stage-flag");
+    let file = dir.join("effect.glsl");
+    std::fs::write(
+        &file,
+        GOOD_FRAG.replace("in vec2 uv;\n", "uniform vec2 uv;\n"),
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    let out = effectc(&["check", path]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0011"));
+    let out = effectc(&["check", "--stage", "fragment", path]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains("checked 1 program"));
+}
+
+#[test]
+fn directory_without_manifest_groups_by_stem() {
+    let dir = scratch("by-stem");
+    for stem in ["first", "second"] {
+        std::fs::write(dir.join(format!("{stem}.vert")), GOOD_VERT).unwrap();
+        std::fs::write(dir.join(format!("{stem}.frag")), GOOD_FRAG).unwrap();
+    }
+    let out = effectc(&["check", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(
+        stdout(&out).contains("checked 2 programs: no problems"),
+        "{}",
+        stdout(&out)
+    );
+}
+
+#[test]
+fn one_bad_program_does_not_stop_the_others() {
+    let dir = scratch("good-and-bad");
+    std::fs::write(dir.join("bad.vert"), GOOD_VERT).unwrap();
+    std::fs::write(
+        dir.join("bad.frag"),
+        GOOD_FRAG.replace("vec4(uv", "vec4(uvv"),
+    )
+    .unwrap();
+    std::fs::write(dir.join("good.vert"), GOOD_VERT).unwrap();
+    std::fs::write(dir.join("good.frag"), GOOD_FRAG).unwrap();
+    let out = effectc(&["check", "--format", "json", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 1);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).unwrap();
+    for d in v["diagnostics"].as_array().unwrap() {
+        assert!(d["file"].as_str().unwrap().ends_with("bad.frag"), "{d}");
+    }
+    let out = effectc(&["check", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert!(text.contains("checked 2 programs: 1 error"), "{text}");
+}

@@ -1,0 +1,62 @@
+//! Helpers shared by the test modules: fixture discovery and rendering.
+
+use std::path::{Path, PathBuf};
+
+use effectc::check::{check_inputs, Checked, Outcome};
+use effectc::diag;
+use effectc::front::program::FrontOptions;
+
+/// Sorted subdirectories of `dir` (relative to the crate root, so paths in output are stable).
+pub fn subdirs(dir: &str) -> Vec<PathBuf> {
+    let mut dirs: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("cannot read {dir}: {e}"))
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_dir())
+        .collect();
+    dirs.sort();
+    dirs
+}
+
+/// The last path component as a string.
+pub fn name_of(path: &Path) -> String {
+    path.file_name().unwrap().to_string_lossy().into_owned()
+}
+
+/// Checks one path with default options.
+pub fn check(path: &Path) -> (Outcome, Vec<Checked>) {
+    check_inputs(&[path.to_path_buf()], None, FrontOptions::default())
+}
+
+/// Human rendering without colour, followed by the summary line.
+pub fn render(outcome: &Outcome) -> String {
+    let mut text = diag::render_human(&outcome.diagnostics, &outcome.files, false);
+    text.push_str(&diag::summary_line(&outcome.diagnostics, outcome.programs));
+    text.push('\n');
+    text
+}
+
+/// Stage files (by extension effectc knows) directly under `dir`, sorted.
+pub fn stage_files(dir: &Path) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| effectc::inputs::stage_of(p, None).is_some())
+        .collect();
+    files.sort();
+    files
+}
+
+/// Fixture directories named `*crlf*` must really hold CRLF files (a checkout with
+/// `core.autocrlf` could silently normalise them).
+pub fn assert_crlf_kept(dir: &Path) {
+    if name_of(dir).contains("crlf") {
+        for file in stage_files(dir) {
+            let bytes = std::fs::read(&file).unwrap();
+            assert!(
+                bytes.windows(2).any(|w| w == b"\r\n"),
+                "{}: lost its CRLF line ends",
+                file.display()
+            );
+        }
+    }
+}
