@@ -73,9 +73,7 @@ pub struct Plan {
     pub varyings: HashMap<String, u32>,
     /// Source text of every struct the block needs, for stages that lack it.
     pub struct_texts: BTreeMap<String, String>,
-    /// std140 size in bytes of every struct the block needs.
-    pub struct_sizes: BTreeMap<String, u32>,
-    /// Non-opaque member types of those structs.
+    /// Non-opaque member types of every struct the block needs (its keys are those structs).
     pub struct_members: BTreeMap<String, Vec<GlslType>>,
 }
 
@@ -240,10 +238,6 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             plan.struct_texts.insert(name.clone(), struct_text(def));
             plan.struct_members.insert(name.clone(), def.members.iter().filter(|m| !m.ty.is_sampler()).map(|m| m.ty.clone()).collect());
         }
-    }
-    for name in plan.block_structs.clone() {
-        let size = block_size_align(&GlslType::scalar(&name), &plan).0;
-        plan.struct_sizes.insert(name, size);
     }
     plan
 }

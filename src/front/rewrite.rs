@@ -52,7 +52,6 @@ struct Ctx<'a> {
     strict: bool,
     edits: Edits,
     diags: Vec<Diagnostic>,
-    header: String,
     need_mat2_helper: bool,
     /// Statements run first in `main` (matrix inputs assembled from columns).
     prologue: String,
@@ -63,7 +62,7 @@ struct Ctx<'a> {
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
 /// constructs go to the returned diagnostics.
 pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Diagnostic>) {
-    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), header: String::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new() };
+    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new() };
     c.version();
     c.declarations();
     c.uses();
@@ -86,7 +85,7 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
 
 impl Ctx<'_> {
     fn legacy(&mut self, span: Range<usize>, what: &str, replacement: &str) {
-        if !self.s.version.forbids_legacy_builtins() && !self.s.version.forbids_attribute_varying() {
+        if !self.s.version.forbids_legacy_builtins() {
             return;
         }
         let v = &self.s.version;
@@ -268,7 +267,7 @@ impl Ctx<'_> {
         if let Some(span) = &g.storage_span {
             let word = storage_word(self.s.stage, g.storage);
             let what = if g.storage == Storage::Attribute { "attribute" } else { "varying" };
-            self.legacy(span.clone(), what, word);
+            self.legacy(span.clone(), what, word); // same versions forbid attribute/varying
             self.edits.replace(span.clone(), word);
         }
     }
@@ -507,7 +506,7 @@ impl Ctx<'_> {
             for name in &self.plan.block_structs {
                 if s.struct_def(name).is_none() {
                     // The block needs a struct this stage does not declare: copy it.
-                    if let Some(def) = self.plan_struct_text(name) {
+                    if let Some(def) = self.plan.struct_texts.get(name) {
                         let _ = writeln!(h, "{def}");
                     }
                 }
@@ -525,7 +524,7 @@ impl Ctx<'_> {
                 *offset = offset.next_multiple_of(size) + size;
             };
             for (i, m) in self.plan.members.iter().enumerate() {
-                let is_struct = self.plan.struct_sizes.contains_key(&m.block_ty.base);
+                let is_struct = self.plan.struct_members.contains_key(&m.block_ty.base);
                 if is_struct {
                     while offset % 16 != 0 {
                         filler(&mut h, "uint", 4, &mut offset);
@@ -600,15 +599,6 @@ impl Ctx<'_> {
             at
         };
         self.edits.insert(at, h);
-    }
-
-    fn plan_struct_text(&self, _name: &str) -> Option<String> {
-        // Filled by the program driver, which has every stage's text.
-        self.plan_struct_defs().get(_name).cloned()
-    }
-
-    fn plan_struct_defs(&self) -> &BTreeMap<String, String> {
-        &self.plan.struct_texts
     }
 }
 

@@ -625,7 +625,7 @@ impl<'a> Collector<'a> {
                 let base = self.type_of(&head.ty.ty);
                 let shares = !list.tail.is_empty();
                 let storage_kind = storage.as_ref().map(|s| s.0).unwrap_or(Storage::Private);
-                let mut declare = |this: &mut Self,
+                let declare = |this: &mut Self,
                                    name: &ast::Identifier,
                                    array: Option<&ast::ArraySpecifier>,
                                    init: Option<&ast::Initializer>| {
@@ -825,15 +825,13 @@ impl<'a> Collector<'a> {
         for scope in self.scopes.iter().rev() {
             if scope.contains_key(name) {
                 // Locals and parameters: only opaque parameters matter to the rewrite.
-                if scope.len() == scope.len() {
-                    if let Some((_, f)) = &self.current_function {
-                        let func = &self.s.functions[*f];
-                        if let Some(pi) = func.params.iter().position(|p| p.name.as_deref() == Some(name)) {
-                            // A parameter is only visible from the function's outermost scope;
-                            // an inner local of the same name shadows it.
-                            if std::ptr::eq(scope, &self.scopes[0]) && func.params[pi].ty.is_sampler() {
-                                return Target::Param(*f, pi);
-                            }
+                if let Some((_, f)) = &self.current_function {
+                    let func = &self.s.functions[*f];
+                    if let Some(pi) = func.params.iter().position(|p| p.name.as_deref() == Some(name)) {
+                        // A parameter is only visible from the function's outermost scope;
+                        // an inner local of the same name shadows it.
+                        if std::ptr::eq(scope, &self.scopes[0]) && func.params[pi].ty.is_sampler() {
+                            return Target::Param(*f, pi);
                         }
                     }
                 }

@@ -50,7 +50,7 @@ impl Version {
     }
 
     /// True where the core profile removed the legacy built-ins (`texture2D`, `gl_FragColor`,
-    /// …): glslang rejects them from desktop 4.20 core and in ES 3.00+.
+    /// `attribute`/`varying`, …): glslang rejects them from desktop 4.20 core and in ES 3.00+.
     pub fn forbids_legacy_builtins(&self) -> bool {
         if self.is_es() {
             self.number >= 300
@@ -59,11 +59,6 @@ impl Version {
         }
     }
 
-    /// `attribute`/`varying` are removed in desktop core 1.40+ (glslang: 4.20+ core is an
-    /// error) and in ES 3.00+.
-    pub fn forbids_attribute_varying(&self) -> bool {
-        self.forbids_legacy_builtins()
-    }
 }
 
 /// Strips `//` and `/* */` comments from a line-oriented scan, keeping offsets.

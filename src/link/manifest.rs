@@ -725,21 +725,11 @@ fn missing(
                     })
                     .unwrap_or_default();
                 if !members.is_empty() {
-                    out.push(
-                        Diagnostic::warning(
-                            W_NO_DEFAULT,
-                            format!("uniform `{}` has no default in effect.toml", decl.name),
-                        )
-                        .at(
-                            decl.file(),
-                            decl.span(),
-                            format!("a `{}` read without a default", decl.type_text()),
-                        )
-                        .with_help(format!(
-                            "add its members under [uniforms] in effect.toml: {}",
-                            list(&members)
-                        )),
-                    );
+                    out.push(no_default(
+                        decl,
+                        &decl.type_text(),
+                        format!("add its members under [uniforms] in effect.toml: {}", list(&members)),
+                    ));
                 }
                 for (path, ty, d) in samplers.iter().filter(|(_, _, d)| std::ptr::eq(*d, decl)) {
                     if !textured.contains(path) {
@@ -761,18 +751,7 @@ fn missing(
                         sem.name()
                     ));
                 }
-                out.push(
-                    Diagnostic::warning(
-                        W_NO_DEFAULT,
-                        format!("uniform `{}` has no default in effect.toml", decl.name),
-                    )
-                    .at(
-                        decl.file(),
-                        decl.span(),
-                        format!("a `{tt}` read without a default"),
-                    )
-                    .with_help(help),
-                );
+                out.push(no_default(decl, &tt, help));
             }
         }
     }
@@ -794,6 +773,13 @@ fn missing(
             .with_help("remove the block, or use it"),
         );
     }
+}
+
+/// W0220: a uniform some stage reads has no default.
+fn no_default(decl: &Decl, type_text: &str, help: String) -> Diagnostic {
+    Diagnostic::warning(W_NO_DEFAULT, format!("uniform `{}` has no default in effect.toml", decl.name))
+        .at(decl.file(), decl.span(), format!("a `{type_text}` read without a default"))
+        .with_help(help)
 }
 
 fn no_texture(decl: &Decl, path: &str, ty: &GlslType) -> Diagnostic {
