@@ -18,6 +18,8 @@ pub struct Cli {
 pub enum Command {
     /// Check effects and GLSL programs: syntax, naga validation, OpenGL link rules, manifest.
     Check(CheckArgs),
+    /// Check, then translate to WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection JSON or IR text.
+    Translate(TranslateArgs),
 }
 
 /// Output format for diagnostics.
@@ -65,8 +67,32 @@ impl From<StageArg> for StageKind {
     }
 }
 
+/// Output targets of `translate`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TargetArg {
+    /// `<effect>.wgsl`: one module with `vs_main` and `fs_main`.
+    Wgsl,
+    /// `<effect>.vert.spv`, `<effect>.frag.spv`: one SPIR-V 1.0 binary per stage.
+    Spv,
+    /// `<effect>.vert.spvasm`, `<effect>.frag.spvasm`: SPIR-V disassembly.
+    Spvasm,
+    /// `<effect>.vert.glsl`, `<effect>.frag.glsl`: GLSL ES 3.00 (WebGL2).
+    Glsl,
+    /// `<effect>.metal`: Metal Shading Language 2.0.
+    Msl,
+    /// `<effect>.hlsl`: HLSL shader model 5.1.
+    Hlsl,
+    /// `<effect>.reflect.json`: bindings, uniform block layout, interface (schema in the README).
+    Reflect,
+    /// `<effect>.ir.txt`: the translated naga IR as text.
+    Ir,
+    /// Every target above.
+    All,
+}
+
+/// Options shared by every subcommand that reads programs and prints diagnostics.
 #[derive(Debug, clap::Args)]
-pub struct CheckArgs {
+pub struct CommonArgs {
     /// Manifests (effect.toml), directories (searched for effect.toml and stage files), or
     /// stage files (.vert .vs .vsh .frag .fs .fsh .geom .gs; named together = one program).
     #[arg(required = true)]
@@ -80,10 +106,34 @@ pub struct CheckArgs {
     /// Constructs the file's own `#version` forbids (e.g. `texture2D` in 4.20 core) are errors.
     #[arg(long)]
     pub strict: bool,
-    /// Exit with 1 when there are warnings.
-    #[arg(long)]
-    pub deny_warnings: bool,
     /// Colour for human output.
     #[arg(long, value_enum, default_value = "auto")]
     pub color: ColorChoice,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct TranslateArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Targets, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "wgsl,spv")]
+    pub to: Vec<TargetArg>,
+    /// Output directory (default: `out/<effect>/` for each program).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// List every item left out of the output and why.
+    #[arg(long)]
+    pub explain: bool,
+    /// Keep GL clip-space depth (z in [-w, w]) instead of mapping it to WebGPU's [0, w].
+    #[arg(long)]
+    pub keep_gl_depth: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct CheckArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Exit with 1 when there are warnings.
+    #[arg(long)]
+    pub deny_warnings: bool,
 }

@@ -7,9 +7,12 @@
 //!    offset map → naga parse + validate.
 //! 4. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader uniforms.
 //! 5. [`check`]: all of the above per program, one bad program never stopping the others.
-//! 6. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
+//! 6. [`back`]: a clean program's stage modules → one merged, fixed, pruned module →
+//!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection; [`translate`] writes them.
+//! 7. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
 //!    (human, JSON, GitHub annotations, SARIF).
 
+pub mod back;
 pub mod check;
 pub mod cli;
 pub mod diag;
@@ -17,4 +20,6 @@ pub mod front;
 pub mod inputs;
 pub mod link;
 pub mod manifest;
+pub mod render;
 pub mod stage;
+pub mod translate;

@@ -5,7 +5,9 @@ use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 
 use clap::Parser;
-use effectc::cli::{CheckArgs, Cli, ColorChoice, Command, Format};
+use effectc::back::{Target, TranslateOptions};
+use effectc::check::Outcome;
+use effectc::cli::{CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, TargetArg, TranslateArgs};
 use effectc::diag;
 use effectc::front::program::FrontOptions;
 
@@ -24,19 +26,76 @@ fn main() -> ExitCode {
     };
     match cli.command {
         Command::Check(args) => check(args),
+        Command::Translate(args) => translate(args),
     }
 }
 
 fn check(args: CheckArgs) -> ExitCode {
-    let options = FrontOptions { strict: args.strict };
-    let (outcome, _) = effectc::check::check_inputs(&args.inputs, args.stage.map(Into::into), options);
-    let color = match args.color {
+    let c = &args.common;
+    let options = FrontOptions { strict: c.strict };
+    let (outcome, _) = effectc::check::check_inputs(&c.inputs, c.stage.map(Into::into), options);
+    let text = diagnostics_text(c, &outcome);
+    if print(&text).is_err() {
+        return ExitCode::from(2);
+    }
+    exit_code(&outcome, args.deny_warnings)
+}
+
+fn translate(args: TranslateArgs) -> ExitCode {
+    let c = &args.common;
+    let mut targets: Vec<Target> = Vec::new();
+    for t in &args.to {
+        match t {
+            TargetArg::All => targets.extend(Target::ALL),
+            one => targets.push(target_of(*one)),
+        }
+    }
+    targets.sort();
+    targets.dedup();
+    let request = effectc::translate::Request {
+        inputs: c.inputs.clone(),
+        stage: c.stage.map(Into::into),
+        front: FrontOptions { strict: c.strict },
+        back: TranslateOptions { gl_depth: !args.keep_gl_depth },
+        targets,
+        out: args.out.clone(),
+    };
+    let (outcome, written) = effectc::translate::run(&request);
+    let mut text = String::new();
+    if c.format == Format::Human {
+        for w in &written {
+            text.push_str(&effectc::translate::summary(w, args.explain));
+        }
+    }
+    text.push_str(&diagnostics_text(c, &outcome));
+    if print(&text).is_err() {
+        return ExitCode::from(2);
+    }
+    exit_code(&outcome, false)
+}
+
+fn target_of(t: TargetArg) -> Target {
+    match t {
+        TargetArg::Wgsl => Target::Wgsl,
+        TargetArg::Spv => Target::Spv,
+        TargetArg::Spvasm => Target::Spvasm,
+        TargetArg::Glsl => Target::Glsl,
+        TargetArg::Msl => Target::Msl,
+        TargetArg::Hlsl => Target::Hlsl,
+        TargetArg::Reflect => Target::Reflect,
+        TargetArg::Ir | TargetArg::All => Target::Ir,
+    }
+}
+
+/// The diagnostics in the requested format (human: with the summary line).
+fn diagnostics_text(c: &CommonArgs, outcome: &Outcome) -> String {
+    let color = match c.color {
         ColorChoice::Always => true,
         ColorChoice::Never => false,
         ColorChoice::Auto => std::io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none(),
     };
     let d = &outcome.diagnostics;
-    let text = match args.format {
+    match c.format {
         Format::Human => {
             let mut t = diag::render_human(d, &outcome.files, color);
             t.push_str(&diag::summary_line(d, outcome.programs));
@@ -46,14 +105,20 @@ fn check(args: CheckArgs) -> ExitCode {
         Format::Json => diag::render_json(d, &outcome.files),
         Format::Github => diag::render_github(d, &outcome.files),
         Format::Sarif => diag::render_sarif(d, &outcome.files),
-    };
-    let mut stdout = std::io::stdout().lock();
-    if stdout.write_all(text.as_bytes()).and_then(|_| stdout.flush()).is_err() {
-        return ExitCode::from(2);
     }
+}
+
+fn print(text: &str) -> std::io::Result<()> {
+    let mut stdout = std::io::stdout().lock();
+    stdout.write_all(text.as_bytes()).and_then(|_| stdout.flush())
+}
+
+/// 2 for usage/IO errors, 1 for errors in the input (or warnings when denied), else 0.
+fn exit_code(outcome: &Outcome, deny_warnings: bool) -> ExitCode {
+    let d = &outcome.diagnostics;
     if outcome.io_error {
         ExitCode::from(2)
-    } else if diag::has_errors(d) || (args.deny_warnings && diag::count(d, diag::Severity::Warning) > 0) {
+    } else if diag::has_errors(d) || (deny_warnings && diag::count(d, diag::Severity::Warning) > 0) {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

@@ -36,6 +36,18 @@ impl StageKind {
         }
     }
 
+    /// Short name used in generated identifiers and file names (`vert`, `frag`, …).
+    pub fn short_name(self) -> &'static str {
+        match self {
+            StageKind::Vertex => "vert",
+            StageKind::TessControl => "tesc",
+            StageKind::TessEval => "tese",
+            StageKind::Geometry => "geom",
+            StageKind::Fragment => "frag",
+            StageKind::Compute => "comp",
+        }
+    }
+
     pub fn from_name(name: &str) -> Option<StageKind> {
         StageKind::ALL.into_iter().find(|s| s.name() == name)
     }

@@ -24,6 +24,9 @@ pub struct Rewritten {
     pub map: OffsetMap,
 }
 
+/// Prefix of a uniform block member another stage declares and this stage shadows.
+pub const OTHER_STAGE_PREFIX: &str = "effectc_other_";
+
 /// Legacy built-in functions and their 4.50 names; `true` when the result must be widened
 /// to `vec4` (the 1xx shadow functions returned vec4).
 const LEGACY_FUNCTIONS: &[(&str, &str, bool)] = &[
@@ -535,7 +538,7 @@ impl Ctx<'_> {
                 // A uniform another stage declares must not shadow this stage's own
                 // variable of that name: keep its bytes, not its name.
                 let shadowed = s.global(&m.name).is_some_and(|g| g.storage != Storage::Uniform);
-                let name = if shadowed { format!("effectc_other_{}", m.name) } else { m.name.clone() };
+                let name = if shadowed { format!("{OTHER_STAGE_PREFIX}{}", m.name) } else { m.name.clone() };
                 let _ = writeln!(h, "    {} {name}{};", m.block_ty.base, dims_text(&m.block_ty));
                 if is_struct && !m.block_ty.is_array() && i + 1 < self.plan.members.len() {
                     filler(&mut h, "vec4", 16, &mut offset);

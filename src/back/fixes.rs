@@ -1,0 +1,264 @@
+//! IR passes that close gaps between what naga's GLSL front produces and what the backends
+//! and wgpu accept, plus the one semantic difference between GL and WebGPU clip space.
+//!
+//! - `switch` cases that end in `return`/`discard`/`break`/`continue` (or are the last case)
+//!   are marked as not falling through; naga's WGSL writer rejects non-empty fall-through.
+//! - Interpolation of vertex outputs and fragment inputs is made explicit (float: perspective,
+//!   centre sampling), so a flattened interface block member (sampling `None`) and a plain
+//!   varying (`Center`) agree and wgpu builds the pipeline.
+//! - GL clip-space depth (z in [-w, w]) is mapped to WebGPU/Vulkan's (z in [0, w]) at the end
+//!   of the vertex stage, so a GL projection matrix keeps its near and far planes.
+
+use naga::{
+    BinaryOperator, Binding, Expression, Handle, Interpolation, Literal, Module, Sampling, Span, Statement,
+    StructMember, Type, TypeInner,
+};
+
+use crate::back::merge::visit_statements;
+
+/// Marks `switch` cases that cannot really fall through. Returns the spans of switches
+/// that still have a fall-through case with code (WGSL cannot express them).
+pub fn fix_switch_fallthrough(module: &mut Module) -> Vec<Span> {
+    let mut remaining = Vec::new();
+    for (_, f) in module.functions.iter_mut() {
+        fix_block(&mut f.body, &mut remaining);
+    }
+    for ep in &mut module.entry_points {
+        fix_block(&mut ep.function.body, &mut remaining);
+    }
+    remaining
+}
+
+fn fix_block(block: &mut naga::Block, remaining: &mut Vec<Span>) {
+    for (s, span) in block.span_iter_mut() {
+        if let Statement::Switch { cases, .. } = s {
+            let last = cases.len().saturating_sub(1);
+            let mut unfixable = false;
+            for (i, case) in cases.iter_mut().enumerate() {
+                if case.fall_through && (i == last || ends_in_jump(&case.body)) {
+                    case.fall_through = false;
+                }
+                unfixable |= case.fall_through && !case.body.is_empty();
+            }
+            if unfixable {
+                remaining.push(span.map(|s| *s).unwrap_or_default());
+            }
+        }
+        for b in crate::back::merge::child_blocks(s) {
+            fix_block(b, remaining);
+        }
+    }
+}
+
+fn ends_in_jump(block: &naga::Block) -> bool {
+    match block.last() {
+        Some(Statement::Return { .. } | Statement::Kill | Statement::Break | Statement::Continue) => true,
+        Some(Statement::Block(inner)) => ends_in_jump(inner),
+        Some(Statement::If { accept, reject, .. }) => ends_in_jump(accept) && ends_in_jump(reject),
+        _ => false,
+    }
+}
+
+/// Makes interpolation and sampling explicit on vertex outputs and fragment inputs.
+pub fn normalize_interpolation(module: &mut Module) {
+    let mut struct_types = Vec::new();
+    for ep in &mut module.entry_points {
+        match ep.stage {
+            naga::ShaderStage::Vertex => {
+                if let Some(r) = &mut ep.function.result {
+                    match &mut r.binding {
+                        Some(b) => normalize_binding(b, &module.types[r.ty].inner),
+                        None => struct_types.push(r.ty),
+                    }
+                }
+            }
+            naga::ShaderStage::Fragment => {
+                for a in &mut ep.function.arguments {
+                    match &mut a.binding {
+                        Some(b) => normalize_binding(b, &module.types[a.ty].inner),
+                        None => struct_types.push(a.ty),
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    struct_types.sort();
+    struct_types.dedup();
+    for ty in struct_types {
+        let t = module.types[ty].clone();
+        let TypeInner::Struct { mut members, span } = t.inner else { continue };
+        for m in &mut members {
+            if let Some(b) = &mut m.binding {
+                normalize_binding(b, &module.types[m.ty].inner);
+            }
+        }
+        let new = Type { name: t.name, inner: TypeInner::Struct { members, span } };
+        // `replace` keeps the handle; it cannot take a value the arena already holds.
+        if module.types.get(&new).is_none() {
+            module.types.replace(ty, new);
+        }
+    }
+}
+
+fn normalize_binding(binding: &mut Binding, ty: &TypeInner) {
+    let Binding::Location { interpolation, sampling, .. } = binding else { return };
+    let float = matches!(ty.scalar_kind(), Some(naga::ScalarKind::Float));
+    if interpolation.is_none() {
+        *interpolation = Some(if float { Interpolation::Perspective } else { Interpolation::Flat });
+    }
+    match interpolation {
+        Some(Interpolation::Perspective | Interpolation::Linear) if sampling.is_none() => {
+            *sampling = Some(Sampling::Center)
+        }
+        _ => {}
+    }
+}
+
+/// Names the generated uniform block's variable `uniforms` (naga's GLSL front leaves a
+/// block without instance name unnamed, and WGSL would call it `global`).
+pub fn name_uniform_block(module: &mut Module, block_type: &str) {
+    for (_, g) in module.global_variables.iter_mut() {
+        if g.name.is_none() && module.types[g.ty].name.as_deref() == Some(block_type) {
+            g.name = Some("uniforms".to_string());
+        }
+    }
+}
+
+/// Maps GL clip-space depth to WebGPU's at every `return` of the vertex entry point:
+/// `position.z = (position.z + position.w) * 0.5`. Returns whether a position was found.
+pub fn gl_to_webgpu_depth(module: &mut Module) -> bool {
+    let mut done = false;
+    for ep in module.entry_points.iter_mut().filter(|e| e.stage == naga::ShaderStage::Vertex) {
+        let Some(result) = &ep.function.result else { continue };
+        let position_member = match &module.types[result.ty].inner {
+            TypeInner::Struct { members, .. } => members.iter().position(is_position),
+            _ => None,
+        };
+        let Some(index) = position_member else { continue };
+        let TypeInner::Struct { members, .. } = &module.types[result.ty].inner else { continue };
+        let vec4 = members[index].ty;
+        let result_ty = result.ty;
+        let f = &mut ep.function;
+        // Find the composed results first; then patch each one.
+        let mut returns: Vec<Handle<Expression>> = Vec::new();
+        visit_statements(&mut f.body, &mut |s| {
+            if let Statement::Return { value: Some(v) } = s {
+                returns.push(*v);
+            }
+        });
+        for ret in returns {
+            let Expression::Compose { ty, components } = f.expressions[ret].clone() else { continue };
+            if ty != result_ty {
+                continue;
+            }
+            let pos = components[index];
+            let half = f.expressions.append(Expression::Literal(Literal::F32(0.5)), Span::UNDEFINED);
+            let mut add = |e| f.expressions.append(e, Span::UNDEFINED);
+            let x = add(Expression::AccessIndex { base: pos, index: 0 });
+            let first = x;
+            let y = add(Expression::AccessIndex { base: pos, index: 1 });
+            let z = add(Expression::AccessIndex { base: pos, index: 2 });
+            let w = add(Expression::AccessIndex { base: pos, index: 3 });
+            let sum = add(Expression::Binary { op: BinaryOperator::Add, left: z, right: w });
+            let new_z = add(Expression::Binary { op: BinaryOperator::Multiply, left: sum, right: half });
+            let new_pos = add(Expression::Compose { ty: vec4, components: vec![x, y, new_z, w] });
+            // Expressions may only refer to earlier ones: compose a new result.
+            let mut new_components = components.clone();
+            new_components[index] = new_pos;
+            let new_ret = add(Expression::Compose { ty: result_ty, components: new_components });
+            replace_return(&mut f.body, ret, new_ret, naga::Range::new_from_bounds(first, new_ret));
+            done = true;
+        }
+    }
+    done
+}
+
+fn is_position(m: &StructMember) -> bool {
+    matches!(m.binding, Some(Binding::BuiltIn(naga::BuiltIn::Position { .. })))
+}
+
+/// Makes the `return` of `old` return `new`, with `Emit(range)` right before it.
+fn replace_return(block: &mut naga::Block, old: Handle<Expression>, new: Handle<Expression>, range: naga::Range<Expression>) -> bool {
+    let at = block.iter().position(|s| matches!(s, Statement::Return { value: Some(v) } if *v == old));
+    if let Some(at) = at {
+        if let Some(Statement::Return { value }) = block.get_mut(at) {
+            *value = Some(new);
+        }
+        let mut emit = naga::Block::new();
+        emit.push(Statement::Emit(range), Span::UNDEFINED);
+        block.splice(at..at, emit);
+        return true;
+    }
+    for s in block.iter_mut() {
+        for b in crate::back::merge::child_blocks(s) {
+            if replace_return(b, old, new, range.clone()) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn module(src: &str, stage: naga::ShaderStage) -> Module {
+        naga::front::glsl::Frontend::default().parse(&naga::front::glsl::Options::from(stage), src).unwrap()
+    }
+    fn wgsl(m: &Module) -> Result<String, String> {
+        let info = crate::front::naga_run::validator().validate(m).map_err(|e| format!("{e:?}"))?;
+        naga::back::wgsl::write_string(m, &info, naga::back::wgsl::WriterFlags::empty()).map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn switch_cases_ending_in_return_write_as_wgsl() {
+        let src = "#version 450\nlayout(location=0) flat in int mode;\nlayout(location=0) out vec4 c;\n\
+                   vec4 pick(int m) { switch (m) { case 0: return vec4(1.0); case 1: case 2: return vec4(0.5); default: return vec4(0.0); } }\n\
+                   void main() { c = pick(mode); }\n";
+        let mut m = module(src, naga::ShaderStage::Fragment);
+        assert!(wgsl(&m).unwrap_err().contains("fall-through"), "naga's gap is still there");
+        assert!(fix_switch_fallthrough(&mut m).is_empty());
+        let out = wgsl(&m).unwrap();
+        assert!(out.contains("case 1, 2: {"), "{out}");
+    }
+
+    #[test]
+    fn real_fall_through_is_counted() {
+        let src = "#version 450\nlayout(location=0) flat in int mode;\nlayout(location=0) out vec4 c;\n\
+                   void main() { float v = 0.0; switch (mode) { case 0: v += 1.0; case 1: v += 2.0; break; } c = vec4(v); }\n";
+        let mut m = module(src, naga::ShaderStage::Fragment);
+        assert_eq!(fix_switch_fallthrough(&mut m).len(), 1);
+    }
+
+    #[test]
+    fn block_members_and_plain_varyings_get_the_same_sampling() {
+        let src = "#version 450\nlayout(location=0) in Block { vec2 uv; } b;\nlayout(location=1) in vec3 n;\nlayout(location=2) flat in int id;\n\
+                   layout(location=0) out vec4 c;\nvoid main() { c = vec4(b.uv, n.x, float(id)); }\n";
+        let mut m = module(src, naga::ShaderStage::Fragment);
+        normalize_interpolation(&mut m);
+        let args = &m.entry_points[0].function.arguments;
+        let bindings: Vec<_> = args.iter().filter_map(|a| a.binding.clone()).collect();
+        for b in &bindings {
+            let Binding::Location { location, interpolation, sampling, .. } = b else { continue };
+            if *location == 2 {
+                assert_eq!(*interpolation, Some(Interpolation::Flat));
+            } else {
+                assert_eq!((*interpolation, *sampling), (Some(Interpolation::Perspective), Some(Sampling::Center)), "{b:?}");
+            }
+        }
+        wgsl(&m).unwrap();
+    }
+
+    #[test]
+    fn gl_depth_is_mapped_to_webgpu_depth() {
+        let src = "#version 450\nlayout(location=0) in vec4 p;\nvoid main() { gl_Position = p; }\n";
+        let mut m = module(src, naga::ShaderStage::Vertex);
+        assert!(gl_to_webgpu_depth(&mut m));
+        let out = wgsl(&m).unwrap();
+        assert!(out.contains("* 0.5f"), "{out}");
+        naga::compact::compact(&mut m, naga::compact::KeepUnused::No);
+        wgsl(&m).unwrap();
+    }
+}

@@ -1,0 +1,223 @@
+//! Back end: a checked program's validated stage modules → one translated module → targets.
+//!
+//! Steps: fix `switch` fall-through per stage (spans still map to the user's file) → merge
+//! the stages into one module ([`merge`]) → make interpolation explicit and map GL clip
+//! depth to WebGPU's ([`fixes`]) → leave out what nothing uses ([`prune`]) → validate →
+//! reflect ([`reflect`]). Each target writer takes only the validated module.
+//!
+//! | code  | meaning |
+//! |-------|---------|
+//! | E0301 | two stages bind different resources at the same (group, binding) |
+//! | E0302 | a `switch` case falls through into the next case's code (WGSL cannot say it) |
+//! | E0303 | a stage naga cannot translate (geometry, tessellation) |
+//! | E0304 | a stage did not validate, so the program cannot be translated |
+//! | E0305 | internal: the translated module failed validation or a writer failed |
+//! | E0306 | a target cannot express the program (e.g. `noperspective` in GLSL ES 3.00) |
+
+pub mod fixes;
+mod glsl_es;
+mod hlsl;
+pub mod ir_text;
+pub mod merge;
+mod msl;
+pub mod prune;
+pub mod reflect;
+mod spirv;
+mod wgsl;
+
+pub use wgsl::verify as verify_wgsl;
+
+use naga::valid::ModuleInfo;
+use naga::Module;
+
+use crate::diag::Diagnostic;
+use crate::front::plan::UNIFORM_BLOCK;
+use crate::front::program::CompiledProgram;
+use crate::manifest::Effect;
+use crate::stage::StageKind;
+
+/// An output format of `effectc translate`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Target {
+    Wgsl,
+    Spv,
+    Spvasm,
+    Glsl,
+    Msl,
+    Hlsl,
+    Reflect,
+    Ir,
+}
+
+impl Target {
+    pub const ALL: [Target; 8] =
+        [Target::Wgsl, Target::Spv, Target::Spvasm, Target::Glsl, Target::Msl, Target::Hlsl, Target::Reflect, Target::Ir];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Target::Wgsl => "wgsl",
+            Target::Spv => "spv",
+            Target::Spvasm => "spvasm",
+            Target::Glsl => "glsl",
+            Target::Msl => "msl",
+            Target::Hlsl => "hlsl",
+            Target::Reflect => "reflect",
+            Target::Ir => "ir",
+        }
+    }
+}
+
+/// Options of the translation.
+#[derive(Debug, Clone, Copy)]
+pub struct TranslateOptions {
+    /// Map GL clip-space depth (z in [-w, w]) to WebGPU/Vulkan's (z in [0, w]).
+    pub gl_depth: bool,
+}
+
+impl Default for TranslateOptions {
+    fn default() -> Self {
+        TranslateOptions { gl_depth: true }
+    }
+}
+
+/// A translated program: the merged, fixed, pruned and validated module.
+#[derive(Debug)]
+pub struct Translation {
+    pub name: String,
+    pub module: Module,
+    pub info: ModuleInfo,
+    /// Stages with an entry point, in pipeline order.
+    pub stages: Vec<StageKind>,
+    pub reflection: reflect::Reflection,
+}
+
+impl Translation {
+    pub fn left_out(&self) -> &[prune::LeftOut] {
+        &self.reflection.left_out
+    }
+}
+
+/// One file a target produces.
+#[derive(Debug, Clone)]
+pub struct Output {
+    pub file_name: String,
+    pub bytes: Vec<u8>,
+}
+
+/// Translates a checked program (no errors) named `name`.
+pub fn translate(
+    name: &str,
+    program: &CompiledProgram,
+    effect: Option<&Effect>,
+    options: TranslateOptions,
+) -> Result<Translation, Vec<Diagnostic>> {
+    let Some(first) = program.stages.first() else {
+        return Err(vec![Diagnostic::error("E0304", "the program has no stages to translate")]);
+    };
+    let file = first.syntax.file;
+    let mut diags = Vec::new();
+    let mut modules = Vec::new();
+    for stage in &program.stages {
+        let kind = stage.syntax.stage;
+        if kind.naga().is_none() {
+            diags.push(
+                Diagnostic::error("E0303", format!("the {kind} stage cannot be translated"))
+                    .in_file(stage.syntax.file)
+                    .with_note("naga, WGSL and the WebGPU pipeline have no geometry or tessellation stages"),
+            );
+            continue;
+        }
+        let (Some(validated), Some(rewritten)) = (&stage.naga, &stage.rewritten) else {
+            diags.push(
+                Diagnostic::error("E0304", format!("the {kind} stage did not validate, so it cannot be translated"))
+                    .in_file(stage.syntax.file),
+            );
+            continue;
+        };
+        let mut module = validated.module.clone();
+        for span in fixes::fix_switch_fallthrough(&mut module) {
+            let mut d = Diagnostic::error("E0302", "a `switch` case falls through into the next case's code")
+                .with_note("WGSL has no fall-through between cases, so this cannot be translated")
+                .with_help("end each case with `break` (repeat the shared code in each case if needed)");
+            d = match span.to_range() {
+                Some(r) => d.at(stage.syntax.file, rewritten.map.range_to_original(r), "this switch"),
+                None => d.in_file(stage.syntax.file),
+            };
+            diags.push(d);
+        }
+        modules.push((kind, module));
+    }
+    if !diags.is_empty() {
+        return Err(diags);
+    }
+    let refs: Vec<(StageKind, &Module)> = modules.iter().map(|(k, m)| (*k, m)).collect();
+    let mut module = merge::merge(&refs).map_err(|c| {
+        vec![Diagnostic::error("E0301", format!("the stages cannot share one module: {}", c.0))
+            .in_file(file)
+            .with_help("give each resource its own binding in every stage")]
+    })?;
+    fixes::normalize_interpolation(&mut module);
+    fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
+    if options.gl_depth {
+        fixes::gl_to_webgpu_depth(&mut module);
+    }
+    // Compaction assumes a valid module; prove it first.
+    crate::front::naga_run::validator().validate(&module).map_err(|e| {
+        vec![internal(file, format!("the merged module does not validate: {}", e.as_inner()))]
+    })?;
+    let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
+    let info = crate::front::naga_run::validator().validate(&module).map_err(|e| {
+        vec![internal(file, format!("the translated module does not validate: {}", e.as_inner()))]
+    })?;
+    let reflection = reflect::reflect(name, &module, &program.plan, effect, left_out);
+    Ok(Translation { name: name.to_string(), module, info, stages: modules.iter().map(|(k, _)| *k).collect(), reflection })
+}
+
+fn internal(file: crate::diag::FileId, message: String) -> Diagnostic {
+    Diagnostic::error("E0305", message)
+        .in_file(file)
+        .with_note("this is a bug in effectc's translation; please report it with the input files")
+}
+
+/// The files `target` produces for a translation (names relative to the output directory).
+pub fn emit(t: &Translation, target: Target) -> Result<Vec<Output>, String> {
+    let (m, info) = (&t.module, &t.info);
+    let text = |name: String, text: String| Output { file_name: name, bytes: text.into_bytes() };
+    let per_stage = |write: &dyn Fn(naga::ShaderStage, &str) -> Result<Output, String>| -> Result<Vec<Output>, String> {
+        t.stages.iter().map(|s| write(s.naga().expect("translated stages have naga stages"), merge::entry_name(*s))).collect()
+    };
+    let stage_file = |stage: naga::ShaderStage, ext: &str| {
+        let short = match stage {
+            naga::ShaderStage::Vertex => "vert",
+            naga::ShaderStage::Fragment => "frag",
+            _ => "comp",
+        };
+        format!("{}.{short}.{ext}", t.name)
+    };
+    Ok(match target {
+        Target::Wgsl => vec![text(format!("{}.wgsl", t.name), wgsl::write(m, info)?)],
+        Target::Spv => per_stage(&|stage, entry| {
+            let words = spirv::write(m, info, stage, entry)?;
+            Ok(Output { file_name: stage_file(stage, "spv"), bytes: spirv::to_bytes(&words) })
+        })?,
+        Target::Spvasm => per_stage(&|stage, entry| {
+            let words = spirv::write(m, info, stage, entry)?;
+            Ok(text(stage_file(stage, "spvasm"), spirv::disassemble(&words)?))
+        })?,
+        Target::Glsl => per_stage(&|stage, entry| Ok(text(stage_file(stage, "glsl"), glsl_es::write(m, info, stage, entry)?)))?,
+        Target::Msl => vec![text(format!("{}.metal", t.name), msl::write(m, info)?)],
+        Target::Hlsl => vec![text(format!("{}.hlsl", t.name), hlsl::write(m, info)?)],
+        Target::Reflect => {
+            let mut json = serde_json::to_string_pretty(&t.reflection).map_err(|e| e.to_string())?;
+            json.push('\n');
+            vec![text(format!("{}.reflect.json", t.name), json)]
+        }
+        Target::Ir => vec![text(format!("{}.ir.txt", t.name), ir_text::write(m))],
+    })
+}
+
+/// SPIR-V words of one stage (for tests and tools that want the words, not the file).
+pub fn spirv_words(t: &Translation, stage: StageKind) -> Result<Vec<u32>, String> {
+    let s = stage.naga().ok_or("no naga stage")?;
+    spirv::write(&t.module, &t.info, s, merge::entry_name(stage))
+}

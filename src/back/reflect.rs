@@ -1,0 +1,551 @@
+//! Reflection of the emitted module (`<effect>.reflect.json`) and packing of uniform values
+//! into the generated uniform block's bytes.
+//!
+//! The reflection describes the module after pruning: exactly the bindings, uniform members
+//! and interface the emitted code has. Offsets are those of the emitted code (WGSL's uniform
+//! layout, which the SPIR-V, MSL and HLSL outputs share), so a renderer can fill the buffer
+//! from the JSON alone; [`pack`] does that from manifest values.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use naga::{AddressSpace, Binding, Handle, ImageClass, ImageDimension, Module, ScalarKind, Statement, Type, TypeInner};
+use serde::Serialize;
+
+use crate::back::merge::visit_statements;
+use crate::back::prune::LeftOut;
+use crate::front::plan::{Plan, Repr, UNIFORM_BLOCK};
+use crate::manifest::{Effect, UniformValue};
+
+/// Version of the reflection JSON schema (documented in the README).
+pub const SCHEMA_VERSION: u32 = 1;
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Reflection {
+    pub schema: u32,
+    pub effect: String,
+    pub entry_points: Vec<EntryPointInfo>,
+    pub bindings: Vec<BindingInfo>,
+    pub uniform_block: Option<UniformBlock>,
+    pub vertex_inputs: Vec<InterfaceVar>,
+    pub varyings: Vec<InterfaceVar>,
+    pub fragment_outputs: Vec<InterfaceVar>,
+    pub left_out: Vec<LeftOut>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct EntryPointInfo {
+    pub stage: &'static str,
+    pub name: String,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct BindingInfo {
+    pub group: u32,
+    pub binding: u32,
+    /// Name in the emitted code.
+    pub name: String,
+    /// `uniform_buffer`, `storage_buffer`, `texture`, `storage_texture`, `sampler`, `comparison_sampler`.
+    pub kind: &'static str,
+    /// Textures: `1d`, `2d`, `2d_array`, `3d`, `cube`, `cube_array`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dimension: Option<&'static str>,
+    /// Textures: `float`, `sint`, `uint`, `depth`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sample_type: Option<&'static str>,
+    /// Textures: multisampled.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub multisampled: bool,
+    /// Buffers: the bound struct's size in bytes.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub size: Option<u32>,
+    /// Stages that use it: `vertex`, `fragment`.
+    pub visibility: Vec<&'static str>,
+    /// What the user wrote in GLSL to reach it (`tex`, `material.diffuse`, `maps[2]`, a
+    /// uniform block's name); for samplers, the texture's path.
+    pub glsl: Option<String>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct UniformBlock {
+    pub name: String,
+    pub group: u32,
+    pub binding: u32,
+    pub size: u32,
+    pub members: Vec<UniformMember>,
+    /// Which manifest entry fills which bytes.
+    pub fills: Vec<Fill>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct UniformMember {
+    pub name: String,
+    /// Type as the user declared it in GLSL.
+    pub glsl_type: String,
+    /// Type in the emitted code (WGSL spelling).
+    pub wgsl_type: String,
+    pub offset: u32,
+    pub size: u32,
+    /// How the GLSL value is stored: `plain`, `bool_as_uint`, `padded_to_vec4`, `mat2_as_vec4`, `mat2_array_as_vec4_array`.
+    pub repr: &'static str,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Fill {
+    /// Manifest uniform name (`minBI`, `lights[0].color`).
+    pub uniform: String,
+    /// Byte range `[start, end)` in the block.
+    pub bytes: [u32; 2],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub value: Option<UniformValue>,
+    /// Filled per frame by the renderer instead of a value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub semantic: Option<String>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct InterfaceVar {
+    pub location: u32,
+    pub name: String,
+    pub wgsl_type: String,
+    /// Vertex inputs: the wgpu vertex format (`float32x3`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub format: Option<String>,
+    /// Varyings: `perspective`, `linear`, `flat`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub interpolation: Option<&'static str>,
+}
+
+/// WGSL spelling of a type.
+pub fn type_name(module: &Module, ty: Handle<Type>) -> String {
+    let t = &module.types[ty];
+    match &t.inner {
+        TypeInner::Scalar(s) => scalar_name(*s).to_string(),
+        TypeInner::Vector { size, scalar } => format!("vec{}<{}>", *size as u8, scalar_name(*scalar)),
+        TypeInner::Matrix { columns, rows, scalar } => {
+            format!("mat{}x{}<{}>", *columns as u8, *rows as u8, scalar_name(*scalar))
+        }
+        TypeInner::Array { base, size, .. } => match size {
+            naga::ArraySize::Constant(n) => format!("array<{}, {n}>", type_name(module, *base)),
+            _ => format!("array<{}>", type_name(module, *base)),
+        },
+        _ => t.name.clone().unwrap_or_else(|| format!("{:?}", t.inner)),
+    }
+}
+
+fn scalar_name(s: naga::Scalar) -> &'static str {
+    match (s.kind, s.width) {
+        (ScalarKind::Float, 2) => "f16",
+        (ScalarKind::Float, 8) => "f64",
+        (ScalarKind::Float, _) => "f32",
+        (ScalarKind::Sint, _) => "i32",
+        (ScalarKind::Uint, _) => "u32",
+        (ScalarKind::Bool, _) => "bool",
+        _ => "?",
+    }
+}
+
+fn vertex_format(module: &Module, ty: Handle<Type>) -> Option<String> {
+    let (scalar, n) = match module.types[ty].inner {
+        TypeInner::Scalar(s) => (s, 1),
+        TypeInner::Vector { size, scalar } => (scalar, size as u8),
+        _ => return None,
+    };
+    let base = match (scalar.kind, scalar.width) {
+        (ScalarKind::Float, 4) => "float32",
+        (ScalarKind::Sint, 4) => "sint32",
+        (ScalarKind::Uint, 4) => "uint32",
+        (ScalarKind::Float, 8) => "float64",
+        _ => return None,
+    };
+    Some(if n == 1 { base.to_string() } else { format!("{base}x{n}") })
+}
+
+fn stage_name(s: naga::ShaderStage) -> &'static str {
+    match s {
+        naga::ShaderStage::Vertex => "vertex",
+        naga::ShaderStage::Fragment => "fragment",
+        naga::ShaderStage::Compute => "compute",
+        _ => "other",
+    }
+}
+
+/// Globals each entry point reaches (directly or through calls).
+fn visibility(module: &Module) -> BTreeMap<Handle<naga::GlobalVariable>, BTreeSet<&'static str>> {
+    let mut out: BTreeMap<_, BTreeSet<&'static str>> = BTreeMap::new();
+    for ep in &module.entry_points {
+        let mut pending = vec![&ep.function];
+        let mut seen = BTreeSet::new();
+        while let Some(f) = pending.pop() {
+            for (_, e) in f.expressions.iter() {
+                if let naga::Expression::GlobalVariable(g) = e {
+                    out.entry(*g).or_default().insert(stage_name(ep.stage));
+                }
+            }
+            let mut body = f.body.clone();
+            let mut calls = Vec::new();
+            visit_statements(&mut body, &mut |s| {
+                if let Statement::Call { function, .. } = s {
+                    calls.push(*function);
+                }
+            });
+            for c in calls {
+                if seen.insert(c) {
+                    pending.push(&module.functions[c]);
+                }
+            }
+        }
+    }
+    out
+}
+
+fn interpolation_name(b: &Binding) -> Option<&'static str> {
+    match b {
+        Binding::Location { interpolation: Some(i), .. } => Some(match i {
+            naga::Interpolation::Perspective => "perspective",
+            naga::Interpolation::Linear => "linear",
+            naga::Interpolation::Flat => "flat",
+            _ => "other",
+        }),
+        _ => None,
+    }
+}
+
+/// Location-bound members of an entry point's inputs or output (struct or plain).
+fn located(module: &Module, items: &[(Option<String>, Handle<Type>, Option<Binding>)]) -> Vec<(u32, String, Handle<Type>, Binding)> {
+    let mut out = Vec::new();
+    for (name, ty, binding) in items {
+        match binding {
+            Some(b @ Binding::Location { location, .. }) => out.push((*location, name.clone().unwrap_or_default(), *ty, b.clone())),
+            Some(_) => {}
+            None => {
+                if let TypeInner::Struct { members, .. } = &module.types[*ty].inner {
+                    for m in members {
+                        if let Some(b @ Binding::Location { location, .. }) = &m.binding {
+                            out.push((*location, m.name.clone().unwrap_or_default(), m.ty, b.clone()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    out.sort_by_key(|x| x.0);
+    out
+}
+
+/// Builds the reflection of a pruned, validated module.
+pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>, left_out: Vec<LeftOut>) -> Reflection {
+    let vis = visibility(module);
+    let mut bindings = Vec::new();
+    let mut uniform_block = None;
+    for (h, g) in module.global_variables.iter() {
+        let Some(rb) = &g.binding else { continue };
+        let gname = g.name.clone().unwrap_or_default();
+        let mut info = BindingInfo {
+            group: rb.group,
+            binding: rb.binding,
+            name: gname.clone(),
+            kind: "uniform_buffer",
+            dimension: None,
+            sample_type: None,
+            multisampled: false,
+            size: None,
+            visibility: vis.get(&h).map(|s| s.iter().copied().collect()).unwrap_or_default(),
+            glsl: None,
+        };
+        match &module.types[g.ty].inner {
+            TypeInner::Image { dim, arrayed, class } => {
+                info.kind = if matches!(class, ImageClass::Storage { .. }) { "storage_texture" } else { "texture" };
+                info.dimension = Some(match (dim, arrayed) {
+                    (ImageDimension::D1, _) => "1d",
+                    (ImageDimension::D2, false) => "2d",
+                    (ImageDimension::D2, true) => "2d_array",
+                    (ImageDimension::D3, _) => "3d",
+                    (ImageDimension::Cube, false) => "cube",
+                    (ImageDimension::Cube, true) => "cube_array",
+                });
+                match class {
+                    ImageClass::Sampled { kind, multi } => {
+                        info.multisampled = *multi;
+                        info.sample_type = Some(match kind {
+                            ScalarKind::Sint => "sint",
+                            ScalarKind::Uint => "uint",
+                            _ => "float",
+                        });
+                    }
+                    ImageClass::Depth { multi } => {
+                        info.multisampled = *multi;
+                        info.sample_type = Some("depth");
+                    }
+                    _ => {}
+                }
+                info.glsl = plan.textures.iter().find(|t| t.name == gname).map(|t| t.user_path.clone());
+            }
+            TypeInner::Sampler { comparison } => {
+                info.kind = if *comparison { "comparison_sampler" } else { "sampler" };
+                info.glsl = plan.textures.iter().find(|t| t.sampler_name == gname).map(|t| t.user_path.clone());
+            }
+            TypeInner::Struct { span, .. } => {
+                info.kind = if g.space == AddressSpace::Uniform { "uniform_buffer" } else { "storage_buffer" };
+                info.size = Some(*span);
+                let tname = module.types[g.ty].name.clone().unwrap_or_default();
+                if tname == UNIFORM_BLOCK && g.space == AddressSpace::Uniform {
+                    uniform_block = Some(block_of(module, g.ty, rb, plan, effect));
+                } else {
+                    info.glsl = Some(tname);
+                }
+            }
+            _ => {}
+        }
+        bindings.push(info);
+    }
+    bindings.sort_by_key(|b| (b.group, b.binding));
+
+    let mut vertex_inputs = Vec::new();
+    let mut varyings = Vec::new();
+    let mut fragment_outputs = Vec::new();
+    for ep in &module.entry_points {
+        let args: Vec<_> = ep.function.arguments.iter().map(|a| (a.name.clone(), a.ty, a.binding.clone())).collect();
+        let result: Vec<_> = ep.function.result.iter().map(|r| (None, r.ty, r.binding.clone())).collect();
+        match ep.stage {
+            naga::ShaderStage::Vertex => {
+                for (location, name, ty, _) in located(module, &args) {
+                    vertex_inputs.push(InterfaceVar {
+                        location,
+                        name,
+                        wgsl_type: type_name(module, ty),
+                        format: vertex_format(module, ty),
+                        interpolation: None,
+                    });
+                }
+                for (location, name, ty, b) in located(module, &result) {
+                    varyings.push(InterfaceVar {
+                        location,
+                        name,
+                        wgsl_type: type_name(module, ty),
+                        format: None,
+                        interpolation: interpolation_name(&b),
+                    });
+                }
+            }
+            naga::ShaderStage::Fragment => {
+                if !module.entry_points.iter().any(|e| e.stage == naga::ShaderStage::Vertex) {
+                    for (location, name, ty, b) in located(module, &args) {
+                        varyings.push(InterfaceVar {
+                            location,
+                            name,
+                            wgsl_type: type_name(module, ty),
+                            format: None,
+                            interpolation: interpolation_name(&b),
+                        });
+                    }
+                }
+                for (location, name, ty, _) in located(module, &result) {
+                    fragment_outputs.push(InterfaceVar {
+                        location,
+                        name,
+                        wgsl_type: type_name(module, ty),
+                        format: None,
+                        interpolation: None,
+                    });
+                }
+            }
+            _ => {}
+        }
+    }
+    Reflection {
+        schema: SCHEMA_VERSION,
+        effect: name.to_string(),
+        entry_points: module
+            .entry_points
+            .iter()
+            .map(|e| EntryPointInfo { stage: stage_name(e.stage), name: e.name.clone() })
+            .collect(),
+        bindings,
+        uniform_block,
+        vertex_inputs,
+        varyings,
+        fragment_outputs,
+        left_out,
+    }
+}
+
+fn repr_name(r: &Repr) -> &'static str {
+    match r {
+        Repr::Plain => "plain",
+        Repr::Bool { .. } => "bool_as_uint",
+        Repr::Padded { .. } => "padded_to_vec4",
+        Repr::Mat2 => "mat2_as_vec4",
+        Repr::Mat2Array => "mat2_array_as_vec4_array",
+    }
+}
+
+fn block_of(module: &Module, ty: Handle<Type>, rb: &naga::ResourceBinding, plan: &Plan, effect: Option<&Effect>) -> UniformBlock {
+    let (members, size) = match &module.types[ty].inner {
+        TypeInner::Struct { members, span } => (members.clone(), *span),
+        _ => (Vec::new(), 0),
+    };
+    let mut layouter = naga::proc::Layouter::default();
+    let _ = layouter.update(module.to_ctx());
+    let out_members = members
+        .iter()
+        .map(|m| {
+            let name = m.name.clone().unwrap_or_default();
+            let pm = plan.member(&name);
+            UniformMember {
+                glsl_type: pm.map(|p| p.user_ty.to_string()).unwrap_or_else(|| type_name(module, m.ty)),
+                wgsl_type: type_name(module, m.ty),
+                offset: m.offset,
+                size: layouter[m.ty].size,
+                repr: pm.map(|p| repr_name(&p.repr)).unwrap_or("plain"),
+                name,
+            }
+        })
+        .collect();
+    let mut fills = Vec::new();
+    if let Some(effect) = effect {
+        for u in &effect.uniforms {
+            let Some((offset, t)) = resolve_path(module, ty, &u.name) else { continue };
+            fills.push(Fill {
+                uniform: u.name.clone(),
+                bytes: [offset, offset + layouter[t].size],
+                value: u.value.clone(),
+                semantic: u.semantic.map(|s| s.name().to_string()),
+            });
+        }
+    }
+    UniformBlock { name: UNIFORM_BLOCK.to_string(), group: rb.group, binding: rb.binding, size, members: out_members, fills }
+}
+
+/// Byte offset and type of a GLSL path (`a`, `a.b`, `a[2].c`) inside struct `ty`.
+pub fn resolve_path(module: &Module, ty: Handle<Type>, path: &str) -> Option<(u32, Handle<Type>)> {
+    let mut offset = 0u32;
+    let mut cur = ty;
+    let mut rest = path;
+    let mut first = true;
+    while !rest.is_empty() {
+        if let Some(r) = rest.strip_prefix('[') {
+            let end = r.find(']')?;
+            let index: u32 = r[..end].trim().parse().ok()?;
+            rest = &r[end + 1..];
+            match module.types[cur].inner {
+                TypeInner::Array { base, size: naga::ArraySize::Constant(n), stride } if index < n.get() => {
+                    offset += index * stride;
+                    cur = base;
+                }
+                _ => return None,
+            }
+            continue;
+        }
+        let r = if first { rest } else { rest.strip_prefix('.')? };
+        first = false;
+        let end = r.find(['.', '[']).unwrap_or(r.len());
+        let field = &r[..end];
+        rest = &r[end..];
+        let TypeInner::Struct { members, .. } = &module.types[cur].inner else { return None };
+        let m = members.iter().find(|m| m.name.as_deref() == Some(field))?;
+        offset += m.offset;
+        cur = m.ty;
+    }
+    Some((offset, cur))
+}
+
+/// Why a value could not be packed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PackError(pub String);
+
+/// Packs `values` (uniform path → value) into a buffer of the block's size. Paths the
+/// emitted block does not hold (left out as unread) are skipped; values are written into
+/// the leading components of their slot (a padded `float[]` element uses `.x`), booleans
+/// as 0/1, matrices column by column with the emitted column stride.
+pub fn pack(module: &Module, block_ty: Handle<Type>, values: &[(&str, &UniformValue)]) -> Result<Vec<u8>, PackError> {
+    let size = match module.types[block_ty].inner {
+        TypeInner::Struct { span, .. } => span as usize,
+        _ => return Err(PackError("not a struct".into())),
+    };
+    let mut buf = vec![0u8; size];
+    for (path, value) in values {
+        let Some((offset, ty)) = resolve_path(module, block_ty, path) else { continue };
+        write_value(module, ty, offset as usize, value, &mut buf).map_err(|e| PackError(format!("`{path}`: {e}")))?;
+    }
+    Ok(buf)
+}
+
+/// The block's bytes filled with the manifest's default values (semantics left zero).
+pub fn pack_defaults(module: &Module, effect: &Effect) -> Result<Option<Vec<u8>>, PackError> {
+    let Some(ty) = block_type(module) else { return Ok(None) };
+    let values: Vec<(&str, &UniformValue)> =
+        effect.uniforms.iter().filter_map(|u| u.value.as_ref().map(|v| (u.name.as_str(), v))).collect();
+    pack(module, ty, &values).map(Some)
+}
+
+/// The generated uniform block's struct type in `module`, if it has one.
+pub fn block_type(module: &Module) -> Option<Handle<Type>> {
+    module
+        .global_variables
+        .iter()
+        .find(|(_, g)| g.space == AddressSpace::Uniform && module.types[g.ty].name.as_deref() == Some(UNIFORM_BLOCK))
+        .map(|(_, g)| g.ty)
+}
+
+fn scalar_bytes(kind: ScalarKind, v: &UniformValue) -> Result<[u8; 4], String> {
+    let f = match v {
+        UniformValue::Bool(b) => f64::from(u8::from(*b)),
+        UniformValue::Int(i) => *i as f64,
+        UniformValue::Float(f) => *f,
+        UniformValue::List(_) => return Err("a list where a number belongs".into()),
+    };
+    Ok(match kind {
+        ScalarKind::Float => (f as f32).to_le_bytes(),
+        ScalarKind::Sint => (f as i32).to_le_bytes(),
+        ScalarKind::Uint | ScalarKind::Bool => (f.max(0.0) as u32).to_le_bytes(),
+        _ => return Err("unsupported scalar kind".into()),
+    })
+}
+
+fn write_value(module: &Module, ty: Handle<Type>, offset: usize, value: &UniformValue, buf: &mut [u8]) -> Result<(), String> {
+    let put = |buf: &mut [u8], at: usize, bytes: [u8; 4]| -> Result<(), String> {
+        buf.get_mut(at..at + 4).ok_or("value runs past the block")?.copy_from_slice(&bytes);
+        Ok(())
+    };
+    match &module.types[ty].inner {
+        TypeInner::Scalar(s) => {
+            let v = value.scalars().into_iter().next().ok_or("empty value")?;
+            put(buf, offset, scalar_bytes(s.kind, v)?)
+        }
+        TypeInner::Vector { size, scalar } => {
+            let scalars = value.scalars();
+            if scalars.len() > *size as usize {
+                return Err(format!("{} numbers for a {}-component slot", scalars.len(), *size as u8));
+            }
+            for (i, v) in scalars.into_iter().enumerate() {
+                put(buf, offset + 4 * i, scalar_bytes(scalar.kind, v)?)?;
+            }
+            Ok(())
+        }
+        TypeInner::Matrix { columns, rows, scalar } => {
+            let (c, r) = (*columns as usize, *rows as usize);
+            let stride = if r == 2 { 8 } else { 16 };
+            let scalars = value.scalars();
+            if scalars.len() != c * r {
+                return Err(format!("{} numbers for a {c}x{r} matrix", scalars.len()));
+            }
+            for (i, v) in scalars.into_iter().enumerate() {
+                put(buf, offset + (i / r) * stride + 4 * (i % r), scalar_bytes(scalar.kind, v)?)?;
+            }
+            Ok(())
+        }
+        TypeInner::Array { base, stride, size } => {
+            let UniformValue::List(items) = value else { return Err("an array needs a list".into()) };
+            if let naga::ArraySize::Constant(n) = size {
+                if items.len() > n.get() as usize {
+                    return Err(format!("{} elements for an array of {n}", items.len()));
+                }
+            }
+            for (i, item) in items.iter().enumerate() {
+                write_value(module, *base, offset + i * *stride as usize, item, buf)?;
+            }
+            Ok(())
+        }
+        _ => Err("a struct value must be given member by member (`name.member`)".into()),
+    }
+}

@@ -1,0 +1,168 @@
+//! `effectc translate`: check, then translate every clean program and write its targets.
+//!
+//! A program with check errors is not translated (its diagnostics are the output, exit 1);
+//! the others still are. Files are written atomically (temporary file + rename) into the
+//! output directory, which is created as needed; a path that is one of the inputs is never
+//! written.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use crate::back::{self, Target, TranslateOptions, Translation};
+use crate::check::{self, Outcome};
+use crate::diag::Diagnostic;
+use crate::front::program::FrontOptions;
+use crate::stage::StageKind;
+
+/// Code for an output that cannot be written (IO: exit 2).
+pub const E_OUTPUT_IO: &str = "E0014";
+
+/// What `translate` was asked to do.
+#[derive(Debug, Clone)]
+pub struct Request {
+    pub inputs: Vec<PathBuf>,
+    pub stage: Option<StageKind>,
+    pub front: FrontOptions,
+    pub back: TranslateOptions,
+    pub targets: Vec<Target>,
+    /// `None`: `out/<effect>/` for each program.
+    pub out: Option<PathBuf>,
+}
+
+/// One translated program and the files written for it.
+#[derive(Debug)]
+pub struct Written {
+    pub translation: Translation,
+    pub dir: PathBuf,
+    pub files: Vec<PathBuf>,
+}
+
+/// Runs check and translation; diagnostics of both are in the outcome.
+pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
+    let (mut outcome, checked) = check::check_inputs(&request.inputs, request.stage, request.front);
+    let inputs = input_paths(&outcome, &request.inputs);
+    let mut written = Vec::new();
+    for c in &checked {
+        let (false, Some(program)) = (c.failed, &c.program) else { continue };
+        let name = c.effect.as_ref().map(|e| e.name.clone()).unwrap_or_else(|| program_name(&outcome, program));
+        let file = program.stages[0].syntax.file;
+        // naga can panic on modules it should reject; contain it like the front does.
+        let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            back::translate(&name, program, c.effect.as_ref(), request.back)
+        }))
+        .unwrap_or_else(|_| Err(vec![panicked(file, "translation")]));
+        let translation = match result {
+            Ok(t) => t,
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                continue;
+            }
+        };
+        let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&name));
+        let mut files = Vec::new();
+        for &target in &request.targets {
+            let emitted = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| back::emit(&translation, target)));
+            let outputs = match emitted.unwrap_or_else(|_| Err("naga panicked".into())) {
+                Ok(o) => o,
+                Err(e) => {
+                    outcome.diagnostics.push(target_error(file, target, &e));
+                    continue;
+                }
+            };
+            for o in outputs {
+                let path = dir.join(&o.file_name);
+                match write_atomic(&path, &o.bytes, &inputs) {
+                    Ok(()) => files.push(path),
+                    Err(e) => {
+                        outcome.io_error = true;
+                        outcome.diagnostics.push(Diagnostic::error(E_OUTPUT_IO, e));
+                    }
+                }
+            }
+        }
+        written.push(Written { translation, dir, files });
+    }
+    crate::diag::sort(&mut outcome.diagnostics);
+    (outcome, written)
+}
+
+/// A target writer failed: the target cannot express the program (E0306), or naga/effectc
+/// has a gap (E0305).
+fn target_error(file: crate::diag::FileId, target: Target, message: &str) -> Diagnostic {
+    let unsupported = ["doesn't support", "not supported", "unsupported", "Unimplemented"];
+    if unsupported.iter().any(|u| message.contains(u)) {
+        Diagnostic::error("E0306", format!("the {} target cannot express this program", target.name()))
+            .in_file(file)
+            .with_note(message.to_string())
+            .with_help("leave this target out of --to, or avoid the feature in the shader")
+    } else {
+        Diagnostic::error("E0305", format!("cannot write {}: {message}", target.name()))
+            .in_file(file)
+            .with_note("this is a gap in naga's backend or a bug in effectc; please report it")
+    }
+}
+
+fn panicked(file: crate::diag::FileId, what: &str) -> Diagnostic {
+    Diagnostic::error("E0305", format!("naga panicked during {what}"))
+        .in_file(file)
+        .with_note("this is a bug in naga or effectc; please report it with the input files")
+}
+
+/// The name of a program without a manifest: its first stage file's stem.
+fn program_name(outcome: &Outcome, program: &crate::front::program::CompiledProgram) -> String {
+    let path = Path::new(outcome.files.path(program.stages[0].syntax.file));
+    path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "effect".into())
+}
+
+/// Canonical paths of every file the run read.
+fn input_paths(outcome: &Outcome, inputs: &[PathBuf]) -> BTreeSet<PathBuf> {
+    let mut set: BTreeSet<PathBuf> = outcome.files.iter().filter_map(|(id, _)| std::fs::canonicalize(outcome.files.path(id)).ok()).collect();
+    set.extend(inputs.iter().filter_map(|p| std::fs::canonicalize(p).ok()));
+    set
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same directory and a rename,
+/// so readers never see a half-written file. Refuses to replace an input.
+pub fn write_atomic(path: &Path, bytes: &[u8], inputs: &BTreeSet<PathBuf>) -> Result<(), String> {
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create `{}`: {e}", dir.display()))?;
+    if let Ok(canonical) = std::fs::canonicalize(path) {
+        if inputs.contains(&canonical) {
+            return Err(format!("refusing to write `{}`: it is one of the inputs", path.display()));
+        }
+    }
+    let file_name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = dir.join(format!(".{file_name}.{}.tmp", std::process::id()));
+    let result = std::fs::write(&tmp, bytes).and_then(|_| std::fs::rename(&tmp, path));
+    if let Err(e) = result {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(format!("cannot write `{}`: {e}", path.display()));
+    }
+    Ok(())
+}
+
+/// Human summary of one translated program, with `--explain` detail when asked.
+pub fn summary(w: &Written, explain: bool) -> String {
+    let names: Vec<String> =
+        w.files.iter().map(|f| f.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()).collect();
+    let mut text = format!("translated {} → {}: {}\n", w.translation.name, w.dir.display(), names.join(", "));
+    let left = w.translation.left_out();
+    if !left.is_empty() {
+        if explain {
+            text.push_str(&format!("  left out {} item{}:\n", left.len(), if left.len() == 1 { "" } else { "s" }));
+            for l in left {
+                text.push_str(&format!("    {} `{}`: {}\n", l.kind, l.name, l.reason));
+            }
+        } else {
+            let mut kinds: Vec<&str> = left.iter().map(|l| l.kind).collect();
+            kinds.dedup();
+            text.push_str(&format!(
+                "  left out {} unused item{} ({}); --explain lists them\n",
+                left.len(),
+                if left.len() == 1 { "" } else { "s" },
+                kinds.join(", ")
+            ));
+        }
+    }
+    text
+}
