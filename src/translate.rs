@@ -89,7 +89,7 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
 /// A target writer failed: the target cannot express the program (E0306), or naga/effectc
 /// has a gap (E0305).
 fn target_error(file: crate::diag::FileId, target: Target, message: &str) -> Diagnostic {
-    let unsupported = ["doesn't support", "not supported", "unsupported", "Unimplemented"];
+    let unsupported = ["doesn't support", "not supported", "nsupported", "Unimplemented"];
     if unsupported.iter().any(|u| message.contains(u)) {
         Diagnostic::error("E0306", format!("the {} target cannot express this program", target.name()))
             .in_file(file)

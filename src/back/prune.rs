@@ -299,7 +299,7 @@ fn drop_unreceived_vertex_outputs(module: &mut Module) -> Vec<LeftOut> {
             reason: "vertex output no fragment input receives".into(),
         });
     }
-    let new_ty = relaid_struct(module, old.name.clone(), kept, false);
+    let (new_ty, _) = relaid_struct(module, old.name.clone(), kept, false);
     let f = &mut module.entry_points[vi].function;
     f.result.as_mut().expect("checked").ty = new_ty;
     for r in returns.into_iter().flatten() {
@@ -315,29 +315,49 @@ fn drop_unreceived_vertex_outputs(module: &mut Module) -> Vec<LeftOut> {
     left
 }
 
-/// A struct type with `members` laid out afresh (offsets by naga's layouter; `uniform`
-/// applies WGSL's uniform address space rules: structs and arrays 16-aligned).
-fn relaid_struct(module: &mut Module, name: Option<String>, mut members: Vec<StructMember>, uniform: bool) -> Handle<Type> {
+/// A struct type with `members` laid out afresh in WGSL's natural layout (naga's WGSL
+/// writer emits no offsets, so the IR must use the layout the WGSL text implies).
+/// `uniform` also meets the uniform address space rules the natural layout may break
+/// (structs and arrays 16-aligned, `roundUp(16, size)` after a struct) by inserting
+/// `effectc_padN` filler members, as the front does for the unpruned block.
+/// Returns the type and, for each given member, its index in the new struct.
+fn relaid_struct(module: &mut Module, name: Option<String>, members: Vec<StructMember>, uniform: bool) -> (Handle<Type>, Vec<u32>) {
     let mut layouter = naga::proc::Layouter::default();
     layouter.update(module.to_ctx()).expect("types of a validated module lay out");
-    let mut offset = 0u32;
-    let mut max_align = if uniform { 16 } else { 1 };
-    for m in &mut members {
+    let filler_ty = module.types.insert(
+        Type { name: None, inner: TypeInner::Scalar(naga::Scalar::F32) },
+        naga::Span::UNDEFINED,
+    );
+    let mut out: Vec<StructMember> = Vec::new();
+    let mut end = 0u32;
+    let mut after_struct = 0u32;
+    let mut max_align = 1u32;
+    let mut fillers = 0;
+    let mut indices = Vec::new();
+    for mut m in members {
         let layout = layouter[m.ty];
+        let natural = layout.alignment.round_up(1).max(1);
         let aggregate = matches!(module.types[m.ty].inner, TypeInner::Struct { .. } | TypeInner::Array { .. });
-        let mut align = layout.alignment.round_up(1).max(1);
-        if uniform && aggregate {
-            align = align.max(16);
+        let required = if uniform && aggregate { natural.max(16) } else { natural };
+        max_align = max_align.max(natural);
+        if uniform {
+            while !end.next_multiple_of(natural).is_multiple_of(required) || end.next_multiple_of(natural) < after_struct {
+                out.push(StructMember { name: Some(format!("effectc_pad{fillers}")), ty: filler_ty, binding: None, offset: end });
+                fillers += 1;
+                end += 4;
+            }
         }
-        max_align = max_align.max(align);
-        m.offset = offset.next_multiple_of(align);
-        offset = m.offset + layout.size;
-        if uniform && matches!(module.types[m.ty].inner, TypeInner::Struct { .. }) {
-            offset = offset.next_multiple_of(16);
-        }
+        m.offset = end.next_multiple_of(natural);
+        end = m.offset + layout.size;
+        after_struct = match module.types[m.ty].inner {
+            TypeInner::Struct { .. } => m.offset + layout.size.next_multiple_of(16),
+            _ => 0,
+        };
+        indices.push(out.len() as u32);
+        out.push(m);
     }
-    let span = offset.next_multiple_of(max_align).max(if uniform { 16 } else { 0 });
-    module.types.insert(Type { name, inner: TypeInner::Struct { members, span } }, naga::Span::UNDEFINED)
+    let span = end.next_multiple_of(max_align);
+    (module.types.insert(Type { name, inner: TypeInner::Struct { members: out, span } }, naga::Span::UNDEFINED), indices)
 }
 
 fn drop_unread_uniform_members(module: &mut Module, block_name: &str) -> Vec<LeftOut> {
@@ -371,7 +391,10 @@ fn drop_unread_uniform_members(module: &mut Module, block_name: &str) -> Vec<Lef
         return left;
     }
     let name = module.types[old_ty].name.clone();
-    let new_ty = relaid_struct(module, name, kept, true);
+    let (new_ty, indices) = relaid_struct(module, name, kept, true);
+    for v in remap.values_mut() {
+        *v = indices[*v as usize];
+    }
     module.global_variables.get_mut(g).ty = new_ty;
     let functions = module.functions.iter_mut().map(|(_, f)| f).chain(module.entry_points.iter_mut().map(|e| &mut e.function));
     for f in functions {

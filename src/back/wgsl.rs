@@ -1,23 +1,68 @@
 //! WGSL: one module holding every entry point (`vs_main`, `fs_main`), re-parsed and
 //! re-validated by naga's WGSL front before it is handed out.
+//!
+//! GLSL lets `texture()` and `dFdx()` run in non-uniform control flow (derivatives there
+//! are undefined, not an error); WGSL rejects that unless told otherwise. When the module
+//! takes implicit derivatives, the output starts with `diagnostic(off, derivative_uniformity);`
+//! so it keeps GLSL's meaning and passes every WGSL compiler (tint enforces uniformity).
 
 use naga::valid::ModuleInfo;
 use naga::Module;
 
+use crate::front::plan::UNIFORM_BLOCK;
+
 /// Writes the module as WGSL and proves the text is valid WGSL.
 pub fn write(module: &Module, info: &ModuleInfo) -> Result<String, String> {
-    let text = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
+    let mut text = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
         .map_err(|e| format!("naga's WGSL writer: {e}"))?;
-    verify(&text)?;
+    if takes_derivatives(module) {
+        text.insert_str(0, "diagnostic(off, derivative_uniformity);\n\n");
+    }
+    let reparsed = verify(&text)?;
+    same_block_layout(module, &reparsed)?;
     Ok(text)
 }
 
-/// Parses and validates WGSL text with naga's WGSL front.
-pub fn verify(text: &str) -> Result<(), String> {
+/// The uniform block's offsets in the WGSL text must be the IR's (the reflection's).
+fn same_block_layout(ir: &Module, reparsed: &Module) -> Result<(), String> {
+    let offsets = |m: &Module| {
+        m.types.iter().find(|(_, t)| t.name.as_deref() == Some(UNIFORM_BLOCK)).and_then(|(_, t)| match &t.inner {
+            naga::TypeInner::Struct { members, span } => {
+                Some((members.iter().map(|m| m.offset).collect::<Vec<_>>(), *span))
+            }
+            _ => None,
+        })
+    };
+    if offsets(ir) != offsets(reparsed) {
+        return Err(format!(
+            "the emitted WGSL lays out {UNIFORM_BLOCK} differently from the IR: {:?} vs {:?}",
+            offsets(reparsed),
+            offsets(ir)
+        ));
+    }
+    Ok(())
+}
+
+/// Parses and validates WGSL text with naga's WGSL front; returns the parsed module.
+pub fn verify(text: &str) -> Result<Module, String> {
     let module = naga::front::wgsl::parse_str(text)
         .map_err(|e| format!("the emitted WGSL does not parse: {}", e.emit_to_string(text)))?;
     crate::front::naga_run::validator()
         .validate(&module)
         .map_err(|e| format!("the emitted WGSL does not validate: {}", e.emit_to_string(text)))?;
-    Ok(())
+    Ok(module)
+}
+
+/// Whether any function samples with implicit derivatives or takes derivatives.
+fn takes_derivatives(module: &Module) -> bool {
+    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
+    functions.into_iter().any(|f| {
+        f.expressions.iter().any(|(_, e)| {
+            matches!(
+                e,
+                naga::Expression::Derivative { .. }
+                    | naga::Expression::ImageSample { level: naga::SampleLevel::Auto | naga::SampleLevel::Bias(_), .. }
+            )
+        })
+    })
 }
