@@ -166,3 +166,25 @@ pub fn summary(w: &Written, explain: bool) -> String {
     }
     text
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn atomic_write_creates_directories_and_never_replaces_an_input() {
+        let dir = std::env::temp_dir().join(format!("effectc-write-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = dir.join("a/b/out.wgsl");
+        write_atomic(&out, b"first", &BTreeSet::new()).unwrap();
+        write_atomic(&out, b"second", &BTreeSet::new()).unwrap();
+        assert_eq!(std::fs::read(&out).unwrap(), b"second");
+        let inputs: BTreeSet<PathBuf> = [std::fs::canonicalize(&out).unwrap()].into();
+        let err = write_atomic(&out, b"third", &inputs).unwrap_err();
+        assert!(err.contains("one of the inputs"), "{err}");
+        assert_eq!(std::fs::read(&out).unwrap(), b"second");
+        let leftovers: Vec<_> = std::fs::read_dir(out.parent().unwrap()).unwrap().collect();
+        assert_eq!(leftovers.len(), 1, "no temporary files left behind");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

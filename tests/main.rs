@@ -9,6 +9,8 @@
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
+//! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
+//!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
 
 #[path = "suite/cli.rs"]
 mod cli;
@@ -20,3 +22,5 @@ mod fail;
 mod rewrite;
 #[path = "suite/robust.rs"]
 mod robust;
+#[path = "suite/translate.rs"]
+mod translate;

@@ -42,6 +42,7 @@ pub fn prune(module: &mut Module, uniform_block: &str) -> Vec<LeftOut> {
             left.push(o);
         }
     }
+    drop_write_only_privates(module);
     left.extend(compact(module));
     left.extend(drop_unread_uniform_members(module, uniform_block));
     compact(module);
@@ -358,6 +359,49 @@ fn relaid_struct(module: &mut Module, name: Option<String>, members: Vec<StructM
     }
     let span = end.next_multiple_of(max_align);
     (module.types.insert(Type { name, inner: TypeInner::Struct { members: out, span } }, naga::Span::UNDEFINED), indices)
+}
+
+/// Removes the stores into private globals nothing reads (a vertex output left out still
+/// has its GLSL assignment; this drops it), so compaction can drop the global too.
+fn drop_write_only_privates(module: &mut Module) {
+    let dead: Vec<Handle<GlobalVariable>> = module
+        .global_variables
+        .iter()
+        .filter(|(_, g)| g.space == naga::AddressSpace::Private)
+        .map(|(h, _)| h)
+        .filter(|h| {
+            let r = reads_of(module, *h);
+            !r.whole && r.members.is_empty()
+        })
+        .collect();
+    if dead.is_empty() {
+        return;
+    }
+    let functions = module.functions.iter_mut().map(|(_, f)| f).chain(module.entry_points.iter_mut().map(|e| &mut e.function));
+    for f in functions {
+        let exprs = &f.expressions;
+        let into_dead = |mut p: Handle<Expression>| loop {
+            match exprs[p] {
+                Expression::GlobalVariable(g) => return dead.contains(&g),
+                Expression::AccessIndex { base, .. } | Expression::Access { base, .. } => p = base,
+                _ => return false,
+            }
+        };
+        remove_stores(&mut f.body, &into_dead);
+    }
+}
+
+fn remove_stores(block: &mut naga::Block, into_dead: &dyn Fn(Handle<Expression>) -> bool) {
+    let old = std::mem::take(block);
+    for (mut s, span) in old.span_into_iter() {
+        if matches!(s, Statement::Store { pointer, .. } if into_dead(pointer)) {
+            continue;
+        }
+        for b in crate::back::merge::child_blocks(&mut s) {
+            remove_stores(b, into_dead);
+        }
+        block.push(s, span);
+    }
 }
 
 fn drop_unread_uniform_members(module: &mut Module, block_name: &str) -> Vec<LeftOut> {
