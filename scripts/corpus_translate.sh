@@ -9,6 +9,8 @@
 # locations); a program counts when it links and every .spv passes
 # `spirv-val --target-env opengl4.5`.
 #
+# Also counted: programs glslangValidator -l links for OpenGL (legal GLSL programs).
+#
 # Usage: scripts/corpus_translate.sh CORPUS_DIR   (prints failures, then the totals)
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -17,7 +19,7 @@ bin=$PWD/target/release/effectc
 [ -x "$bin" ] || cargo build --release
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-total=0; effectc_ok=0; glslang_ok=0; glslang_linked=0; effectc_ok_of_linked=0
+total=0; gl_linked=0; effectc_ok_of_gl=0; effectc_ok=0; glslang_ok=0; glslang_linked=0; effectc_ok_of_linked=0
 for d in "$corpus"/*/; do
     files=$(ls "$d" | grep -E '\.(vert|frag)$' | sed "s|^|$d|")
     [ -n "$files" ] || continue
@@ -47,6 +49,9 @@ for d in "$corpus"/*/; do
     else
         g="glslang: $(grep -m1 ERROR "$work"/g/log)"; linked=0
     fi
+    if glslangValidator -l $files > /dev/null 2>&1; then
+        gl_linked=$((gl_linked + 1)); [ "$e" = ok ] && effectc_ok_of_gl=$((effectc_ok_of_gl + 1))
+    fi
     [ "$e" = ok ] && effectc_ok=$((effectc_ok + 1))
     [ "$e" = ok ] && [ $linked = 1 ] && effectc_ok_of_linked=$((effectc_ok_of_linked + 1))
     [ "$g" = ok ] && glslang_ok=$((glslang_ok + 1))
@@ -56,4 +61,5 @@ pct() { echo $(( $2 ? 1000 * $1 / $2 : 0 )) | sed 's/\(.\)$/.\1/'; }
 echo "programs (vertex+fragment): $total"
 echo "effectc: valid WGSL + spirv-val-clean SPIR-V for $effectc_ok ($(pct $effectc_ok $total)%)"
 echo "glslangValidator -G: links and spirv-val-clean for $glslang_ok ($(pct $glslang_ok $total)%)"
+echo "of the $gl_linked programs glslangValidator -l links (legal OpenGL GLSL), effectc translates $effectc_ok_of_gl ($(pct $effectc_ok_of_gl $gl_linked)%)"
 echo "of the $glslang_linked programs glslang links, effectc translates $effectc_ok_of_linked ($(pct $effectc_ok_of_linked $glslang_linked)%)"
