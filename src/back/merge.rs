@@ -325,6 +325,16 @@ fn fingerprint(f: &Function) -> String {
     )
 }
 
+/// Every function of a module, entry points included.
+pub fn all_functions(module: &Module) -> impl Iterator<Item = &Function> {
+    module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function))
+}
+
+/// Every function of a module, entry points included, mutably.
+pub fn all_functions_mut(module: &mut Module) -> impl Iterator<Item = &mut Function> {
+    module.functions.iter_mut().map(|(_, f)| f).chain(module.entry_points.iter_mut().map(|e| &mut e.function))
+}
+
 /// A copy of `block` whose statements (recursively) carry no spans.
 pub fn without_spans(block: &Block) -> Block {
     let mut out: Vec<Statement> = block.iter().cloned().collect();

@@ -183,28 +183,26 @@ fn internal(file: crate::diag::FileId, message: String) -> Diagnostic {
 pub fn emit(t: &Translation, target: Target) -> Result<Vec<Output>, String> {
     let (m, info) = (&t.module, &t.info);
     let text = |name: String, text: String| Output { file_name: name, bytes: text.into_bytes() };
-    let per_stage = |write: &dyn Fn(naga::ShaderStage, &str) -> Result<Output, String>| -> Result<Vec<Output>, String> {
-        t.stages.iter().map(|s| write(s.naga().expect("translated stages have naga stages"), merge::entry_name(*s))).collect()
+    let per_stage = |write: &dyn Fn(StageKind, naga::ShaderStage, &str) -> Result<Output, String>| -> Result<Vec<Output>, String> {
+        t.stages
+            .iter()
+            .map(|s| write(*s, s.naga().expect("translated stages have naga stages"), merge::entry_name(*s)))
+            .collect()
     };
-    let stage_file = |stage: naga::ShaderStage, ext: &str| {
-        let short = match stage {
-            naga::ShaderStage::Vertex => "vert",
-            naga::ShaderStage::Fragment => "frag",
-            _ => "comp",
-        };
-        format!("{}.{short}.{ext}", t.name)
-    };
+    let stage_file = |stage: StageKind, ext: &str| format!("{}.{}.{ext}", t.name, stage.short_name());
     Ok(match target {
         Target::Wgsl => vec![text(format!("{}.wgsl", t.name), wgsl::write(m, info)?)],
-        Target::Spv => per_stage(&|stage, entry| {
+        Target::Spv => per_stage(&|kind, stage, entry| {
             let words = spirv::write(m, info, stage, entry)?;
-            Ok(Output { file_name: stage_file(stage, "spv"), bytes: spirv::to_bytes(&words) })
+            Ok(Output { file_name: stage_file(kind, "spv"), bytes: spirv::to_bytes(&words) })
         })?,
-        Target::Spvasm => per_stage(&|stage, entry| {
+        Target::Spvasm => per_stage(&|kind, stage, entry| {
             let words = spirv::write(m, info, stage, entry)?;
-            Ok(text(stage_file(stage, "spvasm"), spirv::disassemble(&words)?))
+            Ok(text(stage_file(kind, "spvasm"), spirv::disassemble(&words)?))
         })?,
-        Target::Glsl => per_stage(&|stage, entry| Ok(text(stage_file(stage, "glsl"), glsl_es::write(m, info, stage, entry)?)))?,
+        Target::Glsl => per_stage(&|kind, stage, entry| {
+            Ok(text(stage_file(kind, "glsl"), glsl_es::write(m, info, stage, entry)?))
+        })?,
         Target::Msl => vec![text(format!("{}.metal", t.name), msl::write(m, info)?)],
         Target::Hlsl => vec![text(format!("{}.hlsl", t.name), hlsl::write(m, info)?)],
         Target::Reflect => {

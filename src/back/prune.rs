@@ -144,8 +144,7 @@ fn users(f: &Function) -> HashMap<Handle<Expression>, Vec<User>> {
 /// What code reads of global `g`, over every function and entry point.
 fn reads_of(module: &Module, g: Handle<GlobalVariable>) -> Reads {
     let mut reads = Reads::default();
-    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
-    for f in functions {
+    for f in crate::back::merge::all_functions(module) {
         let refs: Vec<_> =
             f.expressions.iter().filter(|(_, e)| matches!(e, Expression::GlobalVariable(x) if *x == g)).map(|(h, _)| h).collect();
         if refs.is_empty() {
@@ -377,8 +376,7 @@ fn drop_write_only_privates(module: &mut Module) {
     if dead.is_empty() {
         return;
     }
-    let functions = module.functions.iter_mut().map(|(_, f)| f).chain(module.entry_points.iter_mut().map(|e| &mut e.function));
-    for f in functions {
+    for f in crate::back::merge::all_functions_mut(module) {
         let exprs = &f.expressions;
         let into_dead = |mut p: Handle<Expression>| loop {
             match exprs[p] {
@@ -440,8 +438,7 @@ fn drop_unread_uniform_members(module: &mut Module, block_name: &str) -> Vec<Lef
         *v = indices[*v as usize];
     }
     module.global_variables.get_mut(g).ty = new_ty;
-    let functions = module.functions.iter_mut().map(|(_, f)| f).chain(module.entry_points.iter_mut().map(|e| &mut e.function));
-    for f in functions {
+    for f in crate::back::merge::all_functions_mut(module) {
         let gv: Vec<_> =
             f.expressions.iter().filter(|(_, e)| matches!(e, Expression::GlobalVariable(x) if *x == g)).map(|(h, _)| h).collect();
         for (_, e) in f.expressions.iter_mut() {

@@ -232,6 +232,10 @@ fn located(module: &Module, items: &[(Option<String>, Handle<Type>, Option<Bindi
     out
 }
 
+fn varying(module: &Module, (location, name, ty, b): (u32, String, Handle<Type>, Binding)) -> InterfaceVar {
+    InterfaceVar { location, name, wgsl_type: type_name(module, ty), format: None, interpolation: interpolation_name(&b) }
+}
+
 /// Builds the reflection of a pruned, validated module.
 pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>, left_out: Vec<LeftOut>) -> Reflection {
     let vis = visibility(module);
@@ -317,27 +321,11 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
                         interpolation: None,
                     });
                 }
-                for (location, name, ty, b) in located(module, &result) {
-                    varyings.push(InterfaceVar {
-                        location,
-                        name,
-                        wgsl_type: type_name(module, ty),
-                        format: None,
-                        interpolation: interpolation_name(&b),
-                    });
-                }
+                varyings.extend(located(module, &result).into_iter().map(|v| varying(module, v)));
             }
             naga::ShaderStage::Fragment => {
                 if !module.entry_points.iter().any(|e| e.stage == naga::ShaderStage::Vertex) {
-                    for (location, name, ty, b) in located(module, &args) {
-                        varyings.push(InterfaceVar {
-                            location,
-                            name,
-                            wgsl_type: type_name(module, ty),
-                            format: None,
-                            interpolation: interpolation_name(&b),
-                        });
-                    }
+                    varyings.extend(located(module, &args).into_iter().map(|v| varying(module, v)));
                 }
                 for (location, name, ty, _) in located(module, &result) {
                     fragment_outputs.push(InterfaceVar {

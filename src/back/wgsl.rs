@@ -55,8 +55,7 @@ pub fn verify(text: &str) -> Result<Module, String> {
 
 /// Whether any function samples with implicit derivatives or takes derivatives.
 fn takes_derivatives(module: &Module) -> bool {
-    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
-    functions.into_iter().any(|f| {
+    crate::back::merge::all_functions(module).any(|f| {
         f.expressions.iter().any(|(_, e)| {
             matches!(
                 e,

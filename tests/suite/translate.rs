@@ -91,11 +91,11 @@ fn every_program_translates_validates_and_builds_a_pipeline() {
             insta::assert_snapshot!(format!("{name}-ir"), text(Target::Ir));
             insta::assert_snapshot!(format!("{name}-wgsl"), wgsl);
         });
+        let asm_files = back::emit(&t, Target::Spvasm).unwrap();
         for stage in &t.stages {
             let words = back::spirv_words(&t, *stage).unwrap();
-            let asm = back::emit(&t, Target::Spvasm).unwrap();
             let file = format!("{name}.{}.spvasm", stage.short_name());
-            let asm = asm.iter().find(|o| o.file_name == file).expect("one disassembly per stage");
+            let asm = asm_files.iter().find(|o| o.file_name == file).expect("one disassembly per stage");
             settings.bind(|| {
                 insta::assert_snapshot!(format!("{name}-{}-spvasm", stage.short_name()), String::from_utf8_lossy(&asm.bytes))
             });
