@@ -20,6 +20,8 @@ pub enum Command {
     Check(CheckArgs),
     /// Check, then translate to WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection JSON or IR text.
     Translate(TranslateArgs),
+    /// Check, translate to WGSL and render frames headlessly with wgpu (PNG, contact sheet, GIF).
+    Render(RenderArgs),
 }
 
 /// Output format for diagnostics.
@@ -136,4 +138,56 @@ pub struct CheckArgs {
     /// Exit with 1 when there are warnings.
     #[arg(long)]
     pub deny_warnings: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Number of frames (default: the manifest's `[render] frames`, else 1).
+    #[arg(long)]
+    pub frames: Option<u32>,
+    /// Frames per second of effect time (default: the manifest's `[render] fps`, else 30).
+    #[arg(long, conflicts_with = "time_step")]
+    pub fps: Option<f64>,
+    /// Seconds of effect time between frames (instead of --fps).
+    #[arg(long)]
+    pub time_step: Option<f64>,
+    /// Effect time of the first frame, in seconds.
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub start: f64,
+    /// Frame size `WIDTHxHEIGHT` (default: the manifest's `[render] size`, else 512x512).
+    #[arg(long, value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Output directory (default: `out/<effect>/frames/`); frames are `<effect>_NNNN.png`.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Also tile every frame into `<effect>_sheet.png`.
+    #[arg(long)]
+    pub contact_sheet: bool,
+    /// Also write the frames as an animated `<effect>.gif`.
+    #[arg(long)]
+    pub gif: bool,
+    /// Render into Rgba32Float and count NaN/Inf pixels per frame (masks written; exit 1 if any).
+    #[arg(long)]
+    pub float: bool,
+    /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop).
+    #[arg(long, default_value_t = 5.0)]
+    pub timeout: f64,
+    /// Print GPU and CPU milliseconds per frame and the time to the first frame.
+    #[arg(long)]
+    pub timings: bool,
+    /// Print the adapter, the mesh and how vertex inputs were fed.
+    #[arg(long)]
+    pub verbose: bool,
+    /// Keep GL clip-space depth (z in [-w, w]) instead of mapping it to WebGPU's [0, w].
+    #[arg(long)]
+    pub keep_gl_depth: bool,
+}
+
+/// `512x512` → (512, 512).
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s.split_once(['x', 'X']).ok_or("expected WIDTHxHEIGHT, e.g. 512x512")?;
+    let side = |t: &str| t.trim().parse::<u32>().map_err(|_| format!("`{t}` is not a whole number of pixels"));
+    Ok((side(w)?, side(h)?))
 }

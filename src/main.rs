@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use effectc::back::{Target, TranslateOptions};
 use effectc::check::Outcome;
-use effectc::cli::{CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, TargetArg, TranslateArgs};
+use effectc::cli::{CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, TargetArg, TranslateArgs};
 use effectc::diag;
 use effectc::front::program::FrontOptions;
 
@@ -27,7 +27,59 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check(args) => check(args),
         Command::Translate(args) => translate(args),
+        Command::Render(args) => render(args),
     }
+}
+
+fn render(args: RenderArgs) -> ExitCode {
+    let started = std::time::Instant::now();
+    let c = &args.common;
+    if !(args.timeout.is_finite() && args.timeout > 0.0) {
+        eprintln!("error: --timeout must be a positive number of seconds");
+        return ExitCode::from(2);
+    }
+    let step = match (args.fps, args.time_step) {
+        (Some(f), _) => effectc::render::command::Step::Fps(f),
+        (None, Some(s)) => effectc::render::command::Step::Seconds(s),
+        (None, None) => effectc::render::command::Step::Default,
+    };
+    let request = effectc::render::command::Request {
+        inputs: c.inputs.clone(),
+        stage: c.stage.map(Into::into),
+        front: FrontOptions { strict: c.strict },
+        back: TranslateOptions { gl_depth: !args.keep_gl_depth },
+        frames: args.frames,
+        step,
+        start: args.start,
+        size: args.size,
+        out: args.out.clone(),
+        contact_sheet: args.contact_sheet,
+        gif: args.gif,
+        float: args.float,
+        timeout: std::time::Duration::from_secs_f64(args.timeout),
+        progress: std::io::stderr().is_terminal() && std::env::var_os("CI").is_none(),
+        started,
+    };
+    let result = effectc::render::command::run(&request);
+    let mut text = String::new();
+    if c.format == Format::Human {
+        if let (true, Some(a)) = (args.verbose, &result.adapter) {
+            text.push_str(&format!("adapter: {a}\n"));
+        }
+        for r in &result.rendered {
+            text.push_str(&effectc::render::command::summary(r, args.timings, args.verbose));
+        }
+    }
+    text.push_str(&diagnostics_text(c, &result.outcome));
+    let printed = print(&text);
+    if result.hung {
+        // The GPU is still running the stuck frame; leave without waiting for it.
+        std::process::exit(1);
+    }
+    if printed.is_err() {
+        return ExitCode::from(2);
+    }
+    exit_code(&result.outcome, false)
 }
 
 fn check(args: CheckArgs) -> ExitCode {

@@ -43,14 +43,7 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
     let inputs = input_paths(&outcome, &request.inputs);
     let mut written = Vec::new();
     for c in &checked {
-        let (false, Some(program)) = (c.failed, &c.program) else { continue };
-        let name = c.effect.as_ref().map(|e| e.name.clone()).unwrap_or_else(|| program_name(&outcome, program));
-        let file = program.stages[0].syntax.file;
-        // naga can panic on modules it should reject; contain it like the front does.
-        let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            back::translate(&name, program, c.effect.as_ref(), request.back)
-        }))
-        .unwrap_or_else(|_| Err(vec![panicked(file, "translation")]));
+        let Some(result) = translate_checked(c, &outcome, request.back) else { continue };
         let translation = match result {
             Ok(t) => t,
             Err(diags) => {
@@ -58,11 +51,12 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
                 continue;
             }
         };
+        let name = translation.name.clone();
+        let file = c.program.as_ref().map(|p| p.stages[0].syntax.file).unwrap_or(crate::diag::FileId(0));
         let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&name));
         let mut files = Vec::new();
         for &target in &request.targets {
-            let emitted = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| back::emit(&translation, target)));
-            let outputs = match emitted.unwrap_or_else(|_| Err("naga panicked".into())) {
+            let outputs = match emit_contained(&translation, target) {
                 Ok(o) => o,
                 Err(e) => {
                     outcome.diagnostics.push(target_error(file, target, &e));
@@ -86,9 +80,25 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
     (outcome, written)
 }
 
+/// Translates a checked program; `None` when check found errors in it. naga panics are
+/// contained and reported as diagnostics.
+pub fn translate_checked(c: &check::Checked, outcome: &Outcome, options: TranslateOptions) -> Option<Result<Translation, Vec<Diagnostic>>> {
+    let (false, Some(program)) = (c.failed, &c.program) else { return None };
+    let name = c.effect.as_ref().map(|e| e.name.clone()).unwrap_or_else(|| program_name(outcome, program));
+    let file = program.stages[0].syntax.file;
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| back::translate(&name, program, c.effect.as_ref(), options)))
+        .unwrap_or_else(|_| Err(vec![panicked(file, "translation")]));
+    Some(result)
+}
+
+/// Emits one target under `catch_unwind` (naga's writers can panic).
+pub fn emit_contained(t: &Translation, target: Target) -> Result<Vec<back::Output>, String> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| back::emit(t, target))).unwrap_or_else(|_| Err("naga panicked".into()))
+}
+
 /// A target writer failed: the target cannot express the program (E0306), or naga/effectc
 /// has a gap (E0305).
-fn target_error(file: crate::diag::FileId, target: Target, message: &str) -> Diagnostic {
+pub fn target_error(file: crate::diag::FileId, target: Target, message: &str) -> Diagnostic {
     let unsupported = ["doesn't support", "not supported", "nsupported", "Unimplemented"];
     if unsupported.iter().any(|u| message.contains(u)) {
         Diagnostic::error("E0306", format!("the {} target cannot express this program", target.name()))
@@ -115,7 +125,7 @@ fn program_name(outcome: &Outcome, program: &crate::front::program::CompiledProg
 }
 
 /// Canonical paths of every file the run read.
-fn input_paths(outcome: &Outcome, inputs: &[PathBuf]) -> BTreeSet<PathBuf> {
+pub fn input_paths(outcome: &Outcome, inputs: &[PathBuf]) -> BTreeSet<PathBuf> {
     let mut set: BTreeSet<PathBuf> = outcome.files.iter().filter_map(|(id, _)| std::fs::canonicalize(outcome.files.path(id)).ok()).collect();
     set.extend(inputs.iter().filter_map(|p| std::fs::canonicalize(p).ok()));
     set

@@ -453,9 +453,15 @@ pub fn pack(module: &Module, block_ty: Handle<Type>, values: &[(&str, &UniformVa
     let mut buf = vec![0u8; size];
     for (path, value) in values {
         let Some((offset, ty)) = resolve_path(module, block_ty, path) else { continue };
-        write_value(module, ty, offset as usize, value, &mut buf).map_err(|e| PackError(format!("`{path}`: {e}")))?;
+        write_slot(module, ty, offset, value, &mut buf).map_err(|e| PackError(format!("`{path}`: {e}")))?;
     }
     Ok(buf)
+}
+
+/// Writes one value into the slot of type `ty` at byte `offset` of `buf` (the layout rules
+/// of [`pack`]).
+pub fn write_slot(module: &Module, ty: Handle<Type>, offset: u32, value: &UniformValue, buf: &mut [u8]) -> Result<(), String> {
+    write_value(module, ty, offset as usize, value, buf)
 }
 
 /// The block's bytes filled with the manifest's default values (semantics left zero).

@@ -107,6 +107,12 @@ pub struct Effect {
     /// In manifest order.
     pub textures: Vec<TextureDecl>,
     pub mesh: Option<MeshDecl>,
+    /// `[camera]`; `None` when absent (the renderer's default camera).
+    pub camera: Option<CameraDecl>,
+    /// `[model]`: the model matrix (identity when absent).
+    pub model: ModelDecl,
+    /// `[render]`: frame size, count, rate, clear colour, culling and depth.
+    pub render: RenderDecl,
     /// Warnings found while reading the manifest (the effect is still usable).
     pub warnings: Vec<Diagnostic>,
 }
@@ -486,6 +492,105 @@ impl BuiltinMesh {
         }
     }
 }
+
+/// `[camera]`: a look-at camera with a perspective projection, optionally moved by keyframes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CameraDecl {
+    pub span: Range<usize>,
+    pub eye: [f32; 3],
+    pub target: [f32; 3],
+    pub up: [f32; 3],
+    /// Vertical field of view in degrees (0, 180).
+    pub fov: f32,
+    pub near: f32,
+    pub far: f32,
+    /// Keyframes in increasing time; empty for a still camera.
+    pub keys: Vec<CameraKey>,
+    pub ease: Ease,
+}
+
+impl Default for CameraDecl {
+    fn default() -> Self {
+        CameraDecl {
+            span: 0..0,
+            eye: [0.0, 0.0, 3.0],
+            target: [0.0, 0.0, 0.0],
+            up: [0.0, 1.0, 0.0],
+            fov: 45.0,
+            near: 0.1,
+            far: 100.0,
+            keys: Vec::new(),
+            ease: Ease::Linear,
+        }
+    }
+}
+
+/// One camera keyframe: where the camera is and looks at `time` seconds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CameraKey {
+    pub time: f64,
+    pub eye: [f32; 3],
+    pub target: [f32; 3],
+}
+
+/// How the camera moves between keyframes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Ease {
+    /// Constant speed (the seed's `naive_lerp`).
+    #[default]
+    Linear,
+    /// Smoothstep: starts and stops gently at every key.
+    Smooth,
+}
+
+/// `[model]`: scale, then rotation (degrees about x, y, z, plus `spin` degrees per second),
+/// then translation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelDecl {
+    pub translate: [f32; 3],
+    pub rotate: [f32; 3],
+    pub scale: [f32; 3],
+    pub spin: [f32; 3],
+}
+
+impl Default for ModelDecl {
+    fn default() -> Self {
+        ModelDecl { translate: [0.0; 3], rotate: [0.0; 3], scale: [1.0; 3], spin: [0.0; 3] }
+    }
+}
+
+/// `[render]`: defaults for `effectc render` (flags override them) and fixed pipeline state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderDecl {
+    pub size: Option<(u32, u32)>,
+    pub frames: Option<u32>,
+    pub fps: Option<f64>,
+    /// Linear RGBA clear colour; default opaque black.
+    pub clear: [f32; 4],
+    pub cull: Cull,
+    /// Depth test (less) with a depth buffer; default on.
+    pub depth_test: bool,
+}
+
+impl Default for RenderDecl {
+    fn default() -> Self {
+        RenderDecl { size: None, frames: None, fps: None, clear: [0.0, 0.0, 0.0, 1.0], cull: Cull::None, depth_test: true }
+    }
+}
+
+/// Which faces are culled (counter-clockwise is front, as in OpenGL).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Cull {
+    #[default]
+    None,
+    Back,
+    Front,
+}
+
+/// Largest frame side `[render] size` and `--size` accept.
+pub const MAX_FRAME_SIDE: u32 = 8192;
+/// Most frames `[render] frames` and `--frames` accept.
+pub const MAX_FRAMES: u32 = 100_000;
 
 /// Read `path`, register its text in `files` and parse it. Relative paths in the manifest are
 /// resolved against the manifest's directory. An unreadable file gives one [`E_IO`]

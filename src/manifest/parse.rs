@@ -14,6 +14,8 @@ use super::*;
 use crate::diag::{Diagnostic, FileId};
 use crate::stage::StageKind;
 
+mod scene;
+
 type Key<'i> = Spanned<Cow<'i, str>>;
 type Val<'i> = Spanned<DeValue<'i>>;
 
@@ -24,6 +26,9 @@ const ROOT_KEYS: &[&str] = &[
     "uniforms",
     "textures",
     "mesh",
+    "camera",
+    "model",
+    "render",
 ];
 const UNIFORM_KEYS: &[&str] = &["value", "range", "semantic"];
 const TEXTURE_KEYS: &[&str] = &[
@@ -397,6 +402,9 @@ impl Ctx<'_> {
         let mut uniforms = Vec::new();
         let mut textures = Vec::new();
         let mut mesh = None;
+        let mut camera = None;
+        let mut model = ModelDecl::default();
+        let mut render = RenderDecl::default();
         for (k, v) in entries(root) {
             match key(k) {
                 "name" => {
@@ -435,6 +443,9 @@ impl Ctx<'_> {
                     }
                 }
                 "mesh" => mesh = self.mesh(v),
+                "camera" => camera = self.camera(v),
+                "model" => model = self.model(v).unwrap_or_default(),
+                "render" => render = self.render(v).unwrap_or_default(),
                 other => self.unknown_key(other, k.span(), "at the top level", ROOT_KEYS),
             }
         }
@@ -475,6 +486,9 @@ impl Ctx<'_> {
             uniforms,
             textures,
             mesh,
+            camera,
+            model,
+            render,
             warnings: Vec::new(),
         }
     }

@@ -820,3 +820,75 @@ fn mutated_manifests_never_panic() {
         }
     }
 }
+
+#[test]
+fn camera_model_and_render_sections_parse() {
+    let dir = minimal_dir();
+    let text = minimal(
+        r#"
+[camera]
+eye = [0, 1, 4]
+target = [0, 0, 0]
+fov = 60
+ease = "smooth"
+keys = [{ time = 0, eye = [0, 0, 3] }, { time = 2.5, eye = [3, 0, 0], target = [0, 1, 0] }]
+
+[model]
+scale = 2
+spin = [0, 45, 0]
+
+[render]
+size = [320, 200]
+frames = 12
+fps = 8
+clear = [0.1, 0.2, 0.3]
+cull = "back"
+depth_test = false
+"#,
+    );
+    let e = run(&text, &dir).unwrap();
+    let cam = e.camera.unwrap();
+    assert_eq!((cam.eye, cam.fov, cam.ease), ([0.0, 1.0, 4.0], 60.0, Ease::Smooth));
+    assert_eq!(cam.keys.len(), 2);
+    assert_eq!(cam.keys[0].target, [0.0, 0.0, 0.0], "a key without target looks at the camera's target");
+    assert_eq!(cam.keys[1].target, [0.0, 1.0, 0.0]);
+    assert_eq!((e.model.scale, e.model.spin), ([2.0; 3], [0.0, 45.0, 0.0]));
+    assert_eq!((e.render.size, e.render.frames, e.render.fps), (Some((320, 200)), Some(12), Some(8.0)));
+    assert_eq!((e.render.clear, e.render.cull, e.render.depth_test), ([0.1, 0.2, 0.3, 1.0], Cull::Back, false));
+}
+
+#[test]
+fn scene_section_errors_point_at_their_values() {
+    let dir = minimal_dir();
+    let text = minimal(
+        r#"
+[camera]
+eye = [0, 0, 0]
+fov = 180
+near = 10
+far = 1
+keys = [{ time = 2, eye = [0, 0, 3] }, { time = 1, eye = [0, 0, 4] }, { eye = [1, 1, 1] }]
+
+[model]
+scale = 0
+
+[render]
+size = [0, 99999]
+cull = "backside"
+zoom = 2
+"#,
+    );
+    let diags = errors(&text, &dir);
+    let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
+    assert!(spans.contains(&(E_VALUE, "180")), "{spans:?}");
+    assert!(spans.contains(&(E_VALUE, "1")), "decreasing key time: {spans:?}");
+    assert!(spans.contains(&(E_MISSING, "{ eye = [1, 1, 1] }")), "{spans:?}");
+    assert!(spans.contains(&(E_VALUE, "0")), "zero scale or size: {spans:?}");
+    assert!(spans.contains(&(E_VALUE, "99999")), "{spans:?}");
+    assert!(spans.contains(&(E_VALUE, "\"backside\"")), "{spans:?}");
+    assert!(spans.contains(&(E_UNKNOWN_KEY, "zoom")), "{spans:?}");
+    let near_far = errors(&minimal("[camera]\nnear = 10\nfar = 1\n"), &dir);
+    assert_eq!(span_text(&minimal("[camera]\nnear = 10\nfar = 1\n"), one(&near_far, E_VALUE)), "10");
+    let degenerate = errors(&minimal("[camera]\neye = [0, 0, 0]\n"), &dir);
+    assert!(one(&degenerate, E_VALUE).message.contains("equals its `target`"));
+}

@@ -37,6 +37,11 @@ fn kind_rank(t: wgpu::DeviceType) -> u8 {
 impl Gpu {
     /// Opens the chosen Vulkan adapter.
     pub fn new() -> Result<Gpu, NoGpu> {
+        // Mesa's Vulkan loader complains on stderr when this is unset (headless machines,
+        // CI); the directory is not used for offscreen rendering.
+        if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+            std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+        }
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
             backends: wgpu::Backends::VULKAN,
             ..wgpu::InstanceDescriptor::new_without_display_handle()
@@ -59,10 +64,12 @@ impl Gpu {
                 })
             })?;
         let info = adapter.get_info();
+        // Timestamps time frames on the GPU when the adapter has them (lavapipe does).
+        let features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("effectc"),
-            required_features: wgpu::Features::empty(),
-            required_limits: wgpu::Limits::downlevel_defaults().using_resolution(adapter.limits()),
+            required_features: features,
+            required_limits: adapter.limits(),
             ..Default::default()
         }))
         .map_err(|e| NoGpu(format!("the adapter `{}` refused a device: {e}", info.name)))?;
@@ -74,66 +81,62 @@ impl Gpu {
         format!("{} ({:?}, {:?}, driver {} {})", self.info.name, self.info.device_type, self.info.backend, self.info.driver, self.info.driver_info)
     }
 
-    /// Builds a render pipeline from translated WGSL: one vertex buffer per vertex input
-    /// (format from the reflection), one colour target per fragment output.
+    /// Builds a render pipeline from translated WGSL with one interleaved vertex buffer
+    /// holding every vertex input (formats from the reflection) and one colour target per
+    /// fragment output (Rgba8Unorm, or 32-bit integer formats for integer outputs).
     pub fn build_pipeline(&self, wgsl: &str, reflection: &Reflection) -> Result<wgpu::RenderPipeline, String> {
+        let mut attributes = Vec::new();
+        let mut stride = 0;
+        for v in &reflection.vertex_inputs {
+            let format = vertex_format(v.format.as_deref().unwrap_or("float32x4"));
+            attributes.push(wgpu::VertexAttribute { format, offset: stride, shader_location: v.location });
+            stride += format.size();
+        }
+        let spec = PipelineSpec {
+            label: &reflection.effect,
+            wgsl,
+            vertex_stride: stride.max(4),
+            attributes: &attributes,
+            colors: color_formats(reflection, wgpu::TextureFormat::Rgba8Unorm),
+            depth: None,
+            cull: None,
+            fragment: reflection.entry_points.iter().any(|e| e.name == "fs_main"),
+        };
+        self.pipeline(&spec)
+    }
+
+    /// Builds a render pipeline; wgpu's validation errors come back as text.
+    pub fn pipeline(&self, spec: &PipelineSpec<'_>) -> Result<wgpu::RenderPipeline, String> {
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(&reflection.effect),
-            source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+            label: Some(spec.label),
+            source: wgpu::ShaderSource::Wgsl(spec.wgsl.into()),
         });
-        let attributes: Vec<[wgpu::VertexAttribute; 1]> = reflection
-            .vertex_inputs
-            .iter()
-            .map(|v| {
-                [wgpu::VertexAttribute {
-                    format: vertex_format(v.format.as_deref().unwrap_or("float32x4")),
-                    offset: 0,
-                    shader_location: v.location,
-                }]
-            })
-            .collect();
-        let buffers: Vec<Option<wgpu::VertexBufferLayout>> = attributes
-            .iter()
-            .map(|a| {
-                Some(wgpu::VertexBufferLayout {
-                    array_stride: a[0].format.size(),
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: a,
-                })
-            })
-            .collect();
-        let mut targets: Vec<Option<wgpu::ColorTargetState>> = Vec::new();
-        for o in &reflection.fragment_outputs {
-            while targets.len() < o.location as usize {
-                targets.push(None);
-            }
-            let format = if o.wgsl_type.contains("i32") {
-                wgpu::TextureFormat::Rgba32Sint
-            } else if o.wgsl_type.contains("u32") {
-                wgpu::TextureFormat::Rgba32Uint
-            } else {
-                wgpu::TextureFormat::Rgba8Unorm
-            };
-            targets.push(Some(format.into()));
-        }
-        let has = |name: &str| reflection.entry_points.iter().any(|e| e.name == name);
-        if !has("vs_main") {
-            return Err("the module has no vertex entry point".into());
-        }
+        let buffers = [Some(wgpu::VertexBufferLayout {
+            array_stride: spec.vertex_stride,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: spec.attributes,
+        })];
+        let targets: Vec<Option<wgpu::ColorTargetState>> = spec.colors.iter().map(|f| f.map(Into::into)).collect();
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(&reflection.effect),
+            label: Some(spec.label),
             layout: None,
             vertex: wgpu::VertexState {
                 module: &module,
                 entry_point: Some("vs_main"),
                 compilation_options: Default::default(),
-                buffers: &buffers,
+                buffers: if spec.attributes.is_empty() { &[] } else { &buffers },
             },
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: None,
+            primitive: wgpu::PrimitiveState { cull_mode: spec.cull, ..Default::default() },
+            depth_stencil: spec.depth.map(|format| wgpu::DepthStencilState {
+                format,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
             multisample: wgpu::MultisampleState::default(),
-            fragment: has("fs_main").then(|| wgpu::FragmentState {
+            fragment: spec.fragment.then(|| wgpu::FragmentState {
                 module: &module,
                 entry_point: Some("fs_main"),
                 compilation_options: Default::default(),
@@ -147,6 +150,41 @@ impl Gpu {
             None => Ok(pipeline),
         }
     }
+}
+
+/// What a render pipeline is built from.
+pub struct PipelineSpec<'a> {
+    pub label: &'a str,
+    pub wgsl: &'a str,
+    /// One interleaved vertex buffer; no buffer when `attributes` is empty.
+    pub vertex_stride: u64,
+    pub attributes: &'a [wgpu::VertexAttribute],
+    /// Colour target formats by location (`None` for a gap).
+    pub colors: Vec<Option<wgpu::TextureFormat>>,
+    /// Depth buffer format (depth test `less`, writes on).
+    pub depth: Option<wgpu::TextureFormat>,
+    pub cull: Option<wgpu::Face>,
+    /// The module has `fs_main`.
+    pub fragment: bool,
+}
+
+/// Colour target formats by fragment output location: `float` for floating-point outputs,
+/// 32-bit integer formats for integer outputs.
+pub fn color_formats(reflection: &Reflection, float: wgpu::TextureFormat) -> Vec<Option<wgpu::TextureFormat>> {
+    let mut targets = Vec::new();
+    for o in &reflection.fragment_outputs {
+        while targets.len() < o.location as usize {
+            targets.push(None);
+        }
+        targets.push(Some(if o.wgsl_type.contains("i32") {
+            wgpu::TextureFormat::Rgba32Sint
+        } else if o.wgsl_type.contains("u32") {
+            wgpu::TextureFormat::Rgba32Uint
+        } else {
+            float
+        }));
+    }
+    targets
 }
 
 /// wgpu's vertex format for a reflection format name (`float32x3`).

@@ -1,6 +1,29 @@
 //! Rendering with wgpu (headless; Vulkan, on Mesa's lavapipe where there is no GPU).
 //!
+//! # Steps
 //! - [`device`]: the adapter (picked deterministically), device and queue, created once;
-//!   render pipelines built from translated WGSL and its reflection.
+//!   render pipelines built from translated WGSL.
+//! - [`mesh`], [`texture`]: CPU-side meshes (builtins, OBJ) and textures (files, cube maps,
+//!   generators).
+//! - [`attributes`]: which mesh attribute feeds each vertex input; the vertex buffer.
+//! - [`camera`], [`semantics`], [`uniforms`]: camera and model over time, per-frame values,
+//!   the bytes of every uniform buffer (manifest values, semantics, reported guesses).
+//! - [`scene`]: everything one effect needs on the GPU.
+//! - [`frames`]: drawing one frame into an offscreen target and reading it back, with a
+//!   timeout.
+//! - [`encode`], [`compare`]: PNG, contact sheet, GIF, NaN/Inf masks; reference-image
+//!   comparison for pixel tests.
+//! - [`command`]: `effectc render`.
 
+pub mod attributes;
+pub mod camera;
+pub mod command;
+pub mod compare;
 pub mod device;
+pub mod encode;
+pub mod frames;
+pub mod mesh;
+pub mod scene;
+pub mod semantics;
+pub mod texture;
+pub mod uniforms;

@@ -1,0 +1,330 @@
+//! The scene sections of the manifest: `[camera]` (look-at camera and keyframes),
+//! `[model]` (the model matrix) and `[render]` (frame defaults and pipeline state).
+//!
+//! Same habits as the rest of the walk: every problem is reported at its key or value and
+//! the section still yields what could be read.
+
+use std::ops::Range;
+
+use toml::de::{DeTable, DeValue};
+
+use super::{entries, key, Ctx, Val};
+use crate::manifest::{
+    CameraDecl, CameraKey, Cull, Ease, ModelDecl, RenderDecl, E_MISSING, E_VALUE, MAX_FRAMES, MAX_FRAME_SIDE,
+};
+
+const CAMERA_KEYS: &[&str] = &["eye", "target", "up", "fov", "near", "far", "keys", "ease"];
+const CAMERA_KEY_KEYS: &[&str] = &["time", "eye", "target"];
+const MODEL_KEYS: &[&str] = &["translate", "rotate", "scale", "spin"];
+const RENDER_KEYS: &[&str] = &["size", "frames", "fps", "clear", "cull", "depth_test"];
+
+impl Ctx<'_> {
+    /// `n` finite numbers that fit in f32.
+    fn floats<const N: usize>(&mut self, v: &Val<'_>, what: &str) -> Option<[f32; N]> {
+        let expected = format!("an array of {N} numbers");
+        let DeValue::Array(items) = v.get_ref() else {
+            self.wrong_type(v, what, &expected);
+            return None;
+        };
+        if items.len() != N {
+            self.error(
+                E_VALUE,
+                v.span(),
+                format!("{what} must be {expected}, found {}", items.len()),
+                format!("expected {N} numbers"),
+            );
+            return None;
+        }
+        let mut out = [0.0f32; N];
+        let mut ok = true;
+        for (slot, item) in out.iter_mut().zip(items.iter()) {
+            match self.float(item, what) {
+                Some(x) => *slot = x,
+                None => ok = false,
+            }
+        }
+        ok.then_some(out)
+    }
+
+    /// A finite number that fits in f32.
+    fn float(&mut self, v: &Val<'_>, what: &str) -> Option<f32> {
+        let x = self.number(v, what)?;
+        if (x as f32).is_finite() {
+            Some(x as f32)
+        } else {
+            self.error(E_VALUE, v.span(), format!("{what} is too large"), "beyond the f32 range");
+            None
+        }
+    }
+
+    /// A number with `lo < x < hi`.
+    fn float_in(&mut self, v: &Val<'_>, what: &str, lo: f32, hi: f32) -> Option<f32> {
+        let x = self.float(v, what)?;
+        if x > lo && x < hi {
+            Some(x)
+        } else {
+            self.error(
+                E_VALUE,
+                v.span(),
+                format!("{what} must be greater than {lo} and less than {hi}"),
+                format!("not in ({lo}, {hi})"),
+            );
+            None
+        }
+    }
+
+    fn boolean(&mut self, v: &Val<'_>, what: &str) -> Option<bool> {
+        match v.get_ref() {
+            DeValue::Boolean(b) => Some(*b),
+            _ => {
+                self.wrong_type(v, what, "`true` or `false`");
+                None
+            }
+        }
+    }
+
+    pub(super) fn camera(&mut self, v: &Val<'_>) -> Option<CameraDecl> {
+        let t = self.table(v, "`camera`")?;
+        let mut cam = CameraDecl { span: v.span(), ..CameraDecl::default() };
+        let mut ok = true;
+        let mut near_span = None;
+        for (k, v2) in entries(t) {
+            let what = format!("`camera.{}`", key(k));
+            let what = what.as_str();
+            let done = match key(k) {
+                "eye" => self.floats(v2, what).map(|x| cam.eye = x).is_some(),
+                "target" => self.floats(v2, what).map(|x| cam.target = x).is_some(),
+                "up" => self.floats(v2, what).map(|x| cam.up = x).is_some(),
+                "fov" => self.float_in(v2, what, 0.0, 180.0).map(|x| cam.fov = x).is_some(),
+                "near" => {
+                    near_span = Some(v2.span());
+                    self.float_in(v2, what, 0.0, f32::MAX).map(|x| cam.near = x).is_some()
+                }
+                "far" => self.float_in(v2, what, 0.0, f32::MAX).map(|x| cam.far = x).is_some(),
+                "ease" => {
+                    let choices = [("linear", Ease::Linear), ("smooth", Ease::Smooth)];
+                    self.choice(v2, what, "easing", &choices).map(|e| cam.ease = e).is_some()
+                }
+                "keys" => match self.camera_keys(v2, &cam) {
+                    Some(keys) => {
+                        cam.keys = keys;
+                        true
+                    }
+                    None => false,
+                },
+                other => {
+                    self.unknown_key(other, k.span(), "in `[camera]`", CAMERA_KEYS);
+                    false
+                }
+            };
+            ok &= done;
+        }
+        if ok && cam.near >= cam.far {
+            let span = near_span.unwrap_or_else(|| v.span());
+            self.error(
+                E_VALUE,
+                span,
+                format!("`camera.near` ({}) must be less than `camera.far` ({})", cam.near, cam.far),
+                "near plane beyond the far plane",
+            );
+            ok = false;
+        }
+        if ok && degenerate_view(cam.eye, cam.target, cam.up) {
+            let d = self.error(
+                E_VALUE,
+                v.span(),
+                "the camera's `eye` equals its `target`, or `up` is parallel to the view direction".into(),
+                "no view direction",
+            );
+            d.help = Some("move `eye` away from `target` and pick an `up` that is not along the view".into());
+            ok = false;
+        }
+        ok.then_some(cam)
+    }
+
+    /// `keys = [{ time, eye, target? }, ...]` with strictly increasing times; a key without
+    /// `target` looks at the camera's `target`.
+    fn camera_keys(&mut self, v: &Val<'_>, cam: &CameraDecl) -> Option<Vec<CameraKey>> {
+        let DeValue::Array(items) = v.get_ref() else {
+            self.wrong_type(v, "`camera.keys`", "an array of tables (`[[camera.keys]]`)");
+            return None;
+        };
+        if items.is_empty() {
+            self.error(E_MISSING, v.span(), "`camera.keys` is empty".into(), "no keyframe");
+            return None;
+        }
+        let mut keys: Vec<CameraKey> = Vec::new();
+        let mut ok = true;
+        let mut last: Option<(f64, Range<usize>)> = None;
+        for item in items {
+            let Some(t) = self.table(item, "a camera key") else {
+                ok = false;
+                continue;
+            };
+            match self.camera_key(item, t, cam, &mut last) {
+                Some(k) => keys.push(k),
+                None => ok = false,
+            }
+        }
+        ok.then_some(keys)
+    }
+
+    fn camera_key(
+        &mut self,
+        item: &Val<'_>,
+        t: &DeTable<'_>,
+        cam: &CameraDecl,
+        last: &mut Option<(f64, Range<usize>)>,
+    ) -> Option<CameraKey> {
+        let mut time = None;
+        let mut eye = None;
+        let mut target = cam.target;
+        let mut ok = true;
+        for (k, v) in entries(t) {
+            let what = format!("`camera.keys.{}`", key(k));
+            let what = what.as_str();
+            ok &= match key(k) {
+                "time" => match self.number(v, what) {
+                    Some(x) if x >= 0.0 => {
+                        time = Some((x, v.span()));
+                        true
+                    }
+                    Some(_) => {
+                        self.error(E_VALUE, v.span(), format!("{what} must not be negative"), "negative time");
+                        false
+                    }
+                    None => false,
+                },
+                "eye" => self.floats(v, what).map(|x| eye = Some(x)).is_some(),
+                "target" => self.floats(v, what).map(|x| target = x).is_some(),
+                other => {
+                    self.unknown_key(other, k.span(), "in a camera key", CAMERA_KEY_KEYS);
+                    false
+                }
+            };
+        }
+        let (Some((time, time_span)), Some(eye)) = (time, eye) else {
+            if ok {
+                let d = self.error(E_MISSING, item.span(), "a camera key needs `time` and `eye`".into(), "incomplete key");
+                d.help = Some("write e.g. `{ time = 2.0, eye = [0, 1, 4] }`".into());
+            }
+            return None;
+        };
+        if let Some((prev, prev_span)) = last.clone() {
+            if time <= prev {
+                let file = self.file;
+                let d = self.error(
+                    E_VALUE,
+                    time_span.clone(),
+                    format!("camera keys must have increasing times: {time} follows {prev}"),
+                    "not after the previous key",
+                );
+                d.labels.push(crate::diag::Label { file, span: prev_span, message: "previous key".into() });
+                ok = false;
+            }
+        }
+        *last = Some((time, time_span));
+        if ok && degenerate_view(eye, target, cam.up) {
+            self.error(
+                E_VALUE,
+                item.span(),
+                "this key's `eye` equals its `target`, or `up` is parallel to the view direction".into(),
+                "no view direction",
+            );
+            ok = false;
+        }
+        ok.then_some(CameraKey { time, eye, target })
+    }
+
+    pub(super) fn model(&mut self, v: &Val<'_>) -> Option<ModelDecl> {
+        let t = self.table(v, "`model`")?;
+        let mut m = ModelDecl::default();
+        let mut ok = true;
+        for (k, v2) in entries(t) {
+            let what = format!("`model.{}`", key(k));
+            let what = what.as_str();
+            ok &= match key(k) {
+                "translate" => self.floats(v2, what).map(|x| m.translate = x).is_some(),
+                "rotate" => self.floats(v2, what).map(|x| m.rotate = x).is_some(),
+                "spin" => self.floats(v2, what).map(|x| m.spin = x).is_some(),
+                "scale" => {
+                    let s = match v2.get_ref() {
+                        DeValue::Array(_) => self.floats(v2, what),
+                        _ => self.float(v2, what).map(|s| [s; 3]),
+                    };
+                    match s {
+                        Some(s) if s.iter().all(|c| *c != 0.0) => {
+                            m.scale = s;
+                            true
+                        }
+                        Some(_) => {
+                            self.error(E_VALUE, v2.span(), format!("{what} must not be zero"), "flattens the mesh");
+                            false
+                        }
+                        None => false,
+                    }
+                }
+                other => {
+                    self.unknown_key(other, k.span(), "in `[model]`", MODEL_KEYS);
+                    false
+                }
+            };
+        }
+        ok.then_some(m)
+    }
+
+    pub(super) fn render(&mut self, v: &Val<'_>) -> Option<RenderDecl> {
+        let t = self.table(v, "`render`")?;
+        let mut r = RenderDecl::default();
+        let mut ok = true;
+        for (k, v2) in entries(t) {
+            let what = format!("`render.{}`", key(k));
+            let what = what.as_str();
+            ok &= match key(k) {
+                "size" => match v2.get_ref() {
+                    DeValue::Array(items) if items.len() == 2 => {
+                        let w = self.uint(&items[0], what, 1, MAX_FRAME_SIDE);
+                        let h = self.uint(&items[1], what, 1, MAX_FRAME_SIDE);
+                        match (w, h) {
+                            (Some(w), Some(h)) => {
+                                r.size = Some((w, h));
+                                true
+                            }
+                            _ => false,
+                        }
+                    }
+                    _ => {
+                        self.wrong_type(v2, what, "`[width, height]`");
+                        false
+                    }
+                },
+                "frames" => self.uint(v2, what, 1, MAX_FRAMES).map(|n| r.frames = Some(n)).is_some(),
+                "fps" => self.float_in(v2, what, 0.0, 100_000.0).map(|x| r.fps = Some(f64::from(x))).is_some(),
+                "clear" => match v2.get_ref() {
+                    DeValue::Array(items) if items.len() == 3 => {
+                        self.floats::<3>(v2, what).map(|c| r.clear = [c[0], c[1], c[2], 1.0]).is_some()
+                    }
+                    _ => self.floats::<4>(v2, what).map(|c| r.clear = c).is_some(),
+                },
+                "cull" => {
+                    let choices = [("none", Cull::None), ("back", Cull::Back), ("front", Cull::Front)];
+                    self.choice(v2, what, "cull mode", &choices).map(|c| r.cull = c).is_some()
+                }
+                "depth_test" => self.boolean(v2, what).map(|b| r.depth_test = b).is_some(),
+                other => {
+                    self.unknown_key(other, k.span(), "in `[render]`", RENDER_KEYS);
+                    false
+                }
+            };
+        }
+        ok.then_some(r)
+    }
+}
+
+/// True when `eye == target` or `up` is parallel to the view direction.
+fn degenerate_view(eye: [f32; 3], target: [f32; 3], up: [f32; 3]) -> bool {
+    let d = [target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]];
+    let cross = [d[1] * up[2] - d[2] * up[1], d[2] * up[0] - d[0] * up[2], d[0] * up[1] - d[1] * up[0]];
+    let len2 = |v: [f32; 3]| v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    len2(d) < 1e-12 || len2(cross) <= 1e-12 * len2(d) * len2(up).max(1e-30)
+}

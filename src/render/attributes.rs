@@ -1,0 +1,205 @@
+//! Which mesh attribute feeds each vertex shader input, and the interleaved vertex buffer.
+//!
+//! In order of trust: the manifest's `[mesh.attributes]`; the input's name (`aPos`,
+//! `vertPosition`, `in_Normal`, `aTexCoords`, `tangent`, `vColor`, …); its location and
+//! type (location 0 is the position; a later `vec2` a uv, `vec3` a normal, `vec4` a colour).
+//! Every choice not written in the manifest is reported as a guess; an input nothing fits
+//! reads zeros.
+
+use crate::back::reflect::InterfaceVar;
+use crate::render::device::vertex_format;
+use crate::render::mesh::Mesh;
+
+/// Where one vertex input's data comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Choice {
+    pub location: u32,
+    pub input: String,
+    pub format: wgpu::VertexFormat,
+    /// A mesh attribute name, or `None` for zeros.
+    pub attribute: Option<&'static str>,
+    /// Why it was chosen, when the manifest did not say (`by its name`, `by its location`).
+    pub guessed: Option<&'static str>,
+}
+
+/// Matches every input to a mesh attribute.
+pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, String)], mesh: &Mesh) -> Vec<Choice> {
+    inputs
+        .iter()
+        .map(|input| {
+            let format = vertex_format(input.format.as_deref().unwrap_or("float32x4"));
+            let given = explicit.iter().find(|(name, _)| *name == input.name).and_then(|(_, attr)| known(attr));
+            let (attribute, guessed) = match given {
+                Some(a) => (Some(a), None),
+                None => match by_name(&input.name) {
+                    Some(a) => (Some(a), Some("by its name")),
+                    None => match by_location(input.location, format) {
+                        Some(a) => (Some(a), Some("by its location and type")),
+                        None => (None, Some("nothing matches it")),
+                    },
+                },
+            };
+            let attribute = attribute.filter(|a| mesh.attribute(a).is_some());
+            Choice { location: input.location, input: input.name.clone(), format, attribute, guessed }
+        })
+        .collect()
+}
+
+fn known(name: &str) -> Option<&'static str> {
+    crate::render::mesh::ATTRIBUTES.iter().copied().find(|a| *a == name)
+}
+
+/// The attribute an input's name suggests.
+pub fn by_name(name: &str) -> Option<&'static str> {
+    let n = name.to_ascii_lowercase();
+    let has = |parts: &[&str]| parts.iter().any(|p| n.contains(p));
+    if has(&["bitangent", "binormal", "bitan"]) {
+        Some("bitangent")
+    } else if has(&["tangent", "tang"]) {
+        Some("tangent")
+    } else if has(&["normal", "norm"]) {
+        Some("normal")
+    } else if has(&["uv", "tex", "coord", "st0"]) || n == "st" || n.ends_with("_st") {
+        Some("uv")
+    } else if has(&["color", "colour", "col"]) {
+        Some("color")
+    } else if has(&["pos", "vertex", "vert", "point"]) || ["p", "a_p", "in_p", "v"].contains(&n.as_str()) {
+        Some("position")
+    } else {
+        None
+    }
+}
+
+fn by_location(location: u32, format: wgpu::VertexFormat) -> Option<&'static str> {
+    use wgpu::VertexFormat as F;
+    match (location, format) {
+        (0, _) => Some("position"),
+        (_, F::Float32x2) => Some("uv"),
+        (_, F::Float32x3) => Some("normal"),
+        (_, F::Float32x4) => Some("color"),
+        _ => None,
+    }
+}
+
+/// One vertex buffer holding every input, interleaved in input order.
+pub struct Interleaved {
+    pub bytes: Vec<u8>,
+    pub stride: u64,
+    pub attributes: Vec<wgpu::VertexAttribute>,
+}
+
+/// Interleaves the chosen attributes of `mesh` in the formats the shader declares.
+pub fn interleave(choices: &[Choice], mesh: &Mesh) -> Interleaved {
+    let mut attributes = Vec::new();
+    let mut stride = 0u64;
+    for c in choices {
+        attributes.push(wgpu::VertexAttribute { format: c.format, offset: stride, shader_location: c.location });
+        stride += c.format.size();
+    }
+    let stride = stride.max(4);
+    let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.and_then(|a| mesh.attribute(a))).collect();
+    let count = mesh.vertex_count();
+    let mut bytes = Vec::with_capacity(count * stride as usize);
+    for v in 0..count {
+        let start = bytes.len();
+        for (c, column) in choices.iter().zip(&columns) {
+            let value = column.as_ref().and_then(|col| col.get(v)).copied().unwrap_or([0.0; 4]);
+            push_vertex_value(&mut bytes, c.format, value);
+        }
+        bytes.resize(start + stride as usize, 0);
+    }
+    Interleaved { bytes, stride, attributes }
+}
+
+/// Appends `value` converted to `format` (integers truncate; extra components dropped).
+fn push_vertex_value(out: &mut Vec<u8>, format: wgpu::VertexFormat, value: [f32; 4]) {
+    use wgpu::VertexFormat as F;
+    let (count, kind) = match format {
+        F::Float32 => (1, 'f'),
+        F::Float32x2 => (2, 'f'),
+        F::Float32x3 => (3, 'f'),
+        F::Float32x4 => (4, 'f'),
+        F::Sint32 => (1, 'i'),
+        F::Sint32x2 => (2, 'i'),
+        F::Sint32x3 => (3, 'i'),
+        F::Sint32x4 => (4, 'i'),
+        F::Uint32 => (1, 'u'),
+        F::Uint32x2 => (2, 'u'),
+        F::Uint32x3 => (3, 'u'),
+        F::Uint32x4 => (4, 'u'),
+        F::Float64 => (1, 'd'),
+        F::Float64x2 => (2, 'd'),
+        F::Float64x3 => (3, 'd'),
+        F::Float64x4 => (4, 'd'),
+        _ => (0, 'f'),
+    };
+    for x in value.iter().take(count) {
+        match kind {
+            'i' => out.extend_from_slice(&(*x as i32).to_le_bytes()),
+            'u' => out.extend_from_slice(&(x.max(0.0) as u32).to_le_bytes()),
+            'd' => out.extend_from_slice(&f64::from(*x).to_le_bytes()),
+            _ => out.extend_from_slice(&x.to_le_bytes()),
+        }
+    }
+    let written = count * if kind == 'd' { 8 } else { 4 };
+    out.resize(out.len() + (format.size() as usize).saturating_sub(written), 0);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tutorial_names_map_to_attributes() {
+        for (name, attr) in [
+            ("aPos", "position"),
+            ("vertPosition", "position"),
+            ("vertexPosition_modelspace", "position"),
+            ("in_Position", "position"),
+            ("aNormal", "normal"),
+            ("vertexNormal", "normal"),
+            ("aTexCoords", "uv"),
+            ("vertTexCoords", "uv"),
+            ("a_uv", "uv"),
+            ("aTangent", "tangent"),
+            ("aBitangent", "bitangent"),
+            ("aColor", "color"),
+            ("vertexColour", "color"),
+        ] {
+            assert_eq!(by_name(name), Some(attr), "{name}");
+        }
+        assert_eq!(by_name("instanceMatrix"), None);
+    }
+
+    #[test]
+    fn inputs_are_matched_explicitly_then_by_name_then_by_location() {
+        let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Cube);
+        let input = |location, name: &str, format: &str| InterfaceVar {
+            location,
+            name: name.into(),
+            wgsl_type: String::new(),
+            format: Some(format.into()),
+            interpolation: None,
+        };
+        let inputs = [input(0, "p0", "float32x3"), input(1, "weird", "float32x2"), input(2, "aNormal", "float32x3")];
+        let explicit = vec![("p0".to_string(), "position".to_string())];
+        let c = choose(&inputs, &explicit, &mesh);
+        assert_eq!((c[0].attribute, c[0].guessed), (Some("position"), None));
+        assert_eq!((c[1].attribute, c[1].guessed), (Some("uv"), Some("by its location and type")));
+        assert_eq!((c[2].attribute, c[2].guessed), (Some("normal"), Some("by its name")));
+        let buf = interleave(&c, &mesh);
+        assert_eq!(buf.stride, 12 + 8 + 12);
+        assert_eq!(buf.bytes.len(), mesh.vertex_count() * 32);
+        assert_eq!(buf.attributes[2].offset, 20);
+    }
+
+    #[test]
+    fn a_vec4_position_gets_w_one_and_integers_truncate() {
+        let mut out = Vec::new();
+        push_vertex_value(&mut out, wgpu::VertexFormat::Float32x4, [1.0, 2.0, 3.0, 1.0]);
+        push_vertex_value(&mut out, wgpu::VertexFormat::Sint32x2, [2.7, -1.2, 0.0, 0.0]);
+        assert_eq!(out.len(), 16 + 8);
+        assert_eq!(f32::from_le_bytes(out[12..16].try_into().unwrap()), 1.0);
+        assert_eq!(i32::from_le_bytes(out[16..20].try_into().unwrap()), 2);
+    }
+}

@@ -1,0 +1,494 @@
+//! `effectc render`: check, translate to WGSL, build the scene, draw the frames and write
+//! them as PNG (plus a contact sheet, a GIF, non-finite masks).
+//!
+//! The adapter and device are opened once per run and every program reuses them; each
+//! program's pipeline and target are created once and reused by its frames. PNG encoding
+//! runs on a second thread while the next frame renders. Frame times come from the frame
+//! index (`start + i × step`), never from the wall clock, so the same command gives the same
+//! bytes.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+use crate::back::{Target as BackTarget, TranslateOptions};
+use crate::check::{self, Outcome};
+use crate::diag::{Diagnostic, FileId};
+use crate::front::program::FrontOptions;
+use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
+use crate::render::camera;
+use crate::render::device::Gpu;
+use crate::render::encode;
+use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels, Target};
+use crate::render::scene::{ColorMode, Scene, SceneInput};
+use crate::render::semantics::FrameState;
+use crate::stage::StageKind;
+use crate::translate::{self, write_atomic};
+
+/// No usable adapter (exit 2: the machine, not the input).
+pub const E_NO_ADAPTER: &str = "E0401";
+/// A frame did not finish within `--timeout`.
+pub const E_TIMEOUT: &str = "E0403";
+/// `--float` found NaN or Inf pixels.
+pub const E_NON_FINITE: &str = "E0404";
+/// A request beyond the safety limits (size, frame count, memory): exit 2.
+pub const E_LIMIT: &str = "E0405";
+/// A frame failed on the device (validation error while drawing, lost device).
+pub const E_FRAME: &str = "E0407";
+
+/// Frames kept in memory for `--contact-sheet` / `--gif` may use at most this much.
+pub const MAX_KEPT_BYTES: u64 = 2 << 30;
+/// Default frame size.
+pub const DEFAULT_SIZE: (u32, u32) = (512, 512);
+/// Default frame rate when neither the manifest nor the flags give one.
+pub const DEFAULT_FPS: f64 = 30.0;
+
+/// How time advances between frames.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Step {
+    /// The manifest's `[render] fps`, else [`DEFAULT_FPS`].
+    Default,
+    Fps(f64),
+    Seconds(f64),
+}
+
+/// What `render` was asked to do.
+#[derive(Debug, Clone)]
+pub struct Request {
+    pub inputs: Vec<PathBuf>,
+    pub stage: Option<StageKind>,
+    pub front: FrontOptions,
+    pub back: TranslateOptions,
+    /// `None`: the manifest's `[render] frames`, else 1.
+    pub frames: Option<u32>,
+    pub step: Step,
+    pub start: f64,
+    /// `None`: the manifest's `[render] size`, else [`DEFAULT_SIZE`].
+    pub size: Option<(u32, u32)>,
+    /// `None`: `out/<effect>/frames/`.
+    pub out: Option<PathBuf>,
+    pub contact_sheet: bool,
+    pub gif: bool,
+    pub float: bool,
+    pub timeout: Duration,
+    /// Show a progress bar (on a terminal, outside CI).
+    pub progress: bool,
+    /// When the process started, for the time to the first frame.
+    pub started: Instant,
+}
+
+/// One frame's numbers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrameReport {
+    pub index: u32,
+    pub time: f64,
+    pub gpu_ms: f64,
+    pub cpu_ms: f64,
+    /// `--float`: NaN / +Inf / −Inf pixel counts.
+    pub non_finite: Option<(u64, u64, u64)>,
+}
+
+/// One rendered program.
+#[derive(Debug, Clone)]
+pub struct Rendered {
+    pub name: String,
+    pub dir: PathBuf,
+    pub size: (u32, u32),
+    pub files: Vec<PathBuf>,
+    pub frames: Vec<FrameReport>,
+    pub clock: GpuClock,
+    /// From process start until the first PNG was on disk.
+    pub first_frame: Option<Duration>,
+    /// Mesh and attribute summary.
+    pub scene: String,
+}
+
+/// The result of a run: diagnostics, what was rendered, the adapter used.
+pub struct RunResult {
+    pub outcome: Outcome,
+    pub rendered: Vec<Rendered>,
+    pub adapter: Option<String>,
+    /// A frame timed out: the device is still busy, so the caller must exit the process
+    /// without waiting for it (everything GPU-side was leaked on purpose).
+    pub hung: bool,
+}
+
+/// Runs check, translation and rendering for every program of the request.
+pub fn run(request: &Request) -> RunResult {
+    let (mut outcome, checked) = check::check_inputs(&request.inputs, request.stage, request.front);
+    let mut result = RunResult { outcome: Outcome::default(), rendered: Vec::new(), adapter: None, hung: false };
+    if let Some(d) = limit_error(request) {
+        outcome.io_error = true;
+        outcome.diagnostics.push(d);
+        result.outcome = outcome;
+        return result;
+    }
+    let inputs = translate::input_paths(&outcome, &request.inputs);
+    let mut gpu: Option<Gpu> = None;
+    for c in &checked {
+        let Some(translated) = translate::translate_checked(c, &outcome, request.back) else { continue };
+        let program = c.program.as_ref().expect("translated programs have a program");
+        let file = program.stages[0].syntax.file;
+        let translation = match translated {
+            Ok(t) => t,
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                continue;
+            }
+        };
+        let wgsl = match translate::emit_contained(&translation, BackTarget::Wgsl) {
+            Ok(o) => String::from_utf8_lossy(&o[0].bytes).into_owned(),
+            Err(e) => {
+                outcome.diagnostics.push(translate::target_error(file, BackTarget::Wgsl, &e));
+                continue;
+            }
+        };
+        if gpu.is_none() {
+            match Gpu::new() {
+                Ok(g) => {
+                    result.adapter = Some(g.describe());
+                    gpu = Some(g);
+                }
+                Err(e) => {
+                    outcome.io_error = true;
+                    outcome.diagnostics.push(Diagnostic::error(E_NO_ADAPTER, e.0));
+                    break;
+                }
+            }
+        }
+        let Some(gpu) = gpu.as_ref() else { break };
+        let effect = c.effect.as_ref();
+        let render = effect.map(|e| e.render.clone()).unwrap_or_default();
+        let size = request.size.or(render.size).unwrap_or(DEFAULT_SIZE);
+        let frames = request.frames.or(render.frames).unwrap_or(1);
+        if let Some(d) = device_limit_error(gpu, size, frames, request) {
+            outcome.io_error = true;
+            outcome.diagnostics.push(d);
+            continue;
+        }
+        let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
+        let input = SceneInput { translation: &translation, wgsl: &wgsl, program, effect, mode };
+        let mut scene = match Scene::new(gpu, &input) {
+            Ok(s) => s,
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                continue;
+            }
+        };
+        outcome.diagnostics.append(&mut scene.warnings);
+        let step = match request.step {
+            Step::Fps(f) => 1.0 / f,
+            Step::Seconds(s) => s,
+            Step::Default => 1.0 / render.fps.unwrap_or(DEFAULT_FPS),
+        };
+        let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&translation.name).join("frames"));
+        let plan = FramePlan { frames, size, step, start: request.start, dir, mode };
+        match draw_frames(gpu, &mut scene, &plan, request, &inputs, file) {
+            Ok((rendered, diags)) => {
+                outcome.diagnostics.extend(diags);
+                result.rendered.push(rendered);
+            }
+            Err(Stop::Hung(d)) => {
+                outcome.diagnostics.push(d);
+                result.hung = true;
+                // The device is still running the frame: dropping it would wait forever.
+                std::mem::forget(scene);
+                break;
+            }
+            Err(Stop::Failed(d)) => outcome.diagnostics.push(d),
+        }
+    }
+    if result.hung {
+        std::mem::forget(gpu);
+    }
+    crate::diag::sort(&mut outcome.diagnostics);
+    result.outcome = outcome;
+    result
+}
+
+/// Flags beyond the limits, refused before anything is allocated.
+fn limit_error(request: &Request) -> Option<Diagnostic> {
+    if let Some((w, h)) = request.size {
+        if w == 0 || h == 0 || w > MAX_FRAME_SIDE || h > MAX_FRAME_SIDE {
+            return Some(Diagnostic::error(E_LIMIT, format!("--size {w}x{h} is outside 1..={MAX_FRAME_SIDE} per side")));
+        }
+    }
+    if let Some(n) = request.frames {
+        if n == 0 || n > MAX_FRAMES {
+            return Some(Diagnostic::error(E_LIMIT, format!("--frames {n} is outside 1..={MAX_FRAMES}")));
+        }
+    }
+    match request.step {
+        Step::Fps(f) if !(f.is_finite() && f > 0.0) => Some(Diagnostic::error(E_LIMIT, "--fps must be a positive number")),
+        Step::Seconds(s) if !s.is_finite() => Some(Diagnostic::error(E_LIMIT, "--time-step must be a finite number")),
+        _ if !request.start.is_finite() => Some(Diagnostic::error(E_LIMIT, "--start must be a finite number")),
+        _ => None,
+    }
+}
+
+/// Limits that depend on the device and on what the run keeps in memory.
+fn device_limit_error(gpu: &Gpu, (w, h): (u32, u32), frames: u32, request: &Request) -> Option<Diagnostic> {
+    let limits = gpu.device.limits();
+    let max_side = limits.max_texture_dimension_2d;
+    if w > max_side || h > max_side {
+        return Some(Diagnostic::error(E_LIMIT, format!("a {w}x{h} frame exceeds the adapter's limit of {max_side} per side")));
+    }
+    let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
+    let needed = Target::bytes_needed(w, h, mode);
+    if needed > limits.max_buffer_size.saturating_mul(3) {
+        return Some(Diagnostic::error(E_LIMIT, format!("a {w}x{h} frame needs {} MiB, beyond the adapter's buffers", needed >> 20)));
+    }
+    let kept = u64::from(w) * u64::from(h) * 4 * u64::from(frames);
+    if (request.contact_sheet || request.gif) && kept > MAX_KEPT_BYTES {
+        return Some(
+            Diagnostic::error(E_LIMIT, format!("--contact-sheet/--gif would keep {} MiB of frames in memory", kept >> 20))
+                .with_note(format!("the limit is {} MiB; use fewer frames or a smaller --size", MAX_KEPT_BYTES >> 20)),
+        );
+    }
+    None
+}
+
+struct FramePlan {
+    frames: u32,
+    size: (u32, u32),
+    step: f64,
+    start: f64,
+    dir: PathBuf,
+    mode: ColorMode,
+}
+
+enum Stop {
+    Hung(Diagnostic),
+    Failed(Diagnostic),
+}
+
+/// A frame handed to the encoder thread.
+struct Encoded {
+    index: u32,
+    pixels: Pixels,
+}
+
+/// What the encoder thread produced.
+#[derive(Default)]
+struct EncoderResult {
+    files: Vec<PathBuf>,
+    non_finite: Vec<(u32, encode::NonFinite, Option<PathBuf>)>,
+    kept: Vec<Vec<u8>>,
+    first_written: Option<Instant>,
+    errors: Vec<Diagnostic>,
+}
+
+fn draw_frames(
+    gpu: &Gpu,
+    scene: &mut Scene,
+    plan: &FramePlan,
+    request: &Request,
+    inputs: &BTreeSet<PathBuf>,
+    file: FileId,
+) -> Result<(Rendered, Vec<Diagnostic>), Stop> {
+    let (w, h) = plan.size;
+    let target = Target::new(gpu, scene, w, h, plan.mode);
+    let bar = progress_bar(request, plan.frames, &scene.name);
+    let keep = request.contact_sheet || request.gif;
+    let mut reports = Vec::new();
+    let mut stop = None;
+    let (tx, rx) = mpsc::sync_channel::<Encoded>(2);
+    let encoded = std::thread::scope(|s| {
+        let name = scene.name.clone();
+        let encoder = s.spawn(move || encode_frames(rx, &name, &plan.dir, plan.size, keep, inputs));
+        for i in 0..plan.frames {
+            let time = plan.start + f64::from(i) * plan.step;
+            let aspect = w as f32 / h as f32;
+            let state = FrameState {
+                index: i,
+                time,
+                delta: plan.step,
+                size: plan.size,
+                view: camera::view_at(&scene.camera, time, aspect),
+                model: camera::model_at(&scene.model, time),
+            };
+            match frames::render(gpu, scene, &target, &state, request.timeout) {
+                Ok(Frame { pixels, gpu_ms, cpu_ms }) => {
+                    reports.push(FrameReport { index: i, time, gpu_ms, cpu_ms, non_finite: None });
+                    if tx.send(Encoded { index: i, pixels }).is_err() {
+                        break;
+                    }
+                }
+                Err(FrameError::Timeout(t)) => {
+                    stop = Some(Stop::Hung(
+                        Diagnostic::error(E_TIMEOUT, format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()))
+                            .in_file(file)
+                            .with_note("a shader that never leaves a loop keeps the GPU busy forever")
+                            .with_help("check the loop conditions, or raise --timeout for a very slow effect"),
+                    ));
+                    break;
+                }
+                Err(FrameError::Device(e)) => {
+                    stop = Some(Stop::Failed(
+                        Diagnostic::error(E_FRAME, format!("frame {i} failed on the device")).in_file(file).with_note(e),
+                    ));
+                    break;
+                }
+            }
+            if let Some(b) = &bar {
+                b.inc(1);
+            }
+        }
+        drop(tx);
+        encoder.join().unwrap_or_default()
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    if let Some(stop) = stop {
+        return Err(stop);
+    }
+    let mut diags = encoded.errors;
+    let mut files = encoded.files;
+    for (index, nf, mask) in &encoded.non_finite {
+        if let Some(r) = reports.iter_mut().find(|r| r.index == *index) {
+            r.non_finite = Some((nf.nan, nf.pos_inf, nf.neg_inf));
+        }
+        if nf.nan + nf.pos_inf + nf.neg_inf > 0 {
+            let mut d = Diagnostic::error(
+                E_NON_FINITE,
+                format!("frame {index}: {} NaN, {} +Inf, {} -Inf pixels", nf.nan, nf.pos_inf, nf.neg_inf),
+            )
+            .in_file(file);
+            if let Some(m) = mask {
+                d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));
+            }
+            diags.push(d);
+        }
+    }
+    let frames_rgba: Vec<&[u8]> = encoded.kept.iter().map(|f| f.as_slice()).collect();
+    if request.contact_sheet && !frames_rgba.is_empty() {
+        let (sheet, sw, sh) = encode::contact_sheet(&frames_rgba, w, h, 0);
+        let path = plan.dir.join(format!("{}_sheet.png", scene.name));
+        write_png(&path, &sheet, sw, sh, inputs, &mut files, &mut diags);
+    }
+    if request.gif && !frames_rgba.is_empty() {
+        let delay = (plan.step * 1000.0).round().clamp(20.0, 60_000.0) as u32;
+        let path = plan.dir.join(format!("{}.gif", scene.name));
+        match encode::gif_bytes(&frames_rgba, w, h, delay) {
+            Ok(bytes) => write_file(&path, &bytes, inputs, &mut files, &mut diags),
+            Err(e) => diags.push(Diagnostic::error(translate::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
+        }
+    }
+    let rendered = Rendered {
+        name: scene.name.clone(),
+        dir: plan.dir.clone(),
+        size: plan.size,
+        files,
+        frames: reports,
+        clock: target.clock(),
+        first_frame: encoded.first_written.map(|t| t.duration_since(request.started)),
+        scene: scene.describe.clone(),
+    };
+    Ok((rendered, diags))
+}
+
+/// The encoder thread: PNG (and float scans) for each frame as it arrives.
+fn encode_frames(
+    rx: mpsc::Receiver<Encoded>,
+    name: &str,
+    dir: &Path,
+    (w, h): (u32, u32),
+    keep: bool,
+    inputs: &BTreeSet<PathBuf>,
+) -> EncoderResult {
+    let mut out = EncoderResult::default();
+    for Encoded { index, pixels } in rx {
+        let rgba = match pixels {
+            Pixels::Rgba8(p) => p,
+            Pixels::Rgba32F(f) => {
+                let (counts, mask) = encode::non_finite(&f, w, h);
+                let mask_path = mask.map(|m| {
+                    let path = dir.join(format!("{name}_{index:04}_nonfinite.png"));
+                    write_png(&path, &m, w, h, inputs, &mut out.files, &mut out.errors);
+                    path
+                });
+                out.non_finite.push((index, counts, mask_path));
+                encode::float_to_rgba8(&f)
+            }
+        };
+        let path = dir.join(format!("{name}_{index:04}.png"));
+        write_png(&path, &rgba, w, h, inputs, &mut out.files, &mut out.errors);
+        if out.first_written.is_none() {
+            out.first_written = Some(Instant::now());
+        }
+        if keep {
+            out.kept.push(rgba);
+        }
+    }
+    out
+}
+
+fn write_png(path: &Path, rgba: &[u8], w: u32, h: u32, inputs: &BTreeSet<PathBuf>, files: &mut Vec<PathBuf>, diags: &mut Vec<Diagnostic>) {
+    match encode::png_bytes(rgba, w, h) {
+        Ok(bytes) => write_file(path, &bytes, inputs, files, diags),
+        Err(e) => diags.push(Diagnostic::error(translate::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
+    }
+}
+
+fn write_file(path: &Path, bytes: &[u8], inputs: &BTreeSet<PathBuf>, files: &mut Vec<PathBuf>, diags: &mut Vec<Diagnostic>) {
+    match write_atomic(path, bytes, inputs) {
+        Ok(()) => files.push(path.to_path_buf()),
+        Err(e) => diags.push(Diagnostic::error(translate::E_OUTPUT_IO, e)),
+    }
+}
+
+fn progress_bar(request: &Request, frames: u32, name: &str) -> Option<indicatif::ProgressBar> {
+    if !request.progress || frames < 2 {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::new(u64::from(frames));
+    let style = indicatif::ProgressStyle::with_template("{prefix} [{bar:30}] {pos}/{len} frames {per_sec} eta {eta}")
+        .map(|s| s.progress_chars("=> "))
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
+    bar.set_style(style);
+    bar.set_prefix(name.to_string());
+    Some(bar)
+}
+
+/// Human summary of one rendered program (with per-frame timings when asked).
+pub fn summary(r: &Rendered, timings: bool, verbose: bool) -> String {
+    let pngs = r.files.iter().filter(|f| !f.to_string_lossy().ends_with("_nonfinite.png")).count();
+    let mut text = format!(
+        "rendered {} → {}: {} frame{} at {}x{} ({} file{})\n",
+        r.name,
+        r.dir.display(),
+        r.frames.len(),
+        if r.frames.len() == 1 { "" } else { "s" },
+        r.size.0,
+        r.size.1,
+        pngs,
+        if pngs == 1 { "" } else { "s" },
+    );
+    if verbose {
+        text.push_str(&format!("  scene: {}\n", r.scene));
+    }
+    for f in &r.frames {
+        if let Some((nan, pinf, ninf)) = f.non_finite {
+            text.push_str(&format!("  frame {:4} t={:.3}s: {nan} NaN, {pinf} +Inf, {ninf} -Inf pixels\n", f.index, f.time));
+        }
+    }
+    if timings && !r.frames.is_empty() {
+        let clock = match r.clock {
+            GpuClock::Timestamps => "GPU timestamps",
+            GpuClock::Wall => "wall time from submit to completion",
+        };
+        text.push_str(&format!("  timings (GPU ms: {clock}; CPU ms: prepare, submit, unpack):\n"));
+        for f in &r.frames {
+            text.push_str(&format!("    frame {:4} t={:8.3}s  gpu {:8.3} ms  cpu {:7.3} ms\n", f.index, f.time, f.gpu_ms, f.cpu_ms));
+        }
+        let mut gpu: Vec<f64> = r.frames.iter().map(|f| f.gpu_ms).collect();
+        gpu.sort_by(f64::total_cmp);
+        text.push_str(&format!("    median gpu {:.3} ms/frame\n", gpu[gpu.len() / 2]));
+        if let Some(t) = r.first_frame {
+            text.push_str(&format!("    first frame on disk {:.0} ms after start\n", t.as_secs_f64() * 1e3));
+        }
+    }
+    text
+}

@@ -1,0 +1,276 @@
+//! Drawing one frame into an offscreen target and reading it back.
+//!
+//! The target (colour attachments for every fragment output, a depth buffer, a readback
+//! buffer with rows padded to 256 bytes, timestamp queries when the adapter has them) is
+//! created once per run and reused by every frame. Waiting for a frame is bounded by a
+//! timeout so that a shader stuck in a loop ends the run with an error instead of hanging.
+
+use std::time::{Duration, Instant};
+
+use crate::render::device::Gpu;
+use crate::render::scene::{ColorMode, Draw, Scene};
+use crate::render::semantics::FrameState;
+
+/// The pixels of a frame, top row first, without row padding.
+pub enum Pixels {
+    Rgba8(Vec<u8>),
+    Rgba32F(Vec<f32>),
+}
+
+/// How the GPU time of a frame was measured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GpuClock {
+    /// Timestamp queries around the render pass.
+    Timestamps,
+    /// Wall time from submit until the GPU finished (includes the readback copy).
+    Wall,
+}
+
+/// A rendered frame.
+pub struct Frame {
+    pub pixels: Pixels,
+    pub gpu_ms: f64,
+    /// CPU time to prepare and submit the frame and to unpack the readback.
+    pub cpu_ms: f64,
+}
+
+/// Why a frame could not be rendered.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FrameError {
+    /// The GPU did not finish within the timeout (a shader that never ends?).
+    Timeout(Duration),
+    /// wgpu reported an error (validation, lost device, mapping).
+    Device(String),
+}
+
+struct Timestamps {
+    set: wgpu::QuerySet,
+    resolve: wgpu::Buffer,
+    read: wgpu::Buffer,
+    period_ns: f64,
+}
+
+/// The offscreen target frames are drawn into.
+pub struct Target {
+    pub width: u32,
+    pub height: u32,
+    pub mode: ColorMode,
+    colors: Vec<Option<wgpu::TextureView>>,
+    color0: wgpu::Texture,
+    depth: Option<wgpu::TextureView>,
+    readback: wgpu::Buffer,
+    padded_row: u32,
+    timestamps: Option<Timestamps>,
+}
+
+impl Target {
+    pub fn new(gpu: &Gpu, scene: &Scene, width: u32, height: u32, mode: ColorMode) -> Target {
+        let texture = |format: wgpu::TextureFormat, usage: wgpu::TextureUsages, label: &str| {
+            gpu.device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let attach = wgpu::TextureUsages::RENDER_ATTACHMENT;
+        let color0 = texture(mode.format(), attach | wgpu::TextureUsages::COPY_SRC, "frame");
+        let mut colors = Vec::new();
+        for (i, f) in scene.colors.iter().enumerate() {
+            colors.push(match f {
+                None => None,
+                Some(_) if i == 0 => Some(color0.create_view(&Default::default())),
+                Some(f) => Some(texture(*f, attach, "extra output").create_view(&Default::default())),
+            });
+        }
+        let depth = scene
+            .depth
+            .then(|| texture(wgpu::TextureFormat::Depth32Float, attach, "depth").create_view(&Default::default()));
+        let bpp = mode.format().block_copy_size(None).unwrap_or(4);
+        let padded_row = (width * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: u64::from(padded_row) * u64::from(height),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let timestamps = gpu.device.features().contains(wgpu::Features::TIMESTAMP_QUERY).then(|| Timestamps {
+            set: gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("frame time"),
+                ty: wgpu::QueryType::Timestamp,
+                count: 2,
+            }),
+            resolve: gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("timestamps"),
+                size: 16,
+                usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+                mapped_at_creation: false,
+            }),
+            read: gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("timestamps read"),
+                size: 16,
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            }),
+            period_ns: f64::from(gpu.queue.get_timestamp_period()),
+        });
+        Target { width, height, mode, colors, color0, depth, readback, padded_row, timestamps }
+    }
+
+    /// How [`Frame::gpu_ms`] is measured on this target.
+    pub fn clock(&self) -> GpuClock {
+        if self.timestamps.is_some() {
+            GpuClock::Timestamps
+        } else {
+            GpuClock::Wall
+        }
+    }
+
+    /// Bytes the target and its readback occupy (for the size limit).
+    pub fn bytes_needed(width: u32, height: u32, mode: ColorMode) -> u64 {
+        let bpp = u64::from(mode.format().block_copy_size(None).unwrap_or(4));
+        u64::from(width) * u64::from(height) * bpp * 3
+    }
+}
+
+/// Renders one frame of `scene` for `state` into `target` and reads it back.
+pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
+    let cpu_start = Instant::now();
+    let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+    for (data, buffer) in &mut scene.uniforms {
+        data.update(&scene.module, state).map_err(FrameError::Device)?;
+        gpu.queue.write_buffer(buffer, 0, &data.bytes);
+    }
+    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
+    {
+        let c = scene.clear.map(f64::from);
+        let clear = wgpu::Color { r: c[0], g: c[1], b: c[2], a: c[3] };
+        let attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = target
+            .colors
+            .iter()
+            .map(|v| {
+                v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
+                    view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
+                })
+            })
+            .collect();
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(&scene.name),
+            color_attachments: &attachments,
+            depth_stencil_attachment: target.depth.as_ref().map(|view| wgpu::RenderPassDepthStencilAttachment {
+                view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: target.timestamps.as_ref().map(|t| wgpu::RenderPassTimestampWrites {
+                query_set: &t.set,
+                beginning_of_pass_write_index: Some(0),
+                end_of_pass_write_index: Some(1),
+            }),
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&scene.pipeline);
+        for (group, bg) in &scene.bind_groups {
+            pass.set_bind_group(*group, bg, &[]);
+        }
+        if let Some(vb) = &scene.vertex_buffer {
+            pass.set_vertex_buffer(0, vb.slice(..));
+        }
+        match &scene.draw {
+            Draw::Indexed { buffer, count } => {
+                pass.set_index_buffer(buffer.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..*count, 0, 0..1);
+            }
+            Draw::Vertices(n) => pass.draw(0..*n, 0..1),
+        }
+    }
+    encoder.copy_texture_to_buffer(
+        wgpu::TexelCopyTextureInfo {
+            texture: &target.color0,
+            mip_level: 0,
+            origin: wgpu::Origin3d::ZERO,
+            aspect: wgpu::TextureAspect::All,
+        },
+        wgpu::TexelCopyBufferInfo {
+            buffer: &target.readback,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(target.padded_row),
+                rows_per_image: Some(target.height),
+            },
+        },
+        wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 },
+    );
+    if let Some(t) = &target.timestamps {
+        encoder.resolve_query_set(&t.set, 0..2, &t.resolve, 0);
+        encoder.copy_buffer_to_buffer(&t.resolve, 0, &t.read, 0, 16);
+    }
+    let submitted = gpu.queue.submit([encoder.finish()]);
+    if let Some(e) = pollster::block_on(scope.pop()) {
+        return Err(FrameError::Device(e.to_string()));
+    }
+    let mut cpu = cpu_start.elapsed();
+    let wait_start = Instant::now();
+    match gpu.device.poll(wgpu::PollType::Wait { submission_index: Some(submitted), timeout: Some(timeout) }) {
+        Ok(_) => {}
+        Err(wgpu::PollError::Timeout) => return Err(FrameError::Timeout(timeout)),
+        Err(e) => return Err(FrameError::Device(e.to_string())),
+    }
+    let wall = wait_start.elapsed();
+    let unpack_start = Instant::now();
+    let bytes = map_read(gpu, &target.readback)?;
+    let gpu_ms = match &target.timestamps {
+        Some(t) => {
+            let ts = map_read(gpu, &t.read)?;
+            let begin = u64::from_le_bytes(ts[0..8].try_into().unwrap_or_default());
+            let end = u64::from_le_bytes(ts[8..16].try_into().unwrap_or_default());
+            end.saturating_sub(begin) as f64 * t.period_ns / 1e6
+        }
+        None => wall.as_secs_f64() * 1e3,
+    };
+    let pixels = unpad(&bytes, target);
+    cpu += unpack_start.elapsed();
+    Ok(Frame { pixels, gpu_ms, cpu_ms: cpu.as_secs_f64() * 1e3 })
+}
+
+/// Maps a finished buffer, copies its bytes out and unmaps it.
+fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError> {
+    let slice = buffer.slice(..);
+    let (tx, rx) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    gpu.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| FrameError::Device(e.to_string()))?;
+    match rx.recv() {
+        Ok(Ok(())) => {}
+        _ => return Err(FrameError::Device("the readback buffer could not be mapped".into())),
+    }
+    let bytes = slice.get_mapped_range().map_err(|e| FrameError::Device(e.to_string()))?.to_vec();
+    buffer.unmap();
+    Ok(bytes)
+}
+
+/// Drops the row padding of the readback.
+fn unpad(bytes: &[u8], target: &Target) -> Pixels {
+    let bpp = target.mode.format().block_copy_size(None).unwrap_or(4) as usize;
+    let row = target.width as usize * bpp;
+    let mut out = Vec::with_capacity(row * target.height as usize);
+    for y in 0..target.height as usize {
+        let start = y * target.padded_row as usize;
+        out.extend_from_slice(&bytes[start..start + row]);
+    }
+    match target.mode {
+        ColorMode::Unorm8 => Pixels::Rgba8(out),
+        ColorMode::Float32 => {
+            Pixels::Rgba32F(out.chunks_exact(4).map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
+        }
+    }
+}

@@ -1,0 +1,205 @@
+//! Values the renderer supplies every frame (`semantic = "time"`, matrices, resolution, …)
+//! and the guesses made for uniforms nobody gave a value.
+//!
+//! A guess is made only for a uniform the manifest does not mention (every uniform of a
+//! bare stage file): by name and type (`iTime`, `u_time` → time; `projection` → the
+//! projection matrix; `viewPos` → camera position; …); failing that, matrices get the
+//! identity, colours (`…color…`) white, light positions a light above-right-front, and
+//! everything else zero. The renderer reports each guess as a warning.
+
+use glam::{Mat3, Mat4, Vec3};
+
+use crate::manifest::{Semantic, UniformValue};
+use crate::render::camera::View;
+
+/// Everything a semantic can depend on, for one frame.
+#[derive(Debug, Clone, Copy)]
+pub struct FrameState {
+    pub index: u32,
+    pub time: f64,
+    pub delta: f64,
+    pub size: (u32, u32),
+    pub view: View,
+    pub model: Mat4,
+}
+
+/// The shape of the slot a value goes into: `(columns, rows)`; vectors are `(1, n)`,
+/// scalars `(1, 1)`.
+pub type Shape = (u8, u8);
+
+/// The value of `semantic` this frame, shaped for the slot.
+pub fn value(semantic: Semantic, f: &FrameState, shape: Shape) -> UniformValue {
+    let (w, h) = (f.size.0 as f64, f.size.1 as f64);
+    match semantic {
+        Semantic::Time => number(f.time),
+        Semantic::DeltaTime => number(f.delta),
+        Semantic::Frame => UniformValue::Int(i64::from(f.index)),
+        Semantic::Resolution => floats(&[w, h, 1.0][..shape.1.clamp(1, 3) as usize]),
+        // No pointer in headless rendering: the centre of the frame, not clicked.
+        Semantic::Mouse => floats(&[w / 2.0, h / 2.0, 0.0, 0.0][..shape.1.clamp(1, 4) as usize]),
+        Semantic::CameraPosition => {
+            let e = f.view.eye;
+            floats(&[e.x as f64, e.y as f64, e.z as f64, 1.0][..shape.1.clamp(1, 4) as usize])
+        }
+        Semantic::Model => matrix(f.model, shape),
+        Semantic::View => matrix(f.view.view, shape),
+        Semantic::Projection => matrix(f.view.projection, shape),
+        Semantic::ModelView => matrix(f.view.view * f.model, shape),
+        Semantic::ViewProjection => matrix(f.view.projection * f.view.view, shape),
+        Semantic::ModelViewProjection => matrix(f.view.projection * f.view.view * f.model, shape),
+        Semantic::NormalMatrix => {
+            let n = Mat3::from_mat4(f.view.view * f.model).inverse().transpose();
+            matrix(Mat4::from_mat3(n), shape)
+        }
+    }
+}
+
+fn number(x: f64) -> UniformValue {
+    UniformValue::Float(x)
+}
+
+fn floats(xs: &[f64]) -> UniformValue {
+    UniformValue::List(xs.iter().map(|x| UniformValue::Float(*x)).collect())
+}
+
+/// A matrix as `columns` lists of `rows` numbers (the upper-left part of `m`).
+pub fn matrix(m: Mat4, (columns, rows): Shape) -> UniformValue {
+    let cols = m.to_cols_array_2d();
+    UniformValue::List(
+        cols.iter()
+            .take(columns as usize)
+            .map(|c| floats(&c.iter().take(rows as usize).map(|x| f64::from(*x)).collect::<Vec<_>>()))
+            .collect(),
+    )
+}
+
+/// What a uniform without a manifest entry gets.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Guess {
+    /// Bound to a semantic because of its name.
+    Semantic(Semantic),
+    /// A constant chosen by name or type (identity matrix, white, a light position, zero).
+    Constant(UniformValue, &'static str),
+}
+
+/// The guess for a uniform named `name` whose slot has `shape` and scalar type
+/// `is_float` (integers and booleans never take a semantic other than `frame`).
+pub fn guess(name: &str, shape: Shape, is_float: bool) -> Guess {
+    if let Some(s) = guess_semantic(name, shape, is_float) {
+        return Guess::Semantic(s);
+    }
+    let lower = name.to_ascii_lowercase();
+    let (columns, rows) = shape;
+    if columns > 1 {
+        return Guess::Constant(matrix(Mat4::IDENTITY, shape), "the identity matrix");
+    }
+    if is_float && rows >= 3 && (lower.contains("color") || lower.contains("colour")) {
+        return Guess::Constant(floats(&[1.0; 4][..rows as usize]), "white");
+    }
+    if is_float && rows >= 3 && lower.contains("light") && (lower.contains("pos") || lower.contains("dir")) {
+        let light = Vec3::new(1.2, 1.0, 2.0);
+        return Guess::Constant(
+            floats(&[light.x as f64, light.y as f64, light.z as f64, 1.0][..rows as usize]),
+            "a light above, right and in front of the origin",
+        );
+    }
+    Guess::Constant(UniformValue::Int(0), "zero")
+}
+
+/// The semantic a uniform's name suggests, if its type fits it.
+fn guess_semantic(name: &str, shape: Shape, is_float: bool) -> Option<Semantic> {
+    let key = normalised(name);
+    let candidates: &[(&[&str], Semantic)] = &[
+        (&["time", "globaltime", "elapsed", "elapsedtime", "seconds", "timevar"], Semantic::Time),
+        (&["deltatime", "timedelta", "dt", "frametime"], Semantic::DeltaTime),
+        (&["frame", "framecount", "framenumber", "frameindex"], Semantic::Frame),
+        (&["resolution", "screensize", "viewportsize", "viewport", "screenresolution"], Semantic::Resolution),
+        (&["mouse", "mousepos", "pointer"], Semantic::Mouse),
+        (&["model", "modelmatrix", "world", "worldmatrix", "modelmat"], Semantic::Model),
+        (&["view", "viewmatrix", "viewmat", "camera", "cameramatrix"], Semantic::View),
+        (&["projection", "proj", "projectionmatrix", "projmatrix", "projmat", "perspective"], Semantic::Projection),
+        (&["modelview", "mv", "modelviewmatrix", "mvmatrix"], Semantic::ModelView),
+        (&["viewprojection", "viewproj", "vp", "viewprojectionmatrix", "projview", "pv"], Semantic::ViewProjection),
+        (
+            &["mvp", "modelviewprojection", "mvpmatrix", "modelviewprojectionmatrix", "pvm", "wvp", "worldviewprojection"],
+            Semantic::ModelViewProjection,
+        ),
+        (&["normalmatrix", "normalmat", "nmatrix"], Semantic::NormalMatrix),
+        (
+            &["viewpos", "viewposition", "campos", "camerapos", "cameraposition", "eye", "eyepos", "eyeposition", "camerapositionworld"],
+            Semantic::CameraPosition,
+        ),
+    ];
+    let semantic = candidates.iter().find(|(names, _)| names.contains(&key.as_str()))?.1;
+    let ty = type_name(shape, is_float)?;
+    semantic.glsl_types().contains(&ty).then_some(semantic)
+}
+
+/// `u_Time`, `iTime`, `uTime`, `g_time`, `m_ProjectionMatrix` → `time`, `projectionmatrix`.
+fn normalised(name: &str) -> String {
+    let mut n = name;
+    for prefix in ["u_", "g_", "m_", "a_"] {
+        if let Some(rest) = n.strip_prefix(prefix) {
+            n = rest;
+        }
+    }
+    // Shadertoy's `iTime` and the common `uTime`: a lone lowercase prefix before a capital.
+    let bytes = n.as_bytes();
+    if bytes.len() > 2 && (bytes[0] == b'i' || bytes[0] == b'u') && bytes[1].is_ascii_uppercase() {
+        n = &n[1..];
+    }
+    n.replace('_', "").to_ascii_lowercase()
+}
+
+/// The GLSL type name of a slot shape, for [`Semantic::glsl_types`].
+fn type_name((columns, rows): Shape, is_float: bool) -> Option<&'static str> {
+    Some(match (columns, rows, is_float) {
+        (1, 1, true) => "float",
+        (1, 1, false) => "int",
+        (1, 2, true) => "vec2",
+        (1, 3, true) => "vec3",
+        (1, 4, true) => "vec4",
+        (3, 3, true) => "mat3",
+        (4, 4, true) => "mat4",
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn common_names_are_recognised_with_their_types() {
+        assert_eq!(guess("iTime", (1, 1), true), Guess::Semantic(Semantic::Time));
+        assert_eq!(guess("u_time", (1, 1), true), Guess::Semantic(Semantic::Time));
+        assert_eq!(guess("iResolution", (1, 3), true), Guess::Semantic(Semantic::Resolution));
+        assert_eq!(guess("projection", (4, 4), true), Guess::Semantic(Semantic::Projection));
+        assert_eq!(guess("MVP", (4, 4), true), Guess::Semantic(Semantic::ModelViewProjection));
+        assert_eq!(guess("viewPos", (1, 3), true), Guess::Semantic(Semantic::CameraPosition));
+        assert_eq!(guess("normalMatrix", (3, 3), true), Guess::Semantic(Semantic::NormalMatrix));
+        // The name fits but the type does not: no semantic.
+        assert!(matches!(guess("time", (1, 3), true), Guess::Constant(..)));
+        assert!(matches!(guess("model", (1, 4), true), Guess::Constant(..)));
+    }
+
+    #[test]
+    fn other_uniforms_get_identity_white_a_light_or_zero() {
+        assert_eq!(guess("transform", (4, 4), true), Guess::Constant(matrix(Mat4::IDENTITY, (4, 4)), "the identity matrix"));
+        assert!(matches!(guess("objectColor", (1, 3), true), Guess::Constant(_, "white")));
+        assert!(matches!(guess("lightPos", (1, 3), true), Guess::Constant(_, w) if w.contains("light")));
+        assert_eq!(guess("shininess", (1, 1), true), Guess::Constant(UniformValue::Int(0), "zero"));
+    }
+
+    #[test]
+    fn semantic_values_follow_the_slot_shape() {
+        let view = crate::render::camera::view_at(&Default::default(), 0.0, 2.0);
+        let f = FrameState { index: 3, time: 1.5, delta: 0.5, size: (200, 100), view, model: Mat4::IDENTITY };
+        assert_eq!(value(Semantic::Time, &f, (1, 1)), UniformValue::Float(1.5));
+        assert_eq!(value(Semantic::Frame, &f, (1, 1)), UniformValue::Int(3));
+        assert_eq!(value(Semantic::Resolution, &f, (1, 3)).dims(), vec![3]);
+        assert_eq!(value(Semantic::Resolution, &f, (1, 2)).scalars()[0], &UniformValue::Float(200.0));
+        assert_eq!(value(Semantic::NormalMatrix, &f, (3, 3)).dims(), vec![3, 3]);
+        assert_eq!(value(Semantic::Model, &f, (4, 4)), matrix(Mat4::IDENTITY, (4, 4)));
+    }
+}

@@ -1,0 +1,195 @@
+//! The bytes of every uniform buffer the module binds, built once from manifest values and
+//! guesses, with the semantic slots rewritten every frame.
+//!
+//! Each uniform buffer's struct is walked member by member. A member is filled from the
+//! manifest entries whose name starts with it (`minBI`, `lights[0].color`); a member the
+//! manifest does not mention gets a [`Guess`] (a semantic by name, the identity for
+//! matrices, …) that is reported. Offsets come from the translated module, so the bytes
+//! match the WGSL that is rendered.
+
+use naga::{Handle, Module, ScalarKind, Type, TypeInner};
+
+use crate::back::reflect::write_slot;
+use crate::manifest::{Effect, Semantic, UniformValue};
+use crate::render::semantics::{self, FrameState, Guess, Shape};
+
+/// One uniform buffer binding and its contents.
+#[derive(Debug, Clone)]
+pub struct UniformBuffer {
+    pub group: u32,
+    pub binding: u32,
+    /// Bytes with the constant values written (semantic slots hold last frame's values).
+    pub bytes: Vec<u8>,
+    /// Slots rewritten every frame.
+    pub per_frame: Vec<SemanticSlot>,
+}
+
+#[derive(Debug, Clone)]
+pub struct SemanticSlot {
+    pub offset: u32,
+    pub ty: Handle<Type>,
+    pub shape: Shape,
+    pub semantic: Semantic,
+}
+
+/// A uniform that received a guessed value, for the warning the renderer prints.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Guessed {
+    /// The GLSL name of the uniform (a uniform buffer member).
+    pub name: String,
+    /// What it received: `the semantic `time``, `the identity matrix`, `zero`.
+    pub what: String,
+}
+
+/// Builds the buffers of every uniform-address-space global that has a binding.
+pub fn buffers(module: &Module, effect: Option<&Effect>) -> Result<(Vec<UniformBuffer>, Vec<Guessed>), String> {
+    let mut out = Vec::new();
+    let mut guessed = Vec::new();
+    for (_, g) in module.global_variables.iter() {
+        let (naga::AddressSpace::Uniform, Some(rb)) = (g.space, &g.binding) else { continue };
+        let mut buffer = UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new() };
+        fill_block(module, g.ty, effect, &mut buffer, &mut guessed)?;
+        out.push(buffer);
+    }
+    Ok((out, guessed))
+}
+
+fn fill_block(
+    module: &Module,
+    ty: Handle<Type>,
+    effect: Option<&Effect>,
+    buffer: &mut UniformBuffer,
+    guessed: &mut Vec<Guessed>,
+) -> Result<(), String> {
+    let mut layouter = naga::proc::Layouter::default();
+    layouter.update(module.to_ctx()).map_err(|e| e.to_string())?;
+    let (members, size) = match &module.types[ty].inner {
+        TypeInner::Struct { members, span } => (members.clone(), *span),
+        // A uniform that is not a struct (naga wraps GLSL blocks in structs; be safe).
+        _ => (Vec::new(), layouter[ty].size),
+    };
+    // Room to spare: wgpu wants uniform bindings of at least the struct size, 16-aligned.
+    buffer.bytes = vec![0u8; (size as usize).div_ceil(16) * 16];
+    for m in &members {
+        let name = m.name.clone().unwrap_or_default();
+        let entries: Vec<_> = effect
+            .map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect())
+            .unwrap_or_default();
+        if entries.is_empty() {
+            guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
+            continue;
+        }
+        for u in entries {
+            let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, ty, &u.name) else { continue };
+            match (&u.value, u.semantic) {
+                (Some(v), _) => {
+                    write_slot(module, slot_ty, offset, v, &mut buffer.bytes).map_err(|e| format!("`{}`: {e}", u.name))?
+                }
+                (None, Some(s)) => {
+                    let shape = shape_of(module, slot_ty).ok_or_else(|| format!("`{}` cannot hold a semantic", u.name))?;
+                    buffer.per_frame.push(SemanticSlot { offset, ty: slot_ty, shape, semantic: s });
+                }
+                (None, None) => {}
+            }
+        }
+    }
+    Ok(())
+}
+
+/// `lights[0].color` → `lights`.
+fn root_name(path: &str) -> &str {
+    let end = path.find(['.', '[']).unwrap_or(path.len());
+    &path[..end]
+}
+
+fn guess_member(
+    module: &Module,
+    name: &str,
+    ty: Handle<Type>,
+    offset: u32,
+    buffer: &mut UniformBuffer,
+    guessed: &mut Vec<Guessed>,
+) -> Result<(), String> {
+    if name.starts_with("effectc_pad") {
+        return Ok(());
+    }
+    let Some(shape) = shape_of(module, ty) else {
+        // Structs and arrays: identity matrices inside, zero elsewhere.
+        if write_identities(module, ty, offset, &mut buffer.bytes)? {
+            guessed.push(Guessed { name: name.into(), what: "zero, with identity matrices".into() });
+        } else {
+            guessed.push(Guessed { name: name.into(), what: "zero".into() });
+        }
+        return Ok(());
+    };
+    match semantics::guess(name, shape, is_float(module, ty)) {
+        Guess::Semantic(s) => {
+            buffer.per_frame.push(SemanticSlot { offset, ty, shape, semantic: s });
+            guessed.push(Guessed { name: name.into(), what: format!("the semantic `{}` (by its name)", s.name()) });
+        }
+        Guess::Constant(value, what) => {
+            if value != UniformValue::Int(0) {
+                write_slot(module, ty, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
+            }
+            guessed.push(Guessed { name: name.into(), what: what.into() });
+        }
+    }
+    Ok(())
+}
+
+/// Writes identity matrices into every matrix inside `ty`; true when there was one.
+fn write_identities(module: &Module, ty: Handle<Type>, offset: u32, buf: &mut [u8]) -> Result<bool, String> {
+    match &module.types[ty].inner {
+        TypeInner::Matrix { columns, rows, .. } => {
+            let shape = (*columns as u8, *rows as u8);
+            write_slot(module, ty, offset, &semantics::matrix(glam::Mat4::IDENTITY, shape), buf)?;
+            Ok(true)
+        }
+        TypeInner::Array { base, size: naga::ArraySize::Constant(n), stride } => {
+            let mut any = false;
+            for i in 0..n.get() {
+                any |= write_identities(module, *base, offset + i * stride, buf)?;
+            }
+            Ok(any)
+        }
+        TypeInner::Struct { members, .. } => {
+            let mut any = false;
+            for m in members {
+                any |= write_identities(module, m.ty, offset + m.offset, buf)?;
+            }
+            Ok(any)
+        }
+        _ => Ok(false),
+    }
+}
+
+/// `(columns, rows)` of a scalar, vector or matrix slot.
+fn shape_of(module: &Module, ty: Handle<Type>) -> Option<Shape> {
+    match module.types[ty].inner {
+        TypeInner::Scalar(_) => Some((1, 1)),
+        TypeInner::Vector { size, .. } => Some((1, size as u8)),
+        TypeInner::Matrix { columns, rows, .. } => Some((columns as u8, rows as u8)),
+        _ => None,
+    }
+}
+
+fn is_float(module: &Module, ty: Handle<Type>) -> bool {
+    match module.types[ty].inner {
+        TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } | TypeInner::Matrix { scalar: s, .. } => {
+            s.kind == ScalarKind::Float
+        }
+        _ => false,
+    }
+}
+
+impl UniformBuffer {
+    /// Rewrites the semantic slots for this frame.
+    pub fn update(&mut self, module: &Module, frame: &FrameState) -> Result<(), String> {
+        for s in &self.per_frame {
+            let value = semantics::value(s.semantic, frame, s.shape);
+            write_slot(module, s.ty, s.offset, &value, &mut self.bytes)
+                .map_err(|e| format!("semantic `{}`: {e}", s.semantic.name()))?;
+        }
+        Ok(())
+    }
+}
