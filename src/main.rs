@@ -47,7 +47,7 @@ fn render(args: RenderArgs) -> ExitCode {
         inputs: c.inputs.clone(),
         stage: c.stage.map(Into::into),
         front: FrontOptions { strict: c.strict },
-        back: TranslateOptions { gl_depth: !args.keep_gl_depth },
+        back: TranslateOptions { gl_depth: !args.keep_gl_depth, widen_outputs: true },
         frames: args.frames,
         step,
         start: args.start,
@@ -108,7 +108,7 @@ fn translate(args: TranslateArgs) -> ExitCode {
         inputs: c.inputs.clone(),
         stage: c.stage.map(Into::into),
         front: FrontOptions { strict: c.strict },
-        back: TranslateOptions { gl_depth: !args.keep_gl_depth },
+        back: TranslateOptions { gl_depth: !args.keep_gl_depth, widen_outputs: false },
         targets,
         out: args.out.clone(),
     };

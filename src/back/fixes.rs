@@ -8,6 +8,10 @@
 //!   varying (`Center`) agree and wgpu builds the pipeline.
 //! - GL clip-space depth (z in [-w, w]) is mapped to WebGPU/Vulkan's (z in [0, w]) at the end
 //!   of the vertex stage, so a GL projection matrix keeps its near and far planes.
+//! - For rendering only: fragment colour outputs narrower than four components (`out vec3
+//!   color`) are widened to four (missing colour 0, alpha 1), because a WebGPU colour target
+//!   needs as many components from the shader as its format has; GL writes the narrower
+//!   value into an RGBA framebuffer.
 
 use naga::{
     BinaryOperator, Binding, Expression, Handle, Interpolation, Literal, Module, Sampling, Span, Statement,
@@ -174,6 +178,100 @@ pub fn gl_to_webgpu_depth(module: &mut Module) -> bool {
     done
 }
 
+/// Widens fragment outputs at a location that have fewer than four components to four
+/// (colour components 0, alpha 1). Returns the names of the widened outputs.
+pub fn widen_fragment_outputs(module: &mut Module) -> Vec<String> {
+    let mut widened = Vec::new();
+    for ep in module.entry_points.iter_mut().filter(|e| e.stage == naga::ShaderStage::Fragment) {
+        let Some(result) = &ep.function.result else { continue };
+        let result_ty = result.ty;
+        let TypeInner::Struct { members, .. } = module.types[result_ty].inner.clone() else { continue };
+        // (member index, scalar, component count) of each output to widen.
+        let narrow: Vec<(usize, naga::Scalar, u32)> = members
+            .iter()
+            .enumerate()
+            .filter(|(_, m)| matches!(m.binding, Some(Binding::Location { .. })))
+            .filter_map(|(i, m)| match module.types[m.ty].inner {
+                TypeInner::Scalar(s) => Some((i, s, 1)),
+                TypeInner::Vector { size, scalar } if (size as u32) < 4 => Some((i, scalar, size as u32)),
+                _ => None,
+            })
+            .collect();
+        if narrow.is_empty() {
+            continue;
+        }
+        let mut new_members = members.clone();
+        let mut vec4s = Vec::new();
+        for &(i, scalar, _) in &narrow {
+            let ty = module.types.insert(Type { name: None, inner: TypeInner::Vector { size: naga::VectorSize::Quad, scalar } }, Span::UNDEFINED);
+            new_members[i].ty = ty;
+            vec4s.push(ty);
+            widened.push(members[i].name.clone().unwrap_or_default());
+        }
+        for (i, m) in new_members.iter_mut().enumerate() {
+            m.offset = 16 * i as u32;
+        }
+        let span = 16 * new_members.len() as u32;
+        let name = module.types[result_ty].name.clone();
+        let new_ty = module.types.insert(Type { name, inner: TypeInner::Struct { members: new_members, span } }, Span::UNDEFINED);
+        let f = &mut ep.function;
+        let mut returns: Vec<Handle<Expression>> = Vec::new();
+        visit_statements(&mut f.body, &mut |s| {
+            if let Statement::Return { value: Some(v) } = s {
+                returns.push(*v);
+            }
+        });
+        for ret in returns {
+            let Expression::Compose { ty, components } = f.expressions[ret].clone() else { continue };
+            if ty != result_ty {
+                continue;
+            }
+            // Literals are not emitted: append them before the emitted range.
+            let literals: Vec<(Handle<Expression>, Handle<Expression>)> = narrow
+                .iter()
+                .map(|&(_, scalar, _)| {
+                    let (zero, one) = match scalar.kind {
+                        naga::ScalarKind::Sint => (Literal::I32(0), Literal::I32(1)),
+                        naga::ScalarKind::Uint => (Literal::U32(0), Literal::U32(1)),
+                        _ => (Literal::F32(0.0), Literal::F32(1.0)),
+                    };
+                    (f.expressions.append(Expression::Literal(zero), Span::UNDEFINED), f.expressions.append(Expression::Literal(one), Span::UNDEFINED))
+                })
+                .collect();
+            let mut first = None;
+            let mut add = |e, first: &mut Option<Handle<Expression>>| {
+                let h = f.expressions.append(e, Span::UNDEFINED);
+                first.get_or_insert(h);
+                h
+            };
+            let mut new_components = components.clone();
+            for (k, &(i, _, count)) in narrow.iter().enumerate() {
+                let value = components[i];
+                let (zero, one) = literals[k];
+                let mut parts: Vec<Handle<Expression>> = if count == 1 {
+                    vec![value]
+                } else {
+                    (0..count).map(|c| add(Expression::AccessIndex { base: value, index: c }, &mut first)).collect()
+                };
+                while parts.len() < 3 {
+                    parts.push(zero);
+                }
+                if parts.len() < 4 {
+                    parts.push(one);
+                }
+                new_components[i] = add(Expression::Compose { ty: vec4s[k], components: parts }, &mut first);
+            }
+            let new_ret = add(Expression::Compose { ty: new_ty, components: new_components }, &mut first);
+            let first = first.unwrap_or(new_ret);
+            replace_return(&mut f.body, ret, new_ret, naga::Range::new_from_bounds(first, new_ret));
+        }
+        if let Some(r) = &mut ep.function.result {
+            r.ty = new_ty;
+        }
+    }
+    widened
+}
+
 fn is_position(m: &StructMember) -> bool {
     matches!(m.binding, Some(Binding::BuiltIn(naga::BuiltIn::Position { .. })))
 }
@@ -258,6 +356,20 @@ mod tests {
         assert!(gl_to_webgpu_depth(&mut m));
         let out = wgsl(&m).unwrap();
         assert!(out.contains("* 0.5f"), "{out}");
+        naga::compact::compact(&mut m, naga::compact::KeepUnused::No);
+        wgsl(&m).unwrap();
+    }
+
+    #[test]
+    fn narrow_colour_outputs_are_widened_with_alpha_one() {
+        let src = "#version 450\nlayout(location=0) out vec3 colour;\nlayout(location=1) out float mask;\n\
+                   layout(location=2) out vec4 full;\nvoid main() { colour = vec3(0.25, 0.5, 0.75); mask = 0.5; full = vec4(1.0); }\n";
+        let mut m = module(src, naga::ShaderStage::Fragment);
+        assert_eq!(widen_fragment_outputs(&mut m), vec!["colour".to_string(), "mask".to_string()]);
+        let out = wgsl(&m).unwrap();
+        assert!(out.contains("@location(0) colour: vec4<f32>"), "{out}");
+        assert!(out.contains("@location(1) mask: vec4<f32>"), "{out}");
+        assert!(out.contains("@location(2) full: vec4<f32>"), "{out}");
         naga::compact::compact(&mut m, naga::compact::KeepUnused::No);
         wgsl(&m).unwrap();
     }

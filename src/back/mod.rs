@@ -72,11 +72,13 @@ impl Target {
 pub struct TranslateOptions {
     /// Map GL clip-space depth (z in [-w, w]) to WebGPU/Vulkan's (z in [0, w]).
     pub gl_depth: bool,
+    /// Widen fragment colour outputs to four components (for rendering into RGBA targets).
+    pub widen_outputs: bool,
 }
 
 impl Default for TranslateOptions {
     fn default() -> Self {
-        TranslateOptions { gl_depth: true }
+        TranslateOptions { gl_depth: true, widen_outputs: false }
     }
 }
 
@@ -160,6 +162,9 @@ pub fn translate(
     fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
     if options.gl_depth {
         fixes::gl_to_webgpu_depth(&mut module);
+    }
+    if options.widen_outputs {
+        fixes::widen_fragment_outputs(&mut module);
     }
     // Compaction assumes a valid module; prove it first.
     crate::front::naga_run::validator().validate(&module).map_err(|e| {

@@ -513,7 +513,7 @@ impl Default for CameraDecl {
     fn default() -> Self {
         CameraDecl {
             span: 0..0,
-            eye: [0.0, 0.0, 3.0],
+            eye: [1.8, 1.4, 2.6],
             target: [0.0, 0.0, 0.0],
             up: [0.0, 1.0, 0.0],
             fov: 45.0,

@@ -53,17 +53,22 @@ fn known(name: &str) -> Option<&'static str> {
 pub fn by_name(name: &str) -> Option<&'static str> {
     let n = name.to_ascii_lowercase();
     let has = |parts: &[&str]| parts.iter().any(|p| n.contains(p));
+    // "vertex" contains "tex": look for uv words in what remains without it.
+    let rest = n.replace("vertex", "");
+    let rest_has = |parts: &[&str]| parts.iter().any(|p| rest.contains(p));
     if has(&["bitangent", "binormal", "bitan"]) {
         Some("bitangent")
     } else if has(&["tangent", "tang"]) {
         Some("tangent")
     } else if has(&["normal", "norm"]) {
         Some("normal")
-    } else if has(&["uv", "tex", "coord", "st0"]) || n == "st" || n.ends_with("_st") {
+    } else if has(&["pos"]) {
+        Some("position")
+    } else if rest_has(&["uv", "tex", "coord", "st0"]) || n == "st" || n.ends_with("_st") {
         Some("uv")
     } else if has(&["color", "colour", "col"]) {
         Some("color")
-    } else if has(&["pos", "vertex", "vert", "point"]) || ["p", "a_p", "in_p", "v"].contains(&n.as_str()) {
+    } else if has(&["vertex", "vert", "point"]) || ["p", "a_p", "in_p", "v"].contains(&n.as_str()) {
         Some("position")
     } else {
         None

@@ -67,9 +67,9 @@ mod tests {
     }
 
     #[test]
-    fn the_default_camera_looks_down_minus_z_from_three_units_away() {
+    fn the_default_camera_looks_at_the_origin_from_above_right_front() {
         let v = view_at(&CameraDecl::default(), 0.0, 1.0);
-        assert!(close(v.eye, Vec3::new(0.0, 0.0, 3.0)));
+        assert!(close(v.eye, Vec3::new(1.8, 1.4, 2.6)));
         let origin = v.projection * v.view * glam::Vec4::new(0.0, 0.0, 0.0, 1.0);
         let ndc = origin.truncate() / origin.w;
         assert!(ndc.x.abs() < 1e-6 && ndc.y.abs() < 1e-6, "the target projects to the centre");

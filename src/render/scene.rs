@@ -156,7 +156,12 @@ impl Scene {
         for g in guessed {
             let mut d = Diagnostic::warning(W_UNIFORM_GUESSED, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
             d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
-            warnings.push(d.with_help(format!("give it a value in [uniforms]: `{} = …` or `{{ semantic = \"…\" }}`", g.name)));
+            let help = if g.aggregate {
+                format!("give its members values in [uniforms]: `\"{}.<member>\" = …` (arrays: `\"{}[0]\"`)", g.name, g.name)
+            } else {
+                format!("give it a value in [uniforms]: `{} = …` or `{{ semantic = \"…\" }}`", toml_key(&g.name))
+            };
+            warnings.push(d.with_help(help));
         }
         let uniforms: Vec<(UniformBuffer, wgpu::Buffer)> = uniform_data
             .into_iter()
@@ -197,6 +202,15 @@ impl Scene {
             warnings,
             describe,
         })
+    }
+}
+
+/// A manifest key for a GLSL name: quoted when it has `.` or `[`.
+fn toml_key(name: &str) -> String {
+    if name.contains(['.', '[']) {
+        format!("\"{name}\"")
+    } else {
+        name.to_string()
     }
 }
 
@@ -371,7 +385,8 @@ impl Textures {
                                 }),
                             );
                             let d = at_declaration(d, input.program, &name, Storage::Uniform, "this sampler");
-                            warnings.push(d.with_help(format!("bind it in [textures]: `{name} = \"image.png\"` or `{{ generate = \"noise\" }}`")));
+                            let key = toml_key(&name);
+                            warnings.push(d.with_help(format!("bind it in [textures]: `{key} = \"image.png\"` or `{{ generate = \"noise\" }}`")));
                             upload(gpu, &texture::placeholder(kind), b)
                         }
                     };

@@ -4,8 +4,9 @@
 //! A guess is made only for a uniform the manifest does not mention (every uniform of a
 //! bare stage file): by name and type (`iTime`, `u_time` → time; `projection` → the
 //! projection matrix; `viewPos` → camera position; …); failing that, matrices get the
-//! identity, colours (`…color…`) white, light positions a light above-right-front, and
-//! everything else zero. The renderer reports each guess as a warning.
+//! identity, colours (`…color…`, `diffuse`, `specular`) white, `ambient` dark grey,
+//! `shininess` 32, light positions a light above-right-front, and everything else zero.
+//! Members of uniform structs (`material.diffuse`) are guessed by their own names. The renderer reports each guess as a warning.
 
 use glam::{Mat3, Mat4, Vec3};
 
@@ -93,8 +94,14 @@ pub fn guess(name: &str, shape: Shape, is_float: bool) -> Guess {
     if columns > 1 {
         return Guess::Constant(matrix(Mat4::IDENTITY, shape), "the identity matrix");
     }
-    if is_float && rows >= 3 && (lower.contains("color") || lower.contains("colour")) {
+    if is_float && rows >= 3 && lower.contains("ambient") {
+        return Guess::Constant(floats(&[0.2, 0.2, 0.2, 1.0][..rows as usize]), "dark grey (0.2)");
+    }
+    if is_float && rows >= 3 && ["color", "colour", "diffuse", "specular", "albedo"].iter().any(|w| lower.contains(w)) {
         return Guess::Constant(floats(&[1.0; 4][..rows as usize]), "white");
+    }
+    if is_float && rows == 1 && (lower.contains("shininess") || lower.contains("specularpower")) {
+        return Guess::Constant(UniformValue::Float(32.0), "32");
     }
     if is_float && rows >= 3 && lower.contains("light") && (lower.contains("pos") || lower.contains("dir")) {
         let light = Vec3::new(1.2, 1.0, 2.0);

@@ -39,6 +39,8 @@ pub struct Guessed {
     pub name: String,
     /// What it received: `the semantic `time``, `the identity matrix`, `zero`.
     pub what: String,
+    /// A struct or array (its members are given values one by one).
+    pub aggregate: bool,
 }
 
 /// Builds the buffers of every uniform-address-space global that has a binding.
@@ -114,53 +116,67 @@ fn guess_member(
         return Ok(());
     }
     let Some(shape) = shape_of(module, ty) else {
-        // Structs and arrays: identity matrices inside, zero elsewhere.
-        if write_identities(module, ty, offset, &mut buffer.bytes)? {
-            guessed.push(Guessed { name: name.into(), what: "zero, with identity matrices".into() });
+        // Structs and arrays: every leaf is guessed by its own name.
+        let mut leaves = Vec::new();
+        guess_leaves(module, ty, offset, name, &mut buffer.bytes, &mut leaves)?;
+        leaves.dedup();
+        let what = if leaves.is_empty() {
+            "zero".to_string()
         } else {
-            guessed.push(Guessed { name: name.into(), what: "zero".into() });
-        }
+            format!("{}; everything else zero", leaves.join(", "))
+        };
+        guessed.push(Guessed { name: name.into(), what, aggregate: true });
         return Ok(());
     };
     match semantics::guess(name, shape, is_float(module, ty)) {
         Guess::Semantic(s) => {
             buffer.per_frame.push(SemanticSlot { offset, ty, shape, semantic: s });
-            guessed.push(Guessed { name: name.into(), what: format!("the semantic `{}` (by its name)", s.name()) });
+            guessed.push(Guessed { name: name.into(), what: format!("the semantic `{}` (by its name)", s.name()), aggregate: false });
         }
         Guess::Constant(value, what) => {
             if value != UniformValue::Int(0) {
                 write_slot(module, ty, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
             }
-            guessed.push(Guessed { name: name.into(), what: what.into() });
+            guessed.push(Guessed { name: name.into(), what: what.into(), aggregate: false });
         }
     }
     Ok(())
 }
 
-/// Writes identity matrices into every matrix inside `ty`; true when there was one.
-fn write_identities(module: &Module, ty: Handle<Type>, offset: u32, buf: &mut [u8]) -> Result<bool, String> {
+/// Guesses a constant for every scalar, vector and matrix inside a struct or array,
+/// by its path (`material.diffuse` → white, `light.position` → a light). Semantics are not
+/// bound inside structs. `notes` collects what the leaves that are not zero received.
+fn guess_leaves(
+    module: &Module,
+    ty: Handle<Type>,
+    offset: u32,
+    leaf: &str,
+    buf: &mut [u8],
+    notes: &mut Vec<String>,
+) -> Result<(), String> {
     match &module.types[ty].inner {
-        TypeInner::Matrix { columns, rows, .. } => {
-            let shape = (*columns as u8, *rows as u8);
-            write_slot(module, ty, offset, &semantics::matrix(glam::Mat4::IDENTITY, shape), buf)?;
-            Ok(true)
-        }
         TypeInner::Array { base, size: naga::ArraySize::Constant(n), stride } => {
-            let mut any = false;
             for i in 0..n.get() {
-                any |= write_identities(module, *base, offset + i * stride, buf)?;
+                guess_leaves(module, *base, offset + i * stride, &format!("{leaf}[{i}]"), buf, notes)?;
             }
-            Ok(any)
         }
         TypeInner::Struct { members, .. } => {
-            let mut any = false;
             for m in members {
-                any |= write_identities(module, m.ty, offset + m.offset, buf)?;
+                let name = format!("{leaf}.{}", m.name.as_deref().unwrap_or_default());
+                guess_leaves(module, m.ty, offset + m.offset, &name, buf, notes)?;
             }
-            Ok(any)
         }
-        _ => Ok(false),
+        _ => {
+            let Some(shape) = shape_of(module, ty) else { return Ok(()) };
+            if let Guess::Constant(value, what) = semantics::guess(leaf, shape, is_float(module, ty)) {
+                if value != UniformValue::Int(0) {
+                    write_slot(module, ty, offset, &value, buf)?;
+                    notes.push(format!("`{leaf}` {what}"));
+                }
+            }
+        }
     }
+    Ok(())
 }
 
 /// `(columns, rows)` of a scalar, vector or matrix slot.
