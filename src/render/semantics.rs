@@ -195,7 +195,10 @@ mod tests {
         assert_eq!(guess("transform", (4, 4), true), Guess::Constant(matrix(Mat4::IDENTITY, (4, 4)), "the identity matrix"));
         assert!(matches!(guess("objectColor", (1, 3), true), Guess::Constant(_, "white")));
         assert!(matches!(guess("lightPos", (1, 3), true), Guess::Constant(_, w) if w.contains("light")));
-        assert_eq!(guess("shininess", (1, 1), true), Guess::Constant(UniformValue::Int(0), "zero"));
+        assert_eq!(guess("material.shininess", (1, 1), true), Guess::Constant(UniformValue::Float(32.0), "32"));
+        assert!(matches!(guess("light.ambient", (1, 3), true), Guess::Constant(_, w) if w.contains("grey")));
+        assert!(matches!(guess("light.position", (1, 3), true), Guess::Constant(_, w) if w.contains("light")));
+        assert_eq!(guess("radius", (1, 1), true), Guess::Constant(UniformValue::Int(0), "zero"));
     }
 
     #[test]
