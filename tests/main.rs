@@ -9,6 +9,8 @@
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
+//! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
+//! - [`pixels`]: every effect's frames against reference PNGs under `snapshots/png/`.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
 
@@ -20,6 +22,10 @@ mod common;
 mod fail;
 #[path = "suite/rewrite.rs"]
 mod rewrite;
+#[path = "suite/pixels.rs"]
+mod pixels;
+#[path = "suite/render.rs"]
+mod render;
 #[path = "suite/robust.rs"]
 mod robust;
 #[path = "suite/translate.rs"]

@@ -2,34 +2,14 @@
 //! `--strict`, `--deny-warnings`, `--stage`, and how directories become programs.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+
+use crate::common::{self, code, effectc, stdout};
 
 const SEED: &str = "tests/fail/01-vert-out-vs-vert-vars";
 
-fn effectc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_effectc"))
-        .args(args)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("run effectc")
-}
-
-fn code(out: &Output) -> i32 {
-    out.status.code().expect("exit code")
-}
-
-fn stdout(out: &Output) -> String {
-    String::from_utf8(out.stdout.clone()).expect("UTF-8 stdout")
-}
-
 /// A fresh, empty scratch directory for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("cli")
-        .join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    common::scratch("cli", name)
 }
 
 const GOOD_VERT: &str = "#version 330 core\nlayout(location = 0) in vec2 aPos;\nout vec2 uv;\nvoid main()\n{\n    uv = aPos;\n    gl_Position = vec4(aPos, 0.0, 1.0);\n}\n";

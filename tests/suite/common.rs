@@ -1,6 +1,7 @@
 //! Helpers shared by the test modules: fixture discovery and rendering.
 
 use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
 
 use effectc::check::{check_inputs, Checked, Outcome};
 use effectc::diag;
@@ -59,4 +60,30 @@ pub fn assert_crlf_kept(dir: &Path) {
             );
         }
     }
+}
+
+/// Runs the `effectc` binary without colour.
+pub fn effectc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_effectc")).args(args).env("NO_COLOR", "1").output().expect("run effectc")
+}
+
+pub fn code(out: &Output) -> i32 {
+    out.status.code().expect("exit code")
+}
+
+pub fn stdout(out: &Output) -> String {
+    String::from_utf8(out.stdout.clone()).expect("UTF-8 stdout")
+}
+
+/// A fresh, empty scratch directory for one test of `group`.
+pub fn scratch(group: &str, name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(group).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// True under CI (`CI` set): optional tools and devices become required.
+pub fn in_ci() -> bool {
+    std::env::var_os("CI").is_some()
 }

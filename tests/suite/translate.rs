@@ -16,9 +16,7 @@ use effectc::stage::StageKind;
 
 use crate::common;
 
-fn in_ci() -> bool {
-    std::env::var_os("CI").is_some()
-}
+use crate::common::in_ci;
 
 fn programs() -> Vec<PathBuf> {
     let mut dirs = common::subdirs("effects");

@@ -1,0 +1,17 @@
+#version 330 core
+// Nested loops that keep every pixel busy for a long time: stands in for a shader that
+// never finishes (lavapipe caps single loops, so a plain `while (true)` ends by itself).
+out vec4 fragColor;
+uniform float seed;
+void main()
+{
+    float x = seed;
+    for (int i = 0; i < 100000; i++)
+    {
+        for (int j = 0; j < 100000; j++)
+        {
+            x = fract(sin(x * 1.618 + float(j)) * 43758.5);
+        }
+    }
+    fragColor = vec4(x);
+}

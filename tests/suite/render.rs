@@ -1,0 +1,192 @@
+//! `effectc render`: frames are written, deterministic and show what they should; float
+//! frames report NaN/Inf; a frame that takes too long stops the run; limits are refused
+//! before anything is allocated; OBJ meshes load or fail with a diagnostic at the manifest.
+//!
+//! These need a Vulkan adapter (lavapipe in CI). Without one (outside CI) they are skipped
+//! with a message; in CI a missing adapter fails.
+
+use std::path::Path;
+
+use effectc::render::compare;
+
+use crate::common::{code, effectc, in_ci, scratch, stdout};
+
+/// True when rendering can run here; panics in CI when it cannot.
+pub fn have_gpu() -> bool {
+    match effectc::render::device::Gpu::new() {
+        Ok(_) => true,
+        Err(e) => {
+            assert!(!in_ci(), "no wgpu adapter in CI: {e}");
+            eprintln!("no wgpu adapter ({e}): render tests skipped");
+            false
+        }
+    }
+}
+
+fn png(path: &Path) -> Vec<u8> {
+    compare::read_png(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())).0
+}
+
+#[test]
+fn sun_frames_are_written_deterministic_and_animated() {
+    if !have_gpu() {
+        return;
+    }
+    let (a, b) = (scratch("render", "sun-a"), scratch("render", "sun-b"));
+    for dir in [&a, &b] {
+        let out = effectc(&["render", "effects/sun/effect.toml", "--frames", "3", "--size", "96x96", "--out", dir.to_str().unwrap()]);
+        assert_eq!(code(&out), 0, "{}", stdout(&out));
+        assert!(stdout(&out).contains("rendered sun"), "{}", stdout(&out));
+    }
+    let names = ["sun_0000.png", "sun_0001.png", "sun_0002.png"];
+    for n in names {
+        assert_eq!(std::fs::read(a.join(n)).unwrap(), std::fs::read(b.join(n)).unwrap(), "{n} differs between two runs");
+    }
+    let frames: Vec<Vec<u8>> = names.iter().map(|n| png(&a.join(n))).collect();
+    assert_ne!(frames[0], frames[1], "the sun swirls: frames must differ");
+    assert_ne!(frames[1], frames[2]);
+    // The sun is orange in the middle and the background black at the corner.
+    let px = |f: &[u8], x: usize, y: usize| -> [u8; 4] { f[(y * 96 + x) * 4..][..4].try_into().unwrap() };
+    let centre = px(&frames[0], 48, 48);
+    assert!(centre[0] > 180 && centre[0] > centre[2] + 100, "orange sun at the centre: {centre:?}");
+    assert_eq!(px(&frames[0], 1, 1), [0, 0, 0, 255], "black background");
+}
+
+#[test]
+fn contact_sheet_and_gif_hold_every_frame() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "sheet");
+    let out = effectc(&[
+        "render", "effects/sun/effect.toml", "--frames", "5", "--size", "32x24", "--contact-sheet", "--gif", "--out", dir.to_str().unwrap(),
+    ]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let (_, w, h) = compare::read_png(&dir.join("sun_sheet.png")).unwrap();
+    assert!(w >= 3 * 32 && h >= 2 * 24, "5 frames tiled: {w}x{h}");
+    let gif = std::fs::read(dir.join("sun.gif")).unwrap();
+    assert_eq!(&gif[..6], b"GIF89a");
+    let frames = gif.windows(2).filter(|w| w == &[0x21, 0xF9]).count();
+    assert_eq!(frames, 5, "one graphic control extension per frame");
+}
+
+#[test]
+fn float_frames_count_nan_and_inf_and_fail() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "nan");
+    let out = effectc(&["render", "tests/render/nan", "--float", "--size", "64x64", "--out", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    assert!(text.contains("error[E0404]"), "{text}");
+    // Left half NaN in red: 32 columns × 64 rows; green is +Inf everywhere.
+    assert!(text.contains("2048 NaN, 4096 +Inf, 0 -Inf pixels"), "{text}");
+    assert!(dir.join("nan_0000_nonfinite.png").is_file(), "a mask is written");
+    let mask = png(&dir.join("nan_0000_nonfinite.png"));
+    assert_eq!(&mask[..3], &[255, 0, 0], "NaN is red in the mask");
+
+    let clean = effectc(&["render", "effects/sun/effect.toml", "--float", "--size", "32x32", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&clean), 0, "{}", stdout(&clean));
+    assert!(stdout(&clean).contains("0 NaN, 0 +Inf, 0 -Inf pixels"), "{}", stdout(&clean));
+}
+
+#[test]
+fn a_frame_that_takes_too_long_stops_the_run() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "slow");
+    let start = std::time::Instant::now();
+    let out = effectc(&["render", "tests/render/slow", "--size", "64x64", "--timeout", "0.2", "--out", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    assert!(text.contains("error[E0403]: frame 0 did not finish within 0.2 s"), "{text}");
+    assert!(start.elapsed().as_secs() < 30, "the run ends soon after the timeout");
+    assert!(!dir.join("slow_0000.png").exists());
+}
+
+#[test]
+fn absurd_requests_are_refused_before_allocating() {
+    for (args, needle) in [
+        (&["--size", "100000x100000"][..], "outside 1..=8192"),
+        (&["--frames", "0"][..], "--frames 0"),
+        (&["--frames", "10000000"][..], "--frames 10000000"),
+        (&["--fps", "0"][..], "--fps must be a positive number"),
+        (&["--size", "8192x8192", "--frames", "100", "--contact-sheet"][..], "in memory"),
+    ] {
+        let mut all = vec!["render", "effects/sun/effect.toml", "--out", "/nonexistent/never-written"];
+        all.extend_from_slice(args);
+        let out = effectc(&all);
+        let text = stdout(&out);
+        if needle == "in memory" && !have_gpu() {
+            continue;
+        }
+        assert_eq!(code(&out), 2, "{args:?}: {text}");
+        assert!(text.contains("E0405") && text.contains(needle), "{args:?}: {text}");
+    }
+    let bad = effectc(&["render", "effects/sun/effect.toml", "--size", "12by3"]);
+    assert_eq!(code(&bad), 2, "a malformed size is a usage error");
+}
+
+#[test]
+fn obj_meshes_render_and_broken_ones_fail_at_the_manifest() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "obj");
+    let out = effectc(&["render", "tests/render/obj/effect.toml", "--verbose", "--out", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("p0 ← position, t0 ← uv"), "explicit attribute mapping: {text}");
+    assert!(text.contains("adapter: "), "--verbose names the adapter: {text}");
+    let frame = png(&dir.join("obj-triangle_0000.png"));
+    let px = |x: usize, y: usize| -> [u8; 4] { frame[(y * 64 + x) * 4..][..4].try_into().unwrap() };
+    let inside = px(32, 36);
+    assert!(inside[0] == 255 || inside[2] == 255, "the checker is on the triangle: {inside:?}");
+    assert_eq!(px(2, 2), [0, 0, 0, 255], "outside the triangle is the clear colour");
+
+    let broken = effectc(&["render", "tests/render/bad-obj/effect.toml", "--out", dir.to_str().unwrap()]);
+    let text = stdout(&broken);
+    assert_eq!(code(&broken), 1, "{text}");
+    assert!(text.contains("error[E0406]: cannot load the mesh"), "{text}");
+    assert!(text.contains("tests/render/bad-obj/effect.toml"), "points at the manifest: {text}");
+}
+
+#[test]
+fn every_rewrite_program_renders_as_bare_stage_files_with_reported_guesses() {
+    if !have_gpu() {
+        return;
+    }
+    let mut failures = Vec::new();
+    let mut guessed = 0;
+    for program in crate::common::subdirs("tests/rewrite") {
+        let name = crate::common::name_of(&program);
+        let dir = scratch("render-bare", &name);
+        let out = effectc(&["render", program.to_str().unwrap(), "--size", "32x32", "--out", dir.to_str().unwrap()]);
+        let text = stdout(&out);
+        let frames = std::fs::read_dir(&dir).map(|d| d.count()).unwrap_or(0);
+        if code(&out) != 0 || frames == 0 {
+            failures.push(format!("{name}: exit {}\n{text}", code(&out)));
+        }
+        if text.contains("warning[W0401]") && text.contains("warning[W0403]") {
+            guessed += 1;
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(guessed >= 10, "guessed attributes and uniforms are reported ({guessed} programs)");
+}
+
+#[test]
+fn a_missing_adapter_is_a_clear_usage_error() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(["render", "effects/sun/effect.toml", "--out"])
+        .arg(scratch("render", "noadapter"))
+        .env("EFFECTC_ADAPTER", "no-such-adapter-anywhere")
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    let text = stdout(&out);
+    assert_eq!(code(&out), 2, "{text}");
+    assert!(text.contains("error[E0401]") && text.contains("no-such-adapter-anywhere"), "{text}");
+}
