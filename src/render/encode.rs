@@ -52,7 +52,7 @@ fn check_frame(rgba8: &[u8], width: u32, height: u32) -> Result<(), String> {
 pub fn png_bytes(rgba8: &[u8], width: u32, height: u32) -> Result<Vec<u8>, String> {
     check_frame(rgba8, width, height)?;
     let mut out = Vec::new();
-    PngEncoder::new_with_quality(&mut out, CompressionType::Default, FilterType::Adaptive)
+    PngEncoder::new_with_quality(&mut out, CompressionType::Fast, FilterType::Sub)
         .write_image(rgba8, width, height, ExtendedColorType::Rgba8)
         .map_err(|e| format!("PNG encoding failed: {e}"))?;
     Ok(out)

@@ -1,0 +1,238 @@
+//! Benchmark: `effectc render` against a bare wgpu loop, in one process.
+//!
+//! For each program: the steady-state ms/frame of effectc's whole render path (check,
+//! translate, scene, frames, readback, PNG encoding on the second thread, atomic writes) is
+//! the difference between a long and a short run divided by the extra frames, so start-up
+//! costs cancel. The baseline draws the same pipeline, with the same bind groups and vertex
+//! buffers, into the same target format and size and reads every frame back — no PNG. The
+//! ratio effectc / bare is the number the render issue bounds (≤ 1.25).
+//!
+//! Then the time to the first PNG: the release binary rendering one frame of `sun`, as a
+//! process, wall time from spawn to exit, median of 5 after one warm-up run (Mesa's shader
+//! cache warm).
+//!
+//! Run: `cargo bench --bench render_speed` (options: `-- --size 512 --frames 24`).
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use effectc::back::{Target as BackTarget, TranslateOptions};
+use effectc::check::check_inputs;
+use effectc::front::program::FrontOptions;
+use effectc::render::command::{self, Request, Step};
+use effectc::render::device::Gpu;
+use effectc::render::scene::{ColorMode, Draw, Scene, SceneInput};
+use effectc::render::semantics::FrameState;
+
+const PROGRAMS: &[(&str, &str)] = &[
+    ("sun (169-tap in-shader blur)", "effects/sun/effect.toml"),
+    ("obj triangle (cheap shader)", "tests/render/obj/effect.toml"),
+];
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let arg = |name: &str, default: u32| {
+        args.iter().position(|a| a == name).and_then(|i| args.get(i + 1)).and_then(|v| v.parse().ok()).unwrap_or(default)
+    };
+    let size = arg("--size", 512);
+    let frames = arg("--frames", 24);
+    let gpu = Gpu::new().expect("a Vulkan adapter (run ./setup.sh)");
+    println!("adapter: {}", gpu.describe());
+    println!("{size}x{size}, {frames} frames steady state (difference of a {frames}+4 and a 4 frame run)\n");
+    println!("{:<32} {:>14} {:>14} {:>8}", "program", "effectc ms/fr", "bare ms/fr", "ratio");
+    for (label, manifest) in PROGRAMS {
+        let effectc_ms = effectc_steady_ms(Path::new(manifest), size, frames);
+        let bare_ms = bare_loop_ms(&gpu, Path::new(manifest), size, frames);
+        println!("{label:<32} {effectc_ms:>14.3} {bare_ms:>14.3} {:>7.3}x", effectc_ms / bare_ms);
+    }
+    println!();
+    first_png();
+}
+
+fn request(manifest: &Path, size: u32, frames: u32, out: PathBuf) -> Request {
+    Request {
+        inputs: vec![manifest.to_path_buf()],
+        stage: None,
+        front: FrontOptions::default(),
+        back: TranslateOptions { gl_depth: true, widen_outputs: true },
+        frames: Some(frames),
+        step: Step::Default,
+        start: 0.0,
+        size: Some((size, size)),
+        out: Some(out),
+        contact_sheet: false,
+        gif: false,
+        float: false,
+        timeout: Duration::from_secs(60),
+        progress: false,
+        started: Instant::now(),
+    }
+}
+
+/// effectc's ms/frame in steady state: (t(n + 4 frames) − t(4 frames)) / n, best of 3.
+fn effectc_steady_ms(manifest: &Path, size: u32, frames: u32) -> f64 {
+    let out = std::env::temp_dir().join(format!("effectc-bench-{}", std::process::id()));
+    let run = |n: u32| {
+        let start = Instant::now();
+        let result = command::run(&request(manifest, size, n, out.clone()));
+        assert!(!effectc::diag::has_errors(&result.outcome.diagnostics), "{:?}", result.outcome.diagnostics);
+        assert_eq!(result.rendered[0].frames.len(), n as usize);
+        start.elapsed().as_secs_f64()
+    };
+    run(2); // warm-up: shader cache, page cache
+    let best = |n: u32| (0..3).map(|_| run(n)).fold(f64::INFINITY, f64::min);
+    let (short, long) = (best(4), best(4 + frames));
+    let _ = std::fs::remove_dir_all(&out);
+    (long - short) * 1e3 / f64::from(frames)
+}
+
+/// The same pipeline drawn in a minimal loop: write uniforms, draw, copy, map, read.
+fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
+    let (outcome, checked) = check_inputs(&[manifest.to_path_buf()], None, FrontOptions::default());
+    let c = &checked[0];
+    let t = effectc::translate::translate_checked(c, &outcome, TranslateOptions { gl_depth: true, widen_outputs: true })
+        .expect("checks")
+        .expect("translates");
+    let wgsl = String::from_utf8(effectc::back::emit(&t, BackTarget::Wgsl).unwrap().remove(0).bytes).unwrap();
+    let input =
+        SceneInput { translation: &t, wgsl: &wgsl, program: c.program.as_ref().unwrap(), effect: c.effect.as_ref(), mode: ColorMode::Unorm8 };
+    let mut scene = Scene::new(gpu, &input).expect("scene");
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8Unorm,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    });
+    let view = texture.create_view(&Default::default());
+    let depth = scene.depth.then(|| {
+        gpu.device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: None,
+                size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: wgpu::TextureFormat::Depth32Float,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+                view_formats: &[],
+            })
+            .create_view(&Default::default())
+    });
+    let row = (size * 4).div_ceil(256) * 256;
+    let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: u64::from(row) * u64::from(size),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let view_at = effectc::render::camera::view_at(&scene.camera, 0.0, 1.0);
+    let mut draw_one = |i: u32| {
+        let state = FrameState {
+            index: i,
+            time: f64::from(i) / 30.0,
+            delta: 1.0 / 30.0,
+            size: (size, size),
+            view: view_at,
+            model: glam::Mat4::IDENTITY,
+        };
+        for (data, buffer) in &mut scene.uniforms {
+            data.update(&scene.module, &state).unwrap();
+            gpu.queue.write_buffer(buffer, 0, &data.bytes);
+        }
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: None,
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: &view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::BLACK), store: wgpu::StoreOp::Store },
+                })],
+                depth_stencil_attachment: depth.as_ref().map(|d| wgpu::RenderPassDepthStencilAttachment {
+                    view: d,
+                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(&scene.pipeline);
+            for (g, bg) in &scene.bind_groups {
+                pass.set_bind_group(*g, bg, &[]);
+            }
+            if let Some(vb) = &scene.vertex_buffer {
+                pass.set_vertex_buffer(0, vb.slice(..));
+            }
+            match &scene.draw {
+                Draw::Indexed { buffer, count } => {
+                    pass.set_index_buffer(buffer.slice(..), wgpu::IndexFormat::Uint32);
+                    pass.draw_indexed(0..*count, 0, 0..1);
+                }
+                Draw::Vertices(n) => pass.draw(0..*n, 0..1),
+            }
+        }
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo { texture: &texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect: wgpu::TextureAspect::All },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &readback,
+                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: Some(size) },
+            },
+            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+        );
+        gpu.queue.submit([encoder.finish()]);
+        let slice = readback.slice(..);
+        slice.map_async(wgpu::MapMode::Read, |_| {});
+        gpu.device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+        let bytes = slice.get_mapped_range().unwrap().to_vec();
+        readback.unmap();
+        std::hint::black_box(bytes);
+    };
+    for i in 0..2 {
+        draw_one(i);
+    }
+    let best = (0..3)
+        .map(|_| {
+            let start = Instant::now();
+            for i in 0..frames {
+                draw_one(i);
+            }
+            start.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min);
+    best * 1e3 / f64::from(frames)
+}
+
+/// Wall time of `effectc render effects/sun/effect.toml --frames 1` as a process.
+fn first_png() {
+    let bin = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/release/effectc");
+    if !bin.is_file() {
+        println!("time to first PNG: skipped (build the release binary: cargo build --release)");
+        return;
+    }
+    let out = std::env::temp_dir().join(format!("effectc-first-{}", std::process::id()));
+    let run = || {
+        let start = Instant::now();
+        let status = std::process::Command::new(&bin)
+            .args(["render", "effects/sun/effect.toml", "--frames", "1", "--out"])
+            .arg(&out)
+            .stdout(std::process::Stdio::null())
+            .status()
+            .unwrap();
+        assert!(status.success());
+        start.elapsed().as_secs_f64() * 1e3
+    };
+    run();
+    let mut times: Vec<f64> = (0..5).map(|_| run()).collect();
+    times.sort_by(f64::total_cmp);
+    let _ = std::fs::remove_dir_all(&out);
+    println!(
+        "time to first PNG (sun, 512x512, release binary, warm shader cache): median {:.0} ms [{:.0}–{:.0}] over 5 runs",
+        times[2], times[0], times[4]
+    );
+}
