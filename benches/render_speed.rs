@@ -21,7 +21,7 @@ use effectc::check::check_inputs;
 use effectc::front::program::FrontOptions;
 use effectc::render::command::{self, Request, Step};
 use effectc::render::device::Gpu;
-use effectc::render::scene::{ColorMode, Draw, Scene, SceneInput};
+use effectc::render::scene::{ColorMode, Scene, SceneInput};
 use effectc::render::semantics::FrameState;
 
 const PROGRAMS: &[(&str, &str)] = &[
@@ -162,20 +162,7 @@ fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
                 occlusion_query_set: None,
                 multiview_mask: None,
             });
-            pass.set_pipeline(&scene.pipeline);
-            for (g, bg) in &scene.bind_groups {
-                pass.set_bind_group(*g, bg, &[]);
-            }
-            if let Some(vb) = &scene.vertex_buffer {
-                pass.set_vertex_buffer(0, vb.slice(..));
-            }
-            match &scene.draw {
-                Draw::Indexed { buffer, count } => {
-                    pass.set_index_buffer(buffer.slice(..), wgpu::IndexFormat::Uint32);
-                    pass.draw_indexed(0..*count, 0, 0..1);
-                }
-                Draw::Vertices(n) => pass.draw(0..*n, 0..1),
-            }
+            effectc::render::frames::record_draw(&mut pass, &scene);
         }
         encoder.copy_texture_to_buffer(
             wgpu::TexelCopyTextureInfo { texture: &texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect: wgpu::TextureAspect::All },

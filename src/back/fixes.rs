@@ -145,17 +145,7 @@ pub fn gl_to_webgpu_depth(module: &mut Module) -> bool {
         let result_ty = result.ty;
         let f = &mut ep.function;
         // Find the composed results first; then patch each one.
-        let mut returns: Vec<Handle<Expression>> = Vec::new();
-        visit_statements(&mut f.body, &mut |s| {
-            if let Statement::Return { value: Some(v) } = s {
-                returns.push(*v);
-            }
-        });
-        for ret in returns {
-            let Expression::Compose { ty, components } = f.expressions[ret].clone() else { continue };
-            if ty != result_ty {
-                continue;
-            }
+        for (ret, components) in composed_returns(f, result_ty) {
             let pos = components[index];
             let half = f.expressions.append(Expression::Literal(Literal::F32(0.5)), Span::UNDEFINED);
             let mut add = |e| f.expressions.append(e, Span::UNDEFINED);
@@ -215,17 +205,7 @@ pub fn widen_fragment_outputs(module: &mut Module) -> Vec<String> {
         let name = module.types[result_ty].name.clone();
         let new_ty = module.types.insert(Type { name, inner: TypeInner::Struct { members: new_members, span } }, Span::UNDEFINED);
         let f = &mut ep.function;
-        let mut returns: Vec<Handle<Expression>> = Vec::new();
-        visit_statements(&mut f.body, &mut |s| {
-            if let Statement::Return { value: Some(v) } = s {
-                returns.push(*v);
-            }
-        });
-        for ret in returns {
-            let Expression::Compose { ty, components } = f.expressions[ret].clone() else { continue };
-            if ty != result_ty {
-                continue;
-            }
+        for (ret, components) in composed_returns(f, result_ty) {
             // Literals are not emitted: append them before the emitted range.
             let literals: Vec<(Handle<Expression>, Handle<Expression>)> = narrow
                 .iter()
@@ -270,6 +250,23 @@ pub fn widen_fragment_outputs(module: &mut Module) -> Vec<String> {
         }
     }
     widened
+}
+
+/// Every `return` of `f` whose value composes a `result_ty`: (value, components).
+fn composed_returns(f: &mut naga::Function, result_ty: Handle<Type>) -> Vec<(Handle<Expression>, Vec<Handle<Expression>>)> {
+    let mut returns: Vec<Handle<Expression>> = Vec::new();
+    visit_statements(&mut f.body, &mut |s| {
+        if let Statement::Return { value: Some(v) } = s {
+            returns.push(*v);
+        }
+    });
+    returns
+        .into_iter()
+        .filter_map(|ret| match &f.expressions[ret] {
+            Expression::Compose { ty, components } if *ty == result_ty => Some((ret, components.clone())),
+            _ => None,
+        })
+        .collect()
 }
 
 fn is_position(m: &StructMember) -> bool {

@@ -177,20 +177,7 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState,
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        pass.set_pipeline(&scene.pipeline);
-        for (group, bg) in &scene.bind_groups {
-            pass.set_bind_group(*group, bg, &[]);
-        }
-        if let Some(vb) = &scene.vertex_buffer {
-            pass.set_vertex_buffer(0, vb.slice(..));
-        }
-        match &scene.draw {
-            Draw::Indexed { buffer, count } => {
-                pass.set_index_buffer(buffer.slice(..), wgpu::IndexFormat::Uint32);
-                pass.draw_indexed(0..*count, 0, 0..1);
-            }
-            Draw::Vertices(n) => pass.draw(0..*n, 0..1),
-        }
+        record_draw(&mut pass, scene);
     }
     encoder.copy_texture_to_buffer(
         wgpu::TexelCopyTextureInfo {
@@ -239,6 +226,25 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState,
     let pixels = unpad(&bytes, target);
     cpu += unpack_start.elapsed();
     Ok(Frame { pixels, gpu_ms, cpu_ms: cpu.as_secs_f64() * 1e3 })
+}
+
+/// Records the scene's draw into a render pass: pipeline, bind groups, vertex and index
+/// buffers, one draw call.
+pub fn record_draw(pass: &mut wgpu::RenderPass<'_>, scene: &Scene) {
+    pass.set_pipeline(&scene.pipeline);
+    for (group, bg) in &scene.bind_groups {
+        pass.set_bind_group(*group, bg, &[]);
+    }
+    if let Some(vb) = &scene.vertex_buffer {
+        pass.set_vertex_buffer(0, vb.slice(..));
+    }
+    match &scene.draw {
+        Draw::Indexed { buffer, count } => {
+            pass.set_index_buffer(buffer.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..*count, 0, 0..1);
+        }
+        Draw::Vertices(n) => pass.draw(0..*n, 0..1),
+    }
 }
 
 /// Maps a finished buffer, copies its bytes out and unmaps it.

@@ -1,6 +1,7 @@
 //! `effectc render`: frames are written, deterministic and show what they should; float
 //! frames report NaN/Inf; a frame that takes too long stops the run; limits are refused
-//! before anything is allocated; OBJ meshes load or fail with a diagnostic at the manifest.
+//! before anything is allocated; OBJ meshes load or fail with a diagnostic at the manifest;
+//! generated cube maps and camera keyframes reach the frames.
 //!
 //! These need a Vulkan adapter (lavapipe in CI). Without one (outside CI) they are skipped
 //! with a message; in CI a missing adapter fails.
@@ -175,6 +176,22 @@ fn every_rewrite_program_renders_as_bare_stage_files_with_reported_guesses() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(guessed >= 10, "guessed attributes and uniforms are reported ({guessed} programs)");
+}
+
+#[test]
+fn a_generated_cube_map_is_reflected_and_camera_keys_move_the_view() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "cube");
+    let out = effectc(&["render", "tests/render/cube", "--frames", "3", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let frames: Vec<Vec<u8>> = (0..3).map(|i| png(&dir.join(format!("cube-envmap_{i:04}.png")))).collect();
+    assert_ne!(frames[0], frames[2], "the camera moved between keys");
+    // The sphere shows the two checker colours of the cube map (yellow and blue).
+    let colours: std::collections::BTreeSet<[u8; 3]> =
+        frames[0].chunks(4).filter(|p| p[..3] != [0, 0, 0]).map(|p| [p[0] / 64, p[1] / 64, p[2] / 64]).collect();
+    assert!(colours.contains(&[3, 3, 0]) && colours.contains(&[0, 0, 2]), "{colours:?}");
 }
 
 #[test]
