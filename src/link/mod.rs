@@ -43,12 +43,15 @@
 //! | `W0201` | warning  | an output the next stage never reads (declares no input for) |
 //! | `W0202` | warning  | an input (or input block) with no producer, which the stage never reads |
 //! | `W0203` | warning  | interpolation qualifiers differ (allowed since GLSL 4.30: the later stage's wins) |
+//! | `E0227` | error    | a `[mesh.attributes]` / `[instances.attributes]` name that is no vertex input |
+//! | `E0228` | error    | a vertex input fed per vertex and per instance, or given more components than it holds |
 //! | `W0204` | warning  | `centroid` differs (allowed since GLSL 4.30: the later stage's wins) |
 //! | `W0220` | warning  | a uniform some stage reads has no default in `effect.toml` |
 //! | `W0221` | warning  | a uniform (or uniform block) no stage reads |
 //! | `W0222` | warning  | a sampler uniform some stage reads has no `[textures]` entry |
 //! | `W0223` | warning  | a `[uniforms]` default for a uniform no stage reads |
 
+pub mod attributes;
 pub mod blocks;
 pub mod interface;
 pub mod manifest;
@@ -82,6 +85,10 @@ pub const E_MANIFEST_RANGE: &str = "E0223";
 pub const E_TEXTURE_UNKNOWN: &str = "E0224";
 pub const E_MANIFEST_PATH: &str = "E0225";
 pub const E_TEXTURE_KIND: &str = "E0226";
+/// A `[mesh.attributes]` / `[instances.attributes]` name that is no vertex input.
+pub const E_ATTRIBUTE_UNKNOWN: &str = "E0227";
+/// A vertex input fed twice, or given more components per instance than it holds.
+pub const E_ATTRIBUTE_CONFLICT: &str = "E0228";
 pub const W_UNREAD_OUTPUT: &str = "W0201";
 pub const W_UNUSED_INPUT: &str = "W0202";
 pub const W_INTERP: &str = "W0203";
@@ -189,7 +196,9 @@ pub fn check_manifest(
     stages: &[StageSyntax],
     files: &Files,
 ) -> Vec<Diagnostic> {
-    manifest::check(effect, stages, files)
+    let mut out = manifest::check(effect, stages, files);
+    out.extend(attributes::check(effect, stages));
+    out
 }
 
 /// How the user calls a stage in prose.

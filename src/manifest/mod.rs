@@ -111,8 +111,10 @@ pub struct Effect {
     pub camera: Option<CameraDecl>,
     /// `[model]`: the model matrix (identity when absent).
     pub model: ModelDecl,
-    /// `[render]`: frame size, count, rate, clear colour, culling and depth.
+    /// `[render]`: frame size, count, rate, clear colour, culling, depth and blending.
     pub render: RenderDecl,
+    /// `[instances]`: draw the mesh this many times, with per-instance attributes.
+    pub instances: Option<InstancesDecl>,
     /// Warnings found while reading the manifest (the effect is still usable).
     pub warnings: Vec<Diagnostic>,
 }
@@ -570,13 +572,74 @@ pub struct RenderDecl {
     pub cull: Cull,
     /// Depth test (less) with a depth buffer; default on.
     pub depth_test: bool,
+    /// Depth writes when the depth test is on; default on (off for see-through layers).
+    pub depth_write: bool,
+    pub blend: Blend,
 }
 
 impl Default for RenderDecl {
     fn default() -> Self {
-        RenderDecl { size: None, frames: None, fps: None, clear: [0.0, 0.0, 0.0, 1.0], cull: Cull::None, depth_test: true }
+        RenderDecl {
+            size: None,
+            frames: None,
+            fps: None,
+            clear: [0.0, 0.0, 0.0, 1.0],
+            cull: Cull::None,
+            depth_test: true,
+            depth_write: true,
+            blend: Blend::None,
+        }
     }
 }
+
+/// How fragment colours combine with the target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Blend {
+    /// Replace.
+    #[default]
+    None,
+    /// `src.rgb * src.a + dst.rgb * (1 - src.a)` (glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)).
+    Alpha,
+    /// `src.rgb * src.a + dst.rgb` (glBlendFunc(GL_SRC_ALPHA, GL_ONE)).
+    Additive,
+    /// `src.rgb + dst.rgb * (1 - src.a)` (premultiplied alpha).
+    Premultiplied,
+}
+
+/// `[instances]`: instanced drawing (one draw call, `count` instances).
+#[derive(Debug, Clone, PartialEq)]
+pub struct InstancesDecl {
+    pub span: Range<usize>,
+    /// 1–1 000 000.
+    pub count: u32,
+    /// Per-instance vertex inputs, in manifest order.
+    pub attributes: Vec<InstanceAttribute>,
+}
+
+/// One per-instance vertex input and where its values come from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InstanceAttribute {
+    /// The vertex shader input it feeds.
+    pub input: String,
+    pub input_span: Range<usize>,
+    pub source: InstanceSource,
+    /// Components per instance (1–4).
+    pub components: usize,
+}
+
+/// Where per-instance values come from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum InstanceSource {
+    /// Exactly `count` values (each 1–4 numbers).
+    Values(Vec<[f32; 4]>),
+    /// Uniformly random in the box `[lo, hi]` per component, from `seed` (deterministic).
+    Random { lo: [f32; 4], hi: [f32; 4], seed: u32 },
+    /// `start + i × step` for instance `i`.
+    Sequence { start: [f32; 4], step: [f32; 4] },
+}
+
+/// Most instances `[instances] count` accepts.
+pub const MAX_INSTANCES: u32 = 1_000_000;
 
 /// Which faces are culled (counter-clockwise is front, as in OpenGL).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -29,6 +29,7 @@ const ROOT_KEYS: &[&str] = &[
     "camera",
     "model",
     "render",
+    "instances",
 ];
 const UNIFORM_KEYS: &[&str] = &["value", "range", "semantic"];
 const TEXTURE_KEYS: &[&str] = &[
@@ -405,6 +406,7 @@ impl Ctx<'_> {
         let mut camera = None;
         let mut model = ModelDecl::default();
         let mut render = RenderDecl::default();
+        let mut instances = None;
         for (k, v) in entries(root) {
             match key(k) {
                 "name" => {
@@ -446,6 +448,7 @@ impl Ctx<'_> {
                 "camera" => camera = self.camera(v),
                 "model" => model = self.model(v).unwrap_or_default(),
                 "render" => render = self.render(v).unwrap_or_default(),
+                "instances" => instances = self.instances(v),
                 other => self.unknown_key(other, k.span(), "at the top level", ROOT_KEYS),
             }
         }
@@ -489,6 +492,7 @@ impl Ctx<'_> {
             camera,
             model,
             render,
+            instances,
             warnings: Vec::new(),
         }
     }

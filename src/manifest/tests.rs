@@ -892,3 +892,55 @@ zoom = 2
     let degenerate = errors(&minimal("[camera]\neye = [0, 0, 0]\n"), &dir);
     assert!(one(&degenerate, E_VALUE).message.contains("equals its `target`"));
 }
+
+#[test]
+fn instances_blend_and_depth_write_parse() {
+    let dir = minimal_dir();
+    let text = minimal(
+        r#"
+[render]
+blend = "additive"
+depth_write = false
+
+[instances]
+count = 3
+
+[instances.attributes]
+aOffset = { random = [[-1, 0, -1], [1, 2, 1]], seed = 5 }
+aPhase = { sequence = [0.5, 0.25] }
+aTint = { values = [[1, 0, 0], [0, 1, 0], [0, 0, 1]] }
+"#,
+    );
+    let e = run(&text, &dir).unwrap();
+    assert_eq!((e.render.blend, e.render.depth_write), (Blend::Additive, false));
+    let inst = e.instances.unwrap();
+    assert_eq!(inst.count, 3);
+    let names: Vec<(&str, usize)> = inst.attributes.iter().map(|a| (a.input.as_str(), a.components)).collect();
+    assert_eq!(names, vec![("aOffset", 3), ("aPhase", 1), ("aTint", 3)]);
+    assert_eq!(inst.attributes[0].source, InstanceSource::Random { lo: [-1.0, 0.0, -1.0, 0.0], hi: [1.0, 2.0, 1.0, 0.0], seed: 5 });
+}
+
+#[test]
+fn instance_errors_point_at_their_values() {
+    let dir = minimal_dir();
+    let text = minimal(
+        r#"
+[instances]
+count = 2
+
+[instances.attributes]
+a = { values = [1, 2, 3] }
+b = { random = [[0, 0], [1, 1, 1]] }
+c = { sequence = [0, 1], seed = 4 }
+d = { }
+"#,
+    );
+    let diags = errors(&text, &dir);
+    let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
+    assert!(spans.contains(&(E_VALUE, "[1, 2, 3]")), "3 values for 2 instances: {spans:?}");
+    assert!(spans.contains(&(E_VALUE, "[[0, 0], [1, 1, 1]]")), "ends of different sizes: {spans:?}");
+    assert!(spans.contains(&(E_CONFLICT, "seed")), "seed without random: {spans:?}");
+    assert!(spans.contains(&(E_MISSING, "{ }")), "no source: {spans:?}");
+    let no_count = errors(&minimal("[instances]\n"), &dir);
+    assert!(one(&no_count, E_MISSING).message.contains("needs `count`"));
+}

@@ -93,6 +93,61 @@ pub struct Interleaved {
     pub attributes: Vec<wgpu::VertexAttribute>,
 }
 
+/// The per-instance buffer: every `[instances.attributes]` input, interleaved, one row per
+/// instance, in the formats the shader declares. Returns `None` when the manifest feeds no
+/// input per instance.
+pub fn instance_buffer(inputs: &[InterfaceVar], decl: &crate::manifest::InstancesDecl) -> Option<Interleaved> {
+    let fed: Vec<(&InterfaceVar, &crate::manifest::InstanceAttribute)> = decl
+        .attributes
+        .iter()
+        .filter_map(|a| inputs.iter().find(|i| i.name == a.input).map(|i| (i, a)))
+        .collect();
+    if fed.is_empty() {
+        return None;
+    }
+    let mut attributes = Vec::new();
+    let mut stride = 0u64;
+    for (input, _) in &fed {
+        let format = vertex_format(input.format.as_deref().unwrap_or("float32x4"));
+        attributes.push(wgpu::VertexAttribute { format, offset: stride, shader_location: input.location });
+        stride += format.size();
+    }
+    let mut bytes = Vec::with_capacity(decl.count as usize * stride as usize);
+    for i in 0..decl.count {
+        for ((_, a), attr) in fed.iter().zip(&attributes) {
+            push_vertex_value(&mut bytes, attr.format, instance_value(&a.source, i, a.components));
+        }
+    }
+    Some(Interleaved { bytes, stride, attributes })
+}
+
+/// The value of one per-instance attribute for instance `i` (unused components 0, a fourth
+/// component 1 when the manifest gives three, like a position).
+fn instance_value(source: &crate::manifest::InstanceSource, i: u32, components: usize) -> [f32; 4] {
+    use crate::manifest::InstanceSource;
+    let mut v = match source {
+        InstanceSource::Values(values) => values.get(i as usize).copied().unwrap_or([0.0; 4]),
+        InstanceSource::Sequence { start, step } => std::array::from_fn(|c| start[c] + step[c] * i as f32),
+        InstanceSource::Random { lo, hi, seed } => {
+            std::array::from_fn(|c| lo[c] + (hi[c] - lo[c]) * unit_random(*seed, i, c as u32))
+        }
+    };
+    if components == 3 {
+        v[3] = 1.0;
+    }
+    v
+}
+
+/// A deterministic number in [0, 1) from (seed, instance, component): splitmix64.
+fn unit_random(seed: u32, instance: u32, component: u32) -> f32 {
+    let mut z = (u64::from(seed) << 32 | u64::from(instance)).wrapping_mul(4).wrapping_add(u64::from(component));
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^= z >> 31;
+    (z >> 40) as f32 / (1u64 << 24) as f32
+}
+
 /// Interleaves the chosen attributes of `mesh` in the formats the shader declares.
 pub fn interleave(choices: &[Choice], mesh: &Mesh) -> Interleaved {
     let mut attributes = Vec::new();
@@ -196,6 +251,48 @@ mod tests {
         assert_eq!(buf.stride, 12 + 8 + 12);
         assert_eq!(buf.bytes.len(), mesh.vertex_count() * 32);
         assert_eq!(buf.attributes[2].offset, 20);
+    }
+
+    #[test]
+    fn instance_attributes_are_interleaved_per_instance_and_deterministic() {
+        use crate::manifest::{InstanceAttribute, InstanceSource, InstancesDecl};
+        let input = |location, name: &str, format: &str| InterfaceVar {
+            location,
+            name: name.into(),
+            wgsl_type: String::new(),
+            format: Some(format.into()),
+            interpolation: None,
+        };
+        let inputs = [input(0, "aPos", "float32x3"), input(2, "aOffset", "float32x3"), input(3, "aSize", "float32")];
+        let decl = InstancesDecl {
+            span: 0..0,
+            count: 5,
+            attributes: vec![
+                InstanceAttribute {
+                    input: "aOffset".into(),
+                    input_span: 0..0,
+                    source: InstanceSource::Random { lo: [-1.0, 0.0, -1.0, 0.0], hi: [1.0, 2.0, 1.0, 0.0], seed: 9 },
+                    components: 3,
+                },
+                InstanceAttribute {
+                    input: "aSize".into(),
+                    input_span: 0..0,
+                    source: InstanceSource::Sequence { start: [1.0, 0.0, 0.0, 0.0], step: [0.5, 0.0, 0.0, 0.0] },
+                    components: 1,
+                },
+            ],
+        };
+        let buf = instance_buffer(&inputs, &decl).unwrap();
+        assert_eq!((buf.stride, buf.bytes.len()), (16, 5 * 16));
+        assert_eq!(buf.attributes.iter().map(|a| a.shader_location).collect::<Vec<_>>(), vec![2, 3]);
+        let f = |at: usize| f32::from_le_bytes(buf.bytes[at..at + 4].try_into().unwrap());
+        for i in 0..5 {
+            let row = i * 16;
+            assert!((-1.0..1.0).contains(&f(row)) && (0.0..2.0).contains(&f(row + 4)), "inside the box");
+            assert_eq!(f(row + 12), 1.0 + 0.5 * i as f32, "sequence");
+        }
+        assert_ne!(f(0), f(16), "instances differ");
+        assert_eq!(instance_buffer(&inputs, &decl).unwrap().bytes, buf.bytes, "deterministic");
     }
 
     #[test]

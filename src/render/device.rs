@@ -65,7 +65,8 @@ impl Gpu {
             })?;
         let info = adapter.get_info();
         // Timestamps time frames on the GPU when the adapter has them (lavapipe does).
-        let features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+        // Blending into Rgba32Float (`--float`) where the adapter can.
+        let features = adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::FLOAT32_BLENDABLE);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("effectc"),
             required_features: features,
@@ -74,6 +75,17 @@ impl Gpu {
         }))
         .map_err(|e| NoGpu(format!("the adapter `{}` refused a device: {e}", info.name)))?;
         Ok(Gpu { adapter, info, device, queue })
+    }
+
+    /// Whether colour targets of `format` can blend on this device.
+    pub fn can_blend(&self, format: wgpu::TextureFormat) -> bool {
+        match format.sample_type(None, None) {
+            Some(wgpu::TextureSampleType::Float { filterable: true }) => true,
+            Some(wgpu::TextureSampleType::Float { filterable: false }) => {
+                self.device.features().contains(wgpu::Features::FLOAT32_BLENDABLE)
+            }
+            _ => false,
+        }
     }
 
     /// One line naming the adapter, for `--verbose`.
@@ -97,8 +109,12 @@ impl Gpu {
             wgsl,
             vertex_stride: stride.max(4),
             attributes: &attributes,
+            instance_stride: 0,
+            instance_attributes: &[],
             colors: color_formats(reflection, wgpu::TextureFormat::Rgba8Unorm),
+            blend: None,
             depth: None,
+            depth_write: true,
             cull: None,
             fragment: reflection.entry_points.iter().any(|e| e.name == "fs_main"),
         };
@@ -112,12 +128,33 @@ impl Gpu {
             label: Some(spec.label),
             source: wgpu::ShaderSource::Wgsl(spec.wgsl.into()),
         });
-        let buffers = [Some(wgpu::VertexBufferLayout {
-            array_stride: spec.vertex_stride,
-            step_mode: wgpu::VertexStepMode::Vertex,
-            attributes: spec.attributes,
-        })];
-        let targets: Vec<Option<wgpu::ColorTargetState>> = spec.colors.iter().map(|f| f.map(Into::into)).collect();
+        let mut buffers = Vec::new();
+        if !spec.attributes.is_empty() {
+            buffers.push(Some(wgpu::VertexBufferLayout {
+                array_stride: spec.vertex_stride,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: spec.attributes,
+            }));
+        }
+        if !spec.instance_attributes.is_empty() {
+            buffers.push(Some(wgpu::VertexBufferLayout {
+                array_stride: spec.instance_stride,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: spec.instance_attributes,
+            }));
+        }
+        let targets: Vec<Option<wgpu::ColorTargetState>> = spec
+            .colors
+            .iter()
+            .map(|f| {
+                f.map(|format| wgpu::ColorTargetState {
+                    format,
+                    // Integer targets cannot blend; 32-bit float ones only with FLOAT32_BLENDABLE.
+                    blend: spec.blend.filter(|_| self.can_blend(format)),
+                    write_mask: wgpu::ColorWrites::ALL,
+                })
+            })
+            .collect();
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(spec.label),
             layout: None,
@@ -125,12 +162,12 @@ impl Gpu {
                 module: &module,
                 entry_point: Some("vs_main"),
                 compilation_options: Default::default(),
-                buffers: if spec.attributes.is_empty() { &[] } else { &buffers },
+                buffers: &buffers,
             },
             primitive: wgpu::PrimitiveState { cull_mode: spec.cull, ..Default::default() },
             depth_stencil: spec.depth.map(|format| wgpu::DepthStencilState {
                 format,
-                depth_write_enabled: Some(true),
+                depth_write_enabled: Some(spec.depth_write),
                 depth_compare: Some(wgpu::CompareFunction::Less),
                 stencil: Default::default(),
                 bias: Default::default(),
@@ -156,13 +193,19 @@ impl Gpu {
 pub struct PipelineSpec<'a> {
     pub label: &'a str,
     pub wgsl: &'a str,
-    /// One interleaved vertex buffer; no buffer when `attributes` is empty.
+    /// One interleaved per-vertex buffer (slot 0); no buffer when `attributes` is empty.
     pub vertex_stride: u64,
     pub attributes: &'a [wgpu::VertexAttribute],
+    /// One interleaved per-instance buffer (the next slot); none when empty.
+    pub instance_stride: u64,
+    pub instance_attributes: &'a [wgpu::VertexAttribute],
     /// Colour target formats by location (`None` for a gap).
     pub colors: Vec<Option<wgpu::TextureFormat>>,
-    /// Depth buffer format (depth test `less`, writes on).
+    /// Blending of colour targets that can blend.
+    pub blend: Option<wgpu::BlendState>,
+    /// Depth buffer format (depth test `less`).
     pub depth: Option<wgpu::TextureFormat>,
+    pub depth_write: bool,
     pub cull: Option<wgpu::Face>,
     /// The module has `fs_main`.
     pub fragment: bool,

@@ -235,15 +235,17 @@ pub fn record_draw(pass: &mut wgpu::RenderPass<'_>, scene: &Scene) {
     for (group, bg) in &scene.bind_groups {
         pass.set_bind_group(*group, bg, &[]);
     }
-    if let Some(vb) = &scene.vertex_buffer {
-        pass.set_vertex_buffer(0, vb.slice(..));
+    let mut slot = 0;
+    for buffer in [&scene.vertex_buffer, &scene.instance_buffer].into_iter().flatten() {
+        pass.set_vertex_buffer(slot, buffer.slice(..));
+        slot += 1;
     }
     match &scene.draw {
         Draw::Indexed { buffer, count } => {
             pass.set_index_buffer(buffer.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..*count, 0, 0..1);
+            pass.draw_indexed(0..*count, 0, 0..scene.instances);
         }
-        Draw::Vertices(n) => pass.draw(0..*n, 0..1),
+        Draw::Vertices(n) => pass.draw(0..*n, 0..scene.instances),
     }
 }
 

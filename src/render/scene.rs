@@ -13,7 +13,7 @@ use crate::diag::{Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
 use crate::manifest::{
-    BuiltinMesh, CameraDecl, Cull, Effect, Filter, MeshSource, ModelDecl, TextureKind, TextureSource, Wrap,
+    Blend, BuiltinMesh, CameraDecl, Cull, Effect, Filter, MeshSource, ModelDecl, TextureKind, TextureSource, Wrap,
 };
 use crate::render::attributes;
 use crate::render::device::{color_formats, Gpu, PipelineSpec};
@@ -70,7 +70,11 @@ pub struct Scene {
     pub module: naga::Module,
     pub pipeline: wgpu::RenderPipeline,
     pub vertex_buffer: Option<wgpu::Buffer>,
+    /// Per-instance attributes (vertex buffer slot after the mesh's, or 0 without one).
+    pub instance_buffer: Option<wgpu::Buffer>,
     pub draw: Draw,
+    /// Instances per draw (1 without `[instances]`).
+    pub instances: u32,
     pub bind_groups: Vec<(u32, wgpu::BindGroup)>,
     pub uniforms: Vec<(UniformBuffer, wgpu::Buffer)>,
     /// Colour formats by output location (location 0 is the frame).
@@ -114,9 +118,13 @@ impl Scene {
         }
         let (mesh, mesh_note) = choose_mesh(input, &mut warnings)?;
         let explicit = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.attributes.clone()).unwrap_or_default();
-        let choices = attributes::choose(&r.vertex_inputs, &explicit, &mesh);
+        let instances = input.effect.and_then(|e| e.instances.as_ref());
+        let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
+        let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
+        let choices = attributes::choose(&per_vertex, &explicit, &mesh);
         report_attributes(input.program, &choices, &mut warnings);
         let interleaved = attributes::interleave(&choices, &mesh);
+        let instanced = instances.and_then(|d| attributes::instance_buffer(&r.vertex_inputs, d));
 
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let render = input.effect.map(|e| e.render.clone()).unwrap_or_default();
@@ -127,8 +135,12 @@ impl Scene {
             wgsl: input.wgsl,
             vertex_stride: interleaved.stride,
             attributes: &interleaved.attributes,
+            instance_stride: instanced.as_ref().map_or(0, |i| i.stride),
+            instance_attributes: instanced.as_ref().map_or(&[], |i| &i.attributes),
             colors: colors.clone(),
+            blend: blend_state(render.blend),
             depth: depth.then_some(wgpu::TextureFormat::Depth32Float),
+            depth_write: render.depth_write,
             cull: match render.cull {
                 Cull::None => None,
                 Cull::Back => Some(wgpu::Face::Back),
@@ -141,6 +153,8 @@ impl Scene {
         let vertex_buffer = (!interleaved.attributes.is_empty()).then(|| {
             buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX)
         });
+        let instance_buffer =
+            instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
         let draw = match mesh_note {
             MeshNote::OwnVertices => Draw::Vertices(3),
             _ => {
@@ -175,23 +189,27 @@ impl Scene {
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }
+        let mut inputs: Vec<String> =
+            choices.iter().map(|c| format!("{} ← {}", c.input, c.attribute.unwrap_or("zeros"))).collect();
+        if let Some(d) = instances {
+            inputs.extend(d.attributes.iter().map(|a| format!("{} ← per instance", a.input)));
+        }
         let describe = format!(
-            "{}; {} vertices, {} triangles; inputs: {}",
+            "{}; {} vertices, {} triangles{}; inputs: {}",
             mesh_note.describe(input.effect),
             mesh.vertex_count(),
             mesh.triangle_count(),
-            choices
-                .iter()
-                .map(|c| format!("{} ← {}", c.input, c.attribute.unwrap_or("zeros")))
-                .collect::<Vec<_>>()
-                .join(", ")
+            instances.map(|d| format!(", {} instances", d.count)).unwrap_or_default(),
+            inputs.join(", ")
         );
         Ok(Scene {
             name: t.name.clone(),
             module: t.module.clone(),
             pipeline,
             vertex_buffer,
+            instance_buffer,
             draw,
+            instances: instances.map_or(1, |d| d.count),
             bind_groups,
             uniforms,
             colors,
@@ -211,6 +229,17 @@ fn toml_key(name: &str) -> String {
         format!("\"{name}\"")
     } else {
         name.to_string()
+    }
+}
+
+fn blend_state(blend: Blend) -> Option<wgpu::BlendState> {
+    use wgpu::{BlendComponent, BlendFactor as F, BlendOperation, BlendState};
+    let colour = |src, dst| BlendComponent { src_factor: src, dst_factor: dst, operation: BlendOperation::Add };
+    match blend {
+        Blend::None => None,
+        Blend::Alpha => Some(BlendState::ALPHA_BLENDING),
+        Blend::Additive => Some(BlendState { color: colour(F::SrcAlpha, F::One), alpha: colour(F::One, F::One) }),
+        Blend::Premultiplied => Some(BlendState::PREMULTIPLIED_ALPHA_BLENDING),
     }
 }
 

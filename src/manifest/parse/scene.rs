@@ -10,13 +10,16 @@ use toml::de::{DeTable, DeValue};
 
 use super::{entries, key, Ctx, Val};
 use crate::manifest::{
-    CameraDecl, CameraKey, Cull, Ease, ModelDecl, RenderDecl, E_MISSING, E_VALUE, MAX_FRAMES, MAX_FRAME_SIDE,
+    Blend, CameraDecl, CameraKey, Cull, Ease, InstanceAttribute, InstanceSource, InstancesDecl, ModelDecl, RenderDecl,
+    E_CONFLICT, E_MISSING, E_VALUE, MAX_FRAMES, MAX_FRAME_SIDE, MAX_INSTANCES,
 };
 
 const CAMERA_KEYS: &[&str] = &["eye", "target", "up", "fov", "near", "far", "keys", "ease"];
 const CAMERA_KEY_KEYS: &[&str] = &["time", "eye", "target"];
 const MODEL_KEYS: &[&str] = &["translate", "rotate", "scale", "spin"];
-const RENDER_KEYS: &[&str] = &["size", "frames", "fps", "clear", "cull", "depth_test"];
+const RENDER_KEYS: &[&str] = &["size", "frames", "fps", "clear", "cull", "depth_test", "depth_write", "blend"];
+const INSTANCES_KEYS: &[&str] = &["count", "attributes"];
+const INSTANCE_ATTRIBUTE_KEYS: &[&str] = &["values", "random", "seed", "sequence"];
 
 impl Ctx<'_> {
     /// `n` finite numbers that fit in f32.
@@ -311,6 +314,16 @@ impl Ctx<'_> {
                     self.choice(v2, what, "cull mode", &choices).map(|c| r.cull = c).is_some()
                 }
                 "depth_test" => self.boolean(v2, what).map(|b| r.depth_test = b).is_some(),
+                "depth_write" => self.boolean(v2, what).map(|b| r.depth_write = b).is_some(),
+                "blend" => {
+                    let choices = [
+                        ("none", Blend::None),
+                        ("alpha", Blend::Alpha),
+                        ("additive", Blend::Additive),
+                        ("premultiplied", Blend::Premultiplied),
+                    ];
+                    self.choice(v2, what, "blend mode", &choices).map(|b| r.blend = b).is_some()
+                }
                 other => {
                     self.unknown_key(other, k.span(), "in `[render]`", RENDER_KEYS);
                     false
@@ -318,6 +331,176 @@ impl Ctx<'_> {
             };
         }
         ok.then_some(r)
+    }
+}
+
+impl Ctx<'_> {
+    pub(super) fn instances(&mut self, v: &Val<'_>) -> Option<InstancesDecl> {
+        let t = self.table(v, "`instances`")?;
+        let mut count = None;
+        let mut attributes = Vec::new();
+        let mut ok = true;
+        let mut attribute_table = None;
+        for (k, v2) in entries(t) {
+            let what = format!("`instances.{}`", key(k));
+            ok &= match key(k) {
+                "count" => self.uint(v2, &what, 1, MAX_INSTANCES).map(|n| count = Some(n)).is_some(),
+                "attributes" => {
+                    attribute_table = Some(v2);
+                    true
+                }
+                other => {
+                    self.unknown_key(other, k.span(), "in `[instances]`", INSTANCES_KEYS);
+                    false
+                }
+            };
+        }
+        let Some(count) = count else {
+            if ok {
+                let d = self.error(E_MISSING, v.span(), "`[instances]` needs `count`".into(), "no instance count");
+                d.help = Some("add e.g. `count = 100`".into());
+            }
+            return None;
+        };
+        if let Some(at) = attribute_table {
+            let at = self.table(at, "`instances.attributes`")?;
+            for (k, v2) in entries(at) {
+                match self.instance_attribute(key(k), k.span(), v2, count) {
+                    Some(a) => attributes.push(a),
+                    None => ok = false,
+                }
+            }
+        }
+        ok.then_some(InstancesDecl { span: v.span(), count, attributes })
+    }
+
+    /// `input = { values = [...] }`, `{ random = [lo, hi], seed = n }` or
+    /// `{ sequence = [start, step] }`; `lo`, `hi`, `start`, `step` are numbers or vectors
+    /// of 1–4 numbers.
+    fn instance_attribute(&mut self, input: &str, input_span: Range<usize>, v: &Val<'_>, count: u32) -> Option<InstanceAttribute> {
+        let what = format!("`instances.attributes.{input}`");
+        if !super::is_ident(input) || input.starts_with("gl_") {
+            self.error(E_VALUE, input_span, format!("`{input}` is not a vertex shader input name"), "not a GLSL identifier");
+            return None;
+        }
+        let t = self.table(v, &what)?;
+        let mut source = None;
+        let mut sources = 0;
+        let mut seed = None;
+        let mut components = 0;
+        let mut ok = true;
+        for (k, v2) in entries(t) {
+            let w = format!("{what}.{}", key(k));
+            match key(k) {
+                "values" => {
+                    sources += 1;
+                    let DeValue::Array(items) = v2.get_ref() else {
+                        self.wrong_type(v2, &w, "an array with one value per instance");
+                        ok = false;
+                        continue;
+                    };
+                    if items.len() != count as usize {
+                        self.error(
+                            E_VALUE,
+                            v2.span(),
+                            format!("{w} has {} values for {count} instances", items.len()),
+                            format!("expected {count} values"),
+                        );
+                        ok = false;
+                        continue;
+                    }
+                    let mut values = Vec::with_capacity(items.len());
+                    for item in items {
+                        match self.vector(item, &w) {
+                            Some((x, n)) => {
+                                components = components.max(n);
+                                values.push(x);
+                            }
+                            None => ok = false,
+                        }
+                    }
+                    source = Some(InstanceSource::Values(values));
+                }
+                "random" | "sequence" => {
+                    sources += 1;
+                    let pair = match v2.get_ref() {
+                        DeValue::Array(items) if items.len() == 2 => {
+                            self.vector(&items[0], &w).zip(self.vector(&items[1], &w))
+                        }
+                        _ => {
+                            self.wrong_type(v2, &w, "`[a, b]` (numbers or vectors of up to 4 numbers)");
+                            None
+                        }
+                    };
+                    let Some(((a, na), (b, nb))) = pair else {
+                        ok = false;
+                        continue;
+                    };
+                    if na != nb {
+                        self.error(E_VALUE, v2.span(), format!("{w}: both ends need the same number of components"), "different sizes");
+                        ok = false;
+                        continue;
+                    }
+                    components = na;
+                    source = Some(if key(k) == "random" {
+                        InstanceSource::Random { lo: a, hi: b, seed: 0 }
+                    } else {
+                        InstanceSource::Sequence { start: a, step: b }
+                    });
+                }
+                "seed" => match self.uint(v2, &w, 0, u32::MAX) {
+                    Some(n) => seed = Some((n, k.span())),
+                    None => ok = false,
+                },
+                other => {
+                    self.unknown_key(other, k.span(), "in an instance attribute", INSTANCE_ATTRIBUTE_KEYS);
+                    ok = false;
+                }
+            }
+        }
+        if sources != 1 {
+            if ok {
+                let (code, msg) = if sources == 0 {
+                    (E_MISSING, format!("{what} needs one of `values`, `random`, `sequence`"))
+                } else {
+                    (E_CONFLICT, format!("{what} has more than one of `values`, `random`, `sequence`"))
+                };
+                self.error(code, v.span(), msg, "one source needed");
+            }
+            return None;
+        }
+        match (&mut source, seed) {
+            (Some(InstanceSource::Random { seed: s, .. }), Some((n, _))) => *s = n,
+            (_, Some((_, span))) => {
+                self.error(E_CONFLICT, span, format!("{what}: `seed` only applies to `random`"), "not random");
+                ok = false;
+            }
+            _ => {}
+        }
+        let source = source?;
+        ok.then_some(InstanceAttribute { input: input.to_string(), input_span, source, components })
+    }
+
+    /// A number or an array of 1–4 numbers: (padded value, component count).
+    fn vector(&mut self, v: &Val<'_>, what: &str) -> Option<([f32; 4], usize)> {
+        match v.get_ref() {
+            DeValue::Array(items) if (1..=4).contains(&items.len()) => {
+                let mut out = [0.0f32; 4];
+                let mut ok = true;
+                for (slot, item) in out.iter_mut().zip(items.iter()) {
+                    match self.float(item, what) {
+                        Some(x) => *slot = x,
+                        None => ok = false,
+                    }
+                }
+                ok.then_some((out, items.len()))
+            }
+            DeValue::Array(_) => {
+                self.wrong_type(v, what, "a number or 1 to 4 numbers");
+                None
+            }
+            _ => self.float(v, what).map(|x| ([x, 0.0, 0.0, 0.0], 1)),
+        }
     }
 }
 
