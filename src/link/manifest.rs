@@ -453,15 +453,15 @@ fn default(
         }
     }
     if let Some(span) = &u.range_span {
-        if !shape.is_scalar_number() {
+        if !shape.takes_range() {
             out.push(
                 Diagnostic::error(
                     E_MANIFEST_RANGE,
-                    format!("`range` needs a scalar number, but `{shown}` is a `{tt}`"),
+                    format!("`range` needs a number or a vector of numbers, but `{shown}` is a `{tt}`"),
                 )
-                .at(mf, span.clone(), "a range on a non-scalar uniform")
+                .at(mf, span.clone(), "a range on a uniform that is not a number or vector")
                 .with_label(decl.file(), decl.span(), decl_label.clone())
-                .with_note("`range` bounds one number (`float`, `int`, `uint` or `double`)")
+                .with_note("`range` bounds a number (`float`, `int`, `uint`, `double`) or each component of a numeric vector")
                 .with_help("remove `range` from this entry"),
             );
         }

@@ -36,7 +36,7 @@
 //! | `E0220` | error    | a `[uniforms]` entry names no declared uniform |
 //! | `E0221` | error    | a `[uniforms]` default does not fit the declared type |
 //! | `E0222` | error    | a `semantic` provides a type the uniform is not declared with |
-//! | `E0223` | error    | `range` on a uniform that is not a scalar number |
+//! | `E0223` | error    | `range` on a uniform that is not a number or a numeric vector |
 //! | `E0224` | error    | a `[textures]` entry names no sampler uniform |
 //! | `E0225` | error    | a `[uniforms]` path (`a[2]`, `s.field`) does not fit the declaration |
 //! | `E0226` | error    | a texture's kind (`2d` / `cube`) does not match its sampler's type |

@@ -75,9 +75,18 @@ impl Shape {
         }
     }
 
-    /// Scalar numbers (`float`, `int`, `uint`, `double`), the only types `range` applies to.
+    /// Scalar numbers (`float`, `int`, `uint`, `double`).
     pub fn is_scalar_number(&self) -> bool {
         matches!(self, Shape::Scalar(s) if *s != Scalar::Bool)
+    }
+
+    /// Numbers and vectors of numbers: the types `range` applies to (a vector's range
+    /// bounds each component).
+    pub fn takes_range(&self) -> bool {
+        match self {
+            Shape::Vector(s, _) => *s != Scalar::Bool,
+            other => other.is_scalar_number(),
+        }
     }
 
     /// What a value of this shape looks like, for "expected …" messages.

@@ -112,13 +112,13 @@ fn values_of_every_shape() {
 #[test]
 fn semantic_and_range_must_fit_the_type() {
     let f = frag(
-        "uniform vec2 t;\nuniform vec3 tint;\nuniform float time;",
-        "fragColor = vec4(t, tint.x, time);",
+        "uniform vec2 t;\nuniform bvec3 tint;\nuniform float time;",
+        "fragColor = vec4(t, float(tint.x), time);",
     );
     let s = Setup::new(
         VERT,
         &f,
-        "[uniforms]\nt = { semantic = \"time\" }\ntint = { value = [1.0, 1.0, 1.0], range = [0.0, 1.0] }\ntime = { semantic = \"time\" }\n",
+        "[uniforms]\nt = { semantic = \"time\" }\ntint = { value = [true, true, true], range = [0.0, 1.0] }\ntime = { semantic = \"time\" }\n",
     );
     let diags = s.check();
     assert_eq!(codes(&diags), ["E0222", "E0223"], "{diags:#?}");
@@ -299,4 +299,21 @@ fn sampler_arrays_and_struct_samplers_need_textures_not_values() {
         t.message,
         "sampler `material.diffuse` has no entry in [textures]"
     );
+}
+
+#[test]
+fn range_applies_to_numbers_and_numeric_vectors_only() {
+    let f = frag(
+        "uniform vec3 tint;\nuniform mat2 warp;\nuniform bvec2 flags;",
+        "fragColor = vec4(tint * (warp * uv).x, float(flags.x));",
+    );
+    let s = Setup::new(
+        VERT,
+        &f,
+        "[uniforms]\ntint = { value = [1, 0.5, 0], range = [0, 1] }\nwarp = { value = [1, 0, 0, 1], range = [0, 1] }\nflags = { value = [true, false], range = [0, 1] }\n",
+    );
+    let diags = s.check();
+    let ranges: Vec<&Diagnostic> = diags.iter().filter(|d| d.code == "E0223").collect();
+    assert_eq!(ranges.len(), 2, "mat2 and bvec2 take no range; vec3 does: {diags:#?}");
+    assert!(ranges.iter().all(|d| !d.message.contains("`tint`")), "{diags:#?}");
 }
