@@ -54,7 +54,7 @@ fn request(manifest: &Path, size: u32, frames: u32, out: PathBuf) -> Request {
         inputs: vec![manifest.to_path_buf()],
         stage: None,
         front: FrontOptions::default(),
-        back: TranslateOptions { gl_depth: true, widen_outputs: true },
+        back: TranslateOptions::for_rendering(true),
         frames: Some(frames),
         step: Step::Default,
         start: 0.0,
@@ -90,12 +90,12 @@ fn effectc_steady_ms(manifest: &Path, size: u32, frames: u32) -> f64 {
 fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
     let (outcome, checked) = check_inputs(&[manifest.to_path_buf()], None, FrontOptions::default());
     let c = &checked[0];
-    let t = effectc::translate::translate_checked(c, &outcome, TranslateOptions { gl_depth: true, widen_outputs: true })
+    let t = effectc::translate::translate_checked(c, &outcome, TranslateOptions::for_rendering(true))
         .expect("checks")
         .expect("translates");
     let wgsl = String::from_utf8(effectc::back::emit(&t, BackTarget::Wgsl).unwrap().remove(0).bytes).unwrap();
     let input =
-        SceneInput { translation: &t, wgsl: &wgsl, program: c.program.as_ref().unwrap(), effect: c.effect.as_ref(), mode: ColorMode::Unorm8 };
+        SceneInput { translation: &t, wgsl: &wgsl, program: c.program.as_ref().unwrap(), effect: c.effect.as_ref(), mode: ColorMode::Unorm8, flipped_y: true };
     let mut scene = Scene::new(gpu, &input).expect("scene");
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: None,

@@ -47,7 +47,7 @@ fn render(args: RenderArgs) -> ExitCode {
         inputs: c.inputs.clone(),
         stage: c.stage.map(Into::into),
         front: FrontOptions { strict: c.strict },
-        back: TranslateOptions { gl_depth: !args.keep_gl_depth, widen_outputs: true },
+        back: TranslateOptions::for_rendering(!args.keep_gl_depth),
         frames: args.frames,
         step,
         start: args.start,
@@ -108,7 +108,7 @@ fn translate(args: TranslateArgs) -> ExitCode {
         inputs: c.inputs.clone(),
         stage: c.stage.map(Into::into),
         front: FrontOptions { strict: c.strict },
-        back: TranslateOptions { gl_depth: !args.keep_gl_depth, widen_outputs: false },
+        back: TranslateOptions { gl_depth: !args.keep_gl_depth, ..TranslateOptions::default() },
         targets,
         out: args.out.clone(),
     };

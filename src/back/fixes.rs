@@ -7,7 +7,8 @@
 //!   centre sampling), so a flattened interface block member (sampling `None`) and a plain
 //!   varying (`Center`) agree and wgpu builds the pipeline.
 //! - GL clip-space depth (z in [-w, w]) is mapped to WebGPU/Vulkan's (z in [0, w]) at the end
-//!   of the vertex stage, so a GL projection matrix keeps its near and far planes.
+//!   of the vertex stage, so a GL projection matrix keeps its near and far planes. For
+//!   rendering, clip y is also negated so the framebuffer runs bottom-up as GL's does.
 //! - For rendering only: fragment colour outputs narrower than four components (`out vec3
 //!   color`) are widened to four (missing colour 0, alpha 1), because a WebGPU colour target
 //!   needs as many components from the shader as its format has; GL writes the narrower
@@ -129,9 +130,16 @@ pub fn name_uniform_block(module: &mut Module, block_type: &str) {
     }
 }
 
-/// Maps GL clip-space depth to WebGPU's at every `return` of the vertex entry point:
-/// `position.z = (position.z + position.w) * 0.5`. Returns whether a position was found.
-pub fn gl_to_webgpu_depth(module: &mut Module) -> bool {
+/// Maps GL clip space to WebGPU's at every `return` of the vertex entry point.
+/// `depth`: `position.z = (position.z + position.w) * 0.5` (GL's z in [-w, w] to [0, w]).
+/// `flip_y`: `position.y = -position.y`, for rendering upside down so that the framebuffer
+/// rows run bottom-up as in GL: `gl_FragCoord.y` and `dFdy` then agree with GL (the
+/// renderer flips the rows back on readback and treats clockwise faces as front faces).
+/// Returns whether a position was found.
+pub fn adjust_clip_position(module: &mut Module, depth: bool, flip_y: bool) -> bool {
+    if !(depth || flip_y) {
+        return false;
+    }
     let mut done = false;
     for ep in module.entry_points.iter_mut().filter(|e| e.stage == naga::ShaderStage::Vertex) {
         let Some(result) = &ep.function.result else { continue };
@@ -151,12 +159,17 @@ pub fn gl_to_webgpu_depth(module: &mut Module) -> bool {
             let mut add = |e| f.expressions.append(e, Span::UNDEFINED);
             let x = add(Expression::AccessIndex { base: pos, index: 0 });
             let first = x;
-            let y = add(Expression::AccessIndex { base: pos, index: 1 });
-            let z = add(Expression::AccessIndex { base: pos, index: 2 });
+            let mut y = add(Expression::AccessIndex { base: pos, index: 1 });
+            let mut z = add(Expression::AccessIndex { base: pos, index: 2 });
             let w = add(Expression::AccessIndex { base: pos, index: 3 });
-            let sum = add(Expression::Binary { op: BinaryOperator::Add, left: z, right: w });
-            let new_z = add(Expression::Binary { op: BinaryOperator::Multiply, left: sum, right: half });
-            let new_pos = add(Expression::Compose { ty: vec4, components: vec![x, y, new_z, w] });
+            if depth {
+                let sum = add(Expression::Binary { op: BinaryOperator::Add, left: z, right: w });
+                z = add(Expression::Binary { op: BinaryOperator::Multiply, left: sum, right: half });
+            }
+            if flip_y {
+                y = add(Expression::Unary { op: naga::UnaryOperator::Negate, expr: y });
+            }
+            let new_pos = add(Expression::Compose { ty: vec4, components: vec![x, y, z, w] });
             // Expressions may only refer to earlier ones: compose a new result.
             let mut new_components = components.clone();
             new_components[index] = new_pos;
@@ -350,9 +363,14 @@ mod tests {
     fn gl_depth_is_mapped_to_webgpu_depth() {
         let src = "#version 450\nlayout(location=0) in vec4 p;\nvoid main() { gl_Position = p; }\n";
         let mut m = module(src, naga::ShaderStage::Vertex);
-        assert!(gl_to_webgpu_depth(&mut m));
+        assert!(adjust_clip_position(&mut m, true, false));
         let out = wgsl(&m).unwrap();
         assert!(out.contains("* 0.5f"), "{out}");
+        assert!(!out.contains("-("), "no flip asked: {out}");
+        let mut flipped = module(src, naga::ShaderStage::Vertex);
+        assert!(adjust_clip_position(&mut flipped, true, true));
+        let out = wgsl(&flipped).unwrap();
+        assert!(out.contains("-("), "y negated: {out}");
         naga::compact::compact(&mut m, naga::compact::KeepUnused::No);
         wgsl(&m).unwrap();
     }

@@ -74,11 +74,21 @@ pub struct TranslateOptions {
     pub gl_depth: bool,
     /// Widen fragment colour outputs to four components (for rendering into RGBA targets).
     pub widen_outputs: bool,
+    /// Negate clip y so the framebuffer runs bottom-up like GL's (`gl_FragCoord.y`, `dFdy`
+    /// as in GL); the renderer flips rows back and treats clockwise faces as front faces.
+    pub flip_y: bool,
 }
 
 impl Default for TranslateOptions {
     fn default() -> Self {
-        TranslateOptions { gl_depth: true, widen_outputs: false }
+        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false }
+    }
+}
+
+impl TranslateOptions {
+    /// What `effectc render` translates with: the render-only adaptations on.
+    pub fn for_rendering(gl_depth: bool) -> Self {
+        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true }
     }
 }
 
@@ -160,9 +170,7 @@ pub fn translate(
     })?;
     fixes::normalize_interpolation(&mut module);
     fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
-    if options.gl_depth {
-        fixes::gl_to_webgpu_depth(&mut module);
-    }
+    fixes::adjust_clip_position(&mut module, options.gl_depth, options.flip_y);
     if options.widen_outputs {
         fixes::widen_fragment_outputs(&mut module);
     }

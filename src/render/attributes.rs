@@ -231,16 +231,14 @@ mod tests {
         assert_eq!(by_name("instanceMatrix"), None);
     }
 
+    /// A vertex input as the reflection describes it.
+    fn input(location: u32, name: &str, format: &str) -> InterfaceVar {
+        InterfaceVar { location, name: name.into(), wgsl_type: String::new(), format: Some(format.into()), interpolation: None }
+    }
+
     #[test]
     fn inputs_are_matched_explicitly_then_by_name_then_by_location() {
         let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Cube);
-        let input = |location, name: &str, format: &str| InterfaceVar {
-            location,
-            name: name.into(),
-            wgsl_type: String::new(),
-            format: Some(format.into()),
-            interpolation: None,
-        };
         let inputs = [input(0, "p0", "float32x3"), input(1, "weird", "float32x2"), input(2, "aNormal", "float32x3")];
         let explicit = vec![("p0".to_string(), "position".to_string())];
         let c = choose(&inputs, &explicit, &mesh);
@@ -256,13 +254,6 @@ mod tests {
     #[test]
     fn instance_attributes_are_interleaved_per_instance_and_deterministic() {
         use crate::manifest::{InstanceAttribute, InstanceSource, InstancesDecl};
-        let input = |location, name: &str, format: &str| InterfaceVar {
-            location,
-            name: name.into(),
-            wgsl_type: String::new(),
-            format: Some(format.into()),
-            interpolation: None,
-        };
         let inputs = [input(0, "aPos", "float32x3"), input(2, "aOffset", "float32x3"), input(3, "aSize", "float32")];
         let decl = InstancesDecl {
             span: 0..0,

@@ -168,7 +168,7 @@ pub fn run(request: &Request) -> RunResult {
             continue;
         }
         let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        let input = SceneInput { translation: &translation, wgsl: &wgsl, program, effect, mode };
+        let input = SceneInput { translation: &translation, wgsl: &wgsl, program, effect, mode, flipped_y: request.back.flip_y };
         let mut scene = match Scene::new(gpu, &input) {
             Ok(s) => s,
             Err(diags) => {

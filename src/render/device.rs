@@ -116,6 +116,7 @@ impl Gpu {
             depth: None,
             depth_write: true,
             cull: None,
+            front_face: wgpu::FrontFace::Ccw,
             fragment: reflection.entry_points.iter().any(|e| e.name == "fs_main"),
         };
         self.pipeline(&spec)
@@ -164,7 +165,7 @@ impl Gpu {
                 compilation_options: Default::default(),
                 buffers: &buffers,
             },
-            primitive: wgpu::PrimitiveState { cull_mode: spec.cull, ..Default::default() },
+            primitive: wgpu::PrimitiveState { cull_mode: spec.cull, front_face: spec.front_face, ..Default::default() },
             depth_stencil: spec.depth.map(|format| wgpu::DepthStencilState {
                 format,
                 depth_write_enabled: Some(spec.depth_write),
@@ -207,6 +208,8 @@ pub struct PipelineSpec<'a> {
     pub depth: Option<wgpu::TextureFormat>,
     pub depth_write: bool,
     pub cull: Option<wgpu::Face>,
+    /// Counter-clockwise as in GL; clockwise when the translation flipped clip y.
+    pub front_face: wgpu::FrontFace,
     /// The module has `fs_main`.
     pub fragment: bool,
 }

@@ -57,6 +57,8 @@ pub struct Target {
     pub mode: ColorMode,
     colors: Vec<Option<wgpu::TextureView>>,
     color0: wgpu::Texture,
+    /// Rows arrive bottom-up (the scene was translated with clip y negated).
+    bottom_up: bool,
     depth: Option<wgpu::TextureView>,
     readback: wgpu::Buffer,
     padded_row: u32,
@@ -118,7 +120,7 @@ impl Target {
             }),
             period_ns: f64::from(gpu.queue.get_timestamp_period()),
         });
-        Target { width, height, mode, colors, color0, depth, readback, padded_row, timestamps }
+        Target { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps }
     }
 
     /// How [`Frame::gpu_ms`] is measured on this target.
@@ -266,13 +268,15 @@ fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError> {
     Ok(bytes)
 }
 
-/// Drops the row padding of the readback.
+/// Drops the row padding of the readback and returns the rows top first.
 fn unpad(bytes: &[u8], target: &Target) -> Pixels {
     let bpp = target.mode.format().block_copy_size(None).unwrap_or(4) as usize;
     let row = target.width as usize * bpp;
-    let mut out = Vec::with_capacity(row * target.height as usize);
-    for y in 0..target.height as usize {
-        let start = y * target.padded_row as usize;
+    let height = target.height as usize;
+    let mut out = Vec::with_capacity(row * height);
+    for y in 0..height {
+        let source_row = if target.bottom_up { height - 1 - y } else { y };
+        let start = source_row * target.padded_row as usize;
         out.extend_from_slice(&bytes[start..start + row]);
     }
     match target.mode {

@@ -87,6 +87,8 @@ pub struct Scene {
     pub warnings: Vec<Diagnostic>,
     /// A one-line description of the mesh and its attributes, for `--verbose`.
     pub describe: String,
+    /// Framebuffer rows run bottom-up (clip y negated): readback flips them.
+    pub flipped_y: bool,
 }
 
 /// What a scene is built from.
@@ -96,6 +98,8 @@ pub struct SceneInput<'a> {
     pub program: &'a CompiledProgram,
     pub effect: Option<&'a Effect>,
     pub mode: ColorMode,
+    /// The translation negated clip y (`TranslateOptions::flip_y`).
+    pub flipped_y: bool,
 }
 
 impl Scene {
@@ -146,6 +150,9 @@ impl Scene {
                 Cull::Back => Some(wgpu::Face::Back),
                 Cull::Front => Some(wgpu::Face::Front),
             },
+            // Translated with clip y negated: GL's counter-clockwise front faces arrive
+            // clockwise in the framebuffer.
+            front_face: if input.flipped_y { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
             fragment: r.entry_points.iter().any(|e| e.name == "fs_main"),
         };
         let pipeline = gpu.pipeline(&spec).map_err(|e| vec![pipeline_error(first_file, &e)])?;
@@ -219,6 +226,7 @@ impl Scene {
             model: input.effect.map(|e| e.model.clone()).unwrap_or_default(),
             warnings,
             describe,
+            flipped_y: input.flipped_y,
         })
     }
 }

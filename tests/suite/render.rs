@@ -195,6 +195,21 @@ fn a_generated_cube_map_is_reflected_and_camera_keys_move_the_view() {
 }
 
 #[test]
+fn gl_fragcoord_and_dfdy_follow_gl_conventions() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "fragcoord");
+    let out = effectc(&["render", "tests/render/fragcoord", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let frame = png(&dir.join("fragcoord_0000.png"));
+    let px = |x: usize, y: usize| -> [u8; 4] { frame[(y * 32 + x) * 4..][..4].try_into().unwrap() };
+    // PNG rows run top-down: row 31 is GL's bottom row.
+    assert_eq!(px(16, 31), [255, 255, 255, 255], "bottom: gl_FragCoord low, dFdy up, uv low");
+    assert_eq!(px(16, 0), [0, 255, 0, 255], "top: gl_FragCoord high, dFdy up, uv high");
+}
+
+#[test]
 fn a_missing_adapter_is_a_clear_usage_error() {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_effectc"))
         .args(["render", "effects/sun/effect.toml", "--out"])
