@@ -12,6 +12,8 @@ pub struct Gpu {
     pub info: wgpu::AdapterInfo,
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
+    /// Errors raised outside an error scope (wgpu's default would panic); see [`Gpu::take_error`].
+    uncaptured: std::sync::Arc<std::sync::Mutex<Vec<String>>>,
 }
 
 /// Why no device could be created.
@@ -74,7 +76,22 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|e| NoGpu(format!("the adapter `{}` refused a device: {e}", info.name)))?;
-        Ok(Gpu { adapter, info, device, queue })
+        let uncaptured = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+        let sink = uncaptured.clone();
+        device.on_uncaptured_error(std::sync::Arc::new(move |e: wgpu::Error| {
+            if let Ok(mut errors) = sink.lock() {
+                errors.push(e.to_string());
+            }
+        }));
+        Ok(Gpu { adapter, info, device, queue, uncaptured })
+    }
+
+    /// The first error wgpu raised outside an error scope since the last call, if any.
+    pub fn take_error(&self) -> Option<String> {
+        let mut errors = self.uncaptured.lock().ok()?;
+        let first = errors.first().cloned();
+        errors.clear();
+        first
     }
 
     /// Whether colour targets of `format` can blend on this device.

@@ -225,6 +225,9 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState,
         }
         None => wall.as_secs_f64() * 1e3,
     };
+    if let Some(e) = gpu.take_error() {
+        return Err(FrameError::Device(e));
+    }
     let pixels = unpad(&bytes, target);
     cpu += unpack_start.elapsed();
     Ok(Frame { pixels, gpu_ms, cpu_ms: cpu.as_secs_f64() * 1e3 })
