@@ -461,13 +461,13 @@ fn view_dimension(b: &BindingInfo) -> wgpu::TextureViewDimension {
     }
 }
 
-/// Uploads `image` as the binding's kind of texture (a 2D image fills every layer a 2D
-/// array or cube needs; a 3D texture gets one slice).
+/// Uploads `image` as the binding's kind of texture, with a full mipmap chain for 2D and
+/// cube textures (as `glGenerateMipmap` would make; sampled with trilinear filtering).
+/// A 2D image fills every layer a 2D array or cube needs; a 3D texture gets one slice.
 fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
     let dim = view_dimension(b);
     let layers = match dim {
-        wgpu::TextureViewDimension::Cube => 6,
-        wgpu::TextureViewDimension::CubeArray => 6,
+        wgpu::TextureViewDimension::Cube | wgpu::TextureViewDimension::CubeArray => 6,
         _ => image.layers.max(1),
     };
     let (dimension, depth) = match dim {
@@ -475,34 +475,39 @@ fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
         wgpu::TextureViewDimension::D3 => (wgpu::TextureDimension::D3, 1),
         _ => (wgpu::TextureDimension::D2, layers),
     };
+    let mipmapped = dimension == wgpu::TextureDimension::D2;
+    let mut levels = vec![image.clone()];
+    if mipmapped {
+        levels.extend(image.mip_chain());
+    }
     let height = if dimension == wgpu::TextureDimension::D1 { 1 } else { image.height };
-    let size = wgpu::Extent3d { width: image.width, height, depth_or_array_layers: depth };
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(&b.name),
-        size,
-        mip_level_count: 1,
+        size: wgpu::Extent3d { width: image.width, height, depth_or_array_layers: depth },
+        mip_level_count: levels.len() as u32,
         sample_count: 1,
         dimension,
         format: wgpu::TextureFormat::Rgba8Unorm,
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
     });
-    let layer_bytes = (image.width * image.height * 4) as usize;
-    for layer in 0..depth {
-        let source = (layer % image.layers.max(1)) as usize;
-        let Some(data) = image.rgba8.get(source * layer_bytes..(source + 1) * layer_bytes) else { continue };
-        let rows = if dimension == wgpu::TextureDimension::D1 { &data[..(image.width * 4) as usize] } else { data };
-        gpu.queue.write_texture(
-            wgpu::TexelCopyTextureInfo {
-                texture: &texture,
-                mip_level: 0,
-                origin: wgpu::Origin3d { x: 0, y: 0, z: layer },
-                aspect: wgpu::TextureAspect::All,
-            },
-            rows,
-            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(image.width * 4), rows_per_image: Some(height) },
-            wgpu::Extent3d { width: image.width, height, depth_or_array_layers: 1 },
-        );
+    for (mip, level) in levels.iter().enumerate() {
+        let level_height = if dimension == wgpu::TextureDimension::D1 { 1 } else { level.height };
+        for layer in 0..depth {
+            let Some(data) = level.layer(layer % level.layers.max(1)) else { continue };
+            let rows = &data[..(level.width * level_height * 4) as usize];
+            gpu.queue.write_texture(
+                wgpu::TexelCopyTextureInfo {
+                    texture: &texture,
+                    mip_level: mip as u32,
+                    origin: wgpu::Origin3d { x: 0, y: 0, z: layer },
+                    aspect: wgpu::TextureAspect::All,
+                },
+                rows,
+                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(level.width * 4), rows_per_image: Some(level_height) },
+                wgpu::Extent3d { width: level.width, height: level_height, depth_or_array_layers: 1 },
+            );
+        }
     }
     texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
 }
@@ -582,7 +587,10 @@ fn sampler(gpu: &Gpu, filter: Filter, wrap: Wrap, comparison: bool) -> wgpu::Sam
         address_mode_w: address,
         mag_filter: mode,
         min_filter: mode,
-        mipmap_filter: wgpu::MipmapFilterMode::Nearest,
+        mipmap_filter: match filter {
+            Filter::Linear => wgpu::MipmapFilterMode::Linear,
+            Filter::Nearest => wgpu::MipmapFilterMode::Nearest,
+        },
         compare: comparison.then_some(wgpu::CompareFunction::LessEqual),
         ..Default::default()
     })

@@ -70,6 +70,43 @@ impl TexelImage {
         let texel = self.layer(layer)?.get(start..start + 4)?;
         Some([texel[0], texel[1], texel[2], texel[3]])
     }
+
+    /// The next mipmap level: half the size (at least 1), every texel the box-filtered mean
+    /// of the 2×2 (or, at an odd edge, 1×2 / 2×1) texels it covers, per layer — what
+    /// `glGenerateMipmap` produces.
+    pub fn half(&self) -> TexelImage {
+        let (w, h) = ((self.width / 2).max(1), (self.height / 2).max(1));
+        let mut rgba8 = Vec::with_capacity(w as usize * h as usize * 4 * self.layers as usize);
+        for layer in 0..self.layers {
+            for row in 0..h {
+                for column in 0..w {
+                    let mut sum = [0u32; 4];
+                    let mut n = 0;
+                    for (dc, dr) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                        let (c, r) = ((column * 2 + dc).min(self.width - 1), (row * 2 + dr).min(self.height - 1));
+                        if let Some(t) = self.texel(layer, c, r) {
+                            for (s, v) in sum.iter_mut().zip(t) {
+                                *s += u32::from(v);
+                            }
+                            n += 1;
+                        }
+                    }
+                    rgba8.extend(sum.map(|s| ((s + n / 2) / n.max(1)) as u8));
+                }
+            }
+        }
+        TexelImage { width: w, height: h, layers: self.layers, rgba8 }
+    }
+
+    /// Mipmap levels after this one, down to 1×1.
+    pub fn mip_chain(&self) -> Vec<TexelImage> {
+        let mut levels: Vec<TexelImage> = Vec::new();
+        while levels.last().map_or((self.width, self.height), |l| (l.width, l.height)) != (1, 1) {
+            let next = levels.last().unwrap_or(self).half();
+            levels.push(next);
+        }
+        levels
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -960,5 +997,20 @@ mod tests {
         std::fs::remove_file(&paths[5]).expect("remove");
         let err = load_faces(&paths).expect_err("missing face");
         assert!(err.contains("-z") && err.contains("face5.png"), "{err}");
+    }
+
+    #[test]
+    fn mipmaps_halve_down_to_one_texel_and_average() {
+        let image = generate(Generator::Checker, 8, &GeneratorParams { cells: 8, ..Default::default() }, TextureKind::D2);
+        let chain = image.mip_chain();
+        let sizes: Vec<(u32, u32)> = chain.iter().map(|l| (l.width, l.height)).collect();
+        assert_eq!(sizes, vec![(4, 4), (2, 2), (1, 1)]);
+        // A one-texel checker of white and black averages to mid grey at the first level.
+        let t = chain[0].texel(0, 0, 0).unwrap();
+        assert!((126..=129).contains(&t[0]), "{t:?}");
+        let odd = TexelImage { width: 3, height: 1, layers: 1, rgba8: vec![0, 0, 0, 255, 255, 255, 255, 255, 90, 90, 90, 255] };
+        assert_eq!(odd.mip_chain().iter().map(|l| (l.width, l.height)).collect::<Vec<_>>(), vec![(1, 1)]);
+        let cube = generate(Generator::Gradient, 4, &GeneratorParams::default(), TextureKind::Cube);
+        assert!(cube.mip_chain().iter().all(|l| l.layers == 6 && l.rgba8.len() == l.layer_len() * 6));
     }
 }
