@@ -157,7 +157,7 @@ mod tests {
         let (progs, diags) = collect(&[v.clone(), f.clone()], None);
         assert!(diags.is_empty());
         assert_eq!(progs.len(), 1);
-        let (progs, _) = collect(&[dir.clone()], None);
+        let (progs, _) = collect(std::slice::from_ref(&dir), None);
         assert_eq!(progs.len(), 2, "directory groups by stem: a and b");
         let (_, diags) = collect(&[dir.join("missing.frag")], None);
         assert_eq!(diags[0].code, E_INPUT_IO);

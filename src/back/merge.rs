@@ -249,7 +249,7 @@ impl<'a> Importer<'a> {
         }
         let span = self.src.global_variables.get_span(h);
         Ok(self.dst.global_variables.append(
-            GlobalVariable { name: g.name.clone(), space: g.space, binding: g.binding.clone(), ty, init, memory_decorations: g.memory_decorations },
+            GlobalVariable { name: g.name.clone(), space: g.space, binding: g.binding, ty, init, memory_decorations: g.memory_decorations },
             span,
         ))
     }

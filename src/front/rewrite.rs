@@ -529,7 +529,7 @@ impl Ctx<'_> {
             for (i, m) in self.plan.members.iter().enumerate() {
                 let is_struct = self.plan.struct_members.contains_key(&m.block_ty.base);
                 if is_struct {
-                    while offset % 16 != 0 {
+                    while !offset.is_multiple_of(16) {
                         filler(&mut h, "uint", 4, &mut offset);
                     }
                 }

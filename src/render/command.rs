@@ -190,13 +190,13 @@ pub fn run(request: &Request) -> RunResult {
                 result.rendered.push(rendered);
             }
             Err(Stop::Hung(d)) => {
-                outcome.diagnostics.push(d);
+                outcome.diagnostics.push(*d);
                 result.hung = true;
                 // The device is still running the frame: dropping it would wait forever.
                 std::mem::forget(scene);
                 break;
             }
-            Err(Stop::Failed(d)) => outcome.diagnostics.push(d),
+            Err(Stop::Failed(d)) => outcome.diagnostics.push(*d),
         }
     }
     if result.hung {
@@ -259,8 +259,8 @@ struct FramePlan {
 }
 
 enum Stop {
-    Hung(Diagnostic),
-    Failed(Diagnostic),
+    Hung(Box<Diagnostic>),
+    Failed(Box<Diagnostic>),
 }
 
 /// A frame handed to the encoder thread.
@@ -316,18 +316,18 @@ fn draw_frames(
                     }
                 }
                 Err(FrameError::Timeout(t)) => {
-                    stop = Some(Stop::Hung(
+                    stop = Some(Stop::Hung(Box::new(
                         Diagnostic::error(E_TIMEOUT, format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()))
                             .in_file(file)
                             .with_note("a shader that never leaves a loop keeps the GPU busy forever")
                             .with_help("check the loop conditions, or raise --timeout for a very slow effect"),
-                    ));
+                    )));
                     break;
                 }
                 Err(FrameError::Device(e)) => {
-                    stop = Some(Stop::Failed(
+                    stop = Some(Stop::Failed(Box::new(
                         Diagnostic::error(E_FRAME, format!("frame {i} failed on the device")).in_file(file).with_note(e),
-                    ));
+                    )));
                     break;
                 }
             }

@@ -240,10 +240,8 @@ pub fn record_draw(pass: &mut wgpu::RenderPass<'_>, scene: &Scene) {
     for (group, bg) in &scene.bind_groups {
         pass.set_bind_group(*group, bg, &[]);
     }
-    let mut slot = 0;
-    for buffer in [&scene.vertex_buffer, &scene.instance_buffer].into_iter().flatten() {
-        pass.set_vertex_buffer(slot, buffer.slice(..));
-        slot += 1;
+    for (slot, buffer) in [&scene.vertex_buffer, &scene.instance_buffer].into_iter().flatten().enumerate() {
+        pass.set_vertex_buffer(slot as u32, buffer.slice(..));
     }
     match &scene.draw {
         Draw::Indexed { buffer, count } => {

@@ -262,7 +262,7 @@ fn buffer_init(gpu: &Gpu, label: &str, bytes: &[u8], usage: wgpu::BufferUsages) 
     use wgpu::util::DeviceExt;
     // Zero-sized buffers are invalid; a vertex stage without inputs still gets none.
     let padded;
-    let contents = if bytes.len() % 4 != 0 || bytes.is_empty() {
+    let contents = if !bytes.len().is_multiple_of(4) || bytes.is_empty() {
         let mut p = bytes.to_vec();
         p.resize(bytes.len().div_ceil(4).max(1) * 4, 0);
         padded = p;

@@ -1,7 +1,7 @@
 //! The `effectc` binary: exit codes (0 clean, 1 problems, 2 IO/usage), output formats,
 //! `--strict`, `--deny-warnings`, `--stage`, and how directories become programs.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use crate::common::{self, code, effectc, stdout};
 
