@@ -27,7 +27,7 @@ pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, String)], mesh: &Mes
     inputs
         .iter()
         .map(|input| {
-            let format = vertex_format(input.format.as_deref().unwrap_or("float32x4"));
+            let format = input_format(input);
             let given = explicit.iter().find(|(name, _)| *name == input.name).and_then(|(_, attr)| known(attr));
             let (attribute, guessed) = match given {
                 Some(a) => (Some(a), None),
@@ -93,6 +93,23 @@ pub struct Interleaved {
     pub attributes: Vec<wgpu::VertexAttribute>,
 }
 
+/// The wgpu format of a vertex input (from its reflected format name).
+pub fn input_format(input: &InterfaceVar) -> wgpu::VertexFormat {
+    vertex_format(input.format.as_deref().unwrap_or("float32x4"))
+}
+
+/// Attributes packed one after another in the given order, and the stride (at least 4
+/// bytes, so a buffer without attributes is still valid).
+pub fn packed_layout(inputs: impl Iterator<Item = (u32, wgpu::VertexFormat)>) -> (Vec<wgpu::VertexAttribute>, u64) {
+    let mut attributes = Vec::new();
+    let mut stride = 0u64;
+    for (shader_location, format) in inputs {
+        attributes.push(wgpu::VertexAttribute { format, offset: stride, shader_location });
+        stride += format.size();
+    }
+    (attributes, stride.max(4))
+}
+
 /// The per-instance buffer: every `[instances.attributes]` input, interleaved, one row per
 /// instance, in the formats the shader declares. Returns `None` when the manifest feeds no
 /// input per instance.
@@ -105,13 +122,7 @@ pub fn instance_buffer(inputs: &[InterfaceVar], decl: &crate::manifest::Instance
     if fed.is_empty() {
         return None;
     }
-    let mut attributes = Vec::new();
-    let mut stride = 0u64;
-    for (input, _) in &fed {
-        let format = vertex_format(input.format.as_deref().unwrap_or("float32x4"));
-        attributes.push(wgpu::VertexAttribute { format, offset: stride, shader_location: input.location });
-        stride += format.size();
-    }
+    let (attributes, stride) = packed_layout(fed.iter().map(|(input, _)| (input.location, input_format(input))));
     let mut bytes = Vec::with_capacity(decl.count as usize * stride as usize);
     for i in 0..decl.count {
         for ((_, a), attr) in fed.iter().zip(&attributes) {
@@ -150,13 +161,7 @@ fn unit_random(seed: u32, instance: u32, component: u32) -> f32 {
 
 /// Interleaves the chosen attributes of `mesh` in the formats the shader declares.
 pub fn interleave(choices: &[Choice], mesh: &Mesh) -> Interleaved {
-    let mut attributes = Vec::new();
-    let mut stride = 0u64;
-    for c in choices {
-        attributes.push(wgpu::VertexAttribute { format: c.format, offset: stride, shader_location: c.location });
-        stride += c.format.size();
-    }
-    let stride = stride.max(4);
+    let (attributes, stride) = packed_layout(choices.iter().map(|c| (c.location, c.format)));
     let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.and_then(|a| mesh.attribute(a))).collect();
     let count = mesh.vertex_count();
     let mut bytes = Vec::with_capacity(count * stride as usize);

@@ -235,8 +235,8 @@ fn device_limit_error(gpu: &Gpu, (w, h): (u32, u32), frames: u32, request: &Requ
         return Some(Diagnostic::error(E_LIMIT, format!("a {w}x{h} frame exceeds the adapter's limit of {max_side} per side")));
     }
     let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-    let needed = Target::bytes_needed(w, h, mode);
-    if needed > limits.max_buffer_size.saturating_mul(3) {
+    let needed = Target::readback_size(w, h, mode);
+    if needed > limits.max_buffer_size {
         return Some(Diagnostic::error(E_LIMIT, format!("a {w}x{h} frame needs {} MiB, beyond the adapter's buffers", needed >> 20)));
     }
     let kept = u64::from(w) * u64::from(h) * 4 * u64::from(frames);

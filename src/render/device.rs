@@ -114,17 +114,12 @@ impl Gpu {
     /// holding every vertex input (formats from the reflection) and one colour target per
     /// fragment output (Rgba8Unorm, or 32-bit integer formats for integer outputs).
     pub fn build_pipeline(&self, wgsl: &str, reflection: &Reflection) -> Result<wgpu::RenderPipeline, String> {
-        let mut attributes = Vec::new();
-        let mut stride = 0;
-        for v in &reflection.vertex_inputs {
-            let format = vertex_format(v.format.as_deref().unwrap_or("float32x4"));
-            attributes.push(wgpu::VertexAttribute { format, offset: stride, shader_location: v.location });
-            stride += format.size();
-        }
+        use crate::render::attributes::{input_format, packed_layout};
+        let (attributes, stride) = packed_layout(reflection.vertex_inputs.iter().map(|v| (v.location, input_format(v))));
         let spec = PipelineSpec {
             label: &reflection.effect,
             wgsl,
-            vertex_stride: stride.max(4),
+            vertex_stride: stride,
             attributes: &attributes,
             instance_stride: 0,
             instance_attributes: &[],

@@ -92,11 +92,10 @@ impl Target {
         let depth = scene
             .depth
             .then(|| texture(wgpu::TextureFormat::Depth32Float, attach, "depth").create_view(&Default::default()));
-        let bpp = mode.format().block_copy_size(None).unwrap_or(4);
-        let padded_row = (width * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let padded_row = padded_row(width, mode);
         let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
-            size: u64::from(padded_row) * u64::from(height),
+            size: Target::readback_size(width, height, mode),
             usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
             mapped_at_creation: false,
         });
@@ -132,11 +131,16 @@ impl Target {
         }
     }
 
-    /// Bytes the target and its readback occupy (for the size limit).
-    pub fn bytes_needed(width: u32, height: u32, mode: ColorMode) -> u64 {
-        let bpp = u64::from(mode.format().block_copy_size(None).unwrap_or(4));
-        u64::from(width) * u64::from(height) * bpp * 3
+    /// Bytes of the readback buffer: rows padded to wgpu's copy alignment.
+    pub fn readback_size(width: u32, height: u32, mode: ColorMode) -> u64 {
+        u64::from(padded_row(width, mode)) * u64::from(height)
     }
+}
+
+/// Bytes per readback row: `width` pixels rounded up to `COPY_BYTES_PER_ROW_ALIGNMENT`.
+fn padded_row(width: u32, mode: ColorMode) -> u32 {
+    let bpp = mode.format().block_copy_size(None).unwrap_or(4);
+    (width * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT
 }
 
 /// Renders one frame of `scene` for `state` into `target` and reads it back.

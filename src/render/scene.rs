@@ -461,15 +461,17 @@ fn view_dimension(b: &BindingInfo) -> wgpu::TextureViewDimension {
     }
 }
 
+/// Six layers for cube (array) views, `None` for the other dimensions.
+fn cube_layers(dim: wgpu::TextureViewDimension) -> Option<u32> {
+    matches!(dim, wgpu::TextureViewDimension::Cube | wgpu::TextureViewDimension::CubeArray).then_some(6)
+}
+
 /// Uploads `image` as the binding's kind of texture, with a full mipmap chain for 2D and
 /// cube textures (as `glGenerateMipmap` would make; sampled with trilinear filtering).
 /// A 2D image fills every layer a 2D array or cube needs; a 3D texture gets one slice.
 fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
     let dim = view_dimension(b);
-    let layers = match dim {
-        wgpu::TextureViewDimension::Cube | wgpu::TextureViewDimension::CubeArray => 6,
-        _ => image.layers.max(1),
-    };
+    let layers = cube_layers(dim).unwrap_or(image.layers.max(1));
     let (dimension, depth) = match dim {
         wgpu::TextureViewDimension::D1 => (wgpu::TextureDimension::D1, 1),
         wgpu::TextureViewDimension::D3 => (wgpu::TextureDimension::D3, 1),
@@ -515,7 +517,7 @@ fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
 /// A 1×1 depth texture cleared to 1.0 (everything lit, for shadow lookups).
 fn depth_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
     let dim = view_dimension(b);
-    let layers = if matches!(dim, wgpu::TextureViewDimension::Cube | wgpu::TextureViewDimension::CubeArray) { 6 } else { 1 };
+    let layers = cube_layers(dim).unwrap_or(1);
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(&b.name),
         size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: layers },
@@ -554,7 +556,7 @@ fn depth_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
 /// A 1×1 integer texture of zeros.
 fn integer_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
     let dim = view_dimension(b);
-    let layers = if matches!(dim, wgpu::TextureViewDimension::Cube | wgpu::TextureViewDimension::CubeArray) { 6 } else { 1 };
+    let layers = cube_layers(dim).unwrap_or(1);
     let format =
         if b.sample_type == Some("uint") { wgpu::TextureFormat::Rgba32Uint } else { wgpu::TextureFormat::Rgba32Sint };
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {

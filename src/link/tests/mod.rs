@@ -22,18 +22,10 @@ impl Program {
         let mut files = Files::new();
         let mut stages = Vec::new();
         for (kind, text) in sources {
-            let ext = match kind {
-                StageKind::Vertex => "vert",
-                StageKind::TessControl => "tesc",
-                StageKind::TessEval => "tese",
-                StageKind::Geometry => "geom",
-                StageKind::Fragment => "frag",
-                StageKind::Compute => "comp",
-            };
-            let id = files.add(format!("shader.{ext}"), *text);
+            let id = files.add(format!("shader.{}", kind.short_name()), *text);
             match analyse(id, text, *kind) {
                 Ok(s) => stages.push(s),
-                Err(e) => panic!("{ext} does not parse: {e:?}"),
+                Err(e) => panic!("{} does not parse: {e:?}", kind.short_name()),
             }
         }
         Program { files, stages }
