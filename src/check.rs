@@ -3,6 +3,7 @@
 //! One bad program never stops the others. The outcome says whether any input could not
 //! be read (exit 2) and holds every diagnostic for the emitters.
 
+use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
 use crate::diag::{Diagnostic, FileId, Files};
@@ -32,6 +33,18 @@ pub struct Checked {
     pub program: Option<CompiledProgram>,
     /// Errors were found in this program.
     pub failed: bool,
+    /// Multi-pass effects: every pass, in manifest order (`program` is then `None`).
+    pub passes: Vec<CheckedPass>,
+}
+
+/// One pass of a multi-pass effect, checked.
+#[derive(Debug)]
+pub struct CheckedPass {
+    pub name: String,
+    /// The single-pass effect the pass amounts to ([`Effect::pass_view`]), with the
+    /// top-level uniforms and textures narrowed to those the pass's stages declare.
+    pub view: Effect,
+    pub program: Option<CompiledProgram>,
 }
 
 /// Checks every program named by `inputs`.
@@ -79,8 +92,15 @@ pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outc
     let mut effect = None;
     let mut stage_files: Vec<(FileId, StageKind)> = Vec::new();
     let mut readable = true;
+    let mut passes = Vec::new();
     match input {
         ProgramInput::Manifest(path) => match manifest::load(path, &mut out.files) {
+            Ok(e) if e.is_multi_pass() => {
+                out.diagnostics.extend(e.warnings.iter().cloned());
+                passes = check_passes(&e, options, out);
+                dedup_from(&mut out.diagnostics, start);
+                effect = Some(e);
+            }
             Ok(e) => {
                 out.diagnostics.extend(e.warnings.iter().cloned());
                 for s in &e.stages {
@@ -120,5 +140,102 @@ pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outc
         out.diagnostics.extend(diags);
     }
     let failed = out.diagnostics[start..].iter().any(Diagnostic::is_error);
-    Checked { name: input.display_name(), effect, program, failed }
+    Checked { name: input.display_name(), effect, program, failed, passes }
+}
+
+/// Drops repeated diagnostics after `start` (two passes sharing a stage file report its
+/// findings once).
+fn dedup_from(diags: &mut Vec<Diagnostic>, start: usize) {
+    let mut seen: Vec<Diagnostic> = Vec::new();
+    let tail: Vec<Diagnostic> = diags.drain(start..).collect();
+    for d in tail {
+        if !seen.contains(&d) {
+            seen.push(d);
+        }
+    }
+    diags.extend(seen);
+}
+
+/// Checks every pass of a multi-pass effect, then the graph they form.
+fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Vec<CheckedPass> {
+    let mut read: HashMap<std::path::PathBuf, Option<FileId>> = HashMap::new();
+    let mut passes = Vec::new();
+    let mut syntaxes_of: Vec<Option<Vec<crate::front::syntax::StageSyntax>>> = Vec::new();
+    let mut used_uniforms: HashSet<String> = HashSet::new();
+    let mut used_textures: HashSet<String> = HashSet::new();
+    let mut all_declared = true;
+    for pass in &effect.passes {
+        let reused = match &pass.reuse {
+            None => None,
+            Some((path, span)) => match manifest::load(path, &mut out.files) {
+                Ok(r) if r.is_multi_pass() => {
+                    out.diagnostics.push(
+                        Diagnostic::error(manifest::E_CONFLICT, format!("pass `{}` reuses a multi-pass effect", pass.name))
+                            .at(effect.file, span.clone(), "has [[passes]] of its own")
+                            .with_help("reuse a single-pass effect, or copy its passes into this manifest"),
+                    );
+                    None
+                }
+                Ok(r) => Some(r),
+                Err(diags) => {
+                    out.io_error |= diags.iter().any(manifest::is_io_error);
+                    out.diagnostics.push(
+                        Diagnostic::error(manifest::E_VALUE, format!("pass `{}` reuses an effect that has errors", pass.name))
+                            .at(effect.file, span.clone(), "this effect"),
+                    );
+                    out.diagnostics.extend(diags);
+                    None
+                }
+            },
+        };
+        let mut view = effect.pass_view(pass, reused.as_ref());
+        if pass.reuse.is_some() && reused.is_none() {
+            passes.push(CheckedPass { name: pass.name.clone(), view, program: None });
+            syntaxes_of.push(None);
+            all_declared = false;
+            continue;
+        }
+        let mut stage_files = Vec::new();
+        let mut readable = true;
+        for s in &view.stages {
+            let id = *read
+                .entry(s.path.clone())
+                .or_insert_with(|| read_stage(&s.path, &mut out.files, &mut out.diagnostics, &mut out.io_error));
+            match id {
+                Some(id) => stage_files.push((id, s.kind)),
+                None => readable = false,
+            }
+        }
+        let mut program = None;
+        let mut syntaxes = None;
+        if readable && !stage_files.is_empty() {
+            let mut diags = Vec::new();
+            program = program::compile(&out.files, &stage_files, options, &mut diags);
+            if let Some(p) = &program {
+                let s: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
+                diags.extend(crate::link::check_interface(&s));
+                if pass.reuse.is_none() {
+                    let declared = crate::link::manifest::declared(&s);
+                    view.uniforms.retain(|u| pass.uniforms.iter().any(|p| p.name == u.name) || declared.has_uniform(&u.name));
+                    view.textures.retain(|t| declared.sampler(&t.name).is_some());
+                    used_uniforms.extend(view.uniforms.iter().map(|u| u.name.clone()));
+                    used_textures.extend(view.textures.iter().map(|t| t.name.clone()));
+                }
+                let bound: HashSet<String> = pass.samples.iter().map(|s| s.sampler.clone()).collect();
+                diags.extend(crate::link::check_pass_manifest(&view, &s, &out.files, &bound));
+                syntaxes = Some(s);
+            }
+            out.diagnostics.extend(diags);
+        }
+        all_declared &= syntaxes.is_some() || pass.reuse.is_some();
+        syntaxes_of.push(syntaxes);
+        passes.push(CheckedPass { name: pass.name.clone(), view, program });
+    }
+    if all_declared {
+        out.diagnostics.extend(crate::link::passes::unused_entries(effect, &used_uniforms, &used_textures));
+    }
+    let shaders: Vec<crate::link::passes::PassShaders<'_>> =
+        syntaxes_of.iter().map(|s| crate::link::passes::PassShaders { stages: s.as_deref() }).collect();
+    out.diagnostics.extend(crate::link::passes::check(effect, &shaders));
+    passes
 }

@@ -7,9 +7,13 @@
 //!    offset map → naga parse + validate.
 //! 4. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader uniforms.
 //! 5. [`check`]: all of the above per program, one bad program never stopping the others.
+//!    Multi-pass effects are checked pass by pass, then as a [`graph`] of passes and targets
+//!    (`link::passes`).
 //! 6. [`back`]: a clean program's stage modules → one merged, fixed, pruned module →
-//!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection; [`translate`] writes them.
-//! 7. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
+//!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection; [`translate`] writes them (per pass, for
+//!    the passes that reach the output).
+//! 8. [`render`]: wgpu headless: scenes, targets, frames, pass graphs (one scene per pass).
+//! 9. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
 //!    (human, JSON, GitHub annotations, SARIF).
 
 pub mod back;
@@ -17,6 +21,7 @@ pub mod check;
 pub mod cli;
 pub mod diag;
 pub mod front;
+pub mod graph;
 pub mod inputs;
 pub mod link;
 pub mod manifest;

@@ -43,7 +43,7 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
     let inputs = input_paths(&outcome, &request.inputs);
     let mut written = Vec::new();
     for c in &checked {
-        let Some(result) = translate_checked(c, &outcome, request.back) else { continue };
+      for (result, dir_name) in translate_units(c, &outcome, request.back) {
         let translation = match result {
             Ok(t) => t,
             Err(diags) => {
@@ -51,9 +51,8 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
                 continue;
             }
         };
-        let name = translation.name.clone();
-        let file = c.program.as_ref().map(|p| p.stages[0].syntax.file).unwrap_or(crate::diag::FileId(0));
-        let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&name));
+        let file = translation.file;
+        let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&dir_name));
         let mut files = Vec::new();
         for &target in &request.targets {
             let outputs = match emit_contained(&translation, target) {
@@ -75,9 +74,45 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
             }
         }
         written.push(Written { translation, dir, files });
+      }
     }
     crate::diag::sort(&mut outcome.diagnostics);
     (outcome, written)
+}
+
+/// The translations of a checked program, each with the directory name its files go to:
+/// one for a single-pass program, one per pass that reaches the output for a multi-pass
+/// effect (`<effect>.<pass>`, all in the effect's directory). None when check found errors.
+pub fn translate_units(c: &check::Checked, outcome: &Outcome, options: TranslateOptions) -> Vec<(Result<Translation, Vec<Diagnostic>>, String)> {
+    let Some(effect) = c.effect.as_ref().filter(|e| e.is_multi_pass()) else {
+        return translate_checked(c, outcome, options).map(|r| {
+            let dir = r.as_ref().map(|t| t.name.clone()).unwrap_or_default();
+            (r, dir)
+        }).into_iter().collect();
+    };
+    if c.failed {
+        return Vec::new();
+    }
+    let plan = crate::graph::plan(effect, (1, 1), false);
+    plan.running()
+        .filter_map(|i| {
+            let pass = &c.passes[i];
+            let program = pass.program.as_ref()?;
+            Some((translate_program(&pass.view.name, program, Some(&pass.view), options), effect.name.clone()))
+        })
+        .collect()
+}
+
+/// Translates one compiled program with naga panics contained.
+pub fn translate_program(
+    name: &str,
+    program: &crate::front::program::CompiledProgram,
+    effect: Option<&crate::manifest::Effect>,
+    options: TranslateOptions,
+) -> Result<Translation, Vec<Diagnostic>> {
+    let file = program.stages[0].syntax.file;
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| back::translate(name, program, effect, options)))
+        .unwrap_or_else(|_| Err(vec![panicked(file, "translation")]))
 }
 
 /// Translates a checked program; `None` when check found errors in it. naga panics are
@@ -85,10 +120,7 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
 pub fn translate_checked(c: &check::Checked, outcome: &Outcome, options: TranslateOptions) -> Option<Result<Translation, Vec<Diagnostic>>> {
     let (false, Some(program)) = (c.failed, &c.program) else { return None };
     let name = c.effect.as_ref().map(|e| e.name.clone()).unwrap_or_else(|| program_name(outcome, program));
-    let file = program.stages[0].syntax.file;
-    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| back::translate(&name, program, c.effect.as_ref(), options)))
-        .unwrap_or_else(|_| Err(vec![panicked(file, "translation")]));
-    Some(result)
+    Some(translate_program(&name, program, c.effect.as_ref(), options))
 }
 
 /// Emits one target under `catch_unwind` (naga's writers can panic).

@@ -101,6 +101,8 @@ pub struct Translation {
     /// Stages with an entry point, in pipeline order.
     pub stages: Vec<StageKind>,
     pub reflection: reflect::Reflection,
+    /// The program's first stage file (where program-wide diagnostics point).
+    pub file: crate::diag::FileId,
 }
 
 impl Translation {
@@ -183,7 +185,14 @@ pub fn translate(
         vec![internal(file, format!("the translated module does not validate: {}", e.as_inner()))]
     })?;
     let reflection = reflect::reflect(name, &module, &program.plan, effect, left_out);
-    Ok(Translation { name: name.to_string(), module, info, stages: modules.iter().map(|(k, _)| *k).collect(), reflection })
+    Ok(Translation {
+        name: name.to_string(),
+        module,
+        info,
+        stages: modules.iter().map(|(k, _)| *k).collect(),
+        reflection,
+        file: program.stages[0].syntax.file,
+    })
 }
 
 fn internal(file: crate::diag::FileId, message: String) -> Diagnostic {

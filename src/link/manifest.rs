@@ -237,7 +237,44 @@ fn texture_path(name: &str) -> String {
     }
 }
 
+/// What a set of stages declares that a manifest can name.
+#[derive(Debug, Default)]
+pub struct Declared {
+    /// Uniform names (loose uniforms and members of anonymous blocks).
+    pub uniforms: HashSet<String>,
+    /// Sampler paths (`tex`, `material.diffuse`) with their types.
+    pub samplers: Vec<(String, GlslType)>,
+}
+
+impl Declared {
+    /// Whether a `[uniforms]` entry (`lights[0].color`) names a uniform of these stages.
+    pub fn has_uniform(&self, entry: &str) -> bool {
+        let base = parse_path(entry).map_or(entry.to_string(), |(b, _)| b);
+        self.uniforms.contains(&base)
+    }
+    /// The type of the sampler a `[textures]` entry binds, when these stages declare it.
+    pub fn sampler(&self, entry: &str) -> Option<&GlslType> {
+        let path = texture_path(entry);
+        self.samplers.iter().find(|(p, _)| *p == path).map(|(_, t)| t)
+    }
+}
+
+/// The uniforms and samplers `stages` declare.
+pub fn declared(stages: &[StageSyntax]) -> Declared {
+    let decls = Decls::collect(stages);
+    Declared {
+        uniforms: decls.list.iter().map(|d| d.name.clone()).collect(),
+        samplers: decls.samplers().into_iter().map(|(p, t, _)| (p, t)).collect(),
+    }
+}
+
 pub fn check(effect: &Effect, stages: &[StageSyntax], files: &Files) -> Vec<Diagnostic> {
+    check_with_bound(effect, stages, files, &HashSet::new())
+}
+
+/// [`check`] for one pass of a multi-pass effect: `bound` are the samplers the pass graph
+/// binds to targets (they need no `[textures]` entry).
+pub fn check_with_bound(effect: &Effect, stages: &[StageSyntax], files: &Files, bound: &HashSet<String>) -> Vec<Diagnostic> {
     let decls = Decls::collect(stages);
     let mut out = Vec::new();
     let mut covered: HashSet<String> = HashSet::new();
@@ -247,11 +284,12 @@ pub fn check(effect: &Effect, stages: &[StageSyntax], files: &Files) -> Vec<Diag
         default(effect, u, &decls, stages, files, &mut out);
     }
     textures(effect, &decls, &mut out);
-    let textured: HashSet<String> = effect
+    let mut textured: HashSet<String> = effect
         .textures
         .iter()
         .map(|t| texture_path(&t.name))
         .collect();
+    textured.extend(bound.iter().cloned());
     missing(&decls, &covered, &textured, &mut out);
     out
 }

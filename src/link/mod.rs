@@ -56,6 +56,7 @@ pub mod blocks;
 pub mod interface;
 pub mod manifest;
 pub mod names;
+pub mod passes;
 pub mod uniforms;
 pub mod values;
 
@@ -197,6 +198,19 @@ pub fn check_manifest(
     files: &Files,
 ) -> Vec<Diagnostic> {
     let mut out = manifest::check(effect, stages, files);
+    out.extend(attributes::check(effect, stages));
+    out
+}
+
+/// [`check_manifest`] for one pass of a multi-pass effect (`effect` is the pass's view);
+/// `bound` are the samplers the pass reads targets through.
+pub fn check_pass_manifest(
+    effect: &crate::manifest::Effect,
+    stages: &[StageSyntax],
+    files: &Files,
+    bound: &std::collections::HashSet<String>,
+) -> Vec<Diagnostic> {
+    let mut out = manifest::check_with_bound(effect, stages, files, bound);
     out.extend(attributes::check(effect, stages));
     out
 }

@@ -29,6 +29,7 @@
 //! | `W0003` | [`W_UNUSED_PARAM`]       | a texture generator parameter the chosen generator ignores |
 
 mod parse;
+mod passes;
 #[cfg(test)]
 mod tests;
 
@@ -37,6 +38,8 @@ use std::path::{Path, PathBuf};
 
 use crate::diag::{Diagnostic, FileId, Files};
 use crate::stage::StageKind;
+
+pub use passes::{PassClear, PassDecl, PassDraw, SampleDecl, SampleKind, TargetDecl, TargetFormat, TargetRef, TargetSize};
 
 /// TOML syntax error, or the manifest is not valid UTF-8.
 pub const E_SYNTAX: &str = "E0001";
@@ -115,6 +118,12 @@ pub struct Effect {
     pub render: RenderDecl,
     /// `[instances]`: draw the mesh this many times, with per-instance attributes.
     pub instances: Option<InstancesDecl>,
+    /// `[[passes]]` in manifest order (run in this order); empty for a single-pass effect.
+    pub passes: Vec<PassDecl>,
+    /// `[targets]` in manifest order.
+    pub targets: Vec<TargetDecl>,
+    /// `output`: the target written as the frame (multi-pass effects).
+    pub output: Option<TargetRef>,
     /// Warnings found while reading the manifest (the effect is still usable).
     pub warnings: Vec<Diagnostic>,
 }
@@ -468,6 +477,9 @@ pub enum MeshSource {
 pub enum BuiltinMesh {
     /// One triangle pair covering clip space (−1..1), no transforms needed.
     FullscreenQuad,
+    /// One triangle covering clip space (−1..3 in x and y, uv 0..2): a full-screen pass
+    /// without the diagonal seam of a quad.
+    FullscreenTriangle,
     /// A unit quad in the xy plane centred on the origin.
     Quad,
     /// A unit cube centred on the origin, 24 vertices (flat normals).
@@ -479,14 +491,15 @@ pub enum BuiltinMesh {
 }
 
 impl BuiltinMesh {
-    pub const NAMES: [&'static str; 5] =
-        ["fullscreen_quad", "quad", "cube", "uv_sphere", "plane_grid"];
+    pub const NAMES: [&'static str; 6] =
+        ["fullscreen_quad", "fullscreen_triangle", "quad", "cube", "uv_sphere", "plane_grid"];
     pub const DEFAULT_SEGMENTS: u32 = 32;
     pub const DEFAULT_RINGS: u32 = 16;
     pub const DEFAULT_DIVISIONS: u32 = 16;
     pub fn name(&self) -> &'static str {
         match self {
             BuiltinMesh::FullscreenQuad => "fullscreen_quad",
+            BuiltinMesh::FullscreenTriangle => "fullscreen_triangle",
             BuiltinMesh::Quad => "quad",
             BuiltinMesh::Cube => "cube",
             BuiltinMesh::UvSphere { .. } => "uv_sphere",

@@ -14,6 +14,7 @@ use super::*;
 use crate::diag::{Diagnostic, FileId};
 use crate::stage::StageKind;
 
+mod passes;
 mod scene;
 
 type Key<'i> = Spanned<Cow<'i, str>>;
@@ -30,6 +31,9 @@ const ROOT_KEYS: &[&str] = &[
     "model",
     "render",
     "instances",
+    "targets",
+    "passes",
+    "output",
 ];
 const UNIFORM_KEYS: &[&str] = &["value", "range", "semantic"];
 const TEXTURE_KEYS: &[&str] = &[
@@ -407,6 +411,12 @@ impl Ctx<'_> {
         let mut model = ModelDecl::default();
         let mut render = RenderDecl::default();
         let mut instances = None;
+        let mut stages_key = None;
+        let mut passes = Vec::new();
+        let mut passes_key = None;
+        let mut targets = Vec::new();
+        let mut targets_key = None;
+        let mut output = None;
         for (k, v) in entries(root) {
             match key(k) {
                 "name" => {
@@ -421,6 +431,7 @@ impl Ctx<'_> {
                 "description" => description = self.string(v, "`description`").map(str::to_owned),
                 "stages" => {
                     saw_stages = true;
+                    stages_key = Some(k.span());
                     if let Some(t) = self.table(v, "`stages`") {
                         if t.is_empty() {
                             let d = self.error(
@@ -449,10 +460,26 @@ impl Ctx<'_> {
                 "model" => model = self.model(v).unwrap_or_default(),
                 "render" => render = self.render(v).unwrap_or_default(),
                 "instances" => instances = self.instances(v),
+                "passes" => {
+                    passes_key = Some(k.span());
+                    passes = self.passes(v);
+                }
+                "targets" => {
+                    targets_key = Some(k.span());
+                    if let Some(t) = self.table(v, "`targets`") {
+                        targets = self.targets(t);
+                    }
+                }
+                "output" => {
+                    if let Some(s) = self.string(v, "`output`") {
+                        output = Some(TargetRef { name: s.to_owned(), span: v.span() });
+                    }
+                }
                 other => self.unknown_key(other, k.span(), "at the top level", ROOT_KEYS),
             }
         }
-        if !saw_stages {
+        self.check_pass_keys(&passes, stages_key, &output, targets_key, passes_key.clone());
+        if !saw_stages && passes_key.is_none() {
             let d = Diagnostic::error(E_MISSING, "the manifest has no `[stages]` table")
                 .in_file(self.file)
                 .with_help("add a `[stages]` table, e.g. `[stages]` / `vertex = \"effect.vert\"` / `fragment = \"effect.frag\"`");
@@ -493,6 +520,9 @@ impl Ctx<'_> {
             model,
             render,
             instances,
+            passes,
+            targets,
+            output,
             warnings: Vec::new(),
         }
     }
@@ -1386,6 +1416,7 @@ fn builtin(
 ) -> BuiltinMesh {
     match name {
         "fullscreen_quad" => BuiltinMesh::FullscreenQuad,
+        "fullscreen_triangle" => BuiltinMesh::FullscreenTriangle,
         "quad" => BuiltinMesh::Quad,
         "cube" => BuiltinMesh::Cube,
         "uv_sphere" => BuiltinMesh::UvSphere {

@@ -54,6 +54,7 @@ impl Mesh {
     pub fn builtin(b: BuiltinMesh) -> Mesh {
         match b {
             BuiltinMesh::FullscreenQuad => flat_quad(1.0),
+            BuiltinMesh::FullscreenTriangle => fullscreen_triangle(),
             BuiltinMesh::Quad => flat_quad(0.5),
             BuiltinMesh::Cube => cube(),
             BuiltinMesh::UvSphere { segments, rings } => uv_sphere(segments.max(3), rings.max(2)),
@@ -201,6 +202,21 @@ fn flat_quad(half: f32) -> Mesh {
     let mut b = Builder::default();
     b.patch([0.0; 3], X, Y, half, 1);
     b.finish()
+}
+
+/// One triangle whose inside covers clip space −1..1: corners (−1, −1), (3, −1), (−1, 3),
+/// uv 0..2 so that uv runs 0..1 across the visible part.
+fn fullscreen_triangle() -> Mesh {
+    Mesh {
+        positions: vec![[-1.0, -1.0, 0.0], [3.0, -1.0, 0.0], [-1.0, 3.0, 0.0]],
+        normals: vec![Z; 3],
+        uvs: vec![[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]],
+        tangents: vec![[1.0, 0.0, 0.0, 1.0]; 3],
+        colors: vec![WHITE; 3],
+        indices: vec![0, 1, 2],
+        provided: vec!["position", "normal", "uv"],
+        computed: vec!["tangent"],
+    }
 }
 
 /// Faces as (u axis, v axis), chosen so every face reads upright from outside; the side faces have

@@ -308,7 +308,10 @@ fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result
                 vec![Diagnostic::error(E_ASSET, format!("cannot load the mesh: {e}")).at(file, decl.span.clone(), "this mesh")]
             })?,
         };
-        let note = if matches!(decl.source, MeshSource::Builtin(BuiltinMesh::FullscreenQuad)) {
+        let note = if matches!(
+            decl.source,
+            MeshSource::Builtin(BuiltinMesh::FullscreenQuad | BuiltinMesh::FullscreenTriangle)
+        ) {
             MeshNote::Fullscreen
         } else {
             MeshNote::Manifest

@@ -19,11 +19,18 @@ const CAMERA_KEY_KEYS: &[&str] = &["time", "eye", "target"];
 const MODEL_KEYS: &[&str] = &["translate", "rotate", "scale", "spin"];
 const RENDER_KEYS: &[&str] = &["size", "frames", "fps", "clear", "cull", "depth_test", "depth_write", "blend"];
 const INSTANCES_KEYS: &[&str] = &["count", "attributes"];
+pub(super) const CULL_CHOICES: &[(&str, Cull)] = &[("none", Cull::None), ("back", Cull::Back), ("front", Cull::Front)];
+pub(super) const BLEND_CHOICES: &[(&str, Blend)] = &[
+    ("none", Blend::None),
+    ("alpha", Blend::Alpha),
+    ("additive", Blend::Additive),
+    ("premultiplied", Blend::Premultiplied),
+];
 const INSTANCE_ATTRIBUTE_KEYS: &[&str] = &["values", "random", "seed", "sequence"];
 
 impl Ctx<'_> {
     /// `n` finite numbers that fit in f32.
-    fn floats<const N: usize>(&mut self, v: &Val<'_>, what: &str) -> Option<[f32; N]> {
+    pub(super) fn floats<const N: usize>(&mut self, v: &Val<'_>, what: &str) -> Option<[f32; N]> {
         let expected = format!("an array of {N} numbers");
         let DeValue::Array(items) = v.get_ref() else {
             self.wrong_type(v, what, &expected);
@@ -50,7 +57,7 @@ impl Ctx<'_> {
     }
 
     /// A finite number that fits in f32.
-    fn float(&mut self, v: &Val<'_>, what: &str) -> Option<f32> {
+    pub(super) fn float(&mut self, v: &Val<'_>, what: &str) -> Option<f32> {
         let x = self.number(v, what)?;
         if (x as f32).is_finite() {
             Some(x as f32)
@@ -76,7 +83,7 @@ impl Ctx<'_> {
         }
     }
 
-    fn boolean(&mut self, v: &Val<'_>, what: &str) -> Option<bool> {
+    pub(super) fn boolean(&mut self, v: &Val<'_>, what: &str) -> Option<bool> {
         match v.get_ref() {
             DeValue::Boolean(b) => Some(*b),
             _ => {
@@ -309,21 +316,10 @@ impl Ctx<'_> {
                     }
                     _ => self.floats::<4>(v2, what).map(|c| r.clear = c).is_some(),
                 },
-                "cull" => {
-                    let choices = [("none", Cull::None), ("back", Cull::Back), ("front", Cull::Front)];
-                    self.choice(v2, what, "cull mode", &choices).map(|c| r.cull = c).is_some()
-                }
+                "cull" => self.choice(v2, what, "cull mode", CULL_CHOICES).map(|c| r.cull = c).is_some(),
                 "depth_test" => self.boolean(v2, what).map(|b| r.depth_test = b).is_some(),
                 "depth_write" => self.boolean(v2, what).map(|b| r.depth_write = b).is_some(),
-                "blend" => {
-                    let choices = [
-                        ("none", Blend::None),
-                        ("alpha", Blend::Alpha),
-                        ("additive", Blend::Additive),
-                        ("premultiplied", Blend::Premultiplied),
-                    ];
-                    self.choice(v2, what, "blend mode", &choices).map(|b| r.blend = b).is_some()
-                }
+                "blend" => self.choice(v2, what, "blend mode", BLEND_CHOICES).map(|b| r.blend = b).is_some(),
                 other => {
                     self.unknown_key(other, k.span(), "in `[render]`", RENDER_KEYS);
                     false
