@@ -123,7 +123,8 @@ pub struct TranslateArgs {
     /// Output directory (default: `out/<effect>/` for each program).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// List every item left out of the output and why.
+    /// List every item left out of the output and why (and, for multi-pass effects, the
+    /// passes left out).
     #[arg(long)]
     pub explain: bool,
     /// Keep GL clip-space depth (z in [-w, w]) instead of mapping it to WebGPU's [0, w].
@@ -183,6 +184,14 @@ pub struct RenderArgs {
     /// Keep GL clip-space depth (z in [-w, w]) instead of mapping it to WebGPU's [0, w].
     #[arg(long)]
     pub keep_gl_depth: bool,
+    /// Multi-pass effects: also write every intermediate target as
+    /// `<effect>_NNNN_<target>.png` (every pass runs and no texture is shared).
+    #[arg(long)]
+    pub dump_targets: bool,
+    /// Multi-pass effects: print which passes run, which are skipped and why, and which
+    /// targets share a texture.
+    #[arg(long)]
+    pub explain: bool,
 }
 
 /// `512x512` → (512, 512).

@@ -59,6 +59,7 @@ fn render(args: RenderArgs) -> ExitCode {
         timeout: std::time::Duration::from_secs_f64(args.timeout),
         progress: std::io::stderr().is_terminal() && std::env::var_os("CI").is_none(),
         started,
+        dump_targets: args.dump_targets,
     };
     let result = effectc::render::command::run(&request);
     let mut text = String::new();
@@ -67,7 +68,7 @@ fn render(args: RenderArgs) -> ExitCode {
             text.push_str(&format!("adapter: {a}\n"));
         }
         for r in &result.rendered {
-            text.push_str(&effectc::render::command::summary(r, args.timings, args.verbose));
+            text.push_str(&effectc::render::command::summary(r, args.timings, args.verbose, args.explain));
         }
     }
     text.push_str(&diagnostics_text(c, &result.outcome));

@@ -69,6 +69,7 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
     c.version();
     c.declarations();
     c.uses();
+    c.shadowed_block_members();
     c.functions();
     c.calls();
     c.struct_samplers();
@@ -338,6 +339,36 @@ impl Ctx<'_> {
                     self.edits.replace(u.span.clone(), text);
                 }
                 Target::Unresolved => self.builtin_use(u),
+            }
+        }
+    }
+
+    /// naga's GLSL front also declares the members of an instance-named interface block
+    /// (`out Vertex { vec2 texCoord; } OUT;`) as globals, so a global of the same name
+    /// (`in vec2 texCoord;`, the classic tutorial vertex stage) reads the block member
+    /// instead. Such members are renamed `<instance>_<member>` in the rewrite; blocks link
+    /// by location after the name-level checks, so the other stage is unaffected.
+    fn shadowed_block_members(&mut self) {
+        let s = self.s;
+        let loose: std::collections::HashSet<&str> =
+            s.globals.iter().filter(|g| g.block.is_none()).map(|g| g.name.as_str()).collect();
+        let mut renamed: Vec<(usize, String, String)> = Vec::new();
+        for (gi, g) in s.globals.iter().enumerate() {
+            let Some(b) = &g.block else { continue };
+            let (Some(instance), Storage::In | Storage::Out) = (&b.instance, g.storage) else { continue };
+            for m in b.members.iter().filter(|m| loose.contains(m.name.as_str())) {
+                let new = format!("{instance}_{}", m.name);
+                self.edits.replace(m.span.clone(), new.clone());
+                renamed.push((gi, m.name.clone(), new));
+            }
+        }
+        for u in &s.uses {
+            let Target::Global(gi) = u.target else { continue };
+            let Some((field, dot)) = &u.field else { continue };
+            if let Some((_, _, new)) = renamed.iter().find(|(g, m, _)| *g == gi && m == field) {
+                if s.text.get(dot.clone()).is_some_and(|t| t.ends_with(field.as_str())) {
+                    self.edits.replace(dot.end - field.len()..dot.end, new.clone());
+                }
             }
         }
     }

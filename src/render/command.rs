@@ -20,7 +20,10 @@ use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
 use crate::render::camera;
 use crate::render::device::Gpu;
 use crate::render::encode;
-use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels, Target};
+use crate::back::Translation;
+use crate::manifest::{CameraDecl, ModelDecl};
+use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels, Target};
+use crate::render::passes::{PassGraph, PassProgram};
 use crate::render::scene::{ColorMode, Scene, SceneInput};
 use crate::render::semantics::FrameState;
 use crate::stage::StageKind;
@@ -76,6 +79,8 @@ pub struct Request {
     pub progress: bool,
     /// When the process started, for the time to the first frame.
     pub started: Instant,
+    /// Multi-pass effects: write every intermediate target too (nothing pruned or shared).
+    pub dump_targets: bool,
 }
 
 /// One frame's numbers.
@@ -102,6 +107,8 @@ pub struct Rendered {
     pub first_frame: Option<Duration>,
     /// Mesh and attribute summary.
     pub scene: String,
+    /// Multi-pass effects: the pass plan (what runs, what is skipped, shared textures).
+    pub passes: Option<String>,
 }
 
 /// The result of a run: diagnostics, what was rendered, the adapter used.
@@ -127,23 +134,7 @@ pub fn run(request: &Request) -> RunResult {
     let inputs = translate::input_paths(&outcome, &request.inputs);
     let mut gpu: Option<Gpu> = None;
     for c in &checked {
-        let Some(translated) = translate::translate_checked(c, &outcome, request.back) else { continue };
-        let program = c.program.as_ref().expect("translated programs have a program");
-        let file = program.stages[0].syntax.file;
-        let translation = match translated {
-            Ok(t) => t,
-            Err(diags) => {
-                outcome.diagnostics.extend(diags);
-                continue;
-            }
-        };
-        let wgsl = match translate::emit_contained(&translation, BackTarget::Wgsl) {
-            Ok(o) => String::from_utf8_lossy(&o[0].bytes).into_owned(),
-            Err(e) => {
-                outcome.diagnostics.push(translate::target_error(file, BackTarget::Wgsl, &e));
-                continue;
-            }
-        };
+        let Some(prepared) = prepare(c, &mut outcome, request) else { continue };
         if gpu.is_none() {
             match Gpu::new() {
                 Ok(g) => {
@@ -168,32 +159,34 @@ pub fn run(request: &Request) -> RunResult {
             continue;
         }
         let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        let input = SceneInput { translation: &translation, wgsl: &wgsl, program, effect, mode, flipped_y: request.back.flip_y };
-        let mut scene = match Scene::new(gpu, &input) {
-            Ok(s) => s,
+        let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, request) {
+            Ok(d) => d,
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
                 continue;
             }
         };
-        outcome.diagnostics.append(&mut scene.warnings);
+        outcome.diagnostics.append(drawer.warnings());
         let step = match request.step {
             Step::Fps(f) => 1.0 / f,
             Step::Seconds(s) => s,
             Step::Default => 1.0 / render.fps.unwrap_or(DEFAULT_FPS),
         };
-        let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&translation.name).join("frames"));
-        let plan = FramePlan { frames, size, step, start: request.start, dir, mode };
-        match draw_frames(gpu, &mut scene, &plan, request, &inputs, file) {
-            Ok((rendered, diags)) => {
+        let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(drawer.name()).join("frames"));
+        let plan = FramePlan { frames, size, step, start: request.start, dir };
+        match draw_frames(gpu, &mut drawer, &plan, request, &inputs, file) {
+            Ok((mut rendered, diags)) => {
                 outcome.diagnostics.extend(diags);
+                if let (Drawer::Graph(g), Some(e)) = (&drawer, effect) {
+                    rendered.passes = Some(g.explain(e));
+                }
                 result.rendered.push(rendered);
             }
             Err(Stop::Hung(d)) => {
                 outcome.diagnostics.push(*d);
                 result.hung = true;
                 // The device is still running the frame: dropping it would wait forever.
-                std::mem::forget(scene);
+                std::mem::forget(drawer);
                 break;
             }
             Err(Stop::Failed(d)) => outcome.diagnostics.push(*d),
@@ -205,6 +198,155 @@ pub fn run(request: &Request) -> RunResult {
     crate::diag::sort(&mut outcome.diagnostics);
     result.outcome = outcome;
     result
+}
+
+/// A checked program translated to WGSL: one unit for a single-pass program, one per
+/// running pass for a multi-pass effect.
+struct Prepared {
+    /// (pass index, translation, WGSL); the index is 0 for a single-pass program.
+    units: Vec<(usize, Translation, String)>,
+    /// The pass plan of a multi-pass effect.
+    plan: Option<crate::graph::PassPlan>,
+}
+
+/// Translates what `c` renders; diagnostics go to `outcome`. `None` when there is nothing
+/// to render (check or translation errors).
+fn prepare(c: &check::Checked, outcome: &mut Outcome, request: &Request) -> Option<Prepared> {
+    let multi = c.effect.as_ref().filter(|e| e.is_multi_pass());
+    let (indices, results): (Vec<usize>, Vec<Result<Translation, Vec<Diagnostic>>>) = match multi {
+        Some(effect) => {
+            if c.failed {
+                return None;
+            }
+            let size = request.size.or(effect.render.size).unwrap_or(DEFAULT_SIZE);
+            let plan = crate::graph::plan(effect, size, request.dump_targets);
+            let mut units = Vec::new();
+            for i in plan.running() {
+                let pass = &c.passes[i];
+                let program = pass.program.as_ref()?;
+                let t = translate::translate_program(&pass.view.name, program, Some(&pass.view), request.back);
+                units.push((i, t));
+            }
+            let (indices, results) = units.into_iter().unzip();
+            let prepared = wgsl_units(indices, results, outcome)?;
+            return Some(Prepared { units: prepared, plan: Some(plan) });
+        }
+        None => (vec![0], vec![translate::translate_checked(c, outcome, request.back)?]),
+    };
+    Some(Prepared { units: wgsl_units(indices, results, outcome)?, plan: None })
+}
+
+fn wgsl_units(
+    indices: Vec<usize>,
+    results: Vec<Result<Translation, Vec<Diagnostic>>>,
+    outcome: &mut Outcome,
+) -> Option<Vec<(usize, Translation, String)>> {
+    let mut units = Vec::new();
+    for (i, r) in indices.into_iter().zip(results) {
+        let translation = match r {
+            Ok(t) => t,
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                return None;
+            }
+        };
+        let wgsl = match translate::emit_contained(&translation, BackTarget::Wgsl) {
+            Ok(o) => String::from_utf8_lossy(&o[0].bytes).into_owned(),
+            Err(e) => {
+                outcome.diagnostics.push(translate::target_error(translation.file, BackTarget::Wgsl, &e));
+                return None;
+            }
+        };
+        units.push((i, translation, wgsl));
+    }
+    Some(units)
+}
+
+/// What draws the frames of one program.
+enum Drawer {
+    Single { scene: Box<Scene>, target: Target },
+    Graph(Box<PassGraph>),
+}
+
+impl Drawer {
+    fn name(&self) -> &str {
+        match self {
+            Drawer::Single { scene, .. } => &scene.name,
+            Drawer::Graph(g) => &g.name,
+        }
+    }
+    fn warnings(&mut self) -> &mut Vec<Diagnostic> {
+        match self {
+            Drawer::Single { scene, .. } => &mut scene.warnings,
+            Drawer::Graph(g) => &mut g.warnings,
+        }
+    }
+    fn camera(&self) -> &CameraDecl {
+        match self {
+            Drawer::Single { scene, .. } => &scene.camera,
+            Drawer::Graph(g) => &g.camera,
+        }
+    }
+    fn model(&self) -> &ModelDecl {
+        match self {
+            Drawer::Single { scene, .. } => &scene.model,
+            Drawer::Graph(g) => &g.model,
+        }
+    }
+    fn clock(&self) -> GpuClock {
+        match self {
+            Drawer::Single { target, .. } => target.clock(),
+            Drawer::Graph(g) => g.clock(),
+        }
+    }
+    fn describe(&self) -> String {
+        match self {
+            Drawer::Single { scene, .. } => scene.describe.clone(),
+            Drawer::Graph(g) => format!("{} passes run", g.plan.running().count()),
+        }
+    }
+    fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
+        match self {
+            Drawer::Single { scene, target } => frames::render(gpu, scene, target, state, timeout),
+            Drawer::Graph(g) => g.render(gpu, state, timeout),
+        }
+    }
+}
+
+/// Builds the scene (or the pass graph) of a prepared program; also returns the file
+/// program-wide diagnostics point at.
+fn build(
+    gpu: &Gpu,
+    prepared: &Prepared,
+    c: &check::Checked,
+    size: (u32, u32),
+    mode: ColorMode,
+    request: &Request,
+) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
+    let flipped_y = request.back.flip_y;
+    match (&prepared.plan, c.effect.as_ref()) {
+        (Some(plan), Some(effect)) => {
+            let programs: Vec<PassProgram<'_>> = prepared
+                .units
+                .iter()
+                .filter_map(|(i, t, wgsl)| {
+                    let pass = &c.passes[*i];
+                    Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &pass.view })
+                })
+                .collect();
+            let graph = PassGraph::new(gpu, effect, plan.clone(), &programs, mode, flipped_y, request.dump_targets, size)?;
+            Ok((Drawer::Graph(Box::new(graph)), effect.file))
+        }
+        _ => {
+            let (_, translation, wgsl) = &prepared.units[0];
+            let program = c.program.as_ref().expect("translated programs have a program");
+            let input =
+                SceneInput { translation, wgsl, program, effect: c.effect.as_ref(), mode, flipped_y, pass: None };
+            let scene = Scene::new(gpu, &input)?;
+            let target = Target::new(gpu, &scene, size.0, size.1, mode);
+            Ok((Drawer::Single { scene: Box::new(scene), target }, translation.file))
+        }
+    }
 }
 
 /// Flags beyond the limits, refused before anything is allocated.
@@ -255,7 +397,6 @@ struct FramePlan {
     step: f64,
     start: f64,
     dir: PathBuf,
-    mode: ColorMode,
 }
 
 enum Stop {
@@ -267,6 +408,7 @@ enum Stop {
 struct Encoded {
     index: u32,
     pixels: Pixels,
+    dumps: Vec<Dump>,
 }
 
 /// What the encoder thread produced.
@@ -281,22 +423,22 @@ struct EncoderResult {
 
 fn draw_frames(
     gpu: &Gpu,
-    scene: &mut Scene,
+    drawer: &mut Drawer,
     plan: &FramePlan,
     request: &Request,
     inputs: &BTreeSet<PathBuf>,
     file: FileId,
 ) -> Result<(Rendered, Vec<Diagnostic>), Stop> {
     let (w, h) = plan.size;
-    let target = Target::new(gpu, scene, w, h, plan.mode);
-    let bar = progress_bar(request, plan.frames, &scene.name);
+    let name = drawer.name().to_owned();
+    let bar = progress_bar(request, plan.frames, &name);
     let keep = request.contact_sheet || request.gif;
     let mut reports = Vec::new();
     let mut stop = None;
     let (tx, rx) = mpsc::sync_channel::<Encoded>(2);
     let encoded = std::thread::scope(|s| {
-        let name = scene.name.clone();
-        let encoder = s.spawn(move || encode_frames(rx, &name, &plan.dir, plan.size, keep, inputs));
+        let encoder_name = name.clone();
+        let encoder = s.spawn(move || encode_frames(rx, &encoder_name, &plan.dir, plan.size, keep, inputs));
         for i in 0..plan.frames {
             let time = plan.start + f64::from(i) * plan.step;
             let aspect = w as f32 / h as f32;
@@ -305,13 +447,13 @@ fn draw_frames(
                 time,
                 delta: plan.step,
                 size: plan.size,
-                view: camera::view_at(&scene.camera, time, aspect),
-                model: camera::model_at(&scene.model, time),
+                view: camera::view_at(drawer.camera(), time, aspect),
+                model: camera::model_at(drawer.model(), time),
             };
-            match frames::render(gpu, scene, &target, &state, request.timeout) {
-                Ok(Frame { pixels, gpu_ms, cpu_ms }) => {
+            match drawer.draw(gpu, &state, request.timeout) {
+                Ok(Frame { pixels, gpu_ms, cpu_ms, dumps }) => {
                     reports.push(FrameReport { index: i, time, gpu_ms, cpu_ms, non_finite: None });
-                    if tx.send(Encoded { index: i, pixels }).is_err() {
+                    if tx.send(Encoded { index: i, pixels, dumps }).is_err() {
                         break;
                     }
                 }
@@ -365,26 +507,27 @@ fn draw_frames(
     let frames_rgba: Vec<&[u8]> = encoded.kept.iter().map(|f| f.as_slice()).collect();
     if request.contact_sheet && !frames_rgba.is_empty() {
         let (sheet, sw, sh) = encode::contact_sheet(&frames_rgba, w, h, 0);
-        let path = plan.dir.join(format!("{}_sheet.png", scene.name));
+        let path = plan.dir.join(format!("{name}_sheet.png"));
         write_png(&path, &sheet, sw, sh, inputs, &mut files, &mut diags);
     }
     if request.gif && !frames_rgba.is_empty() {
         let delay = (plan.step * 1000.0).round().clamp(20.0, 60_000.0) as u32;
-        let path = plan.dir.join(format!("{}.gif", scene.name));
+        let path = plan.dir.join(format!("{name}.gif"));
         match encode::gif_bytes(&frames_rgba, w, h, delay) {
             Ok(bytes) => write_file(&path, &bytes, inputs, &mut files, &mut diags),
             Err(e) => diags.push(Diagnostic::error(translate::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
         }
     }
     let rendered = Rendered {
-        name: scene.name.clone(),
+        name: name.clone(),
         dir: plan.dir.clone(),
         size: plan.size,
         files,
         frames: reports,
-        clock: target.clock(),
+        clock: drawer.clock(),
         first_frame: encoded.first_written.map(|t| t.duration_since(request.started)),
-        scene: scene.describe.clone(),
+        scene: drawer.describe(),
+        passes: None,
     };
     Ok((rendered, diags))
 }
@@ -399,7 +542,11 @@ fn encode_frames(
     inputs: &BTreeSet<PathBuf>,
 ) -> EncoderResult {
     let mut out = EncoderResult::default();
-    for Encoded { index, pixels } in rx {
+    for Encoded { index, pixels, dumps } in rx {
+        for d in dumps {
+            let path = dir.join(format!("{name}_{index:04}_{}.png", d.target));
+            write_png(&path, &d.rgba, d.size.0, d.size.1, inputs, &mut out.files, &mut out.errors);
+        }
         let rgba = match pixels {
             Pixels::Rgba8(p) => p,
             Pixels::Rgba32F(f) => {
@@ -453,7 +600,7 @@ fn progress_bar(request: &Request, frames: u32, name: &str) -> Option<indicatif:
 }
 
 /// Human summary of one rendered program (with per-frame timings when asked).
-pub fn summary(r: &Rendered, timings: bool, verbose: bool) -> String {
+pub fn summary(r: &Rendered, timings: bool, verbose: bool, explain: bool) -> String {
     let pngs = r.files.iter().filter(|f| !f.to_string_lossy().ends_with("_nonfinite.png")).count();
     let mut text = format!(
         "rendered {} → {}: {} frame{} at {}x{} ({} file{})\n",
@@ -468,6 +615,9 @@ pub fn summary(r: &Rendered, timings: bool, verbose: bool) -> String {
     );
     if verbose {
         text.push_str(&format!("  scene: {}\n", r.scene));
+    }
+    if let (true, Some(p)) = (explain || verbose, &r.passes) {
+        text.push_str(p);
     }
     for f in &r.frames {
         if let Some((nan, pinf, ninf)) = f.non_finite {

@@ -32,6 +32,16 @@ pub struct Frame {
     pub gpu_ms: f64,
     /// CPU time to prepare and submit the frame and to unpack the readback.
     pub cpu_ms: f64,
+    /// Intermediate targets of a multi-pass effect (`--dump-targets`).
+    pub dumps: Vec<Dump>,
+}
+
+/// An intermediate target read back with the frame.
+pub struct Dump {
+    pub target: String,
+    pub size: (u32, u32),
+    /// RGBA8, top row first.
+    pub rgba: Vec<u8>,
 }
 
 /// Why a frame could not be rendered.
@@ -43,11 +53,52 @@ pub enum FrameError {
     Device(String),
 }
 
-struct Timestamps {
-    set: wgpu::QuerySet,
+/// Two timestamp queries (start of the first pass, end of the last) and their buffers.
+pub struct Timestamps {
+    pub set: wgpu::QuerySet,
     resolve: wgpu::Buffer,
     read: wgpu::Buffer,
     period_ns: f64,
+}
+
+impl Timestamps {
+    /// `None` when the adapter has no timestamp queries.
+    pub fn new(gpu: &Gpu) -> Option<Timestamps> {
+        gpu.device.features().contains(wgpu::Features::TIMESTAMP_QUERY).then(|| Timestamps {
+            set: gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("frame time"),
+                ty: wgpu::QueryType::Timestamp,
+                count: 2,
+            }),
+            resolve: gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("timestamps"),
+                size: 16,
+                usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+                mapped_at_creation: false,
+            }),
+            read: gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("timestamps read"),
+                size: 16,
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            }),
+            period_ns: f64::from(gpu.queue.get_timestamp_period()),
+        })
+    }
+
+    /// Records the resolve and the copy to the readable buffer.
+    pub fn resolve(&self, encoder: &mut wgpu::CommandEncoder) {
+        encoder.resolve_query_set(&self.set, 0..2, &self.resolve, 0);
+        encoder.copy_buffer_to_buffer(&self.resolve, 0, &self.read, 0, 16);
+    }
+
+    /// Milliseconds between the two timestamps (after the frame finished).
+    pub fn read_ms(&self, gpu: &Gpu) -> Result<f64, FrameError> {
+        let ts = map_read(gpu, &self.read)?;
+        let begin = u64::from_le_bytes(ts[0..8].try_into().unwrap_or_default());
+        let end = u64::from_le_bytes(ts[8..16].try_into().unwrap_or_default());
+        Ok(end.saturating_sub(begin) as f64 * self.period_ns / 1e6)
+    }
 }
 
 /// The offscreen target frames are drawn into.
@@ -99,26 +150,7 @@ impl Target {
             usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
             mapped_at_creation: false,
         });
-        let timestamps = gpu.device.features().contains(wgpu::Features::TIMESTAMP_QUERY).then(|| Timestamps {
-            set: gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
-                label: Some("frame time"),
-                ty: wgpu::QueryType::Timestamp,
-                count: 2,
-            }),
-            resolve: gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("timestamps"),
-                size: 16,
-                usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
-                mapped_at_creation: false,
-            }),
-            read: gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("timestamps read"),
-                size: 16,
-                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-                mapped_at_creation: false,
-            }),
-            period_ns: f64::from(gpu.queue.get_timestamp_period()),
-        });
+        let timestamps = Timestamps::new(gpu);
         Target { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps }
     }
 
@@ -147,10 +179,7 @@ fn padded_row(width: u32, mode: ColorMode) -> u32 {
 pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
     let cpu_start = Instant::now();
     let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
-    for (data, buffer) in &mut scene.uniforms {
-        data.update(&scene.module, state).map_err(FrameError::Device)?;
-        gpu.queue.write_buffer(buffer, 0, &data.bytes);
-    }
+    write_uniforms(gpu, scene, state)?;
     let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
     {
         let c = scene.clear.map(f64::from);
@@ -203,30 +232,18 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState,
         wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 },
     );
     if let Some(t) = &target.timestamps {
-        encoder.resolve_query_set(&t.set, 0..2, &t.resolve, 0);
-        encoder.copy_buffer_to_buffer(&t.resolve, 0, &t.read, 0, 16);
+        t.resolve(&mut encoder);
     }
     let submitted = gpu.queue.submit([encoder.finish()]);
     if let Some(e) = pollster::block_on(scope.pop()) {
         return Err(FrameError::Device(e.to_string()));
     }
     let mut cpu = cpu_start.elapsed();
-    let wait_start = Instant::now();
-    match gpu.device.poll(wgpu::PollType::Wait { submission_index: Some(submitted), timeout: Some(timeout) }) {
-        Ok(_) => {}
-        Err(wgpu::PollError::Timeout) => return Err(FrameError::Timeout(timeout)),
-        Err(e) => return Err(FrameError::Device(e.to_string())),
-    }
-    let wall = wait_start.elapsed();
+    let wall = wait(gpu, submitted, timeout)?;
     let unpack_start = Instant::now();
     let bytes = map_read(gpu, &target.readback)?;
     let gpu_ms = match &target.timestamps {
-        Some(t) => {
-            let ts = map_read(gpu, &t.read)?;
-            let begin = u64::from_le_bytes(ts[0..8].try_into().unwrap_or_default());
-            let end = u64::from_le_bytes(ts[8..16].try_into().unwrap_or_default());
-            end.saturating_sub(begin) as f64 * t.period_ns / 1e6
-        }
+        Some(t) => t.read_ms(gpu)?,
         None => wall.as_secs_f64() * 1e3,
     };
     if let Some(e) = gpu.take_error() {
@@ -234,7 +251,26 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState,
     }
     let pixels = unpad(&bytes, target);
     cpu += unpack_start.elapsed();
-    Ok(Frame { pixels, gpu_ms, cpu_ms: cpu.as_secs_f64() * 1e3 })
+    Ok(Frame { pixels, gpu_ms, cpu_ms: cpu.as_secs_f64() * 1e3, dumps: Vec::new() })
+}
+
+/// Writes the scene's uniforms for `state` (semantics re-evaluated).
+pub fn write_uniforms(gpu: &Gpu, scene: &mut Scene, state: &FrameState) -> Result<(), FrameError> {
+    for (data, buffer) in &mut scene.uniforms {
+        data.update(&scene.module, state).map_err(FrameError::Device)?;
+        gpu.queue.write_buffer(buffer, 0, &data.bytes);
+    }
+    Ok(())
+}
+
+/// Waits for a submission, at most `timeout`; returns the time waited.
+pub fn wait(gpu: &Gpu, submitted: wgpu::SubmissionIndex, timeout: Duration) -> Result<Duration, FrameError> {
+    let start = Instant::now();
+    match gpu.device.poll(wgpu::PollType::Wait { submission_index: Some(submitted), timeout: Some(timeout) }) {
+        Ok(_) => Ok(start.elapsed()),
+        Err(wgpu::PollError::Timeout) => Err(FrameError::Timeout(timeout)),
+        Err(e) => Err(FrameError::Device(e.to_string())),
+    }
 }
 
 /// Records the scene's draw into a render pass: pipeline, bind groups, vertex and index
@@ -257,7 +293,7 @@ pub fn record_draw(pass: &mut wgpu::RenderPass<'_>, scene: &Scene) {
 }
 
 /// Maps a finished buffer, copies its bytes out and unmaps it.
-fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError> {
+pub fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError> {
     let slice = buffer.slice(..);
     let (tx, rx) = std::sync::mpsc::channel();
     slice.map_async(wgpu::MapMode::Read, move |r| {

@@ -11,6 +11,8 @@
 //! - [`scene`]: everything one effect needs on the GPU.
 //! - [`frames`]: drawing one frame into an offscreen target and reading it back, with a
 //!   timeout.
+//! - [`passes`]: a multi-pass effect: one scene per pass that reaches the output, targets
+//!   shared when lifetimes allow, all passes in one submission per frame.
 //! - [`encode`], [`compare`]: PNG, contact sheet, GIF, NaN/Inf masks; reference-image
 //!   comparison for pixel tests.
 //! - [`command`]: `effectc render`.
@@ -23,6 +25,7 @@ pub mod device;
 pub mod encode;
 pub mod frames;
 pub mod mesh;
+pub mod passes;
 pub mod scene;
 pub mod semantics;
 pub mod texture;

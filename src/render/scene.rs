@@ -100,6 +100,18 @@ pub struct SceneInput<'a> {
     pub mode: ColorMode,
     /// The translation negated clip y (`TranslateOptions::flip_y`).
     pub flipped_y: bool,
+    /// Set for one pass of a multi-pass effect: its attachments and sampled targets.
+    pub pass: Option<PassBinding<'a>>,
+}
+
+/// What the pass graph decides for one pass's scene.
+pub struct PassBinding<'a> {
+    /// Colour formats by output location; `None` where nothing is attached.
+    pub colors: Vec<Option<wgpu::TextureFormat>>,
+    /// The depth attachment's format, when the pass has one.
+    pub depth: Option<wgpu::TextureFormat>,
+    /// Sampler uniforms bound to earlier targets: the target's view and the filter.
+    pub sampled: &'a BTreeMap<String, (wgpu::TextureView, Filter)>,
 }
 
 impl Scene {
@@ -113,7 +125,9 @@ impl Scene {
                 .in_file(first_file)
                 .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)")]);
         }
-        if let Some(first) = r.fragment_outputs.first().filter(|o| o.location == 0 && !o.wgsl_type.contains("f32")) {
+        if let Some(first) =
+            r.fragment_outputs.first().filter(|o| input.pass.is_none() && o.location == 0 && !o.wgsl_type.contains("f32"))
+        {
             return Err(vec![Diagnostic::error(
                 E_UNRENDERABLE,
                 format!("fragment output `{}` is an integer; frames can only show float colours", first.name),
@@ -126,14 +140,23 @@ impl Scene {
         let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
         let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
         let choices = attributes::choose(&per_vertex, &explicit, &mesh);
-        report_attributes(input.program, &choices, &mut warnings);
+        // A full-screen pass draws effectc's triangle, whose attributes (position, uv) are
+        // documented: matching them by name is the contract, not a guess worth a warning.
+        let fullscreen_pass = input.pass.is_some() && matches!(mesh_note, MeshNote::Fullscreen);
+        report_attributes(input.program, &choices, fullscreen_pass, &mut warnings);
         let interleaved = attributes::interleave(&choices, &mesh);
         let instanced = instances.and_then(|d| attributes::instance_buffer(&r.vertex_inputs, d));
 
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let render = input.effect.map(|e| e.render.clone()).unwrap_or_default();
-        let depth = render.depth_test && !matches!(mesh_note, MeshNote::Fullscreen);
-        let colors = color_formats(r, input.mode.format());
+        let (depth_format, colors) = match &input.pass {
+            Some(p) => (p.depth, p.colors.clone()),
+            None => {
+                let depth = render.depth_test && !matches!(mesh_note, MeshNote::Fullscreen);
+                (depth.then_some(wgpu::TextureFormat::Depth32Float), color_formats(r, input.mode.format()))
+            }
+        };
+        let depth = depth_format.is_some();
         let spec = PipelineSpec {
             label: &t.name,
             wgsl: input.wgsl,
@@ -143,7 +166,7 @@ impl Scene {
             instance_attributes: instanced.as_ref().map_or(&[], |i| &i.attributes),
             colors: colors.clone(),
             blend: blend_state(render.blend),
-            depth: depth.then_some(wgpu::TextureFormat::Depth32Float),
+            depth: depth_format,
             depth_write: render.depth_write,
             cull: match render.cull {
                 Cull::None => None,
@@ -344,17 +367,27 @@ fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result
     Ok((Mesh::builtin(mesh), note))
 }
 
-fn report_attributes(program: &CompiledProgram, choices: &[attributes::Choice], warnings: &mut Vec<Diagnostic>) {
+fn report_attributes(
+    program: &CompiledProgram,
+    choices: &[attributes::Choice],
+    fullscreen_pass: bool,
+    warnings: &mut Vec<Diagnostic>,
+) {
     for c in choices {
         let (code, message) = match (c.attribute, c.guessed) {
             (Some(_), None) => continue,
+            (Some(_), Some(_)) if fullscreen_pass => continue,
             (Some(a), Some(why)) => {
                 (W_ATTRIBUTE_GUESSED, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input))
             }
             (None, _) => (W_ATTRIBUTE_ZERO, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),
         };
         let d = at_declaration(Diagnostic::warning(code, message), program, &c.input, Storage::In, "this input");
-        warnings.push(d.with_help(format!("map it in the manifest: [mesh.attributes] `{} = \"position\"` (or normal, uv, tangent, bitangent, color)", c.input)));
+        let example = c.attribute.unwrap_or("position");
+        warnings.push(d.with_help(format!(
+            "map it in the manifest: [mesh.attributes] `{} = \"{example}\"` (attributes: position, normal, uv, tangent, bitangent, color)",
+            c.input
+        )));
     }
 }
 
@@ -403,6 +436,10 @@ impl Textures {
                 "texture" => {
                     let user = plan.textures.iter().find(|t| t.name == b.name).map(|t| t.user_path.clone());
                     let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
+                    if let Some((view, _)) = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u)) {
+                        views.insert(b.name.clone(), view.clone());
+                        continue;
+                    }
                     let view = match (decl, b.sample_type) {
                         (_, Some("depth")) => depth_placeholder(gpu, b),
                         (_, Some("sint" | "uint")) => integer_placeholder(gpu, b),
@@ -435,7 +472,12 @@ impl Textures {
                 "sampler" | "comparison_sampler" => {
                     let user = plan.textures.iter().find(|t| t.sampler_name == b.name).map(|t| t.user_path.clone());
                     let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
-                    let (filter, wrap) = decl.map(|d| (d.filter, d.wrap)).unwrap_or_default();
+                    let target = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u));
+                    let (filter, wrap) = match target {
+                        // Targets are read like GL render textures: clamped at the edges.
+                        Some((_, filter)) => (*filter, Wrap::Clamp),
+                        None => decl.map(|d| (d.filter, d.wrap)).unwrap_or_default(),
+                    };
                     samplers.insert(b.name.clone(), sampler(gpu, filter, wrap, b.kind == "comparison_sampler"));
                 }
                 _ => {}
