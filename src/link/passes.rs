@@ -98,6 +98,14 @@ pub fn check(effect: &Effect, shaders: &[PassShaders<'_>]) -> Vec<Diagnostic> {
     out
 }
 
+/// "an" before a word read with a vowel sound (`an int`, `an rgba8`, `an isampler2D`).
+fn article(word: &str) -> &'static str {
+    match word.chars().next() {
+        Some('a' | 'e' | 'i' | 'o' | 'r') => "an",
+        _ => "a",
+    }
+}
+
 fn quoted(names: &[&str]) -> String {
     names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
 }
@@ -253,11 +261,11 @@ fn samplers(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut 
         if ty.base != kind.sampler() {
             let mut d = Diagnostic::error(
                 E_FORMAT,
-                format!("`{}` is a `{}`, but target `{}` is {}", s.sampler, ty.base, s.target.name, target.format.name()),
+                format!("`{}` is {} `{}`, but target `{}` is {}", s.sampler, article(&ty.base), ty.base, s.target.name, target.format.name()),
             )
-            .at(effect.file, s.target.span.clone(), format!("a {} target", target.format.name()))
+            .at(effect.file, s.target.span.clone(), format!("{} {} target", article(target.format.name()), target.format.name()))
             .with_label(effect.file, target.name_span.clone(), format!("declared {} here", target.format.name()))
-            .with_help(format!("read a {} target through `{}`", target.format.name(), kind.sampler()));
+            .with_help(format!("read {} {} target through `{}`", article(target.format.name()), target.format.name(), kind.sampler()));
             if let Some((f, span)) = decl {
                 d = d.with_label(f, span, format!("declared `{}` here", ty.base));
             }
@@ -355,8 +363,8 @@ fn outputs(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut V
                     E_FORMAT,
                     format!("output `{}` is {}-valued, but target `{}` is {}", s.name, s.kind.output_scalar(), t.name, decl.format.name()),
                 )
-                .at(effect.file, t.span.clone(), format!("a {} target", decl.format.name()))
-                .with_label(s.file, s.span.clone(), format!("a {} output", s.kind.output_scalar()))
+                .at(effect.file, t.span.clone(), format!("{} {} target", article(decl.format.name()), decl.format.name()))
+                .with_label(s.file, s.span.clone(), format!("{} {} output", article(s.kind.output_scalar()), s.kind.output_scalar()))
                 .with_help(format!("write a {} vector to it, or choose a matching format", kind.output_scalar())),
             );
         }

@@ -68,7 +68,10 @@ impl Gpu {
         let info = adapter.get_info();
         // Timestamps time frames on the GPU when the adapter has them (lavapipe does).
         // Blending into Rgba32Float (`--float`) where the adapter can.
-        let features = adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::FLOAT32_BLENDABLE);
+        // FLOAT32_FILTERABLE: a multi-pass effect samples its rgba32f targets (and every float
+        // target under --float) through filtering samplers, as GL does.
+        let wanted = wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::FLOAT32_BLENDABLE | wgpu::Features::FLOAT32_FILTERABLE;
+        let features = adapter.features() & wanted;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("effectc"),
             required_features: features,

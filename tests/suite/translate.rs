@@ -68,45 +68,53 @@ fn every_program_translates_validates_and_builds_a_pipeline() {
         let (outcome, checked) = common::check(dir);
         assert!(!diag::has_errors(&outcome.diagnostics), "{name} does not check:\n{}", common::render(&outcome));
         let c = &checked[0];
-        let t = match back::translate(&name, c.program.as_ref().unwrap(), c.effect.as_ref(), TranslateOptions::default()) {
-            Ok(t) => t,
-            Err(d) => {
-                problems.push(format!("{name}: {}", diag::render_human(&d, &outcome.files, false)));
-                continue;
-            }
+        // A multi-pass effect translates pass by pass (`<effect>.<pass>`).
+        let units: Vec<(String, &effectc::front::program::CompiledProgram, Option<&effectc::manifest::Effect>)> = if c.passes.is_empty() {
+            vec![(name.clone(), c.program.as_ref().unwrap(), c.effect.as_ref())]
+        } else {
+            c.passes.iter().map(|p| (p.view.name.clone(), p.program.as_ref().unwrap(), Some(&p.view))).collect()
         };
-        for target in Target::ALL {
-            match back::emit(&t, target) {
-                Ok(outputs) => assert!(!outputs.is_empty() && outputs.iter().all(|o| !o.bytes.is_empty())),
-                // GLSL ES 3.00 has no `noperspective`: the one thing a target may refuse here.
-                Err(e) if target == Target::Glsl && e.contains("NOPERSPECTIVE") => {}
-                Err(e) => problems.push(format!("{name}: {}: {e}", target.name())),
-            }
-        }
-        let text = |target| String::from_utf8(back::emit(&t, target).unwrap().remove(0).bytes).unwrap();
-        let wgsl = text(Target::Wgsl);
-        settings.bind(|| {
-            insta::assert_snapshot!(format!("{name}-ir"), text(Target::Ir));
-            insta::assert_snapshot!(format!("{name}-wgsl"), wgsl);
-        });
-        let asm_files = back::emit(&t, Target::Spvasm).unwrap();
-        for stage in &t.stages {
-            let words = back::spirv_words(&t, *stage).unwrap();
-            let file = format!("{name}.{}.spvasm", stage.short_name());
-            let asm = asm_files.iter().find(|o| o.file_name == file).expect("one disassembly per stage");
-            settings.bind(|| {
-                insta::assert_snapshot!(format!("{name}-{}-spvasm", stage.short_name()), String::from_utf8_lossy(&asm.bytes))
-            });
-            if validate_spirv {
-                if let Err(e) = spirv_val(&words, &scratch.join(format!("{name}.{}.spv", stage.short_name()))) {
-                    problems.push(format!("{name}: spirv-val ({stage}): {e}"));
+        for (name, program, effect) in units {
+            let t = match back::translate(&name, program, effect, TranslateOptions::default()) {
+                Ok(t) => t,
+                Err(d) => {
+                    problems.push(format!("{name}: {}", diag::render_human(&d, &outcome.files, false)));
+                    continue;
+                }
+            };
+            for target in Target::ALL {
+                match back::emit(&t, target) {
+                    Ok(outputs) => assert!(!outputs.is_empty() && outputs.iter().all(|o| !o.bytes.is_empty())),
+                    // GLSL ES 3.00 has no `noperspective`: the one thing a target may refuse here.
+                    Err(e) if target == Target::Glsl && e.contains("NOPERSPECTIVE") => {}
+                    Err(e) => problems.push(format!("{name}: {}: {e}", target.name())),
                 }
             }
-        }
-        if let Some(gpu) = &gpu {
-            if t.stages.contains(&StageKind::Vertex) {
-                if let Err(e) = gpu.build_pipeline(&wgsl, &t.reflection) {
-                    problems.push(format!("{name}: wgpu pipeline: {e}"));
+            let text = |target| String::from_utf8(back::emit(&t, target).unwrap().remove(0).bytes).unwrap();
+            let wgsl = text(Target::Wgsl);
+            settings.bind(|| {
+                insta::assert_snapshot!(format!("{name}-ir"), text(Target::Ir));
+                insta::assert_snapshot!(format!("{name}-wgsl"), wgsl);
+            });
+            let asm_files = back::emit(&t, Target::Spvasm).unwrap();
+            for stage in &t.stages {
+                let words = back::spirv_words(&t, *stage).unwrap();
+                let file = format!("{name}.{}.spvasm", stage.short_name());
+                let asm = asm_files.iter().find(|o| o.file_name == file).expect("one disassembly per stage");
+                settings.bind(|| {
+                    insta::assert_snapshot!(format!("{name}-{}-spvasm", stage.short_name()), String::from_utf8_lossy(&asm.bytes))
+                });
+                if validate_spirv {
+                    if let Err(e) = spirv_val(&words, &scratch.join(format!("{name}.{}.spv", stage.short_name()))) {
+                        problems.push(format!("{name}: spirv-val ({stage}): {e}"));
+                    }
+                }
+            }
+            if let Some(gpu) = &gpu {
+                if t.stages.contains(&StageKind::Vertex) {
+                    if let Err(e) = gpu.build_pipeline(&wgsl, &t.reflection) {
+                        problems.push(format!("{name}: wgpu pipeline: {e}"));
+                    }
                 }
             }
         }

@@ -163,7 +163,8 @@ impl Ctx<'_> {
                         pass.name_span = v2.span();
                     }
                     Some(_) => {
-                        self.error(E_VALUE, v2.span(), format!("`{}` is not a valid pass name", key(k)), "use letters, digits, `_` and `-`");
+                        let shown = self.string(v2, what).unwrap_or_default().to_owned();
+                        self.error(E_VALUE, v2.span(), format!("`{shown}` is not a valid pass name"), "use letters, digits, `_` and `-`");
                         ok = false;
                     }
                     None => ok = false,

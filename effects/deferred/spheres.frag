@@ -1,0 +1,20 @@
+#version 330 core
+// Deferred renderer, G-buffer pass 2 (seed 001): lit spheres, fragment stage.
+// Diffuse colour, normal with is-lit = 1, no glow, world position.
+
+in Vertex {
+    vec3 colour;
+    vec3 normal;
+    vec3 worldPos;
+} IN;
+
+out vec4 fragColour[4];
+
+void main(void)
+{
+    vec3 N = normalize(IN.normal);
+    fragColour[0] = vec4(IN.colour, 1.0);
+    fragColour[1] = vec4(N * 0.5 + 0.5, 1.0);   // alpha 1: lit
+    fragColour[2] = vec4(0.0, 0.0, 0.0, 1.0);   // no glow
+    fragColour[3] = vec4(IN.worldPos, 1.0);
+}
