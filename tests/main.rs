@@ -10,6 +10,8 @@
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
 //! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
+//! - [`passes`]: multi-pass effects: skipped passes, dropped attachments, shared
+//!   textures, `--dump-targets`, per-pass translation.
 //! - [`pixels`]: every effect's frames against reference PNGs under `snapshots/png/`.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
@@ -22,6 +24,8 @@ mod common;
 mod fail;
 #[path = "suite/rewrite.rs"]
 mod rewrite;
+#[path = "suite/passes.rs"]
+mod passes;
 #[path = "suite/pixels.rs"]
 mod pixels;
 #[path = "suite/render.rs"]
