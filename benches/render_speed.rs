@@ -66,6 +66,7 @@ fn request(manifest: &Path, size: u32, frames: u32, out: PathBuf) -> Request {
         timeout: Duration::from_secs(60),
         progress: false,
         started: Instant::now(),
+        dump_targets: false,
     }
 }
 

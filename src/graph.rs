@@ -197,3 +197,106 @@ fn depends_on(effect: &Effect, from: usize, to: usize, path: &mut Vec<(usize, St
     }
     false
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::FileId;
+
+    /// An effect from `[[passes]]` text (stage files are not read by the parser's graph part).
+    fn effect(passes: &str) -> Effect {
+        let dir = std::env::temp_dir().join(format!("effectc-graph-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for f in ["a.vert", "a.frag"] {
+            std::fs::write(dir.join(f), "").unwrap();
+        }
+        let text = format!(
+            "output = \"final\"\n[targets]\na = {{}}\nb = {{}}\nc = {{}}\nd = {{ format = \"rgba16f\" }}\nz = {{ format = \"depth32f\" }}\nfinal = {{}}\n{passes}"
+        );
+        crate::manifest::parse_for_tests(&text, FileId(0), &dir).unwrap()
+    }
+
+    fn pass(name: &str, extra: &str) -> String {
+        format!("[[passes]]\nname = \"{name}\"\nstages = {{ vertex = \"a.vert\", fragment = \"a.frag\" }}\n{extra}\n")
+    }
+
+    #[test]
+    fn passes_that_do_not_reach_the_output_do_not_run() {
+        let e = effect(&[
+            pass("scene", "targets = [\"a\", \"b\"]"),
+            pass("debug", "targets = [\"c\"]"),
+            pass("post", "samples = { t = \"a\" }\ntargets = [\"final\"]"),
+        ]
+        .concat());
+        let plan = plan(&e, (64, 64), false);
+        assert_eq!(plan.runs, [true, false, true]);
+        assert_eq!(plan.attached[0], [true, false], "b is never read");
+        // Keeping everything (--dump-targets): every pass and attachment, no sharing.
+        let all = plan_all(&e);
+        assert_eq!(all.runs, [true, true, true]);
+        assert_eq!(all.attached[0], [true, true]);
+        assert!(all.textures.iter().all(|t| t.targets.len() == 1));
+    }
+
+    fn plan_all(e: &Effect) -> PassPlan {
+        plan(e, (64, 64), true)
+    }
+
+    #[test]
+    fn a_kept_target_makes_its_earlier_writer_run() {
+        // `overlay` draws onto `final` with clear = false: the combine before it must run;
+        // the first write of `final` is overwritten by `combine` (it clears), so `early` does not.
+        let e = effect(&[
+            pass("early", "targets = [\"final\"]"),
+            pass("combine", "targets = [\"final\"]\ndepth = \"z\""),
+            pass("overlay", "targets = [\"final\"]\ndepth = \"z\"\nclear = false"),
+        ]
+        .concat());
+        let plan = plan(&e, (64, 64), false);
+        assert_eq!(plan.runs, [false, true, true]);
+        assert_eq!(plan.depth_kept, [false, true, false]);
+    }
+
+    #[test]
+    fn targets_share_a_texture_when_lifetimes_do_not_overlap() {
+        let e = effect(&[
+            pass("p0", "targets = [\"a\"]"),
+            pass("p1", "samples = { t = \"a\" }\ntargets = [\"b\"]"),
+            pass("p2", "samples = { t = \"b\" }\ntargets = [\"c\"]"),
+            pass("p3", "samples = { t = \"c\" }\ntargets = [\"d\"]"),
+            pass("p4", "samples = { t = \"d\" }\ntargets = [\"final\"]"),
+        ]
+        .concat());
+        let plan = plan(&e, (64, 64), false);
+        // a [0,1], c [2,3] and final [4,end] share the first texture; b [1,2] overlaps
+        // both a and c; d is rgba16f: its own.
+        assert_eq!(plan.textures.len(), 3, "{:#?}", plan.textures);
+        assert_eq!(plan.texture_of("a"), plan.texture_of("c"));
+        assert_eq!(plan.texture_of("a"), plan.texture_of("final"));
+        assert_ne!(plan.texture_of("a"), plan.texture_of("b"));
+        assert_ne!(plan.texture_of("d"), plan.texture_of("a"));
+        // A target read while another is written never shares with it.
+        for t in &plan.textures {
+            for w in t.targets.windows(2) {
+                assert!(w[0].2 < w[1].1, "{:?} overlaps {:?}", w[0], w[1]);
+            }
+        }
+    }
+
+    #[test]
+    fn cycles_are_found_with_their_chain() {
+        let e = effect(&[
+            pass("first", "samples = { t = \"b\" }\ntargets = [\"a\"]"),
+            pass("second", "samples = { t = \"a\" }\ntargets = [\"b\"]"),
+            pass("third", "samples = { t = \"c\" }\ntargets = [\"final\"]"),
+            pass("fourth", "targets = [\"c\"]"),
+        ]
+        .concat());
+        let chain = cycle_through(&e, 0, "b").expect("first ← second ← first");
+        assert_eq!(chain, [(1, "b".to_string()), (0, "a".to_string())]);
+        // `third` reads `c` before `fourth` writes it, but `fourth` does not depend on `third`.
+        assert_eq!(cycle_through(&e, 2, "c"), None);
+        assert_eq!(writer_before(&e, 2, "c"), None);
+        assert_eq!(writer_before(&e, 1, "a"), Some(0));
+    }
+}

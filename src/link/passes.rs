@@ -143,7 +143,7 @@ fn attachment_sizes(effect: &Effect, pass: &PassDecl, out: &mut Vec<Diagnostic>)
         if t.size != first_size {
             out.push(
                 Diagnostic::error(E_SIZE, format!("the attachments of pass `{}` differ in size", pass.name))
-                    .at(effect.file, r.span.clone(), format!("{}", size_text(t.size)))
+                    .at(effect.file, r.span.clone(), size_text(t.size))
                     .with_label(effect.file, first.span.clone(), size_text(first_size))
                     .with_note("every target a pass draws into (colours and depth) must have the same size")
                     .with_help("give these targets the same `scale` or `size`"),

@@ -671,6 +671,12 @@ pub const MAX_FRAMES: u32 = 100_000;
 /// Read `path`, register its text in `files` and parse it. Relative paths in the manifest are
 /// resolved against the manifest's directory. An unreadable file gives one [`E_IO`]
 /// diagnostic (see [`is_io_error`]).
+/// Parses manifest text (for other modules' unit tests; files are looked up in `dir`).
+#[cfg(test)]
+pub(crate) fn parse_for_tests(text: &str, file: FileId, dir: &Path) -> Result<Effect, Vec<Diagnostic>> {
+    parse::parse(text, file, dir)
+}
+
 pub fn load(path: &Path, files: &mut Files) -> Result<Effect, Vec<Diagnostic>> {
     let shown = path.display().to_string();
     let bytes = match std::fs::read(path) {

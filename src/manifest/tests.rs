@@ -944,3 +944,93 @@ d = { }
     let no_count = errors(&minimal("[instances]\n"), &dir);
     assert!(one(&no_count, E_MISSING).message.contains("needs `count`"));
 }
+
+const PASSES: &str = r#"name = "post"
+output = "final"
+
+[uniforms]
+amount = 0.5
+
+[targets]
+scene = { format = "rgba16f" }
+half = { format = "r32f", scale = 0.5 }
+fixed = { format = "rgba8", size = [64, 32] }
+depth = { format = "depth32f" }
+final = {}
+
+[[passes]]
+name = "scene"
+stages = { vertex = "a.vert", fragment = "a.frag" }
+mesh = "cube"
+depth = "depth"
+targets = ["scene"]
+cull = "back"
+
+[[passes]]
+name = "post-1"
+stages = { vertex = "a.vert", fragment = "b.frag" }
+draw = "fullscreen"
+uniforms = { amount = 1.0 }
+samples = { sceneTex = "scene", lut = { target = "fixed", filter = "nearest" } }
+targets = ["final"]
+blend = "additive"
+clear = false
+"#;
+
+#[test]
+fn passes_targets_and_output_parse() {
+    let dir = fixture_dir("post", &["a.vert", "a.frag", "b.frag"]);
+    let e = run(PASSES, &dir).unwrap();
+    assert!(e.is_multi_pass() && e.stages.is_empty());
+    assert_eq!(e.output.as_ref().unwrap().name, "final");
+    let formats: Vec<(&str, TargetFormat)> = e.targets.iter().map(|t| (t.name.as_str(), t.format)).collect();
+    assert_eq!(
+        formats,
+        [("scene", TargetFormat::Rgba16f), ("half", TargetFormat::R32f), ("fixed", TargetFormat::Rgba8), ("depth", TargetFormat::Depth32f), ("final", TargetFormat::Rgba8)]
+    );
+    assert_eq!(e.target("half").unwrap().size.resolve((512, 300)), (256, 150));
+    assert_eq!(e.target("fixed").unwrap().size.resolve((512, 300)), (64, 32));
+    let [scene, post] = &e.passes[..] else { panic!("two passes") };
+    assert_eq!((scene.name.as_str(), scene.stages.len(), scene.depth.as_ref().unwrap().name.as_str()), ("scene", 2, "depth"));
+    assert_eq!(scene.cull, Some(Cull::Back));
+    assert_eq!(post.draw, PassDraw::Fullscreen);
+    assert_eq!(post.clear, PassClear::Keep);
+    assert_eq!(post.blend, Some(Blend::Additive));
+    let samples: Vec<(&str, &str, Filter)> =
+        post.samples.iter().map(|s| (s.sampler.as_str(), s.target.name.as_str(), s.filter)).collect();
+    assert_eq!(samples, [("sceneTex", "scene", Filter::Linear), ("lut", "fixed", Filter::Nearest)]);
+    // The pass view: the pass's stages, its uniform value over the shared one, the
+    // fullscreen triangle, no depth test without a depth target.
+    let view = e.pass_view(post, None);
+    assert_eq!(view.name, "post.post-1");
+    assert!(view.passes.is_empty() && view.stages.len() == 2);
+    assert_eq!(view.uniform("amount").unwrap().value, Some(UniformValue::Float(1.0)));
+    assert!(matches!(view.mesh.as_ref().unwrap().source, MeshSource::Builtin(BuiltinMesh::FullscreenTriangle)));
+    assert!(!view.render.depth_test);
+    assert_eq!(view.render.blend, Blend::Additive);
+    assert!(e.pass_view(scene, None).render.depth_test);
+}
+
+#[test]
+fn pass_mistakes_are_reported_at_their_keys() {
+    let dir = fixture_dir("post", &["a.vert", "a.frag", "b.frag"]);
+    let cases: &[(&str, &str, &str)] = &[
+        ("name = \"post\"\n[stages]\nvertex = \"a.vert\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_CONFLICT, "stages"),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\n", E_MISSING, "\"p\""),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\ntargets = [\"x\"]\n", E_MISSING, "\"p\""),
+        ("[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_MISSING, "passes"),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\neffect = \"../nowhere\"\ntargets = [\"x\"]\n", E_ASSET_NOT_FOUND, "\"../nowhere\""),
+        ("output = \"x\"\n[targets]\nx = { format = \"rgb9\" }\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_VALUE, "\"rgb9\""),
+        ("output = \"x\"\n[targets]\nx = { scale = 0.5, size = [4, 4] }\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_CONFLICT, "size"),
+        ("output = \"x\"\n[[passes]]\nname = \"a.b\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_VALUE, "\"a.b\""),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_VALUE, "\"p\""),
+        ("output = \"x\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\ndraw = \"quad\"\n", E_VALUE, "\"quad\""),
+        ("output = \"x\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\nsampels = {}\n", E_UNKNOWN_KEY, "sampels"),
+        ("output = \"x\"\n", E_CONFLICT, "\"x\""),
+    ];
+    for (text, code, at) in cases {
+        let diags = errors(text, &dir);
+        let d = diags.iter().find(|d| d.code == *code).unwrap_or_else(|| panic!("{code} for:\n{text}\ngot {diags:?}"));
+        assert_eq!(span_text(text, d), *at, "{text}");
+    }
+}

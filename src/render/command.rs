@@ -23,7 +23,7 @@ use crate::render::encode;
 use crate::back::Translation;
 use crate::manifest::{CameraDecl, ModelDecl};
 use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels, Target};
-use crate::render::passes::{PassGraph, PassProgram};
+use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
 use crate::render::scene::{ColorMode, Scene, SceneInput};
 use crate::render::semantics::FrameState;
 use crate::stage::StageKind;
@@ -264,7 +264,7 @@ fn wgsl_units(
 
 /// What draws the frames of one program.
 enum Drawer {
-    Single { scene: Box<Scene>, target: Target },
+    Single { scene: Box<Scene>, target: Box<Target> },
     Graph(Box<PassGraph>),
 }
 
@@ -334,7 +334,8 @@ fn build(
                     Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &pass.view })
                 })
                 .collect();
-            let graph = PassGraph::new(gpu, effect, plan.clone(), &programs, mode, flipped_y, request.dump_targets, size)?;
+            let options = GraphOptions { mode, flipped_y, dump: request.dump_targets, output_size: size };
+            let graph = PassGraph::new(gpu, effect, plan.clone(), &programs, options)?;
             Ok((Drawer::Graph(Box::new(graph)), effect.file))
         }
         _ => {
@@ -344,7 +345,7 @@ fn build(
                 SceneInput { translation, wgsl, program, effect: c.effect.as_ref(), mode, flipped_y, pass: None };
             let scene = Scene::new(gpu, &input)?;
             let target = Target::new(gpu, &scene, size.0, size.1, mode);
-            Ok((Drawer::Single { scene: Box::new(scene), target }, translation.file))
+            Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))
         }
     }
 }

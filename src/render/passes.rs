@@ -28,6 +28,18 @@ pub struct PassProgram<'a> {
     pub view: &'a Effect,
 }
 
+/// How a pass graph is built for one run.
+#[derive(Debug, Clone, Copy)]
+pub struct GraphOptions {
+    pub mode: ColorMode,
+    /// The translation negated clip y (rows are flipped back on readback).
+    pub flipped_y: bool,
+    /// `--dump-targets`: read every target back (the plan keeps every pass).
+    pub dump: bool,
+    /// The size of the output target at scale 1.
+    pub output_size: (u32, u32),
+}
+
 /// A pass as it runs every frame.
 struct RunningPass {
     name: String,
@@ -79,17 +91,15 @@ fn effective_format(format: TargetFormat, mode: ColorMode) -> wgpu::TextureForma
 
 impl PassGraph {
     /// Builds the textures and one scene per running pass. `programs` holds the passes
-    /// that run (those of `plan`, which was made for `output_size`), in order.
+    /// that run (those of `plan`, which was made for `options.output_size`), in order.
     pub fn new(
         gpu: &Gpu,
         effect: &Effect,
         plan: PassPlan,
         programs: &[PassProgram<'_>],
-        mode: ColorMode,
-        flipped_y: bool,
-        dump: bool,
-        output_size: (u32, u32),
+        options: GraphOptions,
     ) -> Result<PassGraph, Vec<Diagnostic>> {
+        let GraphOptions { mode, flipped_y, dump, output_size } = options;
         let output_name = effect.output.as_ref().map(|o| o.name.clone()).unwrap_or_default();
         let textures: Vec<wgpu::Texture> = plan
             .textures
@@ -290,7 +300,7 @@ impl PassGraph {
                 size: p.size,
                 view: camera::view_at(&p.scene.camera, state.time, aspect),
                 model: camera::model_at(&p.scene.model, state.time),
-                ..state.clone()
+                ..*state
             };
             frames::write_uniforms(gpu, &mut p.scene, &pass_state)?;
         }
