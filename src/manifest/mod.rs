@@ -587,7 +587,38 @@ pub struct RenderDecl {
     pub depth_test: bool,
     /// Depth writes when the depth test is on; default on (off for see-through layers).
     pub depth_write: bool,
+    /// The depth test's comparison (`glDepthFunc`); default `less`, as GL's.
+    pub depth_compare: DepthCompare,
     pub blend: Blend,
+}
+
+/// `glDepthFunc`: when a fragment passes the depth test.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum DepthCompare {
+    Never,
+    #[default]
+    Less,
+    Equal,
+    /// `GL_LEQUAL`: the skybox trick (`gl_Position = pos.xyww` lands on the cleared depth 1.0).
+    LessEqual,
+    Greater,
+    NotEqual,
+    GreaterEqual,
+    Always,
+}
+
+impl DepthCompare {
+    /// Manifest names, in GL's order.
+    pub const CHOICES: &'static [(&'static str, DepthCompare)] = &[
+        ("never", DepthCompare::Never),
+        ("less", DepthCompare::Less),
+        ("equal", DepthCompare::Equal),
+        ("lequal", DepthCompare::LessEqual),
+        ("greater", DepthCompare::Greater),
+        ("notequal", DepthCompare::NotEqual),
+        ("gequal", DepthCompare::GreaterEqual),
+        ("always", DepthCompare::Always),
+    ];
 }
 
 impl Default for RenderDecl {
@@ -600,6 +631,7 @@ impl Default for RenderDecl {
             cull: Cull::None,
             depth_test: true,
             depth_write: true,
+            depth_compare: DepthCompare::Less,
             blend: Blend::None,
         }
     }

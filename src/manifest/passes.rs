@@ -183,6 +183,7 @@ pub struct PassDecl {
     pub blend: Option<Blend>,
     pub cull: Option<Cull>,
     pub depth_write: Option<bool>,
+    pub depth_compare: Option<super::DepthCompare>,
     pub clear: PassClear,
 }
 
@@ -246,6 +247,9 @@ impl Effect {
         }
         if let Some(w) = pass.depth_write {
             view.render.depth_write = w;
+        }
+        if let Some(c) = pass.depth_compare {
+            view.render.depth_compare = c;
         }
         if pass.depth.is_some() {
             view.render.depth_test = true;

@@ -130,6 +130,7 @@ impl Gpu {
             blend: None,
             depth: None,
             depth_write: true,
+            depth_compare: wgpu::CompareFunction::Less,
             cull: None,
             front_face: wgpu::FrontFace::Ccw,
             fragment: reflection.entry_points.iter().any(|e| e.name == "fs_main"),
@@ -184,7 +185,7 @@ impl Gpu {
             depth_stencil: spec.depth.map(|format| wgpu::DepthStencilState {
                 format,
                 depth_write_enabled: Some(spec.depth_write),
-                depth_compare: Some(wgpu::CompareFunction::Less),
+                depth_compare: Some(spec.depth_compare),
                 stencil: Default::default(),
                 bias: Default::default(),
             }),
@@ -222,6 +223,8 @@ pub struct PipelineSpec<'a> {
     /// Depth buffer format (depth test `less`).
     pub depth: Option<wgpu::TextureFormat>,
     pub depth_write: bool,
+    /// The depth test (`glDepthFunc`).
+    pub depth_compare: wgpu::CompareFunction,
     pub cull: Option<wgpu::Face>,
     /// Counter-clockwise as in GL; clockwise when the translation flipped clip y.
     pub front_face: wgpu::FrontFace,

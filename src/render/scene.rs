@@ -168,6 +168,7 @@ impl Scene {
             blend: blend_state(render.blend),
             depth: depth_format,
             depth_write: render.depth_write,
+            depth_compare: depth_compare(render.depth_compare),
             cull: match render.cull {
                 Cull::None => None,
                 Cull::Back => Some(wgpu::Face::Back),
@@ -260,6 +261,21 @@ fn toml_key(name: &str) -> String {
         format!("\"{name}\"")
     } else {
         name.to_string()
+    }
+}
+
+fn depth_compare(c: crate::manifest::DepthCompare) -> wgpu::CompareFunction {
+    use crate::manifest::DepthCompare as D;
+    use wgpu::CompareFunction as C;
+    match c {
+        D::Never => C::Never,
+        D::Less => C::Less,
+        D::Equal => C::Equal,
+        D::LessEqual => C::LessEqual,
+        D::Greater => C::Greater,
+        D::NotEqual => C::NotEqual,
+        D::GreaterEqual => C::GreaterEqual,
+        D::Always => C::Always,
     }
 }
 

@@ -222,3 +222,23 @@ fn a_missing_adapter_is_a_clear_usage_error() {
     assert_eq!(code(&out), 2, "{text}");
     assert!(text.contains("error[E0401]") && text.contains("no-such-adapter-anywhere"), "{text}");
 }
+
+#[test]
+fn depth_compare_lequal_lets_the_skybox_trick_through() {
+    if !have_gpu() {
+        return;
+    }
+    // gl_Position = pos.xyww: depth 1.0, equal to the cleared depth. GL_LESS (the
+    // default) rejects every fragment; GL_LEQUAL draws the sky.
+    let centre = |manifest: &str| {
+        let dir = scratch("render", &format!("xyww-{manifest}"));
+        let path = format!("tests/render/xyww/{manifest}");
+        let out = effectc(&["render", &path, "--size", "32x32", "--out", dir.to_str().unwrap()]);
+        assert_eq!(code(&out), 0, "{}", stdout(&out));
+        let (pixels, w, h) = compare::read_png(&dir.join("xyww_0000.png")).unwrap();
+        let i = (((h / 2) * w + w / 2) * 4) as usize;
+        [pixels[i], pixels[i + 1], pixels[i + 2]]
+    };
+    assert_eq!(centre("effect.toml"), [51, 102, 230], "lequal draws the far-plane quad");
+    assert_eq!(centre("less.toml"), [0, 0, 0], "less keeps the clear colour");
+}

@@ -31,6 +31,7 @@ const PASS_KEYS: &[&str] = &[
     "blend",
     "cull",
     "depth_write",
+    "depth_compare",
     "clear",
 ];
 const SAMPLE_KEYS: &[&str] = &["target", "filter"];
@@ -148,6 +149,7 @@ impl Ctx<'_> {
             blend: None,
             cull: None,
             depth_write: None,
+            depth_compare: None,
             clear: PassClear::Default,
         };
         let mut ok = true;
@@ -221,6 +223,9 @@ impl Ctx<'_> {
                 "blend" => pass.blend = self.choice(v2, what, "blend mode", BLEND_CHOICES),
                 "cull" => pass.cull = self.choice(v2, what, "cull mode", CULL_CHOICES),
                 "depth_write" => pass.depth_write = self.boolean(v2, what),
+                "depth_compare" => {
+                    pass.depth_compare = self.choice(v2, what, "depth comparison", crate::manifest::DepthCompare::CHOICES)
+                }
                 "clear" => match v2.get_ref() {
                     DeValue::Boolean(false) => pass.clear = PassClear::Keep,
                     DeValue::Boolean(true) => pass.clear = PassClear::Default,

@@ -10,14 +10,15 @@ use toml::de::{DeTable, DeValue};
 
 use super::{entries, key, Ctx, Val};
 use crate::manifest::{
-    Blend, CameraDecl, CameraKey, Cull, Ease, InstanceAttribute, InstanceSource, InstancesDecl, ModelDecl, RenderDecl,
+    Blend, CameraDecl, DepthCompare, CameraKey, Cull, Ease, InstanceAttribute, InstanceSource, InstancesDecl, ModelDecl, RenderDecl,
     E_CONFLICT, E_MISSING, E_VALUE, MAX_FRAMES, MAX_FRAME_SIDE, MAX_INSTANCES,
 };
 
 const CAMERA_KEYS: &[&str] = &["eye", "target", "up", "fov", "near", "far", "keys", "ease"];
 const CAMERA_KEY_KEYS: &[&str] = &["time", "eye", "target"];
 const MODEL_KEYS: &[&str] = &["translate", "rotate", "scale", "spin"];
-const RENDER_KEYS: &[&str] = &["size", "frames", "fps", "clear", "cull", "depth_test", "depth_write", "blend"];
+const RENDER_KEYS: &[&str] =
+    &["size", "frames", "fps", "clear", "cull", "depth_test", "depth_write", "depth_compare", "blend"];
 const INSTANCES_KEYS: &[&str] = &["count", "attributes"];
 pub(super) const CULL_CHOICES: &[(&str, Cull)] = &[("none", Cull::None), ("back", Cull::Back), ("front", Cull::Front)];
 pub(super) const BLEND_CHOICES: &[(&str, Blend)] = &[
@@ -319,6 +320,9 @@ impl Ctx<'_> {
                 "cull" => self.choice(v2, what, "cull mode", CULL_CHOICES).map(|c| r.cull = c).is_some(),
                 "depth_test" => self.boolean(v2, what).map(|b| r.depth_test = b).is_some(),
                 "depth_write" => self.boolean(v2, what).map(|b| r.depth_write = b).is_some(),
+                "depth_compare" => {
+                    self.choice(v2, what, "depth comparison", DepthCompare::CHOICES).map(|c| r.depth_compare = c).is_some()
+                }
                 "blend" => self.choice(v2, what, "blend mode", BLEND_CHOICES).map(|b| r.blend = b).is_some(),
                 other => {
                     self.unknown_key(other, k.span(), "in `[render]`", RENDER_KEYS);
