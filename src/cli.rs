@@ -22,6 +22,8 @@ pub enum Command {
     Translate(TranslateArgs),
     /// Check, translate to WGSL and render frames headlessly with wgpu (PNG, contact sheet, GIF).
     Render(RenderArgs),
+    /// Sweep quality knobs: GPU ms/frame against the error from the reference value's frames.
+    Bench(BenchArgs),
 }
 
 /// Output format for diagnostics.
@@ -192,6 +194,31 @@ pub struct RenderArgs {
     /// targets share a texture.
     #[arg(long)]
     pub explain: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct BenchArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// `NAME=v1,v2,…`: sweep the uniform NAME over these values, the last being the reference
+    /// (repeatable; default: the manifest's [knobs]).
+    #[arg(long = "knob", value_parser = crate::bench::parse_knob)]
+    pub knobs: Vec<(String, Vec<f64>)>,
+    /// Frames per value (effect time advances 1/8 s per frame).
+    #[arg(long, default_value_t = 4)]
+    pub frames: u32,
+    /// Frame size `WIDTHxHEIGHT`.
+    #[arg(long, value_parser = parse_size, default_value = "256x256")]
+    pub size: (u32, u32),
+    /// Renders of every value (ms/frame median and spread over all of them).
+    #[arg(long, default_value_t = 3)]
+    pub repeats: u32,
+    /// Write the error-against-time curve of every knob as an SVG.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Seconds a frame may take before the run stops.
+    #[arg(long, default_value_t = 10.0)]
+    pub timeout: f64,
 }
 
 /// `512x512` → (512, 512).

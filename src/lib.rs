@@ -13,10 +13,12 @@
 //!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection; [`translate`] writes them (per pass, for
 //!    the passes that reach the output).
 //! 8. [`render`]: wgpu headless: scenes, targets, frames, pass graphs (one scene per pass).
-//! 9. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
+//! 9. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
+//! 10. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
 //!    (human, JSON, GitHub annotations, SARIF).
 
 pub mod back;
+pub mod bench;
 pub mod check;
 pub mod cli;
 pub mod diag;

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use effectc::back::{Target, TranslateOptions};
 use effectc::check::Outcome;
-use effectc::cli::{CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, TargetArg, TranslateArgs};
+use effectc::cli::{BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, TargetArg, TranslateArgs};
 use effectc::diag;
 use effectc::front::program::FrontOptions;
 
@@ -28,6 +28,7 @@ fn main() -> ExitCode {
         Command::Check(args) => check(args),
         Command::Translate(args) => translate(args),
         Command::Render(args) => render(args),
+        Command::Bench(args) => bench(args),
     }
 }
 
@@ -78,6 +79,65 @@ fn render(args: RenderArgs) -> ExitCode {
         std::process::exit(1);
     }
     if printed.is_err() {
+        return ExitCode::from(2);
+    }
+    exit_code(&result.outcome, false)
+}
+
+fn bench(args: BenchArgs) -> ExitCode {
+    let c = &args.common;
+    let limits_ok = args.frames >= 1
+        && args.frames <= 1000
+        && args.repeats >= 1
+        && args.repeats <= 100
+        && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.0)
+        && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.1)
+        && args.timeout.is_finite()
+        && args.timeout > 0.0;
+    if !limits_ok {
+        eprintln!("error: --frames must be 1..=1000, --repeats 1..=100, --size 1..=8192 per side, --timeout positive");
+        return ExitCode::from(2);
+    }
+    let request = effectc::bench::Request {
+        inputs: c.inputs.clone(),
+        stage: c.stage.map(Into::into),
+        front: FrontOptions { strict: c.strict },
+        knobs: args.knobs.clone(),
+        frames: args.frames,
+        size: args.size,
+        repeats: args.repeats,
+        step: 0.125,
+        timeout: std::time::Duration::from_secs_f64(args.timeout),
+    };
+    let mut result = effectc::bench::run(&request);
+    if let Some(path) = &args.plot {
+        if let Err(e) = effectc::bench::plot::write_svg(path, &result.reports) {
+            result.outcome.io_error |= !result.reports.is_empty();
+            result.outcome.diagnostics.push(effectc::diag::Diagnostic::error(effectc::translate::E_OUTPUT_IO, e));
+        }
+    }
+    let text = match c.format {
+        Format::Json => {
+            let diagnostics: serde_json::Value =
+                serde_json::from_str(&diag::render_json(&result.outcome.diagnostics, &result.outcome.files)).unwrap_or_default();
+            let doc = serde_json::json!({ "version": 1, "adapter": result.adapter, "reports": result.reports, "diagnostics": diagnostics });
+            serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
+        }
+        _ => {
+            let mut text = String::new();
+            if let Some(a) = &result.adapter {
+                text.push_str(&format!("adapter: {a}\n"));
+            }
+            for r in &result.reports {
+                text.push_str(&effectc::bench::table(r));
+            }
+            if let Some(p) = args.plot.as_ref().filter(|_| !result.reports.is_empty()) {
+                text.push_str(&format!("plot: {}\n", p.display()));
+            }
+            text + &diagnostics_text(c, &result.outcome)
+        }
+    };
+    if print(&text).is_err() {
         return ExitCode::from(2);
     }
     exit_code(&result.outcome, false)

@@ -7,6 +7,7 @@
 //!   the human rendering is snapshotted under `snapshots/fail/`.
 //! - [`rewrite`]: legal desktop GLSL under `tests/rewrite/` checks clean; the 4.50 text
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
+//! - [`bench`]: `effectc bench` knob sweeps (error to 0 at the reference, plot, mistakes).
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
 //! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
@@ -16,6 +17,8 @@
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
 
+#[path = "suite/bench.rs"]
+mod bench;
 #[path = "suite/cli.rs"]
 mod cli;
 #[path = "suite/common.rs"]

@@ -124,6 +124,8 @@ pub struct Effect {
     pub targets: Vec<TargetDecl>,
     /// `output`: the target written as the frame (multi-pass effects).
     pub output: Option<TargetRef>,
+    /// `[knobs]`: uniforms `effectc bench` sweeps, in manifest order.
+    pub knobs: Vec<KnobDecl>,
     /// Warnings found while reading the manifest (the effect is still usable).
     pub warnings: Vec<Diagnostic>,
 }
@@ -590,6 +592,18 @@ pub struct RenderDecl {
     /// The depth test's comparison (`glDepthFunc`); default `less`, as GL's.
     pub depth_compare: DepthCompare,
     pub blend: Blend,
+}
+
+/// One `[knobs]` entry: a quality knob (a `[uniforms]` entry) and the values to sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KnobDecl {
+    /// The uniform's name (an entry of `[uniforms]`).
+    pub name: String,
+    pub name_span: Range<usize>,
+    /// Values to sweep, in manifest order.
+    pub values: Vec<f64>,
+    /// The most accurate value, which the others are compared with (one of `values`).
+    pub reference: f64,
 }
 
 /// `glDepthFunc`: when a fragment passes the depth test.

@@ -14,6 +14,7 @@ use super::*;
 use crate::diag::{Diagnostic, FileId};
 use crate::stage::StageKind;
 
+mod knobs;
 mod passes;
 mod scene;
 
@@ -34,6 +35,7 @@ const ROOT_KEYS: &[&str] = &[
     "targets",
     "passes",
     "output",
+    "knobs",
 ];
 const UNIFORM_KEYS: &[&str] = &["value", "range", "semantic"];
 const TEXTURE_KEYS: &[&str] = &[
@@ -417,6 +419,7 @@ impl Ctx<'_> {
         let mut targets = Vec::new();
         let mut targets_key = None;
         let mut output = None;
+        let mut knobs = Vec::new();
         for (k, v) in entries(root) {
             match key(k) {
                 "name" => {
@@ -470,6 +473,11 @@ impl Ctx<'_> {
                         targets = self.targets(t);
                     }
                 }
+                "knobs" => {
+                    if let Some(t) = self.table(v, "`knobs`") {
+                        knobs = self.knobs(t);
+                    }
+                }
                 "output" => {
                     if let Some(s) = self.string(v, "`output`") {
                         output = Some(TargetRef { name: s.to_owned(), span: v.span() });
@@ -505,6 +513,17 @@ impl Ctx<'_> {
                 d.help = Some("samplers get a texture in [textures]; other uniforms get a value in [uniforms]".into());
             }
         }
+        for k in &knobs {
+            if !uniforms.iter().any(|u| u.name == k.name && u.value.as_ref().and_then(UniformValue::as_f64).is_some()) {
+                let d = self.error(
+                    E_VALUE,
+                    k.name_span.clone(),
+                    format!("knob `{}` is not a number in [uniforms]", k.name),
+                    "no numeric [uniforms] entry of this name",
+                );
+                d.help = Some(format!("a knob sweeps a uniform's value: add `{} = <default>` to [uniforms]", k.name));
+            }
+        }
         let (name, name_span) = name.unwrap_or_else(|| (default_name(self.dir), 0..0));
         Effect {
             file: self.file,
@@ -523,6 +542,7 @@ impl Ctx<'_> {
             passes,
             targets,
             output,
+            knobs,
             warnings: Vec::new(),
         }
     }

@@ -21,7 +21,7 @@ use crate::render::camera;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::back::Translation;
-use crate::manifest::{CameraDecl, ModelDecl};
+use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels, Target};
 use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
 use crate::render::scene::{ColorMode, Scene, SceneInput};
@@ -159,7 +159,7 @@ pub fn run(request: &Request) -> RunResult {
             continue;
         }
         let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, request) {
+        let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, request, &[]) {
             Ok(d) => d,
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
@@ -322,16 +322,27 @@ fn build(
     size: (u32, u32),
     mode: ColorMode,
     request: &Request,
+    overrides: &[(String, UniformValue)],
 ) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
     let flipped_y = request.back.flip_y;
+    let with_overrides = |e: &Effect| {
+        let mut e = e.clone();
+        for (name, value) in overrides {
+            if let Some(u) = e.uniforms.iter_mut().find(|u| u.name == *name) {
+                u.value = Some(value.clone());
+            }
+        }
+        e
+    };
     match (&prepared.plan, c.effect.as_ref()) {
         (Some(plan), Some(effect)) => {
+            let views: Vec<Effect> = c.passes.iter().map(|p| with_overrides(&p.view)).collect();
             let programs: Vec<PassProgram<'_>> = prepared
                 .units
                 .iter()
                 .filter_map(|(i, t, wgsl)| {
                     let pass = &c.passes[*i];
-                    Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &pass.view })
+                    Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &views[*i] })
                 })
                 .collect();
             let options = GraphOptions { mode, flipped_y, dump: request.dump_targets, output_size: size };
@@ -341,13 +352,103 @@ fn build(
         _ => {
             let (_, translation, wgsl) = &prepared.units[0];
             let program = c.program.as_ref().expect("translated programs have a program");
-            let input =
-                SceneInput { translation, wgsl, program, effect: c.effect.as_ref(), mode, flipped_y, pass: None };
+            let effect = c.effect.as_ref().map(with_overrides);
+            let input = SceneInput { translation, wgsl, program, effect: effect.as_ref(), mode, flipped_y, pass: None };
             let scene = Scene::new(gpu, &input)?;
             let target = Target::new(gpu, &scene, size.0, size.1, mode);
             Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))
         }
     }
+}
+
+/// The per-frame values of frame `index` at effect time `time`.
+fn frame_state(drawer: &Drawer, index: u32, time: f64, step: f64, (w, h): (u32, u32)) -> FrameState {
+    let aspect = w as f32 / h as f32;
+    FrameState {
+        index,
+        time,
+        delta: step,
+        size: (w, h),
+        view: camera::view_at(drawer.camera(), time, aspect),
+        model: camera::model_at(drawer.model(), time),
+    }
+}
+
+/// Frames rendered in memory by [`render_in_memory`].
+pub struct MemoryRun {
+    /// RGBA8 pixels per frame, top row first.
+    pub frames: Vec<Vec<u8>>,
+    pub gpu_ms: Vec<f64>,
+    pub clock: GpuClock,
+}
+
+/// Renders `frames` frames (time `i × step`) of a checked program at `size` without
+/// writing files, with uniform values replaced by `overrides` (for `effectc bench`).
+/// Problems go to `outcome`; `None` when the program cannot be rendered.
+pub fn render_in_memory(
+    gpu: &Gpu,
+    c: &check::Checked,
+    outcome: &mut Outcome,
+    overrides: &[(String, UniformValue)],
+    size: (u32, u32),
+    frames: u32,
+    step: f64,
+    timeout: Duration,
+) -> Option<MemoryRun> {
+    let request = Request {
+        inputs: Vec::new(),
+        stage: None,
+        front: FrontOptions::default(),
+        back: TranslateOptions::for_rendering(true),
+        frames: Some(frames),
+        step: Step::Seconds(step),
+        start: 0.0,
+        size: Some(size),
+        out: None,
+        contact_sheet: false,
+        gif: false,
+        float: false,
+        timeout,
+        progress: false,
+        started: Instant::now(),
+        dump_targets: false,
+    };
+    let prepared = prepare(c, outcome, &request)?;
+    let (mut drawer, file) = match build(gpu, &prepared, c, size, ColorMode::Unorm8, &request, overrides) {
+        Ok(d) => d,
+        Err(diags) => {
+            outcome.diagnostics.extend(diags);
+            return None;
+        }
+    };
+    let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock() };
+    for i in 0..frames {
+        let state = frame_state(&drawer, i, f64::from(i) * step, step, size);
+        match drawer.draw(gpu, &state, timeout) {
+            Ok(Frame { pixels: Pixels::Rgba8(p), gpu_ms, .. }) => {
+                run.frames.push(p);
+                run.gpu_ms.push(gpu_ms);
+            }
+            Ok(Frame { pixels: Pixels::Rgba32F(f), gpu_ms, .. }) => {
+                run.frames.push(encode::float_to_rgba8(&f));
+                run.gpu_ms.push(gpu_ms);
+            }
+            Err(e) => {
+                let hung = matches!(e, FrameError::Timeout(_));
+                let message = match e {
+                    FrameError::Timeout(t) => format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()),
+                    FrameError::Device(d) => format!("frame {i} failed on the device: {d}"),
+                };
+                outcome.diagnostics.push(Diagnostic::error(if hung { E_TIMEOUT } else { E_FRAME }, message).in_file(file));
+                if hung {
+                    // The device is still busy: dropping the scene would wait for it.
+                    std::mem::forget(drawer);
+                }
+                return None;
+            }
+        }
+    }
+    Some(run)
 }
 
 /// Flags beyond the limits, refused before anything is allocated.
@@ -442,15 +543,7 @@ fn draw_frames(
         let encoder = s.spawn(move || encode_frames(rx, &encoder_name, &plan.dir, plan.size, keep, inputs));
         for i in 0..plan.frames {
             let time = plan.start + f64::from(i) * plan.step;
-            let aspect = w as f32 / h as f32;
-            let state = FrameState {
-                index: i,
-                time,
-                delta: plan.step,
-                size: plan.size,
-                view: camera::view_at(drawer.camera(), time, aspect),
-                model: camera::model_at(drawer.model(), time),
-            };
+            let state = frame_state(drawer, i, time, plan.step, plan.size);
             match drawer.draw(gpu, &state, request.timeout) {
                 Ok(Frame { pixels, gpu_ms, cpu_ms, dumps }) => {
                     reports.push(FrameReport { index: i, time, gpu_ms, cpu_ms, non_finite: None });
