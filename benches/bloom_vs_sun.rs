@@ -11,7 +11,8 @@
 //! difference of frame times measured here. Two clocks: the steady-state wall ms/frame of
 //! effectc's render path (difference of a (n + 4)- and a 4-frame run, best of 2, so
 //! start-up cancels) and the GPU timestamps around the passes (median of the frames):
-//! - in-shader blur = `sun` − `sun` with `blurEffectRadius = 0` (a copy made for the run);
+//! - in-shader blur = `sun` − `sun` with the knob `blurEffectRadius = 0` (a copy of the
+//!   manifest made for the run);
 //! - separable bloom = `bloom` − `sun` (bright pass, two blurs, combine).
 //!
 //! Run: `cargo bench --bench bloom_vs_sun` (options: `-- --size 512 --frames 12`).
@@ -68,9 +69,9 @@ fn sun_without_blur(dir: &Path) -> PathBuf {
     std::fs::create_dir_all(dir).unwrap();
     for file in ["effect.toml", "sun.vert", "sun.frag"] {
         let text = std::fs::read_to_string(Path::new("effects/sun").join(file)).unwrap();
-        let text = if file == "sun.frag" {
-            let changed = text.replace("const int blurEffectRadius = 6;", "const int blurEffectRadius = 0;");
-            assert_ne!(changed, text, "sun.frag no longer declares blurEffectRadius = 6");
+        let text = if file == "effect.toml" {
+            let changed = text.replace("blurEffectRadius = { value = 6,", "blurEffectRadius = { value = 0,");
+            assert_ne!(changed, text, "effect.toml no longer gives blurEffectRadius = 6");
             changed
         } else {
             text

@@ -17,7 +17,7 @@ uniform float minBI;       // Minimum bloom intensity
 uniform float maxBI;       // Maximum bloom intensity
 uniform float bFrequency;  // Bloom pulse frequency (radians per second)
 
-const int blurEffectRadius = 6; // (2r+1)^2 = 169 taps
+uniform int blurEffectRadius; // quality knob: (2r+1)^2 taps, 169 at the default 6
 
 void main()
 {

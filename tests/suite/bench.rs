@@ -58,7 +58,7 @@ fn bench_mistakes_are_reported() {
     assert_eq!(code(&out), 1, "{}", stdout(&out));
     assert!(stdout(&out).contains("E0801") && stdout(&out).contains("`numLayers`"), "{}", stdout(&out));
     // An effect without [knobs] and no --knob.
-    let out = effectc(&["bench", "effects/sun/effect.toml"]);
+    let out = effectc(&["bench", "effects/phong/effect.toml"]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
     assert!(stdout(&out).contains("E0802"), "{}", stdout(&out));
     // A malformed flag is a usage error.

@@ -137,13 +137,15 @@ fn manifest_defaults_pack_into_the_reflected_bytes() {
         let value = fill.value.as_ref().unwrap().as_f64().expect("sun's defaults are numbers");
         let [start, end] = fill.bytes;
         assert_eq!(end - start, 4, "{}", fill.uniform);
-        let stored = f32::from_le_bytes(bytes[start as usize..end as usize].try_into().unwrap());
-        assert_eq!(stored, value as f32, "{} at {start}", fill.uniform);
         let member = block.members.iter().find(|m| m.name == fill.uniform).unwrap();
+        let raw: [u8; 4] = bytes[start as usize..end as usize].try_into().unwrap();
+        // `blurEffectRadius` is an int; the other defaults are floats.
+        let stored = if member.glsl_type == "int" { f64::from(i32::from_le_bytes(raw)) } else { f64::from(f32::from_le_bytes(raw)) };
+        assert_eq!(stored, f64::from(value as f32), "{} at {start}", fill.uniform);
         assert_eq!(member.offset, start, "the fill and the member agree on {}", fill.uniform);
         checked_fills += 1;
     }
-    assert!(checked_fills >= 6, "sun sets minBI, maxBI, bFrequency, swirlIntensity, swirlSeed, randomConstant");
+    assert!(checked_fills >= 7, "sun sets minBI, maxBI, bFrequency, swirlIntensity, swirlSeed, randomConstant, blurEffectRadius");
     // Semantics are filled by the renderer: zero here, but their bytes are reflected.
     assert!(block.fills.iter().any(|f| f.semantic.as_deref() == Some("time")));
 }
