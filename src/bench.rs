@@ -19,9 +19,9 @@ use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
-use crate::render::command::{self, MemoryRun};
+use crate::render::command::{self, MemoryRequest, MemoryRun};
 use crate::render::device::Gpu;
-use crate::render::frames::GpuClock;
+use crate::render::frames::{GpuClock, Pixels};
 use crate::stage::StageKind;
 
 pub const E_KNOB_UNKNOWN: &str = "E0801";
@@ -100,7 +100,7 @@ pub fn run(request: &Request) -> BenchResult {
         let knobs = match knobs_of(effect, request) {
             Ok(k) => k,
             Err(d) => {
-                outcome.diagnostics.push(d);
+                outcome.diagnostics.push(*d);
                 continue;
             }
         };
@@ -132,13 +132,13 @@ pub fn run(request: &Request) -> BenchResult {
 /// The knobs to sweep: (name, values, reference, the default value as a template of its type).
 type Knob = (String, Vec<f64>, f64, UniformValue);
 
-fn knobs_of(effect: &Effect, request: &Request) -> Result<Vec<Knob>, Diagnostic> {
+fn knobs_of(effect: &Effect, request: &Request) -> Result<Vec<Knob>, Box<Diagnostic>> {
     let default_of = |name: &str| effect.uniform(name).and_then(|u| u.value.clone()).filter(|v| v.as_f64().is_some());
     if request.knobs.is_empty() {
         if effect.knobs.is_empty() {
-            return Err(Diagnostic::error(E_NOTHING, format!("effect `{}` has no [knobs] and no --knob was given", effect.name))
+            return Err(Box::new(Diagnostic::error(E_NOTHING, format!("effect `{}` has no [knobs] and no --knob was given", effect.name))
                 .in_file(effect.file)
-                .with_help("add e.g. `[knobs]` / `numLayers = { values = [4, 8, 16, 32], reference = 32 }`, or pass --knob numLayers=4,8,16,32"));
+                .with_help("add e.g. `[knobs]` / `numLayers = { values = [4, 8, 16, 32], reference = 32 }`, or pass --knob numLayers=4,8,16,32")));
         }
         return Ok(effect
             .knobs
@@ -155,9 +155,9 @@ fn knobs_of(effect: &Effect, request: &Request) -> Result<Vec<Knob>, Diagnostic>
                 .filter(|u| u.value.as_ref().and_then(UniformValue::as_f64).is_some())
                 .map(|u| format!("`{}`", u.name))
                 .collect();
-            return Err(Diagnostic::error(E_KNOB_UNKNOWN, format!("--knob `{name}` names no numeric [uniforms] entry of `{}`", effect.name))
+            return Err(Box::new(Diagnostic::error(E_KNOB_UNKNOWN, format!("--knob `{name}` names no numeric [uniforms] entry of `{}`", effect.name))
                 .in_file(effect.file)
-                .with_note(if numeric.is_empty() { "the manifest gives no numeric uniform".to_string() } else { format!("numeric uniforms: {}", numeric.join(", ")) }));
+                .with_note(if numeric.is_empty() { "the manifest gives no numeric uniform".to_string() } else { format!("numeric uniforms: {}", numeric.join(", ")) })));
         };
         let reference = *values.last().expect("parsed lists are non-empty");
         out.push((name.clone(), values.clone(), reference, template));
@@ -184,21 +184,29 @@ fn sweep(
     reference: f64,
     template: &UniformValue,
 ) -> Option<KnobReport> {
+    let memory = MemoryRequest {
+        size: request.size,
+        frames: request.frames,
+        start: 0.0,
+        step: request.step,
+        float: false,
+        timeout: request.timeout,
+    };
     // Warm-up: the first pipelines and the first frames are slower (caches, page faults).
-    command::render_in_memory(gpu, c, outcome, &[], request.size, request.frames.min(2), request.step, request.timeout)?;
+    command::render_in_memory(gpu, c, outcome, &[], MemoryRequest { frames: request.frames.min(2), ..memory })?;
     let mut runs: Vec<(f64, MemoryRun, Vec<f64>)> = Vec::new();
     for &value in values {
         let overrides = [(name.to_string(), typed(value, template))];
         let mut first = None;
         let mut times = Vec::new();
         for _ in 0..request.repeats.max(1) {
-            let run = command::render_in_memory(gpu, c, outcome, &overrides, request.size, request.frames, request.step, request.timeout)?;
+            let run = command::render_in_memory(gpu, c, outcome, &overrides, memory)?;
             times.extend_from_slice(&run.gpu_ms);
             first.get_or_insert(run);
         }
         runs.push((value, first?, times));
     }
-    let reference_frames = runs.iter().find(|(v, _, _)| *v == reference).map(|(_, r, _)| r.frames.clone())?;
+    let reference_frames = runs.iter().find(|(v, _, _)| *v == reference).map(|(_, r, _)| rgba8(&r.frames))?;
     let clock = match runs[0].1.clock {
         GpuClock::Timestamps => "timestamps",
         GpuClock::Wall => "wall",
@@ -208,7 +216,7 @@ fn sweep(
         .map(|(value, run, mut times)| {
             times.sort_by(f64::total_cmp);
             let errors: Vec<FrameError> =
-                run.frames.iter().zip(&reference_frames).map(|(a, b)| frame_error(a, b, request.size)).collect();
+                rgba8(&run.frames).iter().zip(&reference_frames).map(|(a, b)| frame_error(a, b, request.size)).collect();
             let n = errors.len().max(1) as f64;
             let psnr: Vec<f64> = errors.iter().filter_map(|e| e.psnr_db).collect();
             Row {
@@ -235,6 +243,17 @@ fn sweep(
         clock,
         rows,
     })
+}
+
+/// The frames as RGBA8.
+fn rgba8(frames: &[Pixels]) -> Vec<Vec<u8>> {
+    frames
+        .iter()
+        .map(|p| match p {
+            Pixels::Rgba8(b) => b.clone(),
+            Pixels::Rgba32F(f) => crate::render::encode::float_to_rgba8(f),
+        })
+        .collect()
 }
 
 /// Errors of one frame against the reference frame.
@@ -346,7 +365,7 @@ mod tests {
 
     #[test]
     fn frame_errors_measure_difference() {
-        let a = vec![100u8, 100, 100, 255].repeat(64);
+        let a = [100u8, 100, 100, 255].repeat(64);
         let same = frame_error(&a, &a, (8, 8));
         assert_eq!((same.mean, same.max, same.psnr_db), (0.0, 0.0, None));
         assert!((same.ssim - 1.0).abs() < 1e-6);

@@ -24,6 +24,9 @@ pub enum Command {
     Render(RenderArgs),
     /// Sweep quality knobs: GPU ms/frame against the error from the reference value's frames.
     Bench(BenchArgs),
+    /// Render into float targets at the ends and random points of the uniform ranges and at
+    /// extreme times; count NaN/Inf pixels per case.
+    Stress(StressArgs),
 }
 
 /// Output format for diagnostics.
@@ -216,6 +219,27 @@ pub struct BenchArgs {
     /// Write the error-against-time curve of every knob as an SVG.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Seconds a frame may take before the run stops.
+    #[arg(long, default_value_t = 10.0)]
+    pub timeout: f64,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct StressArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Random points of the uniform ranges, besides their ends.
+    #[arg(long, default_value_t = 8)]
+    pub samples: u32,
+    /// Seed of the random points.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u32,
+    /// Frame size `WIDTHxHEIGHT`.
+    #[arg(long, value_parser = parse_size, default_value = "128x128")]
+    pub size: (u32, u32),
+    /// Where masks of failing cases go (default `out/stress/`).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
     /// Seconds a frame may take before the run stops.
     #[arg(long, default_value_t = 10.0)]
     pub timeout: f64,

@@ -12,10 +12,12 @@
 //! 6. [`back`]: a clean program's stage modules → one merged, fixed, pruned module →
 //!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection; [`translate`] writes them (per pass, for
 //!    the passes that reach the output).
-//! 8. [`render`]: wgpu headless: scenes, targets, frames, pass graphs (one scene per pass).
+//! 7. [`render`]: wgpu headless: scenes, targets, frames, pass graphs (one scene per pass).
+//! 8. [`stability`]: `effectc stress`, renders under extreme inputs counting NaN/Inf.
 //! 9. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
-//! 10. [`diag`]: every finding is a [`diag::Diagnostic`], rendered by one emitter
-//!    (human, JSON, GitHub annotations, SARIF).
+//!
+//! Every finding is a [`diag::Diagnostic`], rendered by one emitter (human, JSON, GitHub
+//! annotations, SARIF).
 
 pub mod back;
 pub mod bench;
@@ -28,5 +30,6 @@ pub mod inputs;
 pub mod link;
 pub mod manifest;
 pub mod render;
+pub mod stability;
 pub mod stage;
 pub mod translate;

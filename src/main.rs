@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use effectc::back::{Target, TranslateOptions};
 use effectc::check::Outcome;
-use effectc::cli::{BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, TargetArg, TranslateArgs};
+use effectc::cli::{BenchArgs, CheckArgs, Cli, StressArgs, ColorChoice, Command, CommonArgs, Format, RenderArgs, TargetArg, TranslateArgs};
 use effectc::diag;
 use effectc::front::program::FrontOptions;
 
@@ -29,6 +29,7 @@ fn main() -> ExitCode {
         Command::Translate(args) => translate(args),
         Command::Render(args) => render(args),
         Command::Bench(args) => bench(args),
+        Command::Stress(args) => stress(args),
     }
 }
 
@@ -133,6 +134,46 @@ fn bench(args: BenchArgs) -> ExitCode {
             }
             if let Some(p) = args.plot.as_ref().filter(|_| !result.reports.is_empty()) {
                 text.push_str(&format!("plot: {}\n", p.display()));
+            }
+            text + &diagnostics_text(c, &result.outcome)
+        }
+    };
+    if print(&text).is_err() {
+        return ExitCode::from(2);
+    }
+    exit_code(&result.outcome, false)
+}
+
+fn stress(args: StressArgs) -> ExitCode {
+    let c = &args.common;
+    let sizes_ok = (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.0)
+        && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.1);
+    if !sizes_ok || args.samples > 10_000 || !(args.timeout.is_finite() && args.timeout > 0.0) {
+        eprintln!("error: --size must be 1..=8192 per side, --samples at most 10000, --timeout positive");
+        return ExitCode::from(2);
+    }
+    let request = effectc::stability::stress::Request {
+        inputs: c.inputs.clone(),
+        stage: c.stage.map(Into::into),
+        front: FrontOptions { strict: c.strict },
+        samples: args.samples,
+        seed: args.seed,
+        size: args.size,
+        timeout: std::time::Duration::from_secs_f64(args.timeout),
+        out: Some(args.out.clone().unwrap_or_else(|| std::path::PathBuf::from("out/stress"))),
+    };
+    let result = effectc::stability::stress::run(&request);
+    let text = match c.format {
+        Format::Json => {
+            let diagnostics: serde_json::Value =
+                serde_json::from_str(&diag::render_json(&result.outcome.diagnostics, &result.outcome.files)).unwrap_or_default();
+            let doc = serde_json::json!({ "version": 1, "adapter": result.adapter, "programs": result.reports, "diagnostics": diagnostics });
+            serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
+        }
+        _ => {
+            let mut text = String::new();
+            for r in &result.reports {
+                text.push_str(&effectc::stability::stress::table(r));
             }
             text + &diagnostics_text(c, &result.outcome)
         }

@@ -14,6 +14,8 @@
 //! - [`passes`]: multi-pass effects: skipped passes, dropped attachments, shared
 //!   textures, `--dump-targets`, per-pass translation.
 //! - [`pixels`]: every effect's frames against reference PNGs under `snapshots/png/`.
+//! - [`stress`]: `effectc stress` finds seed hazards at the ends of ranges; shipped effects
+//!   are clean.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
 
@@ -35,5 +37,7 @@ mod pixels;
 mod render;
 #[path = "suite/robust.rs"]
 mod robust;
+#[path = "suite/stress.rs"]
+mod stress;
 #[path = "suite/translate.rs"]
 mod translate;

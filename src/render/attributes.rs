@@ -150,7 +150,7 @@ fn instance_value(source: &crate::manifest::InstanceSource, i: u32, components: 
 }
 
 /// A deterministic number in [0, 1) from (seed, instance, component): splitmix64.
-fn unit_random(seed: u32, instance: u32, component: u32) -> f32 {
+pub(crate) fn unit_random(seed: u32, instance: u32, component: u32) -> f32 {
     let mut z = (u64::from(seed) << 32 | u64::from(instance)).wrapping_mul(4).wrapping_add(u64::from(component));
     z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);

@@ -376,25 +376,35 @@ fn frame_state(drawer: &Drawer, index: u32, time: f64, step: f64, (w, h): (u32, 
 
 /// Frames rendered in memory by [`render_in_memory`].
 pub struct MemoryRun {
-    /// RGBA8 pixels per frame, top row first.
-    pub frames: Vec<Vec<u8>>,
+    /// Pixels per frame, top row first (RGBA8, or RGBA32F with `float`).
+    pub frames: Vec<Pixels>,
     pub gpu_ms: Vec<f64>,
     pub clock: GpuClock,
 }
 
-/// Renders `frames` frames (time `i × step`) of a checked program at `size` without
-/// writing files, with uniform values replaced by `overrides` (for `effectc bench`).
-/// Problems go to `outcome`; `None` when the program cannot be rendered.
+/// What [`render_in_memory`] draws: `frames` frames at times `start + i × step`.
+#[derive(Debug, Clone, Copy)]
+pub struct MemoryRequest {
+    pub size: (u32, u32),
+    pub frames: u32,
+    pub start: f64,
+    pub step: f64,
+    /// Render into Rgba32Float (NaN and Inf survive).
+    pub float: bool,
+    pub timeout: Duration,
+}
+
+/// Renders frames of a checked program without writing files, with uniform values
+/// replaced by `overrides` (for `effectc bench` and `effectc stress`). Problems go to
+/// `outcome`; `None` when the program cannot be rendered.
 pub fn render_in_memory(
     gpu: &Gpu,
     c: &check::Checked,
     outcome: &mut Outcome,
     overrides: &[(String, UniformValue)],
-    size: (u32, u32),
-    frames: u32,
-    step: f64,
-    timeout: Duration,
+    m: MemoryRequest,
 ) -> Option<MemoryRun> {
+    let MemoryRequest { size, frames, start, step, float, timeout } = m;
     let request = Request {
         inputs: Vec::new(),
         stage: None,
@@ -402,19 +412,20 @@ pub fn render_in_memory(
         back: TranslateOptions::for_rendering(true),
         frames: Some(frames),
         step: Step::Seconds(step),
-        start: 0.0,
+        start,
         size: Some(size),
         out: None,
         contact_sheet: false,
         gif: false,
-        float: false,
+        float,
         timeout,
         progress: false,
         started: Instant::now(),
         dump_targets: false,
     };
     let prepared = prepare(c, outcome, &request)?;
-    let (mut drawer, file) = match build(gpu, &prepared, c, size, ColorMode::Unorm8, &request, overrides) {
+    let mode = if float { ColorMode::Float32 } else { ColorMode::Unorm8 };
+    let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, &request, overrides) {
         Ok(d) => d,
         Err(diags) => {
             outcome.diagnostics.extend(diags);
@@ -423,14 +434,10 @@ pub fn render_in_memory(
     };
     let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock() };
     for i in 0..frames {
-        let state = frame_state(&drawer, i, f64::from(i) * step, step, size);
+        let state = frame_state(&drawer, i, start + f64::from(i) * step, step, size);
         match drawer.draw(gpu, &state, timeout) {
-            Ok(Frame { pixels: Pixels::Rgba8(p), gpu_ms, .. }) => {
-                run.frames.push(p);
-                run.gpu_ms.push(gpu_ms);
-            }
-            Ok(Frame { pixels: Pixels::Rgba32F(f), gpu_ms, .. }) => {
-                run.frames.push(encode::float_to_rgba8(&f));
+            Ok(Frame { pixels, gpu_ms, .. }) => {
+                run.frames.push(pixels);
                 run.gpu_ms.push(gpu_ms);
             }
             Err(e) => {

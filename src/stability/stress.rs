@@ -1,0 +1,330 @@
+//! `effectc stress`: renders every program into float targets under stiff and extreme
+//! inputs and counts the NaN and Inf pixels of each case.
+//!
+//! Cases, each one frame:
+//! - `nominal`: the manifest's defaults at time 0 (the frame the others are compared with);
+//! - every ranged uniform at its low and at its high end, the others nominal;
+//! - all ranged uniforms low, all high;
+//! - `--samples` random points of the ranges (seeded, so a run is repeatable);
+//! - extreme times 1e3, 1e5 and 1e7 s with the defaults.
+//!
+//! A case with NaN or Inf pixels is an error (`E0701`) at the manifest entry it changed,
+//! with the mask written next to the frames (NaN red, +Inf yellow, −Inf cyan).
+
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use crate::check::{self, Outcome};
+use crate::diag::Diagnostic;
+use crate::front::program::FrontOptions;
+use crate::manifest::{Effect, UniformValue};
+use crate::render::command::{self, MemoryRequest};
+use crate::render::device::Gpu;
+use crate::render::encode;
+use crate::render::frames::Pixels;
+use crate::stage::StageKind;
+
+/// A case rendered NaN or Inf pixels.
+pub const E_NON_FINITE_CASE: &str = "E0701";
+
+/// Effect times of the time cases (seconds).
+pub const EXTREME_TIMES: [f64; 3] = [1e3, 1e5, 1e7];
+
+/// What `stress` was asked to do.
+#[derive(Debug, Clone)]
+pub struct Request {
+    pub inputs: Vec<PathBuf>,
+    pub stage: Option<StageKind>,
+    pub front: FrontOptions,
+    /// Random points of the uniform ranges.
+    pub samples: u32,
+    pub seed: u32,
+    pub size: (u32, u32),
+    pub timeout: Duration,
+    /// Masks of failing cases go here (`<effect>_<case>_nonfinite.png`); none when `None`.
+    pub out: Option<PathBuf>,
+}
+
+/// One input configuration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    pub name: String,
+    pub overrides: Vec<(String, UniformValue)>,
+    pub time: f64,
+}
+
+/// One case's result.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct CaseReport {
+    pub case: String,
+    /// The changed uniforms and the time, as `name=value` text.
+    pub values: String,
+    pub nan: u64,
+    pub inf: u64,
+    /// Largest absolute difference of a finite channel from the nominal frame.
+    pub max_delta: f64,
+    pub mask: Option<PathBuf>,
+}
+
+/// One program's cases.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct StressReport {
+    pub program: String,
+    pub size: (u32, u32),
+    pub cases: Vec<CaseReport>,
+}
+
+pub struct StressResult {
+    pub outcome: Outcome,
+    pub reports: Vec<StressReport>,
+    pub adapter: Option<String>,
+}
+
+/// The cases for an effect: nominal, each ranged uniform low and high, all low, all high,
+/// `samples` random points, extreme times.
+pub fn cases(effect: Option<&Effect>, samples: u32, seed: u32) -> Vec<Case> {
+    let ranged: Vec<(&str, &UniformValue, f64, f64)> = effect
+        .map(|e| {
+            e.uniforms
+                .iter()
+                .filter_map(|u| {
+                    let (lo, hi) = u.range?;
+                    let v = u.value.as_ref()?;
+                    numeric(v).then_some((u.name.as_str(), v, lo, hi))
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    let case = |name: String, overrides: Vec<(String, UniformValue)>| Case { name, overrides, time: 0.0 };
+    let mut out = vec![case("nominal".into(), Vec::new())];
+    for &(name, v, lo, hi) in &ranged {
+        out.push(case(format!("{name} low"), vec![(name.to_string(), fill(v, &|_| lo))]));
+        out.push(case(format!("{name} high"), vec![(name.to_string(), fill(v, &|_| hi))]));
+    }
+    if ranged.len() > 1 {
+        out.push(case("all low".into(), ranged.iter().map(|&(n, v, lo, _)| (n.to_string(), fill(v, &|_| lo))).collect()));
+        out.push(case("all high".into(), ranged.iter().map(|&(n, v, _, hi)| (n.to_string(), fill(v, &|_| hi))).collect()));
+    }
+    if !ranged.is_empty() {
+        for k in 0..samples {
+            let overrides = ranged
+                .iter()
+                .enumerate()
+                .map(|(i, &(n, v, lo, hi))| {
+                    let pick = |c: u32| lo + (hi - lo) * f64::from(crate::render::attributes::unit_random(seed.wrapping_add(k), i as u32, c));
+                    (n.to_string(), fill(v, &pick))
+                })
+                .collect();
+            out.push(case(format!("random {}", k + 1), overrides));
+        }
+    }
+    for t in EXTREME_TIMES {
+        out.push(Case { name: format!("time {t:e} s"), overrides: Vec::new(), time: t });
+    }
+    out
+}
+
+/// A number, or a list of numbers (a vector).
+fn numeric(v: &UniformValue) -> bool {
+    match v {
+        UniformValue::Int(_) | UniformValue::Float(_) => true,
+        UniformValue::List(items) => !items.is_empty() && items.iter().all(|i| matches!(i, UniformValue::Int(_) | UniformValue::Float(_))),
+        UniformValue::Bool(_) => false,
+    }
+}
+
+/// `template` with every component replaced by `value(component)`; integers stay integers.
+fn fill(template: &UniformValue, value: &dyn Fn(u32) -> f64) -> UniformValue {
+    let one = |t: &UniformValue, c: u32| match t {
+        UniformValue::Int(_) => UniformValue::Int(value(c).round() as i64),
+        _ => UniformValue::Float(value(c)),
+    };
+    match template {
+        UniformValue::List(items) => UniformValue::List(items.iter().enumerate().map(|(c, t)| one(t, c as u32)).collect()),
+        t => one(t, 0),
+    }
+}
+
+fn show(v: &UniformValue) -> String {
+    match v {
+        UniformValue::Int(i) => i.to_string(),
+        UniformValue::Float(f) => format!("{}", (f * 1e4).round() / 1e4),
+        UniformValue::Bool(b) => b.to_string(),
+        UniformValue::List(items) => format!("[{}]", items.iter().map(show).collect::<Vec<_>>().join(", ")),
+    }
+}
+
+/// Runs check, then every case of every clean program.
+pub fn run(request: &Request) -> StressResult {
+    let (mut outcome, checked) = check::check_inputs(&request.inputs, request.stage, request.front);
+    let mut result = StressResult { outcome: Outcome::default(), reports: Vec::new(), adapter: None };
+    let mut gpu: Option<Gpu> = None;
+    for c in checked.iter().filter(|c| !c.failed && (c.program.is_some() || !c.passes.is_empty())) {
+        if gpu.is_none() {
+            match Gpu::new() {
+                Ok(g) => {
+                    result.adapter = Some(g.describe());
+                    gpu = Some(g);
+                }
+                Err(e) => {
+                    outcome.io_error = true;
+                    outcome.diagnostics.push(Diagnostic::error(command::E_NO_ADAPTER, e.0));
+                    break;
+                }
+            }
+        }
+        let Some(gpu) = gpu.as_ref() else { break };
+        if let Some(report) = stress_program(gpu, c, &mut outcome, request) {
+            result.reports.push(report);
+        }
+    }
+    crate::diag::sort(&mut outcome.diagnostics);
+    result.outcome = outcome;
+    result
+}
+
+fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request: &Request) -> Option<StressReport> {
+    let effect = c.effect.as_ref();
+    let program = effect.map_or(c.name.clone(), |e| e.name.clone());
+    let (w, h) = request.size;
+    let mut nominal: Option<Vec<f32>> = None;
+    let mut reports = Vec::new();
+    for case in cases(effect, request.samples, request.seed) {
+        let memory = MemoryRequest { size: request.size, frames: 1, start: case.time, step: 0.0, float: true, timeout: request.timeout };
+        // A case that cannot render (a timeout, a device error) is reported by the render path.
+        let run = command::render_in_memory(gpu, c, outcome, &case.overrides, memory)?;
+        let Some(Pixels::Rgba32F(frame)) = run.frames.into_iter().next() else { return None };
+        let (counts, mask) = encode::non_finite(&frame, w, h);
+        let max_delta = nominal.as_ref().map_or(0.0, |n| max_delta(n, &frame));
+        let slug: String = case.name.chars().map(|ch| if ch.is_ascii_alphanumeric() { ch } else { '_' }).collect();
+        let mask_path = match (mask, &request.out) {
+            (Some(m), Some(dir)) => write_mask(dir, &format!("{program}_{slug}_nonfinite.png"), &m, w, h, outcome),
+            _ => None,
+        };
+        let mut values: Vec<String> = case.overrides.iter().map(|(n, v)| format!("{n}={}", show(v))).collect();
+        if case.time != 0.0 {
+            values.push(format!("time={:e}", case.time));
+        }
+        let inf = counts.pos_inf + counts.neg_inf;
+        if counts.nan + inf > 0 {
+            outcome.diagnostics.push(case_error(c, &case, &program, counts.nan, inf, mask_path.as_deref()));
+        }
+        reports.push(CaseReport { case: case.name.clone(), values: values.join(" "), nan: counts.nan, inf, max_delta, mask: mask_path });
+        if nominal.is_none() {
+            nominal = Some(frame);
+        }
+    }
+    Some(StressReport { program, size: request.size, cases: reports })
+}
+
+fn max_delta(a: &[f32], b: &[f32]) -> f64 {
+    a.iter()
+        .zip(b)
+        .filter(|(x, y)| x.is_finite() && y.is_finite())
+        .map(|(x, y)| f64::from((x - y).abs()))
+        .fold(0.0, f64::max)
+}
+
+fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut Outcome) -> Option<PathBuf> {
+    let path = dir.join(name);
+    let bytes = match encode::png_bytes(rgba, w, h) {
+        Ok(b) => b,
+        Err(e) => {
+            outcome.diagnostics.push(Diagnostic::error(crate::translate::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display())));
+            return None;
+        }
+    };
+    match crate::translate::write_atomic(&path, &bytes, &Default::default()) {
+        Ok(()) => Some(path),
+        Err(e) => {
+            outcome.io_error = true;
+            outcome.diagnostics.push(Diagnostic::error(crate::translate::E_OUTPUT_IO, e));
+            None
+        }
+    }
+}
+
+/// `E0701` at the manifest entry the case changed (the first), else at the manifest.
+fn case_error(c: &check::Checked, case: &Case, program: &str, nan: u64, inf: u64, mask: Option<&Path>) -> Diagnostic {
+    let mut d = Diagnostic::error(E_NON_FINITE_CASE, format!("{program}: case `{}` renders {nan} NaN and {inf} Inf pixels", case.name));
+    let changed: Vec<String> = case.overrides.iter().map(|(n, v)| format!("{n} = {}", show(v))).collect();
+    match (c.effect.as_ref(), case.overrides.first()) {
+        (Some(e), Some((name, value))) => {
+            if let Some(u) = e.uniform(name) {
+                let span = u.range_span.clone().unwrap_or(u.name_span.clone());
+                let label = match case.overrides.len() {
+                    1 => format!("`{name}` = {} in this range", show(value)),
+                    n => format!("`{name}` = {} (one of the {n} values this case sets)", show(value)),
+                };
+                d = d.at(e.file, span, label);
+            } else {
+                d = d.in_file(e.file);
+            }
+        }
+        (Some(e), None) => d = d.in_file(e.file),
+        (None, _) => {
+            if let Some(p) = &c.program {
+                d = d.in_file(p.stages[0].syntax.file);
+            }
+        }
+    }
+    if !changed.is_empty() {
+        d = d.with_note(format!("with {}", changed.join(", ")));
+    }
+    if case.time != 0.0 {
+        d = d.with_note(format!("at effect time {:e} s", case.time));
+    }
+    if let Some(m) = mask {
+        d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));
+    }
+    d.with_help("guard the expression (clamp, max(x, eps), a branch) or narrow the uniform's `range`")
+}
+
+/// The human table of one program.
+pub fn table(r: &StressReport) -> String {
+    let bad = r.cases.iter().filter(|c| c.nan + c.inf > 0).count();
+    let mut text = format!(
+        "{} — {} cases at {}x{}: {}\n",
+        r.program,
+        r.cases.len(),
+        r.size.0,
+        r.size.1,
+        if bad == 0 { "no NaN or Inf".to_string() } else { format!("{bad} with NaN or Inf") }
+    );
+    text.push_str(&format!("  {:<18} {:>8} {:>8} {:>10}  {}\n", "case", "NaN px", "Inf px", "max |Δ|", "values"));
+    for c in &r.cases {
+        text.push_str(&format!("  {:<18} {:>8} {:>8} {:>10.4}  {}\n", c.case, c.nan, c.inf, c.max_delta, c.values));
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cases_cover_range_ends_random_points_and_extreme_times() {
+        assert_eq!(cases(None, 4, 1).len(), 1 + EXTREME_TIMES.len(), "bare programs: nominal and times");
+        let v = UniformValue::List(vec![UniformValue::Float(0.5), UniformValue::Float(0.5)]);
+        assert_eq!(fill(&v, &|c| f64::from(c)), UniformValue::List(vec![UniformValue::Float(0.0), UniformValue::Float(1.0)]));
+        assert_eq!(fill(&UniformValue::Int(3), &|_| 7.6), UniformValue::Int(8));
+        assert!(!numeric(&UniformValue::Bool(true)));
+
+        let dir = std::env::temp_dir().join(format!("effectc-stress-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("a.frag"), "").unwrap();
+        let text = "[stages]\nfragment = \"a.frag\"\n[uniforms]\nk = { value = 2, range = [1, 9] }\ntint = { value = [0.5, 0.5], range = [0.0, 1.0] }\nfree = 3.0\nt = { semantic = \"time\" }\n";
+        let effect = crate::manifest::parse_for_tests(text, crate::diag::FileId(0), &dir).unwrap();
+        let all = cases(Some(&effect), 3, 7);
+        // nominal, 2 × (low, high), all low, all high, 3 random, 3 times.
+        assert_eq!(all.len(), 1 + 4 + 2 + 3 + 3, "{all:#?}");
+        assert_eq!(all[1].overrides, [("k".to_string(), UniformValue::Int(1))]);
+        assert_eq!(all[4].overrides, [("tint".to_string(), UniformValue::List(vec![UniformValue::Float(1.0); 2]))]);
+        for random in all.iter().filter(|c| c.name.starts_with("random")) {
+            let UniformValue::Int(k) = random.overrides[0].1 else { panic!("k stays an int") };
+            assert!((1..=9).contains(&k));
+        }
+        assert_eq!(cases(Some(&effect), 3, 7), all, "seeded: the same cases every run");
+        assert_eq!(all.last().unwrap().time, 1e7);
+    }
+}
