@@ -35,7 +35,8 @@ repeats=${1:-5}
 case "$repeats" in '' | *[!0-9]* | 0) echo "usage: benches/peers.sh [REPEATS]" >&2; exit 2 ;; esac
 
 bin=$root/target/release/effectc
-[ -x "$bin" ] || cargo build --release --locked
+# Build (a no-op when target/release/effectc is current): a stale binary would measure old code.
+cargo build --release --locked
 command -v glslangValidator >/dev/null || { echo "peers.sh: glslangValidator not found (run ./setup.sh)" >&2; exit 2; }
 naga_bin=$(command -v naga || true)
 if [ -z "$naga_bin" ]; then
