@@ -179,7 +179,11 @@ fn padded_row(width: u32, mode: ColorMode) -> u32 {
 pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
     let cpu_start = Instant::now();
     let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
-    write_uniforms(gpu, scene, state)?;
+    if let Err(e) = write_uniforms(gpu, scene, state) {
+        // Leave no error scope behind on the shared device.
+        let _ = pollster::block_on(scope.pop());
+        return Err(e);
+    }
     let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
     {
         let c = scene.clear.map(f64::from);

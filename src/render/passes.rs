@@ -160,7 +160,14 @@ impl PassGraph {
                 flipped_y,
                 pass: Some(binding),
             };
-            let mut scene = Scene::new(gpu, &input)?;
+            let mut scene = match Scene::new(gpu, &input) {
+                Ok(s) => s,
+                Err(diags) => {
+                    // Leave no error scope behind on the shared device.
+                    let _ = pollster::block_on(scope.pop());
+                    return Err(diags);
+                }
+            };
             // Passes sharing a stage file would report the same guess once each.
             for w in scene.warnings.drain(..) {
                 if !warnings.contains(&w) {
@@ -302,7 +309,10 @@ impl PassGraph {
                 model: camera::model_at(&p.scene.model, state.time),
                 ..*state
             };
-            frames::write_uniforms(gpu, &mut p.scene, &pass_state)?;
+            if let Err(e) = frames::write_uniforms(gpu, &mut p.scene, &pass_state) {
+                let _ = pollster::block_on(scope.pop());
+                return Err(e);
+            }
         }
         let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(&self.name) });
         let last = self.passes.len().saturating_sub(1);
