@@ -104,20 +104,7 @@ pub fn run(request: &Request) -> BenchResult {
                 continue;
             }
         };
-        if gpu.is_none() {
-            match Gpu::new() {
-                Ok(g) => {
-                    result.adapter = Some(g.describe());
-                    gpu = Some(g);
-                }
-                Err(e) => {
-                    outcome.io_error = true;
-                    outcome.diagnostics.push(Diagnostic::error(command::E_NO_ADAPTER, e.0));
-                    break;
-                }
-            }
-        }
-        let Some(gpu) = gpu.as_ref() else { break };
+        let Some(gpu) = command::open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
         for (name, values, reference, template) in knobs {
             if let Some(report) = sweep(gpu, c, &mut outcome, request, &name, &values, reference, &template) {
                 result.reports.push(report);

@@ -118,12 +118,7 @@ fn bench(args: BenchArgs) -> ExitCode {
         }
     }
     let text = match c.format {
-        Format::Json => {
-            let diagnostics: serde_json::Value =
-                serde_json::from_str(&diag::render_json(&result.outcome.diagnostics, &result.outcome.files)).unwrap_or_default();
-            let doc = serde_json::json!({ "version": 1, "adapter": result.adapter, "reports": result.reports, "diagnostics": diagnostics });
-            serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
-        }
+        Format::Json => report_json("reports", &result.reports, &result.adapter, &result.outcome),
         _ => {
             let mut text = String::new();
             if let Some(a) = &result.adapter {
@@ -164,12 +159,7 @@ fn stress(args: StressArgs) -> ExitCode {
     };
     let result = effectc::stability::stress::run(&request);
     let text = match c.format {
-        Format::Json => {
-            let diagnostics: serde_json::Value =
-                serde_json::from_str(&diag::render_json(&result.outcome.diagnostics, &result.outcome.files)).unwrap_or_default();
-            let doc = serde_json::json!({ "version": 1, "adapter": result.adapter, "programs": result.reports, "diagnostics": diagnostics });
-            serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
-        }
+        Format::Json => report_json("programs", &result.reports, &result.adapter, &result.outcome),
         _ => {
             let mut text = String::new();
             for r in &result.reports {
@@ -260,6 +250,16 @@ fn diagnostics_text(c: &CommonArgs, outcome: &Outcome) -> String {
         Format::Github => diag::render_github(d, &outcome.files),
         Format::Sarif => diag::render_sarif(d, &outcome.files),
     }
+}
+
+/// The JSON document of `bench` and `stress`: the reports under `key`, the adapter and the
+/// diagnostics (the same objects as `--format json` elsewhere).
+fn report_json(key: &str, reports: &impl serde::Serialize, adapter: &Option<String>, outcome: &Outcome) -> String {
+    let diagnostics: serde_json::Value =
+        serde_json::from_str(&diag::render_json(&outcome.diagnostics, &outcome.files)).unwrap_or_default();
+    let mut doc = serde_json::json!({ "version": 1, "adapter": adapter, "diagnostics": diagnostics });
+    doc[key] = serde_json::to_value(reports).unwrap_or_default();
+    serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
 }
 
 fn print(text: &str) -> std::io::Result<()> {

@@ -135,20 +135,7 @@ pub fn run(request: &Request) -> RunResult {
     let mut gpu: Option<Gpu> = None;
     for c in &checked {
         let Some(prepared) = prepare(c, &mut outcome, request) else { continue };
-        if gpu.is_none() {
-            match Gpu::new() {
-                Ok(g) => {
-                    result.adapter = Some(g.describe());
-                    gpu = Some(g);
-                }
-                Err(e) => {
-                    outcome.io_error = true;
-                    outcome.diagnostics.push(Diagnostic::error(E_NO_ADAPTER, e.0));
-                    break;
-                }
-            }
-        }
-        let Some(gpu) = gpu.as_ref() else { break };
+        let Some(gpu) = open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
         let effect = c.effect.as_ref();
         let render = effect.map(|e| e.render.clone()).unwrap_or_default();
         let size = request.size.or(render.size).unwrap_or(DEFAULT_SIZE);
@@ -456,6 +443,24 @@ pub fn render_in_memory(
         }
     }
     Some(run)
+}
+
+/// The device of a run, opened on first use (the adapter's description goes to `adapter`).
+/// `None` when there is no adapter: `E0401` is in `outcome`, which then exits with 2.
+pub fn open_once<'g>(gpu: &'g mut Option<Gpu>, adapter: &mut Option<String>, outcome: &mut Outcome) -> Option<&'g Gpu> {
+    if gpu.is_none() {
+        match Gpu::new() {
+            Ok(g) => {
+                *adapter = Some(g.describe());
+                *gpu = Some(g);
+            }
+            Err(e) => {
+                outcome.io_error = true;
+                outcome.diagnostics.push(Diagnostic::error(E_NO_ADAPTER, e.0));
+            }
+        }
+    }
+    gpu.as_ref()
 }
 
 /// Flags beyond the limits, refused before anything is allocated.

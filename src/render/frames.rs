@@ -169,10 +169,41 @@ impl Target {
     }
 }
 
-/// Bytes per readback row: `width` pixels rounded up to `COPY_BYTES_PER_ROW_ALIGNMENT`.
 fn padded_row(width: u32, mode: ColorMode) -> u32 {
-    let bpp = mode.format().block_copy_size(None).unwrap_or(4);
+    padded_row_of(width, mode.format())
+}
+
+/// Bytes per readback row of `format` (depth formats: their depth aspect): `width` texels
+/// rounded up to `COPY_BYTES_PER_ROW_ALIGNMENT`.
+pub fn padded_row_of(width: u32, format: wgpu::TextureFormat) -> u32 {
+    let bpp = format
+        .block_copy_size(None)
+        .or(format.block_copy_size(Some(wgpu::TextureAspect::DepthOnly)))
+        .unwrap_or(4);
     (width * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT
+}
+
+/// Colour attachments for `views` (None: not attached), cleared to `clear` or, without
+/// one, loaded with what earlier passes drew; always stored.
+pub fn color_attachments(
+    views: &[Option<wgpu::TextureView>],
+    clear: Option<[f32; 4]>,
+) -> Vec<Option<wgpu::RenderPassColorAttachment<'_>>> {
+    let load = match clear {
+        Some(c) => wgpu::LoadOp::Clear(wgpu::Color { r: c[0].into(), g: c[1].into(), b: c[2].into(), a: c[3].into() }),
+        None => wgpu::LoadOp::Load,
+    };
+    views
+        .iter()
+        .map(|v| {
+            v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },
+            })
+        })
+        .collect()
 }
 
 /// Renders one frame of `scene` for `state` into `target` and reads it back.
@@ -186,20 +217,7 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState,
     }
     let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
     {
-        let c = scene.clear.map(f64::from);
-        let clear = wgpu::Color { r: c[0], g: c[1], b: c[2], a: c[3] };
-        let attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = target
-            .colors
-            .iter()
-            .map(|v| {
-                v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
-                    view,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
-                })
-            })
-            .collect();
+        let attachments = color_attachments(&target.colors, Some(scene.clear));
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some(&scene.name),
             color_attachments: &attachments,

@@ -204,8 +204,7 @@ impl PassGraph {
             let texture = plan.texture_of(target)?;
             let t = &plan.textures[texture];
             let format = effective_format(t.format, mode);
-            let bpp = format.block_copy_size(Some(wgpu::TextureAspect::All)).or(format.block_copy_size(Some(wgpu::TextureAspect::DepthOnly))).unwrap_or(4);
-            let padded_row = (t.size.0 * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+            let padded_row = frames::padded_row_of(t.size.0, format);
             Some(Readback {
                 target: target.to_owned(),
                 texture,
@@ -317,22 +316,7 @@ impl PassGraph {
         let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(&self.name) });
         let last = self.passes.len().saturating_sub(1);
         for (k, p) in self.passes.iter().enumerate() {
-            let load = |c: Option<[f32; 4]>| match c {
-                Some(c) => wgpu::LoadOp::Clear(wgpu::Color { r: c[0].into(), g: c[1].into(), b: c[2].into(), a: c[3].into() }),
-                None => wgpu::LoadOp::Load,
-            };
-            let attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = p
-                .colors
-                .iter()
-                .map(|v| {
-                    v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
-                        view,
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: wgpu::Operations { load: load(p.clear), store: wgpu::StoreOp::Store },
-                    })
-                })
-                .collect();
+            let attachments = frames::color_attachments(&p.colors, p.clear);
             let timestamp_writes = self.timestamps.as_ref().filter(|_| k == 0 || k == last).map(|t| wgpu::RenderPassTimestampWrites {
                 query_set: &t.set,
                 beginning_of_pass_write_index: (k == 0).then_some(0),

@@ -160,20 +160,7 @@ pub fn run(request: &Request) -> StressResult {
     let mut result = StressResult { outcome: Outcome::default(), reports: Vec::new(), adapter: None };
     let mut gpu: Option<Gpu> = None;
     for c in checked.iter().filter(|c| !c.failed && (c.program.is_some() || !c.passes.is_empty())) {
-        if gpu.is_none() {
-            match Gpu::new() {
-                Ok(g) => {
-                    result.adapter = Some(g.describe());
-                    gpu = Some(g);
-                }
-                Err(e) => {
-                    outcome.io_error = true;
-                    outcome.diagnostics.push(Diagnostic::error(command::E_NO_ADAPTER, e.0));
-                    break;
-                }
-            }
-        }
-        let Some(gpu) = gpu.as_ref() else { break };
+        let Some(gpu) = command::open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
         if let Some(report) = stress_program(gpu, c, &mut outcome, request) {
             result.reports.push(report);
         }
