@@ -10,6 +10,7 @@ use crate::diag::{Diagnostic, FileId, Files};
 use crate::front::program::{self, CompiledProgram, FrontOptions};
 use crate::inputs::{self, ProgramInput};
 use crate::manifest::{self, Effect};
+use crate::stability::hazards;
 use crate::stage::StageKind;
 
 /// Code for a stage file that is not UTF-8 text.
@@ -135,6 +136,9 @@ pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outc
             diags.extend(crate::link::check_interface(&syntaxes));
             if let Some(e) = &effect {
                 diags.extend(crate::link::check_manifest(e, &syntaxes, &out.files));
+            }
+            if !diags.iter().any(Diagnostic::is_error) {
+                diags.extend(hazards::analyse(effect.as_ref(), p, &hazards::PassInputs::default()));
             }
         }
         out.diagnostics.extend(diags);

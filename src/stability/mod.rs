@@ -1,8 +1,9 @@
-//! Numerical stability: stress renders on stiff and extreme inputs.
+//! Numerical stability: hazards found statically and by rendering.
 //!
+//! - [`hazards`]: `effectc check`'s static analysis, intervals propagated over the naga IR
+//!   from uniform ranges, mesh data, textures and time; warnings W0710–W0719.
 //! - [`stress`]: `effectc stress`: float renders at the ends and random points of the
 //!   uniform ranges and at extreme times; NaN/Inf per case, masks, difference from nominal.
-//!
-//! Static hazard analysis on the IR (interval propagation) is not built yet.
 
+pub mod hazards;
 pub mod stress;

@@ -1,0 +1,267 @@
+//! Static hazard analysis: interval propagation over the naga IR of each stage, from the
+//! manifest's uniform ranges and defaults, the mesh's attribute data, texture texels, time
+//! and builtins, reporting operations that can produce NaN, Inf or garbage, at the span of
+//! the user's GLSL.
+//!
+//! - [`interval`]: interval arithmetic; [`value`]: abstract values with vector facts;
+//! - [`facts`]: what is known before the shader runs;
+//! - [`walk`]: statements and control flow; [`eval`]: expressions; [`ops`]: the algebra.
+//!
+//! The vertex stage runs first; its outputs become the fragment stage's inputs (the hull
+//! of values is preserved by interpolation). Only values derived from known facts raise a
+//! hazard: an input nothing is known about never does, and once a hazard is reported its
+//! result is unknown, so one mistake gives one warning.
+
+pub mod eval;
+pub mod facts;
+pub mod interval;
+pub mod ops;
+pub mod value;
+pub mod walk;
+
+use crate::diag::{Diagnostic, FileId};
+use crate::front::program::CompiledProgram;
+use crate::manifest::Effect;
+use crate::stage::StageKind;
+use interval::Iv;
+use ops::Kind;
+use value::Num;
+
+pub const W_DIVISION: &str = "W0710";
+pub const W_ASIN: &str = "W0711";
+pub const W_SQRT: &str = "W0712";
+pub const W_LOG: &str = "W0713";
+pub const W_POW: &str = "W0714";
+pub const W_NORMALIZE: &str = "W0715";
+pub const W_INVERSE_SQRT: &str = "W0716";
+pub const W_TRIG: &str = "W0717";
+pub const W_HASH: &str = "W0718";
+pub const W_COUNTER: &str = "W0719";
+
+/// One finding, at a span of the rewritten stage text.
+#[derive(Debug, Clone)]
+pub struct Hazard {
+    pub code: &'static str,
+    pub span: naga::Span,
+    pub message: String,
+    pub label: String,
+    pub notes: Vec<String>,
+    pub help: String,
+}
+
+impl Hazard {
+    /// A hazard of an operation whose relevant operand is `a` (for a division, the divisor).
+    pub fn new(kind: Kind, span: naga::Span, a: &Num, b: Option<&Num>) -> Hazard {
+        let (code, message, label, note, help) = match kind {
+            Kind::Division => (
+                W_DIVISION,
+                "division by a value that can be zero".to_string(),
+                format!("the divisor can be 0: {}", describe(a)),
+                "x / 0 is ±Inf, and 0 / 0 is NaN".to_string(),
+                "divide by `max(d, 1e-6)` (or `sign(d) * max(abs(d), 1e-6)`), guard with an `if`, or narrow the uniform's `range`",
+            ),
+            Kind::Asin | Kind::Acos => {
+                let f = if kind == Kind::Asin { "asin" } else { "acos" };
+                (
+                    W_ASIN,
+                    format!("`{f}` of a value that can leave [-1, 1]"),
+                    format!("the argument lies in {}", describe(a)),
+                    format!("{f} is undefined outside [-1, 1] (NaN on GPUs); rounding alone takes a dot product of unit vectors just past 1"),
+                    "clamp the argument: `clamp(x, -1.0, 1.0)`",
+                )
+            }
+            Kind::Sqrt => (
+                W_SQRT,
+                "`sqrt` of a value that can be negative".to_string(),
+                format!("the argument lies in {}", describe(a)),
+                "sqrt of a negative number is NaN".to_string(),
+                "use `sqrt(max(x, 0.0))`",
+            ),
+            Kind::Log => (
+                W_LOG,
+                "`log` of a value that can be zero or negative".to_string(),
+                format!("the argument lies in {}", describe(a)),
+                "log(0) is -Inf and log of a negative number NaN".to_string(),
+                "use `log(max(x, 1e-6))`",
+            ),
+            Kind::Pow => (
+                W_POW,
+                "`pow` with a base that can be negative, or zero to a power <= 0".to_string(),
+                format!("the base lies in {}{}", describe(a), b.map(|e| format!(", the exponent in {}", describe(e))).unwrap_or_default()),
+                "GLSL leaves pow(x, y) undefined for x < 0, and for x = 0 with y <= 0 (NaN or Inf on GPUs)".to_string(),
+                "use `pow(max(x, 0.0), y)` (with `y > 0`), e.g. `pow(max(dot(r, v), 0.0), shininess)`",
+            ),
+            Kind::Normalize => (
+                W_NORMALIZE,
+                "`normalize` of a vector that can be zero".to_string(),
+                format!("its length can be 0: {}", describe(a)),
+                "normalize(0) divides by a zero length: NaN on most GPUs (0 on some, such as llvmpipe)".to_string(),
+                "use `v * inversesqrt(max(dot(v, v), 1e-12))`, or guard with `if (length(v) > 0.0)`",
+            ),
+            Kind::InverseSqrt => (
+                W_INVERSE_SQRT,
+                "`inversesqrt` of a value that can be zero or negative".to_string(),
+                format!("the argument lies in {}", describe(a)),
+                "inversesqrt(0) is +Inf and of a negative number NaN".to_string(),
+                "use `inversesqrt(max(x, 1e-12))`",
+            ),
+            Kind::Trig => (
+                W_TRIG,
+                "trigonometric function of an argument too large for f32".to_string(),
+                format!("the argument reaches {}", big(a.iv().mag())),
+                format!(
+                    "beyond {} rad one f32 step of the argument exceeds 10⁻³ rad, and GPUs only guarantee sin/cos accuracy in [-π, π]: the result turns to noise as time grows",
+                    big(ops::TRIG_LIMIT)
+                ),
+                "wrap the phase first: `sin(mod(t, 2π / f) * f)`, or give the time uniform a `range`",
+            ),
+        };
+        Hazard { code, span, message, label, notes: vec![note], help: help.to_string() }
+    }
+
+    pub fn hash(span: naga::Span, x: Iv, k: Iv) -> Hazard {
+        let grows = x.mag() > std::f64::consts::PI;
+        let mut notes = vec![format!(
+            "GLSL and Vulkan allow sin an absolute error of 2⁻¹¹; times {} that is more than half a unit, so fract keeps no reliable bits: the pattern differs between GPUs",
+            big(k.mag())
+        )];
+        if grows {
+            notes.push(format!("the argument of sin reaches {}, where sin is not even that accurate", big(x.mag())));
+        }
+        Hazard {
+            code: W_HASH,
+            span,
+            message: "`fract(sin(x) * K)` hash depends on the GPU's sin precision".into(),
+            label: format!("K = {}{}", describe_iv(k), if grows { format!(", x in {}", describe_iv(x)) } else { String::new() }),
+            notes,
+            help: "use an integer hash (e.g. PCG: `uint h = uint(x) * 747796405u + 2891336453u; …`) or a sine-free hash such as Dave Hoskins' `hash11`".into(),
+        }
+    }
+
+    pub fn counter(span: naga::Span, counter: Iv, next: Iv, kind: naga::ScalarKind) -> Hazard {
+        let ty = if kind == naga::ScalarKind::Uint { "uint" } else { "int" };
+        Hazard {
+            code: W_COUNTER,
+            span,
+            message: format!("loop counter can overflow `{ty}`"),
+            label: format!("the counter reaches {}, its update {}", describe_iv(counter), describe_iv(next)),
+            notes: vec!["nothing bounds this loop's counter below the type's limit: it wraps around (signed overflow is undefined)".into()],
+            help: "bound the loop by a constant or a uniform with a `range`".into(),
+        }
+    }
+}
+
+/// A value's components as intervals.
+fn describe(n: &Num) -> String {
+    if n.c.len() == 1 {
+        return describe_iv(n.c[0]);
+    }
+    let names = ["x", "y", "z", "w"];
+    if n.cols == 1 && n.c.len() <= 4 {
+        return n.c.iter().zip(names).map(|(c, name)| format!("{name} in {}", describe_iv(*c))).collect::<Vec<_>>().join(", ");
+    }
+    describe_iv(n.iv())
+}
+
+fn describe_iv(iv: Iv) -> String {
+    if iv.is_point() {
+        return big(iv.lo);
+    }
+    format!("[{}, {}]", big(iv.lo), big(iv.hi))
+}
+
+/// A number for people: `1e7`, `86400`, `0.0001`, `-1`.
+fn big(x: f64) -> String {
+    if x.is_infinite() {
+        return if x > 0.0 { "∞".into() } else { "-∞".into() };
+    }
+    if x != 0.0 && (x.abs() >= 1e6 || x.abs() < 1e-4) {
+        return format!("{x:.3e}");
+    }
+    let s = format!("{x:.4}");
+    let s = s.trim_end_matches('0').trim_end_matches('.').to_string();
+    if s == "-0" {
+        "0".into()
+    } else {
+        s
+    }
+}
+
+/// Extra facts for one pass of a multi-pass effect: sampled targets (`true`: 8-bit unorm
+/// data in [0, 1]; float targets are unknown).
+#[derive(Debug, Default, Clone)]
+pub struct PassInputs {
+    pub sampled: Vec<(String, bool)>,
+}
+
+/// Runs the analysis over a compiled program; warnings at the user's spans.
+pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram, inputs: &PassInputs) -> Vec<Diagnostic> {
+    let find = |kind: StageKind| program.stages.iter().find(|s| s.syntax.stage == kind);
+    let vertex = find(StageKind::Vertex);
+    let names: Vec<(u32, String)> = vertex
+        .and_then(|s| s.naga.as_ref())
+        .and_then(|v| v.module.entry_points.iter().find(|e| e.stage == naga::ShaderStage::Vertex))
+        .map(|ep| {
+            ep.function
+                .arguments
+                .iter()
+                .filter_map(|a| match a.binding {
+                    Some(naga::Binding::Location { location, .. }) => Some((location, a.name.clone().unwrap_or_default())),
+                    _ => None,
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    let mut f = facts::Facts::of(effect, &names);
+    for (name, unorm) in &inputs.sampled {
+        if *unorm {
+            f.textures.insert(name.clone(), [Iv::UNIT; 4]);
+        } else {
+            f.textures.remove(name);
+        }
+    }
+    let mut out = Vec::new();
+    for (kind, stage) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
+        let Some(s) = find(kind) else { continue };
+        let (Some(v), Some(rw)) = (&s.naga, &s.rewritten) else { continue };
+        let hazards = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, &rw.text);
+            a.run_entry();
+            (a.hazards, a.outputs)
+        }));
+        // The analysis must never take `check` down; a bug in it loses its warnings only.
+        let Ok((hazards, outputs)) = hazards else { continue };
+        if kind == StageKind::Vertex {
+            f.varyings = outputs.into_iter().filter_map(|(l, v)| v.num().cloned().map(|n| (l, varying(n)))).collect();
+        }
+        for h in hazards {
+            out.push(diagnostic(&h, s.syntax.file, rw));
+        }
+    }
+    out
+}
+
+/// A vertex output as the fragment stage sees it: the hull survives interpolation, and a
+/// non-zero length only when no triangle's values can interpolate to zero.
+fn varying(mut n: Num) -> Num {
+    if !n.cone {
+        n.len.lo = 0.0;
+        n.len = n.len.meet(value::length_of(&n.c));
+        n.len3.lo = 0.0;
+    }
+    n.per_draw = false;
+    n
+}
+
+fn diagnostic(h: &Hazard, file: FileId, rw: &crate::front::rewrite::Rewritten) -> Diagnostic {
+    let mut d = Diagnostic::warning(h.code, h.message.clone());
+    if let Some(r) = h.span.to_range() {
+        d = d.at(file, rw.map.range_to_original(r), h.label.clone());
+    } else {
+        d = d.in_file(file);
+    }
+    for n in &h.notes {
+        d = d.with_note(n.clone());
+    }
+    d.with_help(h.help.clone())
+}

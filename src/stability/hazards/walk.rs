@@ -1,0 +1,477 @@
+//! Abstract interpretation of a naga function: statements in order, both branches of every
+//! `if` (refined by the condition), loops iterated to a fixpoint with widening, calls
+//! inlined. Expressions are evaluated in [`super::eval`]; hazards are recorded there.
+//!
+//! Loops are first iterated quietly until their state stops changing (bounds that keep
+//! growing jump to infinity after two rounds; the loop's exit test then cuts them back),
+//! then run once more with reporting on, so every hazard is judged on the final state.
+
+use std::collections::HashMap;
+use std::hash::{Hash, Hasher};
+
+use naga::{Block, Expression, Function, Handle, LocalVariable, Module, Statement};
+
+use super::facts::Facts;
+use super::interval::Iv;
+use super::value::Val;
+use super::Hazard;
+
+/// Where a pointer points.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub enum Root {
+    /// A local variable of the call frame at this depth.
+    Local(usize, Handle<LocalVariable>),
+    Global(Handle<naga::GlobalVariable>),
+}
+
+/// One step into an aggregate, vector or matrix.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Step {
+    Index(u32),
+    Dynamic,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Place {
+    pub root: Root,
+    pub path: Vec<Step>,
+}
+
+/// The value of an expression: a value or a pointer.
+#[derive(Debug, Clone)]
+pub enum Ev {
+    V(Val),
+    P(Place),
+}
+
+/// A refinement learnt from a condition: the value with this key lies in `iv` and
+/// `|value| >= gap`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Refined {
+    pub iv: Iv,
+    pub gap: f64,
+}
+
+/// Everything that flows along the control flow.
+#[derive(Debug, Clone, PartialEq)]
+pub struct State {
+    pub locals: HashMap<(usize, Handle<LocalVariable>), Val>,
+    pub globals: HashMap<Handle<naga::GlobalVariable>, Val>,
+    pub versions: HashMap<Root, u64>,
+    pub refined: HashMap<u64, Refined>,
+    /// False on paths that cannot run (after `break`, `return`, `discard`).
+    pub live: bool,
+}
+
+impl State {
+    pub fn dead() -> State {
+        State { locals: HashMap::new(), globals: HashMap::new(), versions: HashMap::new(), refined: HashMap::new(), live: false }
+    }
+
+    /// Both paths: values joined, refinements kept where both agree on a key.
+    pub fn join(&self, o: &State, fresh: &mut u64) -> State {
+        if !self.live {
+            return o.clone();
+        }
+        if !o.live {
+            return self.clone();
+        }
+        let mut out = self.clone();
+        for (k, v) in &o.locals {
+            let j = out.locals.get(k).map_or_else(|| v.clone(), |a| a.join(v));
+            out.locals.insert(*k, j);
+        }
+        for (k, v) in &o.globals {
+            let j = out.globals.get(k).map_or_else(|| v.clone(), |a| a.join(v));
+            out.globals.insert(*k, j);
+        }
+        for (k, v) in &o.versions {
+            if out.versions.get(k) != Some(v) {
+                *fresh += 1;
+                out.versions.insert(k.clone(), *fresh);
+            }
+        }
+        out.refined.retain(|k, r| match o.refined.get(k) {
+            Some(q) => {
+                *r = Refined { iv: r.iv.join(q.iv), gap: r.gap.min(q.gap) };
+                true
+            }
+            None => false,
+        });
+        out
+    }
+
+    fn widen(&self, old: &State) -> State {
+        let mut out = self.clone();
+        for (k, v) in out.locals.iter_mut() {
+            if let Some(o) = old.locals.get(k) {
+                *v = v.widen(o);
+            }
+        }
+        for (k, v) in out.globals.iter_mut() {
+            if let Some(o) = old.globals.get(k) {
+                *v = v.widen(o);
+            }
+        }
+        out
+    }
+}
+
+/// Where control goes at the end of a construct.
+#[derive(Default)]
+pub struct Exits {
+    pub breaks: Vec<State>,
+    pub continues: Vec<State>,
+}
+
+/// One function invocation.
+pub struct Call<'f> {
+    pub fun: &'f Function,
+    pub info: &'f naga::valid::FunctionInfo,
+    pub depth: usize,
+    pub args: Vec<(Ev, Option<u64>)>,
+    pub values: Vec<Option<Ev>>,
+    pub keys: Vec<Option<u64>>,
+    pub returned: Vec<(State, Option<Val>)>,
+    /// Stores in a `continuing` block are loop-counter updates.
+    pub in_continuing: bool,
+}
+
+/// The analysis of one stage.
+pub struct Analyzer<'a> {
+    pub module: &'a Module,
+    pub info: &'a naga::valid::ModuleInfo,
+    pub facts: &'a Facts,
+    pub stage: naga::ShaderStage,
+    /// The stage text naga parsed (spans index it).
+    pub text: &'a str,
+    pub hazards: Vec<Hazard>,
+    /// > 0 while a loop is iterated to its fixpoint: no reports.
+    pub quiet: u32,
+    pub fresh: u64,
+    /// Location outputs of the entry point (joined over its returns).
+    pub outputs: HashMap<u32, Val>,
+}
+
+const MAX_ROUNDS: usize = 12;
+const MAX_CALL_DEPTH: usize = 24;
+
+impl<'a> Analyzer<'a> {
+    pub fn new(module: &'a Module, info: &'a naga::valid::ModuleInfo, facts: &'a Facts, stage: naga::ShaderStage, text: &'a str) -> Self {
+        Analyzer { module, info, facts, stage, text, hazards: Vec::new(), quiet: 0, fresh: 0, outputs: HashMap::new() }
+    }
+
+    /// Runs the entry point of the stage.
+    pub fn run_entry(&mut self) {
+        if std::env::var_os("EFFECTC_HAZARD_DEBUG").is_some() { eprintln!("entry {:?} uniforms {:?}", self.stage, self.facts.uniforms.keys().collect::<Vec<_>>()); }
+        let Some((index, ep)) = self.module.entry_points.iter().enumerate().find(|(_, e)| e.stage == self.stage) else {
+            return;
+        };
+        let info = self.info.get_entry_point(index);
+        let args = ep.function.arguments.iter().map(|a| (Ev::V(self.argument(a)), None)).collect();
+        let mut state = State::dead();
+        state.live = true;
+        let returned = self.call(&ep.function, info, args, 0, state);
+        if let (Some(result), Some(v)) = (&ep.function.result, returned.1) {
+            self.collect_outputs(result, v);
+        }
+    }
+
+    fn collect_outputs(&mut self, result: &naga::FunctionResult, v: Val) {
+        match (&result.binding, &self.module.types[result.ty].inner, v) {
+            (Some(naga::Binding::Location { location, .. }), _, v) => {
+                self.outputs.insert(*location, v);
+            }
+            (None, naga::TypeInner::Struct { members, .. }, Val::Agg(items)) => {
+                for (m, item) in members.iter().zip(items) {
+                    if let Some(naga::Binding::Location { location, .. }) = m.binding {
+                        self.outputs.insert(location, item);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// Runs `fun` from `state`; the state after it and its return value.
+    pub fn call(
+        &mut self,
+        fun: &Function,
+        info: &naga::valid::FunctionInfo,
+        args: Vec<(Ev, Option<u64>)>,
+        depth: usize,
+        mut state: State,
+    ) -> (State, Option<Val>) {
+        if depth > MAX_CALL_DEPTH {
+            let v = fun.result.as_ref().map(|r| Val::unknown(self.module, &self.module.types[r.ty].inner));
+            return (state, v);
+        }
+        let n = fun.expressions.len();
+        let mut c = Call { fun, info, depth, args, values: vec![None; n], keys: vec![None; n], returned: Vec::new(), in_continuing: false };
+        for (h, local) in fun.local_variables.iter() {
+            let v = match local.init {
+                Some(init) => self.value(&mut c, &state, init),
+                None => Val::zero(self.module, &self.module.types[local.ty].inner),
+            };
+            state.locals.insert((depth, h), v);
+        }
+        let mut exits = Exits::default();
+        let end = self.block(&mut c, &fun.body, state, &mut exits);
+        let mut out = end;
+        let mut result: Option<Val> = None;
+        for (s, v) in std::mem::take(&mut c.returned) {
+            out = out.join(&s, &mut self.fresh);
+            if let Some(v) = v {
+                result = Some(match result {
+                    Some(r) => r.join(&v),
+                    None => v,
+                });
+            }
+        }
+        out.locals.retain(|(d, _), _| *d != depth);
+        out.live = true;
+        if result.is_none() {
+            result = fun.result.as_ref().map(|r| Val::unknown(self.module, &self.module.types[r.ty].inner));
+        }
+        (out, result)
+    }
+
+    pub fn block(&mut self, c: &mut Call<'_>, block: &Block, mut state: State, exits: &mut Exits) -> State {
+        for (stmt, span) in block.span_iter() {
+            if !state.live {
+                break;
+            }
+            state = self.statement(c, stmt, *span, state, exits);
+        }
+        state
+    }
+
+    fn statement(&mut self, c: &mut Call<'_>, stmt: &Statement, span: naga::Span, mut state: State, exits: &mut Exits) -> State {
+        match stmt {
+            Statement::Emit(range) => {
+                for h in range.clone() {
+                    self.emit(c, &state, h);
+                }
+                state
+            }
+            Statement::Block(b) => self.block(c, b, state, exits),
+            Statement::If { condition, accept, reject } => {
+                let yes = self.refine(c, state.clone(), *condition, true);
+                let no = self.refine(c, state, *condition, false);
+                let a = self.block(c, accept, yes, exits);
+                let b = self.block(c, reject, no, exits);
+                a.join(&b, &mut self.fresh)
+            }
+            Statement::Switch { cases, .. } => {
+                let mut inner = Exits::default();
+                let mut out = State::dead();
+                let mut falling = State::dead();
+                for case in cases {
+                    let entry = state.join(&falling, &mut self.fresh);
+                    let end = self.block(c, &case.body, entry, &mut inner);
+                    if case.fall_through {
+                        falling = end;
+                    } else {
+                        out = out.join(&end, &mut self.fresh);
+                        falling = State::dead();
+                    }
+                }
+                // `break` leaves the switch; `continue` belongs to the enclosing loop.
+                for b in inner.breaks {
+                    out = out.join(&b, &mut self.fresh);
+                }
+                exits.continues.extend(inner.continues);
+                out
+            }
+            Statement::Loop { body, continuing, break_if } => self.run_loop(c, body, continuing, *break_if, state),
+            Statement::Break => {
+                exits.breaks.push(state);
+                State::dead()
+            }
+            Statement::Continue => {
+                exits.continues.push(state);
+                State::dead()
+            }
+            Statement::Return { value } => {
+                let v = value.map(|h| self.value(c, &state, h));
+                c.returned.push((state, v));
+                State::dead()
+            }
+            Statement::Kill => State::dead(),
+            Statement::Store { pointer, value } => {
+                let v = self.value(c, &state, *value);
+                if c.in_continuing {
+                    self.check_counter(c, &state, *value, span);
+                }
+                if let Ev::P(place) = self.eval(c, &state, *pointer) {
+                    self.write(&mut state, &place, v);
+                }
+                state
+            }
+            Statement::Call { function, arguments, result } => {
+                let args: Vec<(Ev, Option<u64>)> =
+                    arguments.iter().map(|&a| (self.eval(c, &state, a), c.keys[a.index()])).collect();
+                let callee = &self.module.functions[*function];
+                let info = &self.info[*function];
+                let (after, v) = self.call(callee, info, args, c.depth + 1, state);
+                if let (Some(r), Some(v)) = (result, v) {
+                    c.values[r.index()] = Some(Ev::V(v));
+                }
+                after
+            }
+            _ => {
+                // Barriers, image stores, atomics, ray queries, subgroup operations: they
+                // change no value the analysis tracks, or give results it knows nothing of.
+                state
+            }
+        }
+    }
+
+    fn run_loop(&mut self, c: &mut Call<'_>, body: &Block, continuing: &Block, break_if: Option<Handle<Expression>>, entry: State) -> State {
+        let mut head = entry.clone();
+        self.quiet += 1;
+        for round in 0..MAX_ROUNDS {
+            let (next, _) = self.loop_round(c, body, continuing, break_if, head.clone());
+            let mut joined = entry.join(&next, &mut self.fresh);
+            if round >= 2 {
+                joined = joined.widen(&head);
+            }
+            if same_values(&joined, &head) {
+                break;
+            }
+            head = joined;
+        }
+        self.quiet -= 1;
+        let (_, out) = self.loop_round(c, body, continuing, break_if, head);
+        out
+    }
+
+    /// One iteration from `head`: the state back at the head, and the state after the loop.
+    fn loop_round(&mut self, c: &mut Call<'_>, body: &Block, continuing: &Block, break_if: Option<Handle<Expression>>, head: State) -> (State, State) {
+        let mut exits = Exits::default();
+        let end = self.block(c, body, head, &mut exits);
+        let mut cont = end;
+        for s in std::mem::take(&mut exits.continues) {
+            cont = cont.join(&s, &mut self.fresh);
+        }
+        let was = c.in_continuing;
+        c.in_continuing = true;
+        let mut inner = Exits::default();
+        let after = self.block(c, continuing, cont, &mut inner);
+        c.in_continuing = was;
+        let mut out = State::dead();
+        let next = match break_if {
+            Some(cond) if after.live => {
+                self.emit_pending(c, &after, cond);
+                out = self.refine(c, after.clone(), cond, true);
+                self.refine(c, after, cond, false)
+            }
+            _ => after,
+        };
+        for b in exits.breaks {
+            out = out.join(&b, &mut self.fresh);
+        }
+        (next, out)
+    }
+
+    fn emit_pending(&mut self, c: &mut Call<'_>, state: &State, h: Handle<Expression>) {
+        if c.values[h.index()].is_none() {
+            self.emit(c, state, h);
+        }
+    }
+
+    /// Reads the value at `place`.
+    pub fn read(&self, state: &State, place: &Place) -> Val {
+        let base = match &place.root {
+            Root::Local(d, h) => state.locals.get(&(*d, *h)).cloned(),
+            Root::Global(g) => Some(state.globals.get(g).cloned().unwrap_or_else(|| self.global_initial(*g))),
+        };
+        let Some(mut v) = base else { return Val::Agg(Vec::new()) };
+        for step in &place.path {
+            v = super::eval::index(&v, *step);
+        }
+        v
+    }
+
+    /// Writes `v` at `place` (a dynamic index joins it into every element).
+    pub fn write(&mut self, state: &mut State, place: &Place, v: Val) {
+        let current = match &place.root {
+            Root::Local(d, h) => state.locals.get(&(*d, *h)).cloned(),
+            Root::Global(g) => Some(state.globals.get(g).cloned().unwrap_or_else(|| self.global_initial(*g))),
+        };
+        let Some(current) = current else { return };
+        let updated = super::eval::update(&current, &place.path, v);
+        match &place.root {
+            Root::Local(d, h) => {
+                state.locals.insert((*d, *h), updated);
+            }
+            Root::Global(g) => {
+                state.globals.insert(*g, updated);
+            }
+        }
+        self.fresh += 1;
+        state.versions.insert(place.root.clone(), self.fresh);
+    }
+
+    /// A loop counter updated in `continuing` must stay inside its integer type.
+    fn check_counter(&mut self, c: &mut Call<'_>, state: &State, value: Handle<Expression>, span: naga::Span) {
+        let Expression::Binary { op, left, right } = c.fun.expressions[value] else { return };
+        if !matches!(op, naga::BinaryOperator::Add | naga::BinaryOperator::Subtract | naga::BinaryOperator::Multiply) {
+            return;
+        }
+        let (Some(a), Some(b)) = (self.value(c, state, left).num().cloned(), self.value(c, state, right).num().cloned()) else {
+            return;
+        };
+        let (lo, hi) = match a.kind {
+            naga::ScalarKind::Sint => (f64::from(i32::MIN), f64::from(i32::MAX)),
+            naga::ScalarKind::Uint => (0.0, f64::from(u32::MAX)),
+            _ => return,
+        };
+        let raw = match op {
+            naga::BinaryOperator::Add => a.iv().add(b.iv()),
+            naga::BinaryOperator::Subtract => a.iv().sub(b.iv()),
+            _ => a.iv().mul(b.iv()),
+        };
+        if a.known && b.known && (raw.hi > hi || raw.lo < lo) {
+            self.report(Hazard::counter(span, a.iv(), raw, a.kind));
+        }
+    }
+
+    pub fn report(&mut self, h: Hazard) {
+        if std::env::var_os("EFFECTC_HAZARD_DEBUG").is_some() { eprintln!("report {} quiet={} span={:?}", h.code, self.quiet, h.span); }
+        if self.quiet > 0 || h.span == naga::Span::UNDEFINED {
+            return;
+        }
+        if !self.hazards.iter().any(|x| x.code == h.code && x.span == h.span) {
+            self.hazards.push(h);
+        }
+    }
+
+    fn global_initial(&self, g: Handle<naga::GlobalVariable>) -> Val {
+        let var = &self.module.global_variables[g];
+        let inner = &self.module.types[var.ty].inner;
+        match var.space {
+            naga::AddressSpace::Uniform => {
+                super::facts::uniform_value(self.module, inner, "", self.facts)
+            }
+            naga::AddressSpace::Private | naga::AddressSpace::WorkGroup => match var.init {
+                Some(init) => super::eval::constant(self.module, init),
+                None => Val::zero(self.module, inner),
+            },
+            _ => Val::unknown(self.module, inner),
+        }
+    }
+
+    /// A stable key for a value: loads of the same place with no store between them, and
+    /// the same operations on the same keys, get the same key.
+    pub fn hash_key(parts: impl Hash) -> u64 {
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        parts.hash(&mut h);
+        h.finish()
+    }
+}
+
+/// States equal in values (versions and refinements aside): the fixpoint test.
+fn same_values(a: &State, b: &State) -> bool {
+    a.live == b.live && a.locals == b.locals && a.globals == b.globals
+}
