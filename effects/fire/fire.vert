@@ -15,13 +15,17 @@ uniform float flickerSpeed; // scroll speed of the displacement noise (v per sec
 
 out vec2 vTexCoord;
 
+const float TWO_PI = 6.2831853;
+
 void main()
 {
     vec2 uv = aTexCoord;
     // noise scrolled downwards in v, so its features travel up the flame
     float n1 = texture(noiseTex, uv * 1.5 + vec2(0.0, -time * flickerSpeed)).r;
     float n2 = texture(noiseTex, uv * 0.7 + vec2(0.37, -time * flickerSpeed * 0.6)).r;
-    float sway = sin(time * 3.1 + uv.y * 4.0) * 0.3;
+    // wrapped to [0, 2pi) before sin/cos (W0717): a phase that grows with time loses f32
+    // precision after hours; fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI)
+    float sway = sin(fract(time * 3.1 / TWO_PI) * TWO_PI + uv.y * 4.0) * 0.3;
     float weight = uv.y * uv.y; // the base stays put
     vec3 p = aPosition;
     p.x += ((n1 - 0.5) * 2.0 + sway) * displacement * weight;

@@ -40,13 +40,18 @@ out FlowerData
 } vs_out;
 
 const float PI = 3.14159265;
+const float TWO_PI = 6.2831853;
 
 // The light moves on a figure of eight that passes straight above the flower (at time 0,
 // and whenever sin(time * lightSpeed) = 0).
 vec3 lightPosition()
 {
-    float a = time * lightSpeed;
-    return vec3(lightSwing * sin(a), lightHeight, 0.5 * lightSwing * sin(2.0 * a));
+    // wrapped to [0, 2pi) before sin (W0717): a phase that grows with time loses f32
+    // precision after hours. Both phases are wrapped, a and 2a, from the turns elapsed.
+    float turns = fract(time * lightSpeed / TWO_PI);
+    float a = turns * TWO_PI;
+    float a2 = fract(2.0 * turns) * TWO_PI;
+    return vec3(lightSwing * sin(a), lightHeight, 0.5 * lightSwing * sin(a2));
 }
 
 // Unbent flower surface at angle theta and height fraction t.

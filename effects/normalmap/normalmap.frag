@@ -28,6 +28,8 @@ uniform float lightRadius;
 uniform float lightHeight;
 uniform float lightSpeed;
 
+const float TWO_PI = 6.2831853;
+
 vec3 safeNormalize(vec3 v)
 {
     return v * inversesqrt(max(dot(v, v), 1e-12));
@@ -53,7 +55,9 @@ void main()
                                        1.0));
     vec3 N = safeNormalize(TBN * nTangent);
 
-    float angle = time * lightSpeed;
+    // wrapped to [0, 2pi) before sin/cos (W0717): a phase that grows with time loses f32
+    // precision after hours; fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI)
+    float angle = fract(time * lightSpeed / TWO_PI) * TWO_PI;
     vec3 lightPos = vec3(lightRadius * cos(angle), lightHeight, lightRadius * sin(angle));
     vec3 L = safeNormalize(lightPos - fs_in.FragPos);
     vec3 V = safeNormalize(viewPos - fs_in.FragPos);

@@ -25,6 +25,8 @@ uniform float lightHeight;   // height of that circle
 uniform float lightSpeed;    // radians per second
 uniform sampler2D colourMap; // modulates the diffuse colour
 
+const float TWO_PI = 6.2831853;
+
 vec3 safeNormalize(vec3 v)
 {
     return v * inversesqrt(max(dot(v, v), 1e-12));
@@ -32,7 +34,9 @@ vec3 safeNormalize(vec3 v)
 
 void main()
 {
-    float angle = time * lightSpeed;
+    // wrapped to [0, 2pi) before sin/cos (W0717): a phase that grows with time loses f32
+    // precision after hours; fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI)
+    float angle = fract(time * lightSpeed / TWO_PI) * TWO_PI;
     vec3 lightPos = vec3(lightRadius * cos(angle), lightHeight, lightRadius * sin(angle));
 
     vec3 N = safeNormalize(fs_in.Normal);

@@ -19,11 +19,15 @@ uniform float bFrequency;  // Bloom pulse frequency (radians per second)
 
 uniform int blurEffectRadius; // quality knob: (2r+1)^2 taps, 169 at the default 6
 
+const float TWO_PI = 6.2831853;
+
 void main()
 {
     vec4 textureColour = texture(textureSamplerVar, frag_in.outputTexCoords);
 
-    float currentBI = mix(minBI, maxBI, 0.5 + 0.5 * sin(timeVarFrag * bFrequency));
+    // wrapped to [0, 2pi) before sin/cos (W0717): a phase that grows with time loses f32
+    // precision after hours; fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI)
+    float currentBI = mix(minBI, maxBI, 0.5 + 0.5 * sin(fract(timeVarFrag * bFrequency / TWO_PI) * TWO_PI));
 
     vec3 bloomEffectColour = vec3(0.0);
     vec2 texelSize = 1.0 / vec2(textureSize(textureSamplerVar, 0));

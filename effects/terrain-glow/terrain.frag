@@ -19,6 +19,8 @@ uniform float glowSpeed;     // pulse angular frequency (radians per second)
 uniform float glowMin;       // pulse minimum (fraction of full glow)
 uniform float glowStrength;
 
+const float TWO_PI = 6.2831853;
+
 void main()
 {
     float len = length(IN.worldNormal);
@@ -45,7 +47,9 @@ void main()
     vec3 lit = colour * (0.18 + 0.9 * diffuse);
 
     // Glow above the threshold, pulsing between glowMin and 1.
-    float pulse = mix(glowMin, 1.0, 0.5 + 0.5 * sin(time * glowSpeed));
+    // wrapped to [0, 2pi) before sin/cos (W0717): a phase that grows with time loses f32
+    // precision after hours; fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI)
+    float pulse = mix(glowMin, 1.0, 0.5 + 0.5 * sin(fract(time * glowSpeed / TWO_PI) * TWO_PI));
     float glowAmount = smoothstep(glowThreshold, glowThreshold + max(glowRange, 1e-3), h);
     vec3 glowColour = vec3(0.15, 1.0, 0.45);
     lit += glowColour * glowAmount * pulse * glowStrength;

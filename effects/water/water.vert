@@ -19,6 +19,8 @@ uniform float waveAmplitude;
 uniform float waveFrequency;
 uniform float waveSpeed;
 
+const float TWO_PI = 6.2831853;
+
 void main()
 {
     vec4 worldPos = model * vec4(aPos, 1.0);
@@ -26,9 +28,12 @@ void main()
     float z = worldPos.z;
 
     // Height field h(x, z, t) = level(t) + two crossing ripples.
-    float p1 = (x + 0.6 * z) * waveFrequency + time * waveSpeed;
-    float p2 = (z - 0.4 * x) * waveFrequency * 1.3 - time * waveSpeed * 0.8;
-    float level = levelAmplitude * sin(time * levelSpeed);
+    // wrapped to [0, 2pi) before sin/cos (W0717): a phase that grows with time loses f32
+    // precision after hours. Each time term is wrapped (fract(x / TWO_PI) * TWO_PI is
+    // mod(x, TWO_PI)), so p1, p2 and the level phase stay bounded.
+    float p1 = (x + 0.6 * z) * waveFrequency + fract(time * waveSpeed / TWO_PI) * TWO_PI;
+    float p2 = (z - 0.4 * x) * waveFrequency * 1.3 - fract(time * waveSpeed * 0.8 / TWO_PI) * TWO_PI;
+    float level = levelAmplitude * sin(fract(time * levelSpeed / TWO_PI) * TWO_PI);
     float h = level + waveAmplitude * (sin(p1) + 0.5 * sin(p2));
 
     // Partial derivatives of h.

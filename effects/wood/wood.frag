@@ -40,6 +40,7 @@ uniform float ambient;
 
 const float N_CELLULOSE = 1.55;
 const float PI = 3.14159265;
+const float TWO_PI = 6.2831853;
 
 vec3 safeNormalize(vec3 v, vec3 fallback)
 {
@@ -75,7 +76,9 @@ void main()
     vec3 u = safeNormalize(t * fiberTS.x + b * fiberTS.y + n * fiberTS.z, t);
 
     // --- light and view ------------------------------------------------------------------
-    float angle = time * lightSpeed;
+    // wrapped to [0, 2pi) before sin/cos (W0717): a phase that grows with time loses f32
+    // precision after hours; fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI)
+    float angle = fract(time * lightSpeed / TWO_PI) * TWO_PI;
     vec3 lightWorld = vec3(lightRadius * cos(angle), lightHeight, lightRadius * sin(angle));
     vec3 lightView = (view * vec4(lightWorld, 1.0)).xyz;
     vec3 l = safeNormalize(lightView - fs_in.viewPos, n);

@@ -77,6 +77,9 @@ impl Analyzer<'_> {
                 let args = union([Some(arg), arg1, arg2, arg3].into_iter().flatten().map(|a| self.span(c, a)).collect());
                 widen_to_call(self.text, args)
             }
+            Expression::Derivative { expr, .. } | Expression::Relational { argument: expr, .. } => {
+                widen_to_call(self.text, self.span(c, expr))
+            }
             Expression::Binary { left, right, .. } => union(vec![self.span(c, left), self.span(c, right)]),
             Expression::Unary { expr, .. } | Expression::As { expr, .. } | Expression::Swizzle { vector: expr, .. } => self.span(c, expr),
             Expression::Compose { ref components, .. } => union(components.iter().map(|&x| self.span(c, x)).collect()),
@@ -249,10 +252,12 @@ impl Analyzer<'_> {
         Val::Num(out.value)
     }
 
-    /// naga writes GLSL's `mod(x, y)` as `x - y * floor(x / y)`: in `[0, y)` for `y > 0`.
+    /// naga writes GLSL's `mod(x, y)` as `x - floor(x / y) * y`: in `[0, y)` for `y > 0`.
     fn glsl_mod(&mut self, c: &mut Call<'_>, state: &State, left: Handle<Expression>, right: Handle<Expression>, x: &Num) -> Option<Num> {
-        let Expression::Binary { op: B::Multiply, left: y, right: fl } = c.fun.expressions[right] else { return None };
-        let Expression::Math { fun: naga::MathFunction::Floor, arg: div, .. } = c.fun.expressions[fl] else { return None };
+        let Expression::Binary { op: B::Multiply, left: m0, right: m1 } = c.fun.expressions[right] else { return None };
+        let is_floor = |h: Handle<Expression>| matches!(c.fun.expressions[h], Expression::Math { fun: naga::MathFunction::Floor, .. });
+        let (y, fl) = if is_floor(m1) { (m0, m1) } else if is_floor(m0) { (m1, m0) } else { return None };
+        let Expression::Math { arg: div, .. } = c.fun.expressions[fl] else { return None };
         let Expression::Binary { op: B::Divide, left: x2, right: y2 } = c.fun.expressions[div] else { return None };
         if x2 != left || y2 != y {
             return None;

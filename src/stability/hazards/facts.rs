@@ -249,8 +249,11 @@ fn matrix_fact(samples: &[Mat4]) -> Num {
         let (lo, hi) = singular_bounds(&m3);
         gain = gain.join(Iv::new(lo, hi));
     }
-    // Sampling misses values between instants: a little slack on every bound.
-    let c = c.into_iter().map(|x| Iv::new(x.lo - 1e-3 * x.lo.abs().max(1.0), x.hi + 1e-3 * x.hi.abs().max(1.0))).collect();
+    // Sampling misses values between instants: a little slack on every bound that moves.
+    let c = c
+        .into_iter()
+        .map(|x| if x.is_point() { x } else { Iv::new(x.lo - 1e-3 * x.lo.abs().max(1.0), x.hi + 1e-3 * x.hi.abs().max(1.0)) })
+        .collect();
     let mut n = Num::from_comps(c, 4, ScalarKind::Float, true);
     n.gain = Iv::new(gain.lo * 0.99, gain.hi * 1.01);
     n

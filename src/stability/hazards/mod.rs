@@ -178,7 +178,9 @@ fn big(x: f64) -> String {
     if x != 0.0 && (x.abs() >= 1e6 || x.abs() < 1e-4) {
         return format!("{x:.3e}");
     }
-    let s = format!("{x:.4}");
+    // Enough digits to show that 1.0000069 is not 1.
+    let digits = if (x - (x * 1e4).round() / 1e4).abs() > 1e-12 && x.abs() < 10.0 { 7 } else { 4 };
+    let s = format!("{x:.digits$}");
     let s = s.trim_end_matches('0').trim_end_matches('.').to_string();
     if s == "-0" {
         "0".into()

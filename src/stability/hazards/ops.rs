@@ -399,7 +399,7 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
                 })
             };
             let kind = if fun == M::Asin { Kind::Asin } else { Kind::Acos };
-            return Out { value: taint(r, outside && a.known), hazard: hazard_if(outside, kind) };
+            return Out { value: r, hazard: hazard_if(outside, kind) };
         }
         M::Atan => map(a, |x| x.monotone(f64::atan)),
         M::Atan2 => map(a, |_| Iv::new(-PI, PI)),
@@ -426,11 +426,11 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
                 && !(a.c.len() == 1 && a.gap > 0.0);
             let r = zip(a, &e, |x, y| x.pow(y));
             let bad = negative || zero_to_nonpositive;
-            return Out { value: taint(r, bad && a.known && e.known), hazard: (bad && a.known && e.known).then_some(Kind::Pow) };
+            return Out { value: r, hazard: (bad && a.known && e.known).then_some(Kind::Pow) };
         }
         M::Sqrt => {
             let bad = a.c.iter().any(|x| x.lo < 0.0);
-            return Out { value: taint(map(a, Iv::sqrt), bad && a.known), hazard: hazard_if(bad, Kind::Sqrt) };
+            return Out { value: map(a, Iv::sqrt), hazard: hazard_if(bad, Kind::Sqrt) };
         }
         M::InverseSqrt => {
             let bad = a.c.iter().any(|x| x.lo <= 0.0) && !(a.c.len() == 1 && a.gap > 0.0 && a.c[0].lo >= 0.0);
@@ -490,7 +490,7 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
             n.len = Iv::new(1.0 - 1e-6, 1.0 + 1e-6);
             n.len3 = if a.c.len() == 3 { n.len } else { n.len3 };
             n.cone = a.cone;
-            return Out { value: taint(n, zero && a.known), hazard: hazard_if(zero, Kind::Normalize) };
+            return Out { value: n, hazard: hazard_if(zero, Kind::Normalize) };
         }
         M::FaceForward => {
             let mut r = a.clone();
@@ -548,10 +548,25 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
             t
         }
         M::Inverse => {
+            let rows = a.rows();
             let mut r = Num { known: a.known, ..Num::unknown(a.c.len(), a.cols, a.kind) };
             r.per_draw = a.per_draw;
-            if a.gain.lo > 0.0 && a.cols == 3 {
-                r.gain = Iv::new(1.0 / a.gain.hi, 1.0 / a.gain.lo);
+            // An affine 4x4 (last row 0 0 0 1) inverts its upper-left 3x3.
+            let affine = a.cols == 4 && rows == 4 && (0..3).all(|col| a.c[col * 4 + 3] == Iv::point(0.0)) && a.c[15] == Iv::point(1.0);
+            if a.gain.lo > 0.0 && (a.cols == 3 && rows == 3 || affine) {
+                let b = 1.0 / a.gain.lo;
+                for col in 0..3 {
+                    for row in 0..3 {
+                        r.c[col * rows + row] = Iv::new(-b, b);
+                    }
+                }
+                if affine {
+                    for col in 0..3 {
+                        r.c[col * 4 + 3] = Iv::point(0.0);
+                    }
+                    r.c[15] = Iv::point(1.0);
+                }
+                r.gain = Iv::new(1.0 / a.gain.hi, b);
             }
             r
         }
@@ -562,7 +577,8 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
     ok(value)
 }
 
-/// After a reported hazard the result is no longer known: no cascade of reports.
+/// After a hazard whose result is unbounded (log, inversesqrt) the result is no longer
+/// known: no cascade of reports. Bounded results (asin, sqrt, normalize) stay known.
 fn taint(mut n: Num, hazard: bool) -> Num {
     if hazard {
         n.known = false;

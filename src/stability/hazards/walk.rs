@@ -163,7 +163,6 @@ impl<'a> Analyzer<'a> {
 
     /// Runs the entry point of the stage.
     pub fn run_entry(&mut self) {
-        if std::env::var_os("EFFECTC_HAZARD_DEBUG").is_some() { eprintln!("entry {:?} uniforms {:?}", self.stage, self.facts.uniforms.keys().collect::<Vec<_>>()); }
         let Some((index, ep)) = self.module.entry_points.iter().enumerate().find(|(_, e)| e.stage == self.stage) else {
             return;
         };
@@ -438,7 +437,6 @@ impl<'a> Analyzer<'a> {
     }
 
     pub fn report(&mut self, h: Hazard) {
-        if std::env::var_os("EFFECTC_HAZARD_DEBUG").is_some() { eprintln!("report {} quiet={} span={:?}", h.code, self.quiet, h.span); }
         if self.quiet > 0 || h.span == naga::Span::UNDEFINED {
             return;
         }
