@@ -178,6 +178,7 @@ fn sweep(
         step: request.step,
         float: false,
         timeout: request.timeout,
+        probe: false,
     };
     // Warm-up: the first pipelines and the first frames are slower (caches, page faults).
     command::render_in_memory(gpu, c, outcome, &[], MemoryRequest { frames: request.frames.min(2), ..memory })?;

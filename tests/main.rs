@@ -5,6 +5,8 @@
 //!
 //! - [`fail`]: every directory under `tests/fail/` produces its expected diagnostic;
 //!   the human rendering is snapshotted under `snapshots/fail/`.
+//! - [`hazards`]: guarded hazards under `tests/safe/` and the shipped effects check with
+//!   no hazard warning.
 //! - [`rewrite`]: legal desktop GLSL under `tests/rewrite/` checks clean; the 4.50 text
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
 //! - [`bench`]: `effectc bench` knob sweeps (error to 0 at the reference, plot, mistakes).
@@ -27,6 +29,8 @@ mod cli;
 mod common;
 #[path = "suite/fail.rs"]
 mod fail;
+#[path = "suite/hazards.rs"]
+mod hazards;
 #[path = "suite/rewrite.rs"]
 mod rewrite;
 #[path = "suite/passes.rs"]

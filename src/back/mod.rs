@@ -77,18 +77,21 @@ pub struct TranslateOptions {
     /// Negate clip y so the framebuffer runs bottom-up like GL's (`gl_FragCoord.y`, `dFdy`
     /// as in GL); the renderer flips rows back and treats clockwise faces as front faces.
     pub flip_y: bool,
+    /// Instrument the fragment stage to report the first non-finite value of each pixel
+    /// instead of its colour (`effectc stress`; see [`crate::stability::culprit`]).
+    pub probe_nonfinite: bool,
 }
 
 impl Default for TranslateOptions {
     fn default() -> Self {
-        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false }
+        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false, probe_nonfinite: false }
     }
 }
 
 impl TranslateOptions {
     /// What `effectc render` translates with: the render-only adaptations on.
     pub fn for_rendering(gl_depth: bool) -> Self {
-        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true }
+        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, probe_nonfinite: false }
     }
 }
 
@@ -103,6 +106,8 @@ pub struct Translation {
     pub reflection: reflect::Reflection,
     /// The program's first stage file (where program-wide diagnostics point).
     pub file: crate::diag::FileId,
+    /// With [`TranslateOptions::probe_nonfinite`]: the fragment stage's probes.
+    pub probes: Vec<crate::stability::culprit::Probe>,
 }
 
 impl Translation {
@@ -181,6 +186,10 @@ pub fn translate(
         vec![internal(file, format!("the merged module does not validate: {}", e.as_inner()))]
     })?;
     let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
+    let mut probes = Vec::new();
+    if options.probe_nonfinite {
+        probes = probe(&mut module, program).map_err(|m| vec![internal(file, m)])?;
+    }
     let info = crate::front::naga_run::validator().validate(&module).map_err(|e| {
         vec![internal(file, format!("the translated module does not validate: {}", e.as_inner()))]
     })?;
@@ -192,7 +201,21 @@ pub fn translate(
         stages: modules.iter().map(|(k, _)| *k).collect(),
         reflection,
         file: program.stages[0].syntax.file,
+        probes,
     })
+}
+
+/// Instruments the fragment stage (see [`crate::stability::culprit`]).
+fn probe(module: &mut Module, program: &CompiledProgram) -> Result<Vec<crate::stability::culprit::Probe>, String> {
+    let info = crate::front::naga_run::validator().validate(module).map_err(|e| e.as_inner().to_string())?;
+    let text = program
+        .stages
+        .iter()
+        .find(|s| s.syntax.stage == StageKind::Fragment)
+        .and_then(|s| s.rewritten.as_ref())
+        .map(|r| r.text.as_str())
+        .ok_or("the program has no fragment stage to instrument")?;
+    crate::stability::culprit::instrument(module, &info, text).ok_or_else(|| "the fragment colour output is not a vec4<f32>".to_string())
 }
 
 fn internal(file: crate::diag::FileId, message: String) -> Diagnostic {

@@ -367,6 +367,8 @@ pub struct MemoryRun {
     pub frames: Vec<Pixels>,
     pub gpu_ms: Vec<f64>,
     pub clock: GpuClock,
+    /// The probes of an instrumented run (empty otherwise).
+    pub probes: Vec<crate::stability::culprit::Probe>,
 }
 
 /// What [`render_in_memory`] draws: `frames` frames at times `start + i × step`.
@@ -379,6 +381,9 @@ pub struct MemoryRequest {
     /// Render into Rgba32Float (NaN and Inf survive).
     pub float: bool,
     pub timeout: Duration,
+    /// Single-pass programs: instrument the fragment stage so each pixel's red channel is
+    /// the number of the first probe that saw a non-finite value ([`crate::stability::culprit`]).
+    pub probe: bool,
 }
 
 /// Renders frames of a checked program without writing files, with uniform values
@@ -391,12 +396,13 @@ pub fn render_in_memory(
     overrides: &[(String, UniformValue)],
     m: MemoryRequest,
 ) -> Option<MemoryRun> {
-    let MemoryRequest { size, frames, start, step, float, timeout } = m;
+    let MemoryRequest { size, frames, start, step, float, timeout, probe } = m;
+    let probe = probe && c.passes.is_empty();
     let request = Request {
         inputs: Vec::new(),
         stage: None,
         front: FrontOptions::default(),
-        back: TranslateOptions::for_rendering(true),
+        back: TranslateOptions { probe_nonfinite: probe, ..TranslateOptions::for_rendering(true) },
         frames: Some(frames),
         step: Step::Seconds(step),
         start,
@@ -419,7 +425,8 @@ pub fn render_in_memory(
             return None;
         }
     };
-    let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock() };
+    let probes = if probe { prepared.units.first().map(|u| u.1.probes.clone()).unwrap_or_default() } else { Vec::new() };
+    let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock(), probes };
     for i in 0..frames {
         let state = frame_state(&drawer, i, start + f64::from(i) * step, step, size);
         match drawer.draw(gpu, &state, timeout) {

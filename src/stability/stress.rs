@@ -22,10 +22,14 @@ use crate::render::command::{self, MemoryRequest};
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::Pixels;
+use crate::stability::culprit::Probe;
 use crate::stage::StageKind;
 
 /// A case rendered NaN or Inf pixels.
 pub const E_NON_FINITE_CASE: &str = "E0701";
+
+/// A case computes non-finite intermediate values but its output is finite.
+pub const W_HIDDEN_NON_FINITE: &str = "W0702";
 
 /// Effect times of the time cases (seconds).
 pub const EXTREME_TIMES: [f64; 3] = [1e3, 1e5, 1e7];
@@ -61,6 +65,8 @@ pub struct CaseReport {
     pub values: String,
     pub nan: u64,
     pub inf: u64,
+    /// Pixels where some intermediate value was non-finite (single-pass programs).
+    pub interm: u64,
     /// Largest absolute difference of a finite channel from the nominal frame.
     pub max_delta: f64,
     pub mask: Option<PathBuf>,
@@ -177,10 +183,18 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
     let mut nominal: Option<Vec<f32>> = None;
     let mut reports = Vec::new();
     for case in cases(effect, request.samples, request.seed) {
-        let memory = MemoryRequest { size: request.size, frames: 1, start: case.time, step: 0.0, float: true, timeout: request.timeout };
+        let memory =
+            MemoryRequest { size: request.size, frames: 1, start: case.time, step: 0.0, float: true, timeout: request.timeout, probe: false };
         // A case that cannot render (a timeout, a device error) is reported by the render path.
         let run = command::render_in_memory(gpu, c, outcome, &case.overrides, memory)?;
         let Some(Pixels::Rgba32F(frame)) = run.frames.into_iter().next() else { return None };
+        let culprit = if c.passes.is_empty() {
+            let probed = command::render_in_memory(gpu, c, outcome, &case.overrides, MemoryRequest { probe: true, ..memory })?;
+            let Some(Pixels::Rgba32F(ids)) = probed.frames.first() else { return None };
+            Culprit::of(ids, &probed.probes)
+        } else {
+            None
+        };
         let (counts, mask) = encode::non_finite(&frame, w, h);
         let max_delta = nominal.as_ref().map_or(0.0, |n| max_delta(n, &frame));
         let slug: String = case.name.chars().map(|ch| if ch.is_ascii_alphanumeric() { ch } else { '_' }).collect();
@@ -194,9 +208,20 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
         }
         let inf = counts.pos_inf + counts.neg_inf;
         if counts.nan + inf > 0 {
-            outcome.diagnostics.push(case_error(c, &case, &program, counts.nan, inf, mask_path.as_deref()));
+            let d = case_error(c, &case, &program, counts.nan, inf, mask_path.as_deref());
+            outcome.diagnostics.push(with_culprit(d, c, culprit.as_ref()));
+        } else if let Some(found) = &culprit {
+            let d = Diagnostic::warning(
+                W_HIDDEN_NON_FINITE,
+                format!("{program}: case `{}` computes non-finite values in {} pixels, though its output is finite", case.name, found.pixels),
+            );
+            let d = at_case(d, c, &case);
+            outcome.diagnostics.push(with_culprit(d, c, culprit.as_ref()).with_help(
+                "a NaN hidden by max/clamp/step today is a NaN on another GPU: guard the expression where it starts",
+            ));
         }
-        reports.push(CaseReport { case: case.name.clone(), values: values.join(" "), nan: counts.nan, inf, max_delta, mask: mask_path });
+        let interm = culprit.as_ref().map_or(0, |f| f.pixels);
+        reports.push(CaseReport { case: case.name.clone(), values: values.join(" "), nan: counts.nan, inf, interm, max_delta, mask: mask_path });
         if nominal.is_none() {
             nominal = Some(frame);
         }
@@ -233,7 +258,16 @@ fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut
 
 /// `E0701` at the manifest entry the case changed (the first), else at the manifest.
 fn case_error(c: &check::Checked, case: &Case, program: &str, nan: u64, inf: u64, mask: Option<&Path>) -> Diagnostic {
-    let mut d = Diagnostic::error(E_NON_FINITE_CASE, format!("{program}: case `{}` renders {nan} NaN and {inf} Inf pixels", case.name));
+    let d = Diagnostic::error(E_NON_FINITE_CASE, format!("{program}: case `{}` renders {nan} NaN and {inf} Inf pixels", case.name));
+    let mut d = at_case(d, c, case);
+    if let Some(m) = mask {
+        d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));
+    }
+    d.with_help("guard the expression (clamp, max(x, eps), a branch) or narrow the uniform's `range`")
+}
+
+/// Places a case's diagnostic at the manifest entry it changed, with the values as notes.
+fn at_case(mut d: Diagnostic, c: &check::Checked, case: &Case) -> Diagnostic {
     let changed: Vec<String> = case.overrides.iter().map(|(n, v)| format!("{n} = {}", show(v))).collect();
     match (c.effect.as_ref(), case.overrides.first()) {
         (Some(e), Some((name, value))) => {
@@ -261,10 +295,52 @@ fn case_error(c: &check::Checked, case: &Case, program: &str, nan: u64, inf: u64
     if case.time != 0.0 {
         d = d.with_note(format!("at effect time {:e} s", case.time));
     }
-    if let Some(m) = mask {
-        d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));
+    d
+}
+
+/// The expression where non-finite values begin, from an instrumented frame.
+#[derive(Debug, Clone)]
+struct Culprit {
+    probe: Probe,
+    /// Pixels where it was the first non-finite value.
+    first_in: u64,
+    /// Pixels with any non-finite intermediate value.
+    pixels: u64,
+    /// Other probes that came first in some pixels.
+    others: usize,
+}
+
+impl Culprit {
+    /// The probe that fired first in the most pixels; `None` when none fired.
+    fn of(ids: &[f32], probes: &[Probe]) -> Option<Culprit> {
+        let mut counts: std::collections::BTreeMap<u32, u64> = std::collections::BTreeMap::new();
+        for px in ids.chunks_exact(4) {
+            let id = px[0];
+            if id.is_finite() && id >= 1.0 {
+                *counts.entry(id as u32).or_default() += 1;
+            }
+        }
+        let pixels = counts.values().sum();
+        let (&id, &first_in) = counts.iter().max_by_key(|(id, n)| (**n, std::cmp::Reverse(**id)))?;
+        let probe = probes.iter().find(|p| p.id == id)?.clone();
+        Some(Culprit { probe, first_in, pixels, others: counts.len() - 1 })
     }
-    d.with_help("guard the expression (clamp, max(x, eps), a branch) or narrow the uniform's `range`")
+}
+
+/// Adds the culprit's span in the fragment stage as a label.
+fn with_culprit(d: Diagnostic, c: &check::Checked, culprit: Option<&Culprit>) -> Diagnostic {
+    let Some(f) = culprit else { return d };
+    let stage = c.program.as_ref().and_then(|p| p.stages.iter().find(|s| s.syntax.stage == StageKind::Fragment));
+    let (Some(stage), Some(range)) = (stage, f.probe.span.to_range()) else { return d };
+    let Some(rw) = &stage.rewritten else { return d };
+    let span = rw.map.range_to_original(range);
+    let label = format!("the first non-finite value ({}) in {} of {} pixels", f.probe.what, f.first_in, f.pixels);
+    let d = if d.span.is_none() { d.at(stage.syntax.file, span, label) } else { d.with_label(stage.syntax.file, span, label) };
+    if f.others > 0 {
+        d.with_note(format!("{} other expressions come first in the remaining pixels", f.others))
+    } else {
+        d
+    }
 }
 
 /// The human table of one program.
@@ -278,9 +354,9 @@ pub fn table(r: &StressReport) -> String {
         r.size.1,
         if bad == 0 { "no NaN or Inf".to_string() } else { format!("{bad} with NaN or Inf") }
     );
-    text.push_str(&format!("  {:<18} {:>8} {:>8} {:>10}  {}\n", "case", "NaN px", "Inf px", "max |Δ|", "values"));
+    text.push_str(&format!("  {:<18} {:>8} {:>8} {:>9} {:>10}  {}\n", "case", "NaN px", "Inf px", "interm px", "max |Δ|", "values"));
     for c in &r.cases {
-        text.push_str(&format!("  {:<18} {:>8} {:>8} {:>10.4}  {}\n", c.case, c.nan, c.inf, c.max_delta, c.values));
+        text.push_str(&format!("  {:<18} {:>8} {:>8} {:>9} {:>10.4}  {}\n", c.case, c.nan, c.inf, c.interm, c.max_delta, c.values));
     }
     text
 }

@@ -62,29 +62,8 @@ impl Analyzer<'_> {
         Val::unknown(self.module, &self.ty(c, h))
     }
 
-    /// The span of `h` in the stage text. naga's GLSL front gives builtin calls no span:
-    /// theirs is rebuilt from the arguments' spans, widened to the call's name and parentheses.
     pub fn span(&self, c: &Call<'_>, h: Handle<Expression>) -> naga::Span {
-        let span = c.fun.expressions.get_span(h);
-        if span != naga::Span::UNDEFINED {
-            return span;
-        }
-        let union = |spans: Vec<naga::Span>| {
-            spans.into_iter().filter(|s| *s != naga::Span::UNDEFINED).reduce(|a, b| a.until(&b)).unwrap_or_default()
-        };
-        match c.fun.expressions[h] {
-            Expression::Math { arg, arg1, arg2, arg3, .. } => {
-                let args = union([Some(arg), arg1, arg2, arg3].into_iter().flatten().map(|a| self.span(c, a)).collect());
-                widen_to_call(self.text, args)
-            }
-            Expression::Derivative { expr, .. } | Expression::Relational { argument: expr, .. } => {
-                widen_to_call(self.text, self.span(c, expr))
-            }
-            Expression::Binary { left, right, .. } => union(vec![self.span(c, left), self.span(c, right)]),
-            Expression::Unary { expr, .. } | Expression::As { expr, .. } | Expression::Swizzle { vector: expr, .. } => self.span(c, expr),
-            Expression::Compose { ref components, .. } => union(components.iter().map(|&x| self.span(c, x)).collect()),
-            _ => span,
-        }
+        expression_span(c.fun, h, self.text)
     }
 
     /// The key of `h`'s value (see [`Analyzer::hash_key`]); `None` for values with no
@@ -424,11 +403,40 @@ impl Analyzer<'_> {
     }
 }
 
+/// The span of `h` in the stage text. naga's GLSL front gives builtin calls no span:
+/// theirs is rebuilt from the arguments' spans, widened to the call's name and parentheses.
+pub fn expression_span(fun: &naga::Function, h: Handle<Expression>, text: &str) -> naga::Span {
+    let span = fun.expressions.get_span(h);
+    if span != naga::Span::UNDEFINED {
+        return span;
+    }
+    let union = |spans: Vec<naga::Span>| {
+        spans.into_iter().filter(|s| *s != naga::Span::UNDEFINED).reduce(|a, b| a.until(&b)).unwrap_or_default()
+    };
+    let sub = |x: Handle<Expression>| expression_span(fun, x, text);
+    match fun.expressions[h] {
+        Expression::Math { arg, arg1, arg2, arg3, .. } => {
+            widen_to_call(text, union([Some(arg), arg1, arg2, arg3].into_iter().flatten().map(sub).collect()))
+        }
+        Expression::Derivative { expr, .. } | Expression::Relational { argument: expr, .. } => widen_to_call(text, sub(expr)),
+        Expression::Binary { left, right, .. } => union(vec![sub(left), sub(right)]),
+        Expression::Unary { expr, .. } | Expression::As { expr, .. } | Expression::Swizzle { vector: expr, .. } => sub(expr),
+        Expression::Compose { ref components, .. } => union(components.iter().map(|&x| sub(x)).collect()),
+        _ => span,
+    }
+}
+
 /// `f(args)` around the span of `args`: back over `(` and the name, on over `)`.
 fn widen_to_call(text: &str, args: naga::Span) -> naga::Span {
     let Some(r) = args.to_range() else { return args };
     let bytes = text.as_bytes();
     let mut start = r.start.min(bytes.len());
+    // An argument that starts with a member or swizzle (`lp.xz`): back to its base name.
+    if bytes.get(start) == Some(&b'.') {
+        while start > 0 && (bytes[start - 1].is_ascii_alphanumeric() || matches!(bytes[start - 1], b'_' | b'.')) {
+            start -= 1;
+        }
+    }
     let mut opens = 0;
     while start > 0 && (bytes[start - 1].is_ascii_whitespace() || bytes[start - 1] == b'(') {
         opens += usize::from(bytes[start - 1] == b'(');

@@ -288,6 +288,12 @@ pub fn uniform_value(module: &Module, ty: &TypeInner, path: &str, facts: &Facts)
                     }
                     Val::Num(n)
                 }
+                (Some(n), Val::Num(u)) if u.cols == 1 && n.cols == 1 && u.c.len() < n.c.len() => {
+                    // A vec3 camera position, a vec2 resolution: the leading components.
+                    let mut m = Num::from_comps(n.c[..u.c.len()].to_vec(), 1, u.kind, true);
+                    m.per_draw = true;
+                    Val::Num(m)
+                }
                 (Some(n), Val::Num(u)) if u.cols > 1 && n.cols == 4 && u.cols == 3 && u.c.len() == 9 => {
                     // A mat3 uniform bound to a 4x4 semantic: the upper-left 3x3.
                     let c = (0..3).flat_map(|col| (0..3).map(move |row| (col, row))).map(|(col, row)| n.c[col * 4 + row]).collect();

@@ -15,6 +15,9 @@ pub struct Iv {
 /// Relative slack for f32 rounding of one operation (generous: f32 has 2⁻²⁴).
 const SLACK: f64 = 1.0 / (1u64 << 20) as f64;
 
+// Named methods rather than `std::ops` traits: every operation rounds outward, and the
+// names read as the interval operations they are (`Iv::add` in folds).
+#[allow(clippy::should_implement_trait)]
 impl Iv {
     pub const TOP: Iv = Iv { lo: f64::NEG_INFINITY, hi: f64::INFINITY };
     pub const UNIT: Iv = Iv { lo: 0.0, hi: 1.0 };

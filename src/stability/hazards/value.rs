@@ -261,6 +261,6 @@ mod tests {
         let s = 2.0;
         let m = [[0.0, s, 0.0], [-s, 0.0, 0.0], [0.0, 0.0, s]];
         let (lo, hi) = singular_bounds(&m);
-        assert!(lo > 0.6 && lo <= 2.0 && hi >= 2.0 && hi < 3.5);
+        assert!(lo > 0.6 && lo <= 2.0 && (2.0..3.5).contains(&hi));
     }
 }
