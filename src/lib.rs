@@ -13,7 +13,9 @@
 //!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection; [`translate`] writes them (per pass, for
 //!    the passes that reach the output).
 //! 7. [`render`]: wgpu headless: scenes, targets, frames, pass graphs (one scene per pass).
-//! 8. [`stability`]: `effectc stress`, renders under extreme inputs counting NaN/Inf.
+//! 8. [`stability`]: static hazards (interval analysis on the IR, warnings in `check`) and
+//!    `effectc stress`, renders under extreme inputs counting NaN/Inf, with the culprit
+//!    expression located by instrumenting the fragment stage.
 //! 9. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
 //!
 //! Every finding is a [`diag::Diagnostic`], rendered by one emitter (human, JSON, GitHub
