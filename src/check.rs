@@ -138,7 +138,7 @@ pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outc
                 diags.extend(crate::link::check_manifest(e, &syntaxes, &out.files));
             }
             if !diags.iter().any(Diagnostic::is_error) {
-                diags.extend(hazards::analyse(effect.as_ref(), p, &hazards::PassInputs::default()));
+                diags.extend(hazards::analyse(effect.as_ref(), p));
             }
         }
         out.diagnostics.extend(diags);

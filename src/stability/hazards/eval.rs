@@ -93,7 +93,7 @@ impl Analyzer<'_> {
                 if b == Some(None) || d == Some(None) {
                     return None;
                 }
-                Some(Self::hash_key(("math", format!("{fun:?}"), a, b.flatten(), d.flatten())))
+                Some(math_key(*fun, a, b.flatten(), d.flatten()))
             }
             Expression::AccessIndex { base, index } => sub(c, *base).map(|k| Self::hash_key(("ai", k, *index))),
             Expression::Swizzle { vector, pattern, size } => {
@@ -223,8 +223,7 @@ impl Analyzer<'_> {
             }
         }
         let same = c.keys[left.index()].is_some() && c.keys[left.index()] == c.keys[right.index()];
-        let ty = self.ty(c, h);
-        let out = ops::binary(op, &a, &b, same, &ty);
+        let out = ops::binary(op, &a, &b, same);
         if let Some(kind) = out.hazard {
             self.report(Hazard::new(kind, self.span(c, h), &b, None));
         }
@@ -287,8 +286,8 @@ impl Analyzer<'_> {
             return false;
         }
         let Some(k) = c.keys[arg.index()] else { return false };
-        let len = Self::hash_key(("math", "Length", k, None::<u64>, None::<u64>));
-        let dot = Self::hash_key(("math", "Dot", k, Some(k), None::<u64>));
+        let len = math_key(naga::MathFunction::Length, k, None, None);
+        let dot = math_key(naga::MathFunction::Dot, k, Some(k), None);
         [len, dot].iter().any(|key| state.refined.get(key).is_some_and(|r| r.gap > 0.0 || r.iv.lo > 0.0))
     }
 
@@ -340,8 +339,8 @@ impl Analyzer<'_> {
             }
             Expression::Binary { op, left, right } => {
                 let Some(op) = comparison(op, truth) else { return state };
-                let a = self.num(c, state_ref(&state), left);
-                let b = self.num(c, state_ref(&state), right);
+                let a = self.num(c, &state, left);
+                let b = self.num(c, &state, right);
                 if a.c.len() != 1 || b.c.len() != 1 {
                     return state;
                 }
@@ -426,6 +425,12 @@ pub fn expression_span(fun: &naga::Function, h: Handle<Expression>, text: &str) 
     }
 }
 
+/// The key of a builtin's value from its arguments' keys (shared by evaluation and by the
+/// guards that look a `length(v)` or `dot(v, v)` up).
+fn math_key(fun: naga::MathFunction, a: u64, b: Option<u64>, d: Option<u64>) -> u64 {
+    Analyzer::hash_key(("math", format!("{fun:?}"), a, b, d))
+}
+
 /// `f(args)` around the span of `args`: back over `(` and the name, on over `)`.
 fn widen_to_call(text: &str, args: naga::Span) -> naga::Span {
     let Some(r) = args.to_range() else { return args };
@@ -461,10 +466,6 @@ fn widen_to_call(text: &str, args: naga::Span) -> naga::Span {
         }
     }
     naga::Span::new(start as u32, end as u32)
-}
-
-fn state_ref(s: &State) -> &State {
-    s
 }
 
 /// A fact resized to the input's component count (a vec3 attribute read as vec4 gets w = 1

@@ -189,15 +189,8 @@ fn big(x: f64) -> String {
     }
 }
 
-/// Extra facts for one pass of a multi-pass effect: sampled targets (`true`: 8-bit unorm
-/// data in [0, 1]; float targets are unknown).
-#[derive(Debug, Default, Clone)]
-pub struct PassInputs {
-    pub sampled: Vec<(String, bool)>,
-}
-
 /// Runs the analysis over a compiled program; warnings at the user's spans.
-pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram, inputs: &PassInputs) -> Vec<Diagnostic> {
+pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagnostic> {
     let find = |kind: StageKind| program.stages.iter().find(|s| s.syntax.stage == kind);
     let vertex = find(StageKind::Vertex);
     let names: Vec<(u32, String)> = vertex
@@ -215,13 +208,6 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram, inputs: &Pass
         })
         .unwrap_or_default();
     let mut f = facts::Facts::of(effect, &names);
-    for (name, unorm) in &inputs.sampled {
-        if *unorm {
-            f.textures.insert(name.clone(), [Iv::UNIT; 4]);
-        } else {
-            f.textures.remove(name);
-        }
-    }
     let mut out = Vec::new();
     for (kind, stage) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
         let Some(s) = find(kind) else { continue };

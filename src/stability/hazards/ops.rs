@@ -4,7 +4,7 @@
 //! operands make possible (if they are known). Vector facts follow the algebra: lengths
 //! through the triangle inequality, Cauchy–Schwarz for `dot`, matrix gains for products.
 
-use naga::{BinaryOperator as B, MathFunction as M, ScalarKind, TypeInner};
+use naga::{BinaryOperator as B, MathFunction as M, ScalarKind};
 
 use super::interval::Iv;
 use super::value::{length_of, Num};
@@ -135,7 +135,7 @@ fn wrap(mut n: Num) -> Num {
     n
 }
 
-pub fn binary(op: B, a: &Num, b: &Num, same: bool, ty: &TypeInner) -> Out {
+pub fn binary(op: B, a: &Num, b: &Num, same: bool) -> Out {
     let int = matches!(a.kind, ScalarKind::Sint | ScalarKind::Uint);
     let value = match op {
         B::Add | B::Subtract => {
@@ -190,7 +190,6 @@ pub fn binary(op: B, a: &Num, b: &Num, same: bool, ty: &TypeInner) -> Out {
             r
         }
     };
-    let _ = ty;
     ok(if int { wrap(value) } else { value })
 }
 
@@ -474,7 +473,7 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
             n
         }
         M::Distance => {
-            let diff = binary(B::Subtract, a, &b0(), same, &TypeInner::Scalar(naga::Scalar::F32)).value;
+            let diff = binary(B::Subtract, a, &b0(), same).value;
             let mut n = Num::float(Iv::new(diff.min_len(), diff.len.hi));
             n.known = diff.known;
             n
@@ -599,21 +598,20 @@ mod tests {
     #[test]
     fn asin_of_unit_dot_scaled_is_safe_but_unscaled_is_not() {
         let d = math(M::Dot, &unit_vector(), Some(&unit_vector()), None, false, false).value;
-        let scaled = binary(B::Divide, &d, &Num::float(Iv::point(1.55)), false, &TypeInner::Scalar(naga::Scalar::F32)).value;
+        let scaled = binary(B::Divide, &d, &Num::float(Iv::point(1.55)), false).value;
         assert!(math(M::Asin, &scaled, None, None, false, false).hazard.is_none());
         assert_eq!(math(M::Asin, &d, None, None, false, false).hazard, Some(Kind::Asin));
     }
 
     #[test]
     fn division_guards() {
-        let f32t = TypeInner::Scalar(naga::Scalar::F32);
         let x = Num::float(Iv::new(0.0, 2.0));
-        assert_eq!(binary(B::Divide, &Num::float(Iv::point(1.0)), &x, false, &f32t).hazard, Some(Kind::Division));
+        assert_eq!(binary(B::Divide, &Num::float(Iv::point(1.0)), &x, false).hazard, Some(Kind::Division));
         let guarded = math(M::Max, &x, Some(&Num::float(Iv::point(1e-3))), None, false, false).value;
-        assert!(binary(B::Divide, &Num::float(Iv::point(1.0)), &guarded, false, &f32t).hazard.is_none());
+        assert!(binary(B::Divide, &Num::float(Iv::point(1.0)), &guarded, false).hazard.is_none());
         let mut gapped = Num::float(Iv::new(-2.0, 2.0));
         gapped.gap = 1e-4;
-        let q = binary(B::Divide, &Num::float(Iv::point(1.0)), &gapped, false, &f32t);
+        let q = binary(B::Divide, &Num::float(Iv::point(1.0)), &gapped, false);
         assert!(q.hazard.is_none() && q.value.c[0].mag() <= 1.0e4 * 1.001);
     }
 
@@ -629,12 +627,12 @@ mod tests {
     #[test]
     fn sqrt_of_one_minus_square() {
         let x = Num::float(Iv::new(-0.5, 0.5));
-        let sq = binary(B::Multiply, &x, &x, true, &TypeInner::Scalar(naga::Scalar::F32)).value;
-        let d = binary(B::Subtract, &Num::float(Iv::point(1.0)), &sq, false, &TypeInner::Scalar(naga::Scalar::F32)).value;
+        let sq = binary(B::Multiply, &x, &x, true).value;
+        let d = binary(B::Subtract, &Num::float(Iv::point(1.0)), &sq, false).value;
         assert!(math(M::Sqrt, &d, None, None, false, false).hazard.is_none());
         let wide = Num::float(Iv::new(-2.0, 2.0));
-        let sq = binary(B::Multiply, &wide, &wide, true, &TypeInner::Scalar(naga::Scalar::F32)).value;
-        let d = binary(B::Subtract, &Num::float(Iv::point(1.0)), &sq, false, &TypeInner::Scalar(naga::Scalar::F32)).value;
+        let sq = binary(B::Multiply, &wide, &wide, true).value;
+        let d = binary(B::Subtract, &Num::float(Iv::point(1.0)), &sq, false).value;
         assert_eq!(math(M::Sqrt, &d, None, None, false, false).hazard, Some(Kind::Sqrt));
     }
 
@@ -642,6 +640,6 @@ mod tests {
     fn unknown_inputs_raise_nothing() {
         let u = Num::unknown(1, 1, ScalarKind::Float);
         assert!(math(M::Sqrt, &u, None, None, false, false).hazard.is_none());
-        assert!(binary(B::Divide, &Num::float(Iv::point(1.0)), &u, false, &TypeInner::Scalar(naga::Scalar::F32)).hazard.is_none());
+        assert!(binary(B::Divide, &Num::float(Iv::point(1.0)), &u, false).hazard.is_none());
     }
 }
