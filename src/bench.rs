@@ -179,6 +179,7 @@ fn sweep(
         float: false,
         timeout: request.timeout,
         probe: false,
+        degenerate: None,
     };
     // Warm-up: the first pipelines and the first frames are slower (caches, page faults).
     command::render_in_memory(gpu, c, outcome, &[], MemoryRequest { frames: request.frames.min(2), ..memory })?;

@@ -23,9 +23,16 @@ in Vertex {
 
 out vec4 fragColour[4];
 
+// normalize() that cannot divide by zero: a mesh with zero normals (degenerate faces;
+// `effectc stress`'s geometry cases) gives N = 0 here, not NaN.
+vec3 safeNormalize(vec3 v)
+{
+    return v * inversesqrt(max(dot(v, v), 1e-12));
+}
+
 void main(void)
 {
-    vec3 N = normalize(IN.normal);
+    vec3 N = safeNormalize(IN.normal);
     float grain = texture(groundTex, IN.worldPos.xz * 0.35).r;
 
     // Sand at the shore, grass on the slopes, rock on steep parts.

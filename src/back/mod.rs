@@ -77,21 +77,24 @@ pub struct TranslateOptions {
     /// Negate clip y so the framebuffer runs bottom-up like GL's (`gl_FragCoord.y`, `dFdy`
     /// as in GL); the renderer flips rows back and treats clockwise faces as front faces.
     pub flip_y: bool,
-    /// Instrument the fragment stage to report the first non-finite value of each pixel
-    /// instead of its colour (`effectc stress`; see [`crate::stability::culprit`]).
+    /// Instrument the fragment stage to count, per invocation, the first expression that
+    /// computes a non-finite value (`effectc stress`; see [`crate::stability::culprit`]).
     pub probe_nonfinite: bool,
+    /// With `probe_nonfinite`, instrument the vertex stage too (the device must allow
+    /// storage writes in vertex shaders).
+    pub probe_vertex: bool,
 }
 
 impl Default for TranslateOptions {
     fn default() -> Self {
-        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false, probe_nonfinite: false }
+        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false, probe_nonfinite: false, probe_vertex: false }
     }
 }
 
 impl TranslateOptions {
     /// What `effectc render` translates with: the render-only adaptations on.
     pub fn for_rendering(gl_depth: bool) -> Self {
-        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, probe_nonfinite: false }
+        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, probe_nonfinite: false, probe_vertex: false }
     }
 }
 
@@ -106,8 +109,8 @@ pub struct Translation {
     pub reflection: reflect::Reflection,
     /// The program's first stage file (where program-wide diagnostics point).
     pub file: crate::diag::FileId,
-    /// With [`TranslateOptions::probe_nonfinite`]: the fragment stage's probes.
-    pub probes: Vec<crate::stability::culprit::Probe>,
+    /// With [`TranslateOptions::probe_nonfinite`]: the probes and their counts buffer.
+    pub probes: Option<crate::stability::culprit::Instrumented>,
 }
 
 impl Translation {
@@ -186,9 +189,10 @@ pub fn translate(
         vec![internal(file, format!("the merged module does not validate: {}", e.as_inner()))]
     })?;
     let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
-    let mut probes = Vec::new();
+    let mut probes = None;
     if options.probe_nonfinite {
-        probes = probe(&mut module, program).map_err(|m| vec![internal(file, m)])?;
+        let stages: &[StageKind] = if options.probe_vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };
+        probes = Some(probe(&mut module, program, stages).map_err(|m| vec![internal(file, m)])?);
     }
     let info = crate::front::naga_run::validator().validate(&module).map_err(|e| {
         vec![internal(file, format!("the translated module does not validate: {}", e.as_inner()))]
@@ -205,17 +209,13 @@ pub fn translate(
     })
 }
 
-/// Instruments the fragment stage (see [`crate::stability::culprit`]).
-fn probe(module: &mut Module, program: &CompiledProgram) -> Result<Vec<crate::stability::culprit::Probe>, String> {
+/// Instruments the entry points of `stages` (see [`crate::stability::culprit`]).
+fn probe(module: &mut Module, program: &CompiledProgram, stages: &[StageKind]) -> Result<crate::stability::culprit::Instrumented, String> {
     let info = crate::front::naga_run::validator().validate(module).map_err(|e| e.as_inner().to_string())?;
-    let text = program
-        .stages
-        .iter()
-        .find(|s| s.syntax.stage == StageKind::Fragment)
-        .and_then(|s| s.rewritten.as_ref())
-        .map(|r| r.text.as_str())
-        .ok_or("the program has no fragment stage to instrument")?;
-    crate::stability::culprit::instrument(module, &info, text).ok_or_else(|| "the fragment colour output is not a vec4<f32>".to_string())
+    let texts: Vec<(StageKind, &str)> =
+        program.stages.iter().filter_map(|s| Some((s.syntax.stage, s.rewritten.as_ref()?.text.as_str()))).collect();
+    let binding = crate::stability::culprit::free_binding(module);
+    crate::stability::culprit::instrument(module, &info, &texts, stages, binding)
 }
 
 fn internal(file: crate::diag::FileId, message: String) -> Diagnostic {

@@ -298,6 +298,10 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
                     info.glsl = Some(tname);
                 }
             }
+            TypeInner::Array { size: naga::ArraySize::Constant(n), stride, .. } if matches!(g.space, AddressSpace::Storage { .. }) => {
+                info.kind = "storage_buffer";
+                info.size = Some(n.get() * stride);
+            }
             _ => {}
         }
         bindings.push(info);

@@ -23,9 +23,11 @@ use crate::render::encode;
 use crate::back::Translation;
 use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels, Target};
+use crate::render::degenerate::Degenerate;
 use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
 use crate::render::scene::{ColorMode, Scene, SceneInput};
 use crate::render::semantics::FrameState;
+use crate::stability::culprit::{Instrumented, StageCounts};
 use crate::stage::StageKind;
 use crate::translate::{self, write_atomic};
 
@@ -146,7 +148,7 @@ pub fn run(request: &Request) -> RunResult {
             continue;
         }
         let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, request, &[]) {
+        let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, request, &[], None) {
             Ok(d) => d,
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
@@ -292,6 +294,13 @@ impl Drawer {
             Drawer::Graph(g) => format!("{} passes run", g.plan.running().count()),
         }
     }
+    /// Every scene drawn, with its index into `Effect::passes` (0 for a single pass).
+    fn scenes(&self) -> Box<dyn Iterator<Item = (usize, &Scene)> + '_> {
+        match self {
+            Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &**scene))),
+            Drawer::Graph(g) => Box::new(g.scenes()),
+        }
+    }
     fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
         match self {
             Drawer::Single { scene, target } => frames::render(gpu, scene, target, state, timeout),
@@ -310,6 +319,7 @@ fn build(
     mode: ColorMode,
     request: &Request,
     overrides: &[(String, UniformValue)],
+    degenerate: Option<Degenerate>,
 ) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
     let flipped_y = request.back.flip_y;
     let with_overrides = |e: &Effect| {
@@ -332,7 +342,7 @@ fn build(
                     Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &views[*i] })
                 })
                 .collect();
-            let options = GraphOptions { mode, flipped_y, dump: request.dump_targets, output_size: size };
+            let options = GraphOptions { mode, flipped_y, dump: request.dump_targets, output_size: size, degenerate };
             let graph = PassGraph::new(gpu, effect, plan.clone(), &programs, options)?;
             Ok((Drawer::Graph(Box::new(graph)), effect.file))
         }
@@ -340,7 +350,7 @@ fn build(
             let (_, translation, wgsl) = &prepared.units[0];
             let program = c.program.as_ref().expect("translated programs have a program");
             let effect = c.effect.as_ref().map(with_overrides);
-            let input = SceneInput { translation, wgsl, program, effect: effect.as_ref(), mode, flipped_y, pass: None };
+            let input = SceneInput { translation, wgsl, program, effect: effect.as_ref(), mode, flipped_y, pass: None, degenerate };
             let scene = Scene::new(gpu, &input)?;
             let target = Target::new(gpu, &scene, size.0, size.1, mode);
             Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))
@@ -367,8 +377,20 @@ pub struct MemoryRun {
     pub frames: Vec<Pixels>,
     pub gpu_ms: Vec<f64>,
     pub clock: GpuClock,
-    /// The probes of an instrumented run (empty otherwise).
-    pub probes: Vec<crate::stability::culprit::Probe>,
+    /// Instrumented runs: per instrumented program (one per pass of a multi-pass effect),
+    /// its probes and what they counted over all frames.
+    pub probes: Vec<ProbeRun>,
+    /// What the degenerate mesh changed, per scene that draws one (index into
+    /// `Effect::passes`, 0 for a single pass; empty when none did).
+    pub degenerate: Vec<(usize, String)>,
+}
+
+/// The probes of one instrumented program and their counts.
+pub struct ProbeRun {
+    /// Index into `Effect::passes` (0 for a single-pass program).
+    pub pass: usize,
+    pub instrumented: Instrumented,
+    pub counts: Vec<StageCounts>,
 }
 
 /// What [`render_in_memory`] draws: `frames` frames at times `start + i × step`.
@@ -381,9 +403,12 @@ pub struct MemoryRequest {
     /// Render into Rgba32Float (NaN and Inf survive).
     pub float: bool,
     pub timeout: Duration,
-    /// Single-pass programs: instrument the fragment stage so each pixel's red channel is
-    /// the number of the first probe that saw a non-finite value ([`crate::stability::culprit`]).
+    /// Instrument the fragment stage (and the vertex stage where the device allows storage
+    /// writes there) to count the first non-finite value of every invocation
+    /// ([`crate::stability::culprit`]); the pixels are those of the plain program.
     pub probe: bool,
+    /// Draw a degenerate variant of the mesh.
+    pub degenerate: Option<Degenerate>,
 }
 
 /// Renders frames of a checked program without writing files, with uniform values
@@ -396,13 +421,12 @@ pub fn render_in_memory(
     overrides: &[(String, UniformValue)],
     m: MemoryRequest,
 ) -> Option<MemoryRun> {
-    let MemoryRequest { size, frames, start, step, float, timeout, probe } = m;
-    let probe = probe && c.passes.is_empty();
+    let MemoryRequest { size, frames, start, step, float, timeout, probe, degenerate } = m;
     let request = Request {
         inputs: Vec::new(),
         stage: None,
         front: FrontOptions::default(),
-        back: TranslateOptions { probe_nonfinite: probe, ..TranslateOptions::for_rendering(true) },
+        back: TranslateOptions { probe_nonfinite: probe, probe_vertex: gpu.vertex_storage(), ..TranslateOptions::for_rendering(true) },
         frames: Some(frames),
         step: Step::Seconds(step),
         start,
@@ -418,15 +442,15 @@ pub fn render_in_memory(
     };
     let prepared = prepare(c, outcome, &request)?;
     let mode = if float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-    let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, &request, overrides) {
+    let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, &request, overrides, degenerate) {
         Ok(d) => d,
         Err(diags) => {
             outcome.diagnostics.extend(diags);
             return None;
         }
     };
-    let probes = if probe { prepared.units.first().map(|u| u.1.probes.clone()).unwrap_or_default() } else { Vec::new() };
-    let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock(), probes };
+    let degenerate = drawer.scenes().filter_map(|(i, s)| Some((i, s.degenerate.clone()?))).collect();
+    let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock(), probes: Vec::new(), degenerate };
     for i in 0..frames {
         let state = frame_state(&drawer, i, start + f64::from(i) * step, step, size);
         match drawer.draw(gpu, &state, timeout) {
@@ -445,6 +469,23 @@ pub fn render_in_memory(
                     // The device is still busy: dropping the scene would wait for it.
                     std::mem::forget(drawer);
                 }
+                return None;
+            }
+        }
+    }
+    for (pass, scene) in drawer.scenes() {
+        let Some(buffer) = &scene.probe_counts else { continue };
+        let Some(instrumented) = prepared.units.iter().find(|u| u.0 == pass).and_then(|u| u.1.probes.clone()) else { continue };
+        match frames::read_u32s(gpu, buffer) {
+            Ok(counts) => {
+                let counts = instrumented.read(&counts);
+                run.probes.push(ProbeRun { pass, instrumented, counts });
+            }
+            Err(e) => {
+                outcome.diagnostics.push(Diagnostic::error(E_FRAME, match e {
+                    FrameError::Timeout(t) => format!("the probe counts were not ready within {:.1} s", t.as_secs_f64()),
+                    FrameError::Device(d) => format!("the probe counts could not be read: {d}"),
+                }).in_file(file));
                 return None;
             }
         }

@@ -70,7 +70,12 @@ impl Gpu {
         // Blending into Rgba32Float (`--float`) where the adapter can.
         // FLOAT32_FILTERABLE: a multi-pass effect samples its rgba32f targets (and every float
         // target under --float) through filtering samplers, as GL does.
-        let wanted = wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::FLOAT32_BLENDABLE | wgpu::Features::FLOAT32_FILTERABLE;
+        // VERTEX_WRITABLE_STORAGE: `effectc stress` counts non-finite values of the vertex
+        // stage in a storage buffer.
+        let wanted = wgpu::Features::TIMESTAMP_QUERY
+            | wgpu::Features::FLOAT32_BLENDABLE
+            | wgpu::Features::FLOAT32_FILTERABLE
+            | wgpu::Features::VERTEX_WRITABLE_STORAGE;
         let features = adapter.features() & wanted;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("effectc"),
@@ -95,6 +100,11 @@ impl Gpu {
         let first = errors.first().cloned();
         errors.clear();
         first
+    }
+
+    /// Whether vertex shaders may write storage buffers on this device.
+    pub fn vertex_storage(&self) -> bool {
+        self.device.features().contains(wgpu::Features::VERTEX_WRITABLE_STORAGE)
     }
 
     /// Whether colour targets of `format` can blend on this device.

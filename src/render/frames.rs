@@ -314,6 +314,21 @@ pub fn record_draw(pass: &mut wgpu::RenderPass<'_>, scene: &Scene) {
     }
 }
 
+/// Copies a storage buffer (usage `COPY_SRC`) to the host as little-endian `u32`s.
+pub fn read_u32s(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u32>, FrameError> {
+    let staging = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe counts"),
+        size: buffer.size(),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("probe counts") });
+    encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, buffer.size());
+    gpu.queue.submit([encoder.finish()]);
+    let bytes = map_read(gpu, &staging)?;
+    Ok(bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
+}
+
 /// Maps a finished buffer, copies its bytes out and unmaps it.
 pub fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError> {
     let slice = buffer.slice(..);

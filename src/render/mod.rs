@@ -5,6 +5,7 @@
 //!   render pipelines built from translated WGSL.
 //! - [`mesh`], [`texture`]: CPU-side meshes (builtins, OBJ) and textures (files, cube maps,
 //!   generators).
+//! - [`degenerate`]: the stress variants of a mesh (zero normals, zero-area triangles).
 //! - [`attributes`]: which mesh attribute feeds each vertex input; the vertex buffer.
 //! - [`camera`], [`semantics`], [`uniforms`]: camera and model over time, per-frame values,
 //!   the bytes of every uniform buffer (manifest values, semantics, reported guesses).
@@ -21,6 +22,7 @@ pub mod attributes;
 pub mod camera;
 pub mod command;
 pub mod compare;
+pub mod degenerate;
 pub mod device;
 pub mod encode;
 pub mod frames;

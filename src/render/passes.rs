@@ -38,10 +38,14 @@ pub struct GraphOptions {
     pub dump: bool,
     /// The size of the output target at scale 1.
     pub output_size: (u32, u32),
+    /// `effectc stress`: passes that draw a mesh draw this variant of it.
+    pub degenerate: Option<crate::render::degenerate::Degenerate>,
 }
 
 /// A pass as it runs every frame.
 struct RunningPass {
+    /// Index into `Effect::passes`.
+    index: usize,
     name: String,
     scene: Scene,
     colors: Vec<Option<wgpu::TextureView>>,
@@ -99,7 +103,7 @@ impl PassGraph {
         programs: &[PassProgram<'_>],
         options: GraphOptions,
     ) -> Result<PassGraph, Vec<Diagnostic>> {
-        let GraphOptions { mode, flipped_y, dump, output_size } = options;
+        let GraphOptions { mode, flipped_y, dump, output_size, degenerate } = options;
         let output_name = effect.output.as_ref().map(|o| o.name.clone()).unwrap_or_default();
         let textures: Vec<wgpu::Texture> = plan
             .textures
@@ -159,6 +163,7 @@ impl PassGraph {
                 mode,
                 flipped_y,
                 pass: Some(binding),
+                degenerate,
             };
             let mut scene = match Scene::new(gpu, &input) {
                 Ok(s) => s,
@@ -181,6 +186,7 @@ impl PassGraph {
                 .map(|(t, on)| if *on { view_of(&t.name) } else { None })
                 .collect();
             passes.push(RunningPass {
+                index: p.index,
                 name: decl.name.clone(),
                 scene,
                 colors: color_views,
@@ -245,6 +251,11 @@ impl PassGraph {
     }
 
     /// How [`Frame::gpu_ms`] is measured.
+    /// The scene of every running pass, with its index into `Effect::passes`.
+    pub fn scenes(&self) -> impl Iterator<Item = (usize, &Scene)> {
+        self.passes.iter().map(|p| (p.index, &p.scene))
+    }
+
     pub fn clock(&self) -> GpuClock {
         if self.timestamps.is_some() {
             GpuClock::Timestamps

@@ -16,6 +16,7 @@ use crate::manifest::{
     Blend, BuiltinMesh, CameraDecl, Cull, Effect, Filter, MeshSource, ModelDecl, TextureKind, TextureSource, Wrap,
 };
 use crate::render::attributes;
+use crate::render::degenerate::Degenerate;
 use crate::render::device::{color_formats, Gpu, PipelineSpec};
 use crate::render::mesh::Mesh;
 use crate::render::texture::{self, TexelImage};
@@ -89,6 +90,11 @@ pub struct Scene {
     pub describe: String,
     /// Framebuffer rows run bottom-up (clip y negated): readback flips them.
     pub flipped_y: bool,
+    /// The counts of an instrumented translation ([`crate::stability::culprit`]).
+    pub probe_counts: Option<wgpu::Buffer>,
+    /// What the stress variant of the mesh changed; `None` without one, or when the scene
+    /// draws no mesh it could change (a full-screen pass, vertices made by the shader).
+    pub degenerate: Option<String>,
 }
 
 /// What a scene is built from.
@@ -102,6 +108,8 @@ pub struct SceneInput<'a> {
     pub flipped_y: bool,
     /// Set for one pass of a multi-pass effect: its attachments and sampled targets.
     pub pass: Option<PassBinding<'a>>,
+    /// `effectc stress`: draw a degenerate variant of the mesh.
+    pub degenerate: Option<Degenerate>,
 }
 
 /// What the pass graph decides for one pass's scene.
@@ -140,6 +148,14 @@ impl Scene {
         let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
         let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
         let choices = attributes::choose(&per_vertex, &explicit, &mesh);
+        let read: Vec<&str> = choices.iter().filter_map(|c| c.attribute).collect();
+        let (mesh, degenerate) = match input.degenerate {
+            Some(d) if matches!(mesh_note, MeshNote::Manifest | MeshNote::Cube) && d.affects(&read) => {
+                let (changed, what) = d.apply(&mesh);
+                (changed, Some(what))
+            }
+            _ => (mesh, None),
+        };
         // A full-screen pass draws effectc's triangle, whose attributes (position, uv) are
         // documented: matching them by name is the contract, not a guess worth a warning.
         let fullscreen_pass = input.pass.is_some() && matches!(mesh_note, MeshNote::Fullscreen);
@@ -216,7 +232,7 @@ impl Scene {
             })
             .collect();
         let textures = Textures::create(gpu, input, &mut warnings)?;
-        let bind_groups = bind_groups(gpu, &pipeline, r, &uniforms, &textures);
+        let (bind_groups, probe_counts) = bind_groups(gpu, &pipeline, r, &uniforms, &textures);
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }
@@ -251,6 +267,8 @@ impl Scene {
             warnings,
             describe,
             flipped_y: input.flipped_y,
+            probe_counts,
+            degenerate,
         })
     }
 }
@@ -665,7 +683,7 @@ fn bind_groups(
     r: &Reflection,
     uniforms: &[(UniformBuffer, wgpu::Buffer)],
     textures: &Textures,
-) -> Vec<(u32, wgpu::BindGroup)> {
+) -> (Vec<(u32, wgpu::BindGroup)>, Option<wgpu::Buffer>) {
     let mut by_group: BTreeMap<u32, Vec<&BindingInfo>> = BTreeMap::new();
     for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
         by_group.entry(b.group).or_default().push(b);
@@ -676,7 +694,8 @@ fn bind_groups(
         storage.push((b.name.clone(), gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some(&b.name),
             size,
-            usage: wgpu::BufferUsages::STORAGE,
+            // COPY_SRC: the probe counts of `effectc stress` are read back.
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
             mapped_at_creation: false,
         })));
     }
@@ -702,5 +721,6 @@ fn bind_groups(
         let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: None, layout: &layout, entries: &entries });
         groups.push((group, bg));
     }
-    groups
+    let probe_counts = storage.into_iter().find(|(n, _)| n == crate::stability::culprit::COUNTS_BUFFER).map(|(_, b)| b);
+    (groups, probe_counts)
 }

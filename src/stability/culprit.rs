@@ -1,83 +1,203 @@
-//! Locating the first non-finite value: the fragment stage is instrumented so that every
-//! float arithmetic or builtin result is tested as it is computed, and the colour output
-//! becomes the number of the first test that failed in that pixel.
+//! Locating the first non-finite value: the vertex and fragment stages are instrumented so
+//! that every float arithmetic or builtin result is tested as it is computed, and each
+//! invocation counts, in a storage buffer, the number of the first test that failed in it.
 //!
 //! A value fails when it is NaN or ±Inf (exponent bits all ones, tested on the bits so no
 //! compiler can assume NaN away), and a `normalize` also fails when its argument has zero
 //! length (undefined in GLSL; some drivers, llvmpipe among them, return 0 rather than NaN).
-//! Probes are numbered in execution order within each function; a pixel reports the first
-//! probe that fired, so its number names the expression where the trouble began, not the
-//! ones it spread to.
+//! Probes are numbered in execution order within each function; an invocation reports the
+//! first probe that fired, so its number names the expression where the trouble began, not
+//! the ones it spread to.
+//!
+//! The colour outputs are left alone: an instrumented frame is the plain frame, so one
+//! render gives both the pixels and the culprits, and a pass of a multi-pass effect still
+//! feeds the next. The counts live in one `array<atomic<u32>>` bound at a free binding
+//! ([`COUNTS_BUFFER`]): a region of `probes + 1` slots per instrumented entry point, slot 0
+//! counting the invocations where every probe passed.
 
 use naga::{
     BinaryOperator as B, Block, Expression, Function, Handle, Literal, MathFunction, Module, RelationalFunction, ScalarKind,
     Span, Statement, TypeInner,
 };
 
+use crate::stage::StageKind;
+
+/// The name of the storage buffer the counts are written to.
+pub const COUNTS_BUFFER: &str = "effectc_probe_counts";
+
 /// One instrumented expression.
 #[derive(Debug, Clone)]
 pub struct Probe {
-    /// Written to the red channel when this probe fires first (from 1).
+    /// Its slot in every region of the counts buffer (from 1).
     pub id: u32,
-    /// Span in the fragment stage's text.
+    /// Span in the text of `stage` (a helper both stages share keeps the vertex stage's).
     pub span: Span,
+    pub stage: StageKind,
     /// What it computes (`division`, `normalize`, …).
     pub what: String,
 }
 
-/// Instruments the fragment entry point of `module` (validated, `info` its analysis) and
-/// every function it calls. `text` is the fragment stage text its spans index. `None` when
-/// the fragment output at location 0 is not a `vec4<f32>`.
-pub fn instrument(module: &mut Module, info: &naga::valid::ModuleInfo, text: &str) -> Option<Vec<Probe>> {
-    let entry = module.entry_points.iter().position(|e| e.stage == naga::ShaderStage::Fragment)?;
-    let (member, color_ty) = location0(module, &module.entry_points[entry].function)?;
-    let u32_ty = module.types.insert(
-        naga::Type { name: None, inner: TypeInner::Scalar(naga::Scalar::U32) },
-        Span::UNDEFINED,
-    );
-    let flag = module.global_variables.append(
-        naga::GlobalVariable { name: Some("effectc_first_bad".into()), space: naga::AddressSpace::Private, binding: None, ty: u32_ty, init: None, memory_decorations: naga::MemoryDecorations::empty() },
-        Span::UNDEFINED,
-    );
-    let mut probes = Vec::new();
-    for f in reachable(module, &module.entry_points[entry].function) {
-        let types = types_of(module, &info[f], module.functions[f].expressions.iter().map(|(h, _)| h));
-        let fun = &mut module.functions[f];
-        probe_function(fun, &types, flag, text, &mut probes);
+/// What [`instrument`] did to a module.
+#[derive(Debug, Clone)]
+pub struct Instrumented {
+    pub probes: Vec<Probe>,
+    /// The instrumented entry points and the first slot of their region, in module order.
+    pub regions: Vec<(StageKind, u32)>,
+    /// Slots of the counts buffer (regions × (probes + 1)).
+    pub slots: u32,
+    /// Where the counts buffer is bound (group, binding).
+    pub binding: (u32, u32),
+}
+
+/// What one instrumented entry point counted: per probe, the invocations where it fired first.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StageCounts {
+    pub stage: StageKind,
+    /// Invocations where every probe passed.
+    pub clean: u64,
+    /// `(probe id, invocations)` for every probe that fired first somewhere.
+    pub first: Vec<(u32, u64)>,
+}
+
+impl StageCounts {
+    /// Invocations with some non-finite intermediate value.
+    pub fn bad(&self) -> u64 {
+        self.first.iter().map(|(_, n)| n).sum()
     }
-    let handles: Vec<_> = module.entry_points[entry].function.expressions.iter().map(|(h, _)| h).collect();
-    let types = types_of(module, info.get_entry_point(entry), handles.into_iter());
-    probe_function(&mut module.entry_points[entry].function, &types, flag, text, &mut probes);
-    let result_ty = module.entry_points[entry].function.result.as_ref()?.ty;
-    let members = match &module.types[result_ty].inner {
-        TypeInner::Struct { members, .. } => members.len(),
-        _ => 1,
-    };
-    let ep = &mut module.entry_points[entry];
-    let body = std::mem::take(&mut ep.function.body);
-    ep.function.body = report_at_returns(&mut ep.function, body, flag, member, members, color_ty, result_ty);
-    Some(probes)
+}
+
+impl Instrumented {
+    /// Splits the counts buffer into its regions.
+    pub fn read(&self, counts: &[u32]) -> Vec<StageCounts> {
+        let width = self.probes.len() + 1;
+        self.regions
+            .iter()
+            .filter_map(|&(stage, base)| {
+                let region = counts.get(base as usize..base as usize + width)?;
+                let first = region.iter().enumerate().skip(1).filter(|(_, n)| **n > 0).map(|(id, n)| (id as u32, u64::from(*n))).collect();
+                Some(StageCounts { stage, clean: u64::from(region[0]), first })
+            })
+            .collect()
+    }
+
+    pub fn probe(&self, id: u32) -> Option<&Probe> {
+        self.probes.iter().find(|p| p.id == id)
+    }
+}
+
+/// Instruments the entry points of `stages` in `module` (validated, `info` its analysis)
+/// and every function they call. `texts` are the stage texts the spans index. The counts
+/// buffer is bound at `binding`.
+pub fn instrument(
+    module: &mut Module,
+    info: &naga::valid::ModuleInfo,
+    texts: &[(StageKind, &str)],
+    stages: &[StageKind],
+    binding: (u32, u32),
+) -> Result<Instrumented, String> {
+    let u32_ty = module.types.insert(naga::Type { name: None, inner: TypeInner::Scalar(naga::Scalar::U32) }, Span::UNDEFINED);
+    let flag = module.global_variables.append(
+        naga::GlobalVariable {
+            name: Some("effectc_first_bad".into()),
+            space: naga::AddressSpace::Private,
+            binding: None,
+            ty: u32_ty,
+            init: None,
+            memory_decorations: naga::MemoryDecorations::empty(),
+        },
+        Span::UNDEFINED,
+    );
+    let text_of = |stage: StageKind| texts.iter().find(|(s, _)| *s == stage).map(|(_, t)| *t).ok_or(format!("no {stage:?} text"));
+    let entries: Vec<(usize, StageKind)> = module
+        .entry_points
+        .iter()
+        .enumerate()
+        .filter_map(|(i, e)| {
+            let stage = match e.stage {
+                naga::ShaderStage::Vertex => StageKind::Vertex,
+                naga::ShaderStage::Fragment => StageKind::Fragment,
+                _ => return None,
+            };
+            stages.contains(&stage).then_some((i, stage))
+        })
+        .collect();
+    if entries.is_empty() {
+        return Err("the program has no vertex or fragment stage to instrument".into());
+    }
+    let mut probes = Vec::new();
+    let mut done: Vec<Handle<Function>> = Vec::new();
+    for &(entry, stage) in &entries {
+        let text = text_of(stage)?;
+        for f in reachable(module, &module.entry_points[entry].function) {
+            if done.contains(&f) {
+                continue;
+            }
+            done.push(f);
+            let types = types_of(module, &info[f], module.functions[f].expressions.iter().map(|(h, _)| h));
+            probe_function(&mut module.functions[f], &types, flag, stage, text, &mut probes);
+        }
+        let handles: Vec<_> = module.entry_points[entry].function.expressions.iter().map(|(h, _)| h).collect();
+        let types = types_of(module, info.get_entry_point(entry), handles.into_iter());
+        probe_function(&mut module.entry_points[entry].function, &types, flag, stage, text, &mut probes);
+    }
+    let width = probes.len() as u32 + 1;
+    let slots = width * entries.len() as u32;
+    let counts = counts_buffer(module, slots, binding)?;
+    let mut regions = Vec::new();
+    for (k, &(entry, stage)) in entries.iter().enumerate() {
+        let base = k as u32 * width;
+        regions.push((stage, base));
+        // A `discard` in a function the entry point calls ends the invocation there.
+        for f in reachable(module, &module.entry_points[entry].function) {
+            let fun = &mut module.functions[f];
+            let body = std::mem::take(&mut fun.body);
+            fun.body = count_at_exits(fun, body, Exits::Discards, flag, counts, base);
+        }
+        let fun = &mut module.entry_points[entry].function;
+        let body = std::mem::take(&mut fun.body);
+        let mut body = count_at_exits(fun, body, Exits::ReturnsAndDiscards, flag, counts, base);
+        // A void entry point may end without a `return`.
+        if !matches!(body.last(), Some(Statement::Return { .. } | Statement::Kill)) {
+            push_count(fun, &mut body, flag, counts, base);
+        }
+        fun.body = body;
+    }
+    Ok(Instrumented { probes, regions, slots, binding })
+}
+
+/// `var<storage, read_write> effectc_probe_counts: array<atomic<u32>, slots>` at `binding`.
+fn counts_buffer(module: &mut Module, slots: u32, (group, binding): (u32, u32)) -> Result<Handle<naga::GlobalVariable>, String> {
+    let atomic = module.types.insert(naga::Type { name: None, inner: TypeInner::Atomic(naga::Scalar::U32) }, Span::UNDEFINED);
+    let size = std::num::NonZeroU32::new(slots).ok_or("no probe slots")?;
+    let array = module.types.insert(
+        naga::Type { name: None, inner: TypeInner::Array { base: atomic, size: naga::ArraySize::Constant(size), stride: 4 } },
+        Span::UNDEFINED,
+    );
+    Ok(module.global_variables.append(
+        naga::GlobalVariable {
+            name: Some(COUNTS_BUFFER.into()),
+            space: naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD | naga::StorageAccess::STORE },
+            binding: Some(naga::ResourceBinding { group, binding }),
+            ty: array,
+            init: None,
+            memory_decorations: naga::MemoryDecorations::empty(),
+        },
+        Span::UNDEFINED,
+    ))
+}
+
+/// A binding no resource of `module` uses: the next binding of its last group (group 0
+/// when it has none), so no new bind group is needed.
+pub fn free_binding(module: &Module) -> (u32, u32) {
+    let used: Vec<(u32, u32)> = module.global_variables.iter().filter_map(|(_, g)| g.binding.as_ref().map(|b| (b.group, b.binding))).collect();
+    let group = used.iter().map(|b| b.0).max().unwrap_or(0);
+    let binding = used.iter().filter(|b| b.0 == group).map(|b| b.1 + 1).max().unwrap_or(0);
+    (group, binding)
 }
 
 /// The resolved type of every expression of a function, by index.
 fn types_of(module: &Module, info: &naga::valid::FunctionInfo, handles: impl Iterator<Item = Handle<Expression>>) -> Vec<TypeInner> {
     handles.map(|h| info[h].ty.inner_with(&module.types).clone()).collect()
-}
-
-/// The member index (`None` for a plain result) and type of the location-0 colour output.
-fn location0(module: &Module, f: &Function) -> Option<(Option<usize>, Handle<naga::Type>)> {
-    let result = f.result.as_ref()?;
-    let is_vec4f = |ty: Handle<naga::Type>| {
-        matches!(module.types[ty].inner, TypeInner::Vector { size: naga::VectorSize::Quad, scalar } if scalar.kind == ScalarKind::Float && scalar.width == 4)
-    };
-    if let Some(naga::Binding::Location { location: 0, .. }) = result.binding {
-        return is_vec4f(result.ty).then_some((None, result.ty));
-    }
-    let TypeInner::Struct { members, .. } = &module.types[result.ty].inner else { return None };
-    members.iter().enumerate().find_map(|(i, m)| match m.binding {
-        Some(naga::Binding::Location { location: 0, .. }) if is_vec4f(m.ty) => Some((Some(i), m.ty)),
-        _ => None,
-    })
 }
 
 /// Functions called, directly or not, from `f`, callees first.
@@ -112,42 +232,50 @@ fn reachable(module: &Module, f: &Function) -> Vec<Handle<Function>> {
     seen
 }
 
-fn probe_function(fun: &mut Function, types: &[TypeInner], flag: Handle<naga::GlobalVariable>, text: &str, probes: &mut Vec<Probe>) {
-    let body = std::mem::take(&mut fun.body);
-    fun.body = probe_block(fun, body, types, flag, text, probes);
+/// Where probes are being placed.
+struct Site<'a> {
+    types: &'a [TypeInner],
+    flag: Handle<naga::GlobalVariable>,
+    stage: StageKind,
+    text: &'a str,
 }
 
-fn probe_block(fun: &mut Function, block: Block, types: &[TypeInner], flag: Handle<naga::GlobalVariable>, text: &str, probes: &mut Vec<Probe>) -> Block {
+fn probe_function(fun: &mut Function, types: &[TypeInner], flag: Handle<naga::GlobalVariable>, stage: StageKind, text: &str, probes: &mut Vec<Probe>) {
+    let body = std::mem::take(&mut fun.body);
+    let site = Site { types, flag, stage, text };
+    fun.body = probe_block(fun, body, &site, probes);
+}
+
+fn probe_block(fun: &mut Function, block: Block, site: &Site<'_>, probes: &mut Vec<Probe>) -> Block {
     let mut out = Block::with_capacity(block.len());
     for (stmt, span) in block.span_into_iter() {
         let stmt = match stmt {
-            Statement::Block(b) => Statement::Block(probe_block(fun, b, types, flag, text, probes)),
+            Statement::Block(b) => Statement::Block(probe_block(fun, b, site, probes)),
             Statement::If { condition, accept, reject } => Statement::If {
                 condition,
-                accept: probe_block(fun, accept, types, flag, text, probes),
-                reject: probe_block(fun, reject, types, flag, text, probes),
+                accept: probe_block(fun, accept, site, probes),
+                reject: probe_block(fun, reject, site, probes),
             },
             Statement::Loop { body, continuing, break_if } => Statement::Loop {
-                body: probe_block(fun, body, types, flag, text, probes),
-                continuing: probe_block(fun, continuing, types, flag, text, probes),
+                body: probe_block(fun, body, site, probes),
+                continuing: probe_block(fun, continuing, site, probes),
                 break_if,
             },
             Statement::Switch { selector, cases } => Statement::Switch {
                 selector,
-                cases: cases
-                    .into_iter()
-                    .map(|c| naga::SwitchCase { body: probe_block(fun, c.body, types, flag, text, probes), ..c })
-                    .collect(),
+                cases: cases.into_iter().map(|c| naga::SwitchCase { body: probe_block(fun, c.body, site, probes), ..c }).collect(),
             },
             other => other,
         };
         let emitted = if let Statement::Emit(range) = &stmt { range.clone().collect::<Vec<_>>() } else { Vec::new() };
         out.push(stmt, span);
         for h in emitted {
-            let Some(what) = candidate(&fun.expressions[h], types.get(h.index())) else { continue };
+            let ty = site.types.get(h.index());
+            let Some(what) = candidate(&fun.expressions[h], ty) else { continue };
             let id = probes.len() as u32 + 1;
-            probes.push(Probe { id, span: crate::stability::hazards::eval::expression_span(fun, h, text), what });
-            let (emit, check) = build_check(fun, h, types.get(h.index()), flag, id);
+            let span = crate::stability::hazards::eval::expression_span(fun, h, site.text);
+            probes.push(Probe { id, span, stage: site.stage, what });
+            let (emit, check) = build_check(fun, h, ty, site.flag, id);
             out.push(emit, Span::UNDEFINED);
             out.push(check, Span::UNDEFINED);
         }
@@ -215,49 +343,121 @@ fn build_check(fun: &mut Function, h: Handle<Expression>, ty: Option<&TypeInner>
     (Statement::Emit(range), Statement::If { condition, accept, reject: Block::new() })
 }
 
-/// Every `return` of the entry point returns the first probe's number as the colour
-/// `vec4(f32(flag), 0, 0, 1)` at location 0 (other outputs unchanged).
-fn report_at_returns(
+/// Which statements end an invocation in the function being rewritten.
+#[derive(Clone, Copy, PartialEq)]
+enum Exits {
+    /// The entry point: its returns and discards.
+    ReturnsAndDiscards,
+    /// A function it calls: only a discard ends the invocation there.
+    Discards,
+}
+
+/// Before every statement that ends the invocation:
+/// `atomicAdd(&effectc_probe_counts[base + effectc_first_bad], 1u)`.
+fn count_at_exits(
     fun: &mut Function,
     block: Block,
+    exits: Exits,
     flag: Handle<naga::GlobalVariable>,
-    member: Option<usize>,
-    members: usize,
-    color_ty: Handle<naga::Type>,
-    result_ty: Handle<naga::Type>,
+    counts: Handle<naga::GlobalVariable>,
+    base: u32,
 ) -> Block {
     let mut out = Block::with_capacity(block.len());
     for (stmt, span) in block.span_into_iter() {
         let stmt = match stmt {
-            Statement::Block(b) => Statement::Block(report_at_returns(fun, b, flag, member, members, color_ty, result_ty)),
+            Statement::Block(b) => Statement::Block(count_at_exits(fun, b, exits, flag, counts, base)),
             Statement::If { condition, accept, reject } => Statement::If {
                 condition,
-                accept: report_at_returns(fun, accept, flag, member, members, color_ty, result_ty),
-                reject: report_at_returns(fun, reject, flag, member, members, color_ty, result_ty),
+                accept: count_at_exits(fun, accept, exits, flag, counts, base),
+                reject: count_at_exits(fun, reject, exits, flag, counts, base),
             },
-            Statement::Return { value: Some(v) } => {
-                let e = &mut fun.expressions;
-                let ptr = e.append(Expression::GlobalVariable(flag), Span::UNDEFINED);
-                let zero = e.append(Expression::Literal(Literal::F32(0.0)), Span::UNDEFINED);
-                let one = e.append(Expression::Literal(Literal::F32(1.0)), Span::UNDEFINED);
-                let current = e.append(Expression::Load { pointer: ptr }, Span::UNDEFINED);
-                let as_float = e.append(Expression::As { expr: current, kind: ScalarKind::Float, convert: Some(4) }, Span::UNDEFINED);
-                let color = e.append(Expression::Compose { ty: color_ty, components: vec![as_float, zero, zero, one] }, Span::UNDEFINED);
-                let result = match member {
-                    None => color,
-                    Some(k) => {
-                        let components = (0..members)
-                            .map(|i| if i == k { color } else { fun.expressions.append(Expression::AccessIndex { base: v, index: i as u32 }, Span::UNDEFINED) })
-                            .collect();
-                        fun.expressions.append(Expression::Compose { ty: result_ty, components }, Span::UNDEFINED)
-                    }
-                };
-                out.push(Statement::Emit(naga::Range::new_from_bounds(current, result)), Span::UNDEFINED);
-                Statement::Return { value: Some(result) }
+            Statement::Loop { body, continuing, break_if } => Statement::Loop {
+                body: count_at_exits(fun, body, exits, flag, counts, base),
+                continuing: count_at_exits(fun, continuing, exits, flag, counts, base),
+                break_if,
+            },
+            Statement::Switch { selector, cases } => Statement::Switch {
+                selector,
+                cases: cases.into_iter().map(|c| naga::SwitchCase { body: count_at_exits(fun, c.body, exits, flag, counts, base), ..c }).collect(),
+            },
+            Statement::Kill => {
+                push_count(fun, &mut out, flag, counts, base);
+                Statement::Kill
+            }
+            exit @ Statement::Return { .. } if exits == Exits::ReturnsAndDiscards => {
+                push_count(fun, &mut out, flag, counts, base);
+                exit
             }
             other => other,
         };
         out.push(stmt, span);
     }
     out
+}
+
+/// Appends `atomicAdd(&counts[base + flag], 1u)` to `out`.
+fn push_count(fun: &mut Function, out: &mut Block, flag: Handle<naga::GlobalVariable>, counts: Handle<naga::GlobalVariable>, base: u32) {
+    let e = &mut fun.expressions;
+    let flag_ptr = e.append(Expression::GlobalVariable(flag), Span::UNDEFINED);
+    let counts_ptr = e.append(Expression::GlobalVariable(counts), Span::UNDEFINED);
+    let base_value = e.append(Expression::Literal(Literal::U32(base)), Span::UNDEFINED);
+    let one = e.append(Expression::Literal(Literal::U32(1)), Span::UNDEFINED);
+    let current = e.append(Expression::Load { pointer: flag_ptr }, Span::UNDEFINED);
+    let index = e.append(Expression::Binary { op: B::Add, left: base_value, right: current }, Span::UNDEFINED);
+    let slot = e.append(Expression::Access { base: counts_ptr, index }, Span::UNDEFINED);
+    out.push(Statement::Emit(naga::Range::new_from_bounds(current, slot)), Span::UNDEFINED);
+    out.push(Statement::Atomic { pointer: slot, fun: naga::AtomicFunction::Add, value: one, result: None }, Span::UNDEFINED);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const VERT: &str = "#version 450\nlayout(location=0) in vec3 pos;\nlayout(location=1) in vec3 normal;\nlayout(location=0) out vec3 n;\nvoid main() { n = normalize(normal); gl_Position = vec4(pos / pos.z, 1.0); }\n";
+    const FRAG: &str = "#version 450\nlayout(set=0,binding=0) uniform U { float k; };\nlayout(location=0) in vec3 n;\nlayout(location=0) out vec4 color;\nvoid main() { if (k < 0.0) { discard; } color = vec4(sqrt(n) / k, 1.0); }\n";
+
+    fn merged() -> Module {
+        let parse = |src: &str, stage| naga::front::glsl::Frontend::default().parse(&naga::front::glsl::Options::from(stage), src).unwrap();
+        let v = parse(VERT, naga::ShaderStage::Vertex);
+        let f = parse(FRAG, naga::ShaderStage::Fragment);
+        crate::back::merge::merge(&[(StageKind::Vertex, &v), (StageKind::Fragment, &f)]).unwrap()
+    }
+
+    #[test]
+    fn both_stages_count_into_their_own_region_and_the_module_stays_valid() {
+        let mut module = merged();
+        let info = crate::front::naga_run::validator().validate(&module).unwrap();
+        let binding = free_binding(&module);
+        assert_eq!(binding, (0, 1), "next to the uniform block");
+        let texts = [(StageKind::Vertex, VERT), (StageKind::Fragment, FRAG)];
+        let done = instrument(&mut module, &info, &texts, &[StageKind::Vertex, StageKind::Fragment], binding).unwrap();
+        let info = crate::front::naga_run::validator().validate(&module).unwrap_or_else(|e| panic!("{e:?}"));
+        // Vertex: normalize, division; fragment: sqrt, division (and the vec4 compose is no arithmetic).
+        let what: Vec<(StageKind, &str)> = done.probes.iter().map(|p| (p.stage, p.what.as_str())).collect();
+        assert!(what.contains(&(StageKind::Vertex, "normalize")) && what.contains(&(StageKind::Fragment, "sqrt")), "{what:?}");
+        let n = done.probes.len() as u32;
+        assert_eq!(done.regions, [(StageKind::Vertex, 0), (StageKind::Fragment, n + 1)]);
+        assert_eq!(done.slots, 2 * (n + 1));
+        let normalize = done.probes.iter().find(|p| p.what == "normalize").unwrap();
+        assert_eq!(&VERT[normalize.span.to_range().unwrap()], "normalize(normal)");
+        let wgsl = naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty()).unwrap();
+        assert!(wgsl.contains("var<storage, read_write> effectc_probe_counts: array<atomic<u32>"), "{wgsl}");
+        // Every exit counts: the discard and the return of the fragment stage, the vertex return.
+        assert_eq!(wgsl.matches("atomicAdd(").count(), 3, "{wgsl}");
+    }
+
+    #[test]
+    fn counts_split_into_regions() {
+        let probe = |id, stage| Probe { id, span: Span::default(), stage, what: "division".into() };
+        let done = Instrumented {
+            probes: vec![probe(1, StageKind::Vertex), probe(2, StageKind::Fragment)],
+            regions: vec![(StageKind::Vertex, 0), (StageKind::Fragment, 3)],
+            slots: 6,
+            binding: (0, 0),
+        };
+        let counts = done.read(&[10, 2, 0, 90, 0, 7]);
+        assert_eq!(counts[0], StageCounts { stage: StageKind::Vertex, clean: 10, first: vec![(1, 2)] });
+        assert_eq!(counts[1], StageCounts { stage: StageKind::Fragment, clean: 90, first: vec![(2, 7)] });
+        assert_eq!(counts[1].bad(), 7);
+    }
 }

@@ -6,10 +6,16 @@
 //! - every ranged uniform at its low and at its high end, the others nominal;
 //! - all ranged uniforms low, all high;
 //! - `--samples` random points of the ranges (seeded, so a run is repeatable);
-//! - extreme times 1e3, 1e5 and 1e7 s with the defaults.
+//! - extreme times 1e3, 1e5 and 1e7 s with the defaults;
+//! - degenerate geometry ([`Degenerate`]): every normal zero; every second triangle
+//!   collapsed to zero area (only where the program draws a mesh whose data it reads).
 //!
-//! A case with NaN or Inf pixels is an error (`E0701`) at the manifest entry it changed,
-//! with the mask written next to the frames (NaN red, +Inf yellow, −Inf cyan).
+//! Every case renders twice: plain, for the pixels, and instrumented
+//! ([`crate::stability::culprit`]), where each vertex and fragment invocation counts the
+//! first expression that computed a non-finite value. A case with NaN or Inf pixels is an error (`E0701`)
+//! at the manifest entry it changed, labelled with those expressions in the GLSL, and its
+//! mask is written next to the frames (NaN red, +Inf yellow, −Inf cyan). A case whose
+//! pixels are finite but whose intermediate values are not is a warning (`W0702`).
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -18,7 +24,8 @@ use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
-use crate::render::command::{self, MemoryRequest};
+use crate::render::command::{self, MemoryRequest, ProbeRun};
+use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::Pixels;
@@ -55,6 +62,7 @@ pub struct Case {
     pub name: String,
     pub overrides: Vec<(String, UniformValue)>,
     pub time: f64,
+    pub degenerate: Option<Degenerate>,
 }
 
 /// One case's result.
@@ -65,8 +73,11 @@ pub struct CaseReport {
     pub values: String,
     pub nan: u64,
     pub inf: u64,
-    /// Pixels where some intermediate value was non-finite (single-pass programs).
-    pub interm: u64,
+    /// Fragment invocations where some intermediate value was non-finite (all passes).
+    pub bad_fragments: u64,
+    /// Vertex invocations where some intermediate value was non-finite (all passes; 0 when
+    /// the device cannot write storage from vertex shaders, see `StressReport::vertex_probes`).
+    pub bad_vertices: u64,
     /// Largest absolute difference of a finite channel from the nominal frame.
     pub max_delta: f64,
     pub mask: Option<PathBuf>,
@@ -77,6 +88,8 @@ pub struct CaseReport {
 pub struct StressReport {
     pub program: String,
     pub size: (u32, u32),
+    /// Whether the vertex stage was instrumented too.
+    pub vertex_probes: bool,
     pub cases: Vec<CaseReport>,
 }
 
@@ -101,7 +114,7 @@ pub fn cases(effect: Option<&Effect>, samples: u32, seed: u32) -> Vec<Case> {
                 .collect()
         })
         .unwrap_or_default();
-    let case = |name: String, overrides: Vec<(String, UniformValue)>| Case { name, overrides, time: 0.0 };
+    let case = |name: String, overrides: Vec<(String, UniformValue)>| Case { name, overrides, time: 0.0, degenerate: None };
     let mut out = vec![case("nominal".into(), Vec::new())];
     for &(name, v, lo, hi) in &ranged {
         out.push(case(format!("{name} low"), vec![(name.to_string(), fill(v, &|_| lo))]));
@@ -125,7 +138,10 @@ pub fn cases(effect: Option<&Effect>, samples: u32, seed: u32) -> Vec<Case> {
         }
     }
     for t in EXTREME_TIMES {
-        out.push(Case { name: format!("time {t:e} s"), overrides: Vec::new(), time: t });
+        out.push(Case { name: format!("time {t:e} s"), overrides: Vec::new(), time: t, degenerate: None });
+    }
+    for d in Degenerate::ALL {
+        out.push(Case { name: d.name().into(), overrides: Vec::new(), time: 0.0, degenerate: Some(d) });
     }
     out
 }
@@ -183,18 +199,27 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
     let mut nominal: Option<Vec<f32>> = None;
     let mut reports = Vec::new();
     for case in cases(effect, request.samples, request.seed) {
-        let memory =
-            MemoryRequest { size: request.size, frames: 1, start: case.time, step: 0.0, float: true, timeout: request.timeout, probe: false };
+        let memory = MemoryRequest {
+            size: request.size,
+            frames: 1,
+            start: case.time,
+            step: 0.0,
+            float: true,
+            timeout: request.timeout,
+            probe: false,
+            degenerate: case.degenerate,
+        };
         // A case that cannot render (a timeout, a device error) is reported by the render path.
         let run = command::render_in_memory(gpu, c, outcome, &case.overrides, memory)?;
+        if case.degenerate.is_some() && run.degenerate.is_empty() {
+            // No mesh the program reads is changed by this variant: nothing to learn.
+            continue;
+        }
+        // The pixels come from the plain program: the instrumented one computes the same
+        // values, but the driver compiles it differently and may fold a NaN another way.
+        let probed = command::render_in_memory(gpu, c, outcome, &case.overrides, MemoryRequest { probe: true, ..memory })?;
+        let culprits = Culprit::all(&probed.probes);
         let Some(Pixels::Rgba32F(frame)) = run.frames.into_iter().next() else { return None };
-        let culprit = if c.passes.is_empty() {
-            let probed = command::render_in_memory(gpu, c, outcome, &case.overrides, MemoryRequest { probe: true, ..memory })?;
-            let Some(Pixels::Rgba32F(ids)) = probed.frames.first() else { return None };
-            Culprit::of(ids, &probed.probes)
-        } else {
-            None
-        };
         let (counts, mask) = encode::non_finite(&frame, w, h);
         let max_delta = nominal.as_ref().map_or(0.0, |n| max_delta(n, &frame));
         let slug: String = case.name.chars().map(|ch| if ch.is_ascii_alphanumeric() { ch } else { '_' }).collect();
@@ -206,27 +231,45 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
         if case.time != 0.0 {
             values.push(format!("time={:e}", case.time));
         }
+        let geometry: Vec<String> = run
+            .degenerate
+            .iter()
+            .map(|(pass, what)| match effect.filter(|e| e.is_multi_pass()).and_then(|e| e.passes.get(*pass)) {
+                Some(p) => format!("{}: {what}", p.name),
+                None => what.clone(),
+            })
+            .collect();
+        if !geometry.is_empty() {
+            values.push(geometry.join("; "));
+        }
         let inf = counts.pos_inf + counts.neg_inf;
+        let bad = |stage: StageKind| probed.probes.iter().flat_map(|p| &p.counts).filter(|s| s.stage == stage).map(|s| s.bad()).sum::<u64>();
+        let (bad_fragments, bad_vertices) = (bad(StageKind::Fragment), bad(StageKind::Vertex));
         if counts.nan + inf > 0 {
-            let d = case_error(c, &case, &program, counts.nan, inf, mask_path.as_deref());
-            outcome.diagnostics.push(with_culprit(d, c, culprit.as_ref()));
-        } else if let Some(found) = &culprit {
-            let d = Diagnostic::warning(
-                W_HIDDEN_NON_FINITE,
-                format!("{program}: case `{}` computes non-finite values in {} pixels, though its output is finite", case.name, found.pixels),
-            );
-            let d = at_case(d, c, &case);
-            outcome.diagnostics.push(with_culprit(d, c, culprit.as_ref()).with_help(
-                "a NaN hidden by max/clamp/step today is a NaN on another GPU: guard the expression where it starts",
+            let d = case_error(c, &case, &program, (counts.nan, inf), mask_path.as_deref(), &geometry);
+            outcome.diagnostics.push(with_culprits(d, c, &culprits));
+        } else if !culprits.is_empty() {
+            let d = Diagnostic::warning(W_HIDDEN_NON_FINITE, format!("{program}: case `{}` computes non-finite values, though its output is finite", case.name));
+            let d = at_case(d, c, &case, &geometry);
+            outcome.diagnostics.push(with_culprits(d, c, &culprits).with_help(
+                "a NaN hidden by max/clamp/step, or by a triangle that covers no pixel, is a NaN on another GPU or mesh: guard the expression where it starts",
             ));
         }
-        let interm = culprit.as_ref().map_or(0, |f| f.pixels);
-        reports.push(CaseReport { case: case.name.clone(), values: values.join(" "), nan: counts.nan, inf, interm, max_delta, mask: mask_path });
+        reports.push(CaseReport {
+            case: case.name.clone(),
+            values: values.join(" "),
+            nan: counts.nan,
+            inf,
+            bad_fragments,
+            bad_vertices,
+            max_delta,
+            mask: mask_path,
+        });
         if nominal.is_none() {
             nominal = Some(frame);
         }
     }
-    Some(StressReport { program, size: request.size, cases: reports })
+    Some(StressReport { program, size: request.size, vertex_probes: gpu.vertex_storage(), cases: reports })
 }
 
 fn max_delta(a: &[f32], b: &[f32]) -> f64 {
@@ -257,17 +300,18 @@ fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut
 }
 
 /// `E0701` at the manifest entry the case changed (the first), else at the manifest.
-fn case_error(c: &check::Checked, case: &Case, program: &str, nan: u64, inf: u64, mask: Option<&Path>) -> Diagnostic {
+fn case_error(c: &check::Checked, case: &Case, program: &str, (nan, inf): (u64, u64), mask: Option<&Path>, geometry: &[String]) -> Diagnostic {
     let d = Diagnostic::error(E_NON_FINITE_CASE, format!("{program}: case `{}` renders {nan} NaN and {inf} Inf pixels", case.name));
-    let mut d = at_case(d, c, case);
+    let mut d = at_case(d, c, case, geometry);
     if let Some(m) = mask {
         d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));
     }
     d.with_help("guard the expression (clamp, max(x, eps), a branch) or narrow the uniform's `range`")
 }
 
-/// Places a case's diagnostic at the manifest entry it changed, with the values as notes.
-fn at_case(mut d: Diagnostic, c: &check::Checked, case: &Case) -> Diagnostic {
+/// Places a case's diagnostic at the manifest entry it changed (the mesh for geometry
+/// cases), with the values and what `geometry` says the mesh variant changed as notes.
+fn at_case(mut d: Diagnostic, c: &check::Checked, case: &Case, geometry: &[String]) -> Diagnostic {
     let changed: Vec<String> = case.overrides.iter().map(|(n, v)| format!("{n} = {}", show(v))).collect();
     match (c.effect.as_ref(), case.overrides.first()) {
         (Some(e), Some((name, value))) => {
@@ -282,7 +326,10 @@ fn at_case(mut d: Diagnostic, c: &check::Checked, case: &Case) -> Diagnostic {
                 d = d.in_file(e.file);
             }
         }
-        (Some(e), None) => d = d.in_file(e.file),
+        (Some(e), None) => match e.mesh.as_ref().filter(|_| case.degenerate.is_some()) {
+            Some(mesh) => d = d.at(e.file, mesh.span.clone(), "this mesh, made degenerate"),
+            None => d = d.in_file(e.file),
+        },
         (None, _) => {
             if let Some(p) = &c.program {
                 d = d.in_file(p.stages[0].syntax.file);
@@ -295,52 +342,82 @@ fn at_case(mut d: Diagnostic, c: &check::Checked, case: &Case) -> Diagnostic {
     if case.time != 0.0 {
         d = d.with_note(format!("at effect time {:e} s", case.time));
     }
+    for g in geometry {
+        d = d.with_note(format!("degenerate geometry: {g}"));
+    }
     d
 }
 
-/// The expression where non-finite values begin, from an instrumented frame.
+/// Where non-finite values begin in one instrumented stage of one pass.
 #[derive(Debug, Clone)]
 struct Culprit {
+    /// Index into `Effect::passes` (0 for a single-pass program).
+    pass: usize,
+    /// The stage whose invocations counted it (its span may be in a helper of the other).
+    invoked: StageKind,
     probe: Probe,
-    /// Pixels where it was the first non-finite value.
+    /// Invocations where it was the first non-finite value.
     first_in: u64,
-    /// Pixels with any non-finite intermediate value.
-    pixels: u64,
-    /// Other probes that came first in some pixels.
+    /// Invocations with any non-finite intermediate value.
+    bad: u64,
+    /// All invocations of the stage.
+    total: u64,
+    /// Other probes that came first in some invocations.
     others: usize,
 }
 
 impl Culprit {
-    /// The probe that fired first in the most pixels; `None` when none fired.
-    fn of(ids: &[f32], probes: &[Probe]) -> Option<Culprit> {
-        let mut counts: std::collections::BTreeMap<u32, u64> = std::collections::BTreeMap::new();
-        for px in ids.chunks_exact(4) {
-            let id = px[0];
-            if id.is_finite() && id >= 1.0 {
-                *counts.entry(id as u32).or_default() += 1;
+    /// For every instrumented stage that saw a non-finite value, the probe that fired first
+    /// in the most invocations; in pipeline order (passes as run, vertex before fragment),
+    /// so the first is where the trouble begins.
+    fn all(runs: &[ProbeRun]) -> Vec<Culprit> {
+        let mut out = Vec::new();
+        for run in runs {
+            for counts in &run.counts {
+                let Some(&(id, first_in)) = counts.first.iter().max_by_key(|(id, n)| (*n, std::cmp::Reverse(*id))) else { continue };
+                let Some(probe) = run.instrumented.probe(id) else { continue };
+                let bad = counts.bad();
+                out.push(Culprit {
+                    pass: run.pass,
+                    invoked: counts.stage,
+                    probe: probe.clone(),
+                    first_in,
+                    bad,
+                    total: bad + counts.clean,
+                    others: counts.first.len() - 1,
+                });
             }
         }
-        let pixels = counts.values().sum();
-        let (&id, &first_in) = counts.iter().max_by_key(|(id, n)| (**n, std::cmp::Reverse(**id)))?;
-        let probe = probes.iter().find(|p| p.id == id)?.clone();
-        Some(Culprit { probe, first_in, pixels, others: counts.len() - 1 })
+        out
     }
 }
 
-/// Adds the culprit's span in the fragment stage as a label.
-fn with_culprit(d: Diagnostic, c: &check::Checked, culprit: Option<&Culprit>) -> Diagnostic {
-    let Some(f) = culprit else { return d };
-    let stage = c.program.as_ref().and_then(|p| p.stages.iter().find(|s| s.syntax.stage == StageKind::Fragment));
-    let (Some(stage), Some(range)) = (stage, f.probe.span.to_range()) else { return d };
-    let Some(rw) = &stage.rewritten else { return d };
-    let span = rw.map.range_to_original(range);
-    let label = format!("the first non-finite value ({}) in {} of {} pixels", f.probe.what, f.first_in, f.pixels);
-    let d = if d.span.is_none() { d.at(stage.syntax.file, span, label) } else { d.with_label(stage.syntax.file, span, label) };
-    if f.others > 0 {
-        d.with_note(format!("{} other expressions come first in the remaining pixels", f.others))
-    } else {
-        d
+/// Labels every culprit at its span in the user's GLSL; the first (where the trouble
+/// begins) is the primary span when the diagnostic has none.
+fn with_culprits(mut d: Diagnostic, c: &check::Checked, culprits: &[Culprit]) -> Diagnostic {
+    for (k, f) in culprits.iter().enumerate() {
+        let program = if c.passes.is_empty() { c.program.as_ref() } else { c.passes.get(f.pass).and_then(|p| p.program.as_ref()) };
+        let Some(stage) = program.and_then(|p| p.stages.iter().find(|s| s.syntax.stage == f.probe.stage)) else { continue };
+        let (Some(range), Some(rw)) = (f.probe.span.to_range(), &stage.rewritten) else { continue };
+        let span = rw.map.range_to_original(range);
+        let stage_name = match f.invoked {
+            StageKind::Vertex => "vertex",
+            _ => "fragment",
+        };
+        let pass = match (&c.effect, c.passes.is_empty()) {
+            (Some(e), false) => e.passes.get(f.pass).map(|p| format!(" of pass `{}`", p.name)).unwrap_or_default(),
+            _ => String::new(),
+        };
+        let lead = if k == 0 { "the first non-finite value" } else { "then non-finite" };
+        let label =
+            format!("{lead} ({}) in {} of {} {stage_name} invocations{pass}", f.probe.what, f.first_in, f.total);
+        d = if d.span.is_none() { d.at(stage.syntax.file, span, label) } else { d.with_label(stage.syntax.file, span, label) };
+        if f.others > 0 {
+            let rest = f.bad - f.first_in;
+            d = d.with_note(format!("{} other expressions come first in {rest} more {stage_name} invocations{pass}", f.others));
+        }
     }
+    d
 }
 
 /// The human table of one program.
@@ -354,9 +431,16 @@ pub fn table(r: &StressReport) -> String {
         r.size.1,
         if bad == 0 { "no NaN or Inf".to_string() } else { format!("{bad} with NaN or Inf") }
     );
-    text.push_str(&format!("  {:<18} {:>8} {:>8} {:>9} {:>10}  {}\n", "case", "NaN px", "Inf px", "interm px", "max |Δ|", "values"));
+    text.push_str(&format!(
+        "  {:<18} {:>8} {:>8} {:>9} {:>9} {:>10}  {}\n",
+        "case", "NaN px", "Inf px", "bad frag", "bad vert", "max |Δ|", "values"
+    ));
     for c in &r.cases {
-        text.push_str(&format!("  {:<18} {:>8} {:>8} {:>9} {:>10.4}  {}\n", c.case, c.nan, c.inf, c.interm, c.max_delta, c.values));
+        let vertices = if r.vertex_probes { c.bad_vertices.to_string() } else { "-".into() };
+        text.push_str(&format!(
+            "  {:<18} {:>8} {:>8} {:>9} {:>9} {:>10.4}  {}\n",
+            c.case, c.nan, c.inf, c.bad_fragments, vertices, c.max_delta, c.values
+        ));
     }
     text
 }
@@ -367,7 +451,9 @@ mod tests {
 
     #[test]
     fn cases_cover_range_ends_random_points_and_extreme_times() {
-        assert_eq!(cases(None, 4, 1).len(), 1 + EXTREME_TIMES.len(), "bare programs: nominal and times");
+        let bare = cases(None, 4, 1);
+        assert_eq!(bare.len(), 1 + EXTREME_TIMES.len() + Degenerate::ALL.len(), "bare programs: nominal, times, geometry");
+        assert_eq!(bare.iter().filter_map(|c| c.degenerate).collect::<Vec<_>>(), Degenerate::ALL);
         let v = UniformValue::List(vec![UniformValue::Float(0.5), UniformValue::Float(0.5)]);
         assert_eq!(fill(&v, &|c| f64::from(c)), UniformValue::List(vec![UniformValue::Float(0.0), UniformValue::Float(1.0)]));
         assert_eq!(fill(&UniformValue::Int(3), &|_| 7.6), UniformValue::Int(8));
@@ -379,8 +465,8 @@ mod tests {
         let text = "[stages]\nfragment = \"a.frag\"\n[uniforms]\nk = { value = 2, range = [1, 9] }\ntint = { value = [0.5, 0.5], range = [0.0, 1.0] }\nfree = 3.0\nt = { semantic = \"time\" }\n";
         let effect = crate::manifest::parse_for_tests(text, crate::diag::FileId(0), &dir).unwrap();
         let all = cases(Some(&effect), 3, 7);
-        // nominal, 2 × (low, high), all low, all high, 3 random, 3 times.
-        assert_eq!(all.len(), 1 + 4 + 2 + 3 + 3, "{all:#?}");
+        // nominal, 2 × (low, high), all low, all high, 3 random, 3 times, 2 geometry.
+        assert_eq!(all.len(), 1 + 4 + 2 + 3 + 3 + 2, "{all:#?}");
         assert_eq!(all[1].overrides, [("k".to_string(), UniformValue::Int(1))]);
         assert_eq!(all[4].overrides, [("tint".to_string(), UniformValue::List(vec![UniformValue::Float(1.0); 2]))]);
         for random in all.iter().filter(|c| c.name.starts_with("random")) {
@@ -388,6 +474,6 @@ mod tests {
             assert!((1..=9).contains(&k));
         }
         assert_eq!(cases(Some(&effect), 3, 7), all, "seeded: the same cases every run");
-        assert_eq!(all.last().unwrap().time, 1e7);
+        assert_eq!(all[all.len() - 3].time, 1e7);
     }
 }

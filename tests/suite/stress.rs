@@ -1,6 +1,6 @@
-//! `effectc stress`: seed hazards found by rendering at the ends of the ranges, reported at
-//! the manifest's `range` with the culprit expression located in the fragment stage; the
-//! shipped effects come out clean.
+//! `effectc stress`: seed hazards found by rendering at the ends of the ranges and on
+//! degenerate geometry, reported at the manifest's `range` (or mesh) with the culprit
+//! expression located in the vertex or fragment stage; the shipped effects come out clean.
 
 use crate::common::{code, effectc, scratch, stdout};
 use crate::render::have_gpu;
@@ -21,13 +21,50 @@ fn seed_hazards_are_found_at_the_end_of_their_range() {
     // The culprit: the instrumented fragment stage names the division by (ranger - 1), the
     // first non-finite value in every pixel, at its span in blur.frag.
     assert!(text.contains("bloom-curve/blur.frag:20:58"), "{text}");
-    assert!(text.contains("the first non-finite value (division) in 16384 of 16384 pixels"), "{text}");
+    assert!(text.contains("the first non-finite value (division) in 16384 of 16384 fragment invocations"), "{text}");
     // Seed 003's asin latitude: NaN where |z| > 1, only at the high end.
     assert!(text.contains("error[E0701]: asin-latitude: case `radiusScale high`"), "{text}");
     assert!(!text.contains("case `radiusScale low`"), "{text}");
     assert!(dir.join("bloom-curve_bloomRange_low_nonfinite.png").is_file());
     // The nominal frames are clean: the hazards are at the edges only.
     assert!(text.contains("nominal                   0        0"), "{text}");
+    // Full-screen programs draw no mesh a geometry case could change: no such rows.
+    let bloom = text.split("bloom-curve —").nth(1).unwrap().split("\n\n").next().unwrap();
+    assert!(!bloom.contains("zero normals") && !bloom.contains("zero-area"), "{bloom}");
+}
+
+/// The body of one diagnostic: from its header line to the next blank line.
+fn diagnostic<'t>(text: &'t str, header: &str) -> &'t str {
+    let start = text.find(header).unwrap_or_else(|| panic!("no `{header}` in:\n{text}"));
+    let rest = &text[start..];
+    &rest[..rest.find("\n\n").unwrap_or(rest.len())]
+}
+
+#[test]
+fn degenerate_geometry_finds_zero_normals_in_either_stage() {
+    if !have_gpu() {
+        return;
+    }
+    let out = effectc(&["stress", "tests/stress/zero-normal", "tests/stress/gouraud-degenerate", "--samples", "1"]);
+    let text = stdout(&out);
+    // Seed 002's Phong normalizes the interpolated normal per pixel: with the mesh's normals
+    // zero that is 0/0 in every fragment (lavapipe's normalize returns 0, so the frame stays
+    // finite and the warning says the NaN is hidden). The culprit is at its GLSL span.
+    let phong = diagnostic(&text, "warning[W0702]: zero-normal: case `zero normals`");
+    assert!(phong.contains("zero-normal/effect.toml:15:1") && phong.contains("this mesh, made degenerate"), "{phong}");
+    assert!(phong.contains("zero-normal/phong.frag:14:17"), "{phong}");
+    assert!(phong.contains("the first non-finite value (normalize) in"), "{phong}");
+    assert!(phong.contains("degenerate geometry: all 559 normals zero"), "{phong}");
+    // Gouraud lighting normalizes per vertex: the collapsed triangles' zero normals are NaN
+    // in the vertex stage, though those triangles cover no pixel.
+    let gouraud = diagnostic(&text, "warning[W0702]: gouraud-degenerate: case `zero-area tris`");
+    assert!(gouraud.contains("gouraud-degenerate/gouraud.vert:20:17"), "{gouraud}");
+    assert!(gouraud.contains("the first non-finite value (normalize) in 18 of 36 vertex invocations"), "{gouraud}");
+    assert!(gouraud.contains("degenerate geometry: 6 of 12 triangles collapsed to zero area"), "{gouraud}");
+    let table = text.split("gouraud-degenerate —").nth(1).unwrap();
+    assert!(table.contains("zero-area tris            0        0         0        18"), "bad vert column:\n{table}");
+    // The nominal mesh is fine in both.
+    assert!(!text.contains("case `nominal`"), "{text}");
 }
 
 #[test]
