@@ -29,8 +29,9 @@ fn seed_hazards_are_found_at_the_end_of_their_range() {
     // The nominal frames are clean: the hazards are at the edges only.
     assert!(text.contains("nominal                   0        0"), "{text}");
     // Full-screen programs draw no mesh a geometry case could change: no such rows.
-    let bloom = text.split("bloom-curve —").nth(1).unwrap().split("\n\n").next().unwrap();
-    assert!(!bloom.contains("zero normals") && !bloom.contains("zero-area"), "{bloom}");
+    let bloom: Vec<&str> = text.split("bloom-curve —").nth(1).unwrap().lines().skip(1).take_while(|l| l.starts_with("  ")).collect();
+    assert_eq!(bloom.len(), 13, "header and 12 cases: {bloom:#?}");
+    assert!(!bloom.iter().any(|l| l.contains("zero normals") || l.contains("zero-area")), "{bloom:#?}");
 }
 
 /// The body of one diagnostic: from its header line to the next blank line.
