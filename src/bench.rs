@@ -19,7 +19,8 @@ use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
-use crate::render::command::{self, MemoryRequest, MemoryRun};
+use crate::render::command;
+use crate::render::memory::{self, MemoryRequest, MemoryRun};
 use crate::render::device::Gpu;
 use crate::render::frames::{GpuClock, Pixels};
 use crate::stage::StageKind;
@@ -182,14 +183,14 @@ fn sweep(
         degenerate: None,
     };
     // Warm-up: the first pipelines and the first frames are slower (caches, page faults).
-    command::render_in_memory(gpu, c, outcome, &[], MemoryRequest { frames: request.frames.min(2), ..memory })?;
+    memory::render_in_memory(gpu, c, outcome, &[], MemoryRequest { frames: request.frames.min(2), ..memory })?;
     let mut runs: Vec<(f64, MemoryRun, Vec<f64>)> = Vec::new();
     for &value in values {
         let overrides = [(name.to_string(), typed(value, template))];
         let mut first = None;
         let mut times = Vec::new();
         for _ in 0..request.repeats.max(1) {
-            let run = command::render_in_memory(gpu, c, outcome, &overrides, memory)?;
+            let run = memory::render_in_memory(gpu, c, outcome, &overrides, memory)?;
             times.extend_from_slice(&run.gpu_ms);
             first.get_or_insert(run);
         }

@@ -27,7 +27,6 @@ use crate::render::degenerate::Degenerate;
 use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
 use crate::render::scene::{ColorMode, Scene, SceneInput};
 use crate::render::semantics::FrameState;
-use crate::stability::culprit::{Instrumented, StageCounts};
 use crate::stage::StageKind;
 use crate::translate::{self, write_atomic};
 
@@ -191,16 +190,16 @@ pub fn run(request: &Request) -> RunResult {
 
 /// A checked program translated to WGSL: one unit for a single-pass program, one per
 /// running pass for a multi-pass effect.
-struct Prepared {
+pub(crate) struct Prepared {
     /// (pass index, translation, WGSL); the index is 0 for a single-pass program.
-    units: Vec<(usize, Translation, String)>,
+    pub(crate) units: Vec<(usize, Translation, String)>,
     /// The pass plan of a multi-pass effect.
-    plan: Option<crate::graph::PassPlan>,
+    pub(crate) plan: Option<crate::graph::PassPlan>,
 }
 
 /// Translates what `c` renders; diagnostics go to `outcome`. `None` when there is nothing
 /// to render (check or translation errors).
-fn prepare(c: &check::Checked, outcome: &mut Outcome, request: &Request) -> Option<Prepared> {
+pub(crate) fn prepare(c: &check::Checked, outcome: &mut Outcome, request: &Request) -> Option<Prepared> {
     let multi = c.effect.as_ref().filter(|e| e.is_multi_pass());
     let (indices, results): (Vec<usize>, Vec<Result<Translation, Vec<Diagnostic>>>) = match multi {
         Some(effect) => {
@@ -252,7 +251,7 @@ fn wgsl_units(
 }
 
 /// What draws the frames of one program.
-enum Drawer {
+pub(crate) enum Drawer {
     Single { scene: Box<Scene>, target: Box<Target> },
     Graph(Box<PassGraph>),
 }
@@ -282,7 +281,7 @@ impl Drawer {
             Drawer::Graph(g) => &g.model,
         }
     }
-    fn clock(&self) -> GpuClock {
+    pub(crate) fn clock(&self) -> GpuClock {
         match self {
             Drawer::Single { target, .. } => target.clock(),
             Drawer::Graph(g) => g.clock(),
@@ -295,13 +294,19 @@ impl Drawer {
         }
     }
     /// Every scene drawn, with its index into `Effect::passes` (0 for a single pass).
-    fn scenes(&self) -> Box<dyn Iterator<Item = (usize, &Scene)> + '_> {
+    pub(crate) fn scenes(&self) -> Box<dyn Iterator<Item = (usize, &Scene)> + '_> {
         match self {
             Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &**scene))),
             Drawer::Graph(g) => Box::new(g.scenes()),
         }
     }
-    fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
+    pub(crate) fn scenes_mut(&mut self) -> Box<dyn Iterator<Item = (usize, &mut Scene)> + '_> {
+        match self {
+            Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &mut **scene))),
+            Drawer::Graph(g) => Box::new(g.scenes_mut()),
+        }
+    }
+    pub(crate) fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
         match self {
             Drawer::Single { scene, target } => frames::render(gpu, scene, target, state, timeout),
             Drawer::Graph(g) => g.render(gpu, state, timeout),
@@ -311,7 +316,7 @@ impl Drawer {
 
 /// Builds the scene (or the pass graph) of a prepared program; also returns the file
 /// program-wide diagnostics point at.
-fn build(
+pub(crate) fn build(
     gpu: &Gpu,
     prepared: &Prepared,
     c: &check::Checked,
@@ -322,15 +327,7 @@ fn build(
     degenerate: Option<Degenerate>,
 ) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
     let flipped_y = request.back.flip_y;
-    let with_overrides = |e: &Effect| {
-        let mut e = e.clone();
-        for (name, value) in overrides {
-            if let Some(u) = e.uniforms.iter_mut().find(|u| u.name == *name) {
-                u.value = Some(value.clone());
-            }
-        }
-        e
-    };
+    let with_overrides = |e: &Effect| crate::render::memory::with_overrides(e, overrides);
     match (&prepared.plan, c.effect.as_ref()) {
         (Some(plan), Some(effect)) => {
             let views: Vec<Effect> = c.passes.iter().map(|p| with_overrides(&p.view)).collect();
@@ -359,7 +356,7 @@ fn build(
 }
 
 /// The per-frame values of frame `index` at effect time `time`.
-fn frame_state(drawer: &Drawer, index: u32, time: f64, step: f64, (w, h): (u32, u32)) -> FrameState {
+pub(crate) fn frame_state(drawer: &Drawer, index: u32, time: f64, step: f64, (w, h): (u32, u32)) -> FrameState {
     let aspect = w as f32 / h as f32;
     FrameState {
         index,
@@ -369,128 +366,6 @@ fn frame_state(drawer: &Drawer, index: u32, time: f64, step: f64, (w, h): (u32, 
         view: camera::view_at(drawer.camera(), time, aspect),
         model: camera::model_at(drawer.model(), time),
     }
-}
-
-/// Frames rendered in memory by [`render_in_memory`].
-pub struct MemoryRun {
-    /// Pixels per frame, top row first (RGBA8, or RGBA32F with `float`).
-    pub frames: Vec<Pixels>,
-    pub gpu_ms: Vec<f64>,
-    pub clock: GpuClock,
-    /// Instrumented runs: per instrumented program (one per pass of a multi-pass effect),
-    /// its probes and what they counted over all frames.
-    pub probes: Vec<ProbeRun>,
-    /// What the degenerate mesh changed, per scene that draws one (index into
-    /// `Effect::passes`, 0 for a single pass; empty when none did).
-    pub degenerate: Vec<(usize, String)>,
-}
-
-/// The probes of one instrumented program and their counts.
-pub struct ProbeRun {
-    /// Index into `Effect::passes` (0 for a single-pass program).
-    pub pass: usize,
-    pub instrumented: Instrumented,
-    pub counts: Vec<StageCounts>,
-}
-
-/// What [`render_in_memory`] draws: `frames` frames at times `start + i × step`.
-#[derive(Debug, Clone, Copy)]
-pub struct MemoryRequest {
-    pub size: (u32, u32),
-    pub frames: u32,
-    pub start: f64,
-    pub step: f64,
-    /// Render into Rgba32Float (NaN and Inf survive).
-    pub float: bool,
-    pub timeout: Duration,
-    /// Instrument the fragment stage (and the vertex stage where the device allows storage
-    /// writes there) to count the first non-finite value of every invocation
-    /// ([`crate::stability::culprit`]); the pixels are those of the plain program.
-    pub probe: bool,
-    /// Draw a degenerate variant of the mesh.
-    pub degenerate: Option<Degenerate>,
-}
-
-/// Renders frames of a checked program without writing files, with uniform values
-/// replaced by `overrides` (for `effectc bench` and `effectc stress`). Problems go to
-/// `outcome`; `None` when the program cannot be rendered.
-pub fn render_in_memory(
-    gpu: &Gpu,
-    c: &check::Checked,
-    outcome: &mut Outcome,
-    overrides: &[(String, UniformValue)],
-    m: MemoryRequest,
-) -> Option<MemoryRun> {
-    let MemoryRequest { size, frames, start, step, float, timeout, probe, degenerate } = m;
-    let request = Request {
-        inputs: Vec::new(),
-        stage: None,
-        front: FrontOptions::default(),
-        back: TranslateOptions { probe_nonfinite: probe, probe_vertex: gpu.vertex_storage(), ..TranslateOptions::for_rendering(true) },
-        frames: Some(frames),
-        step: Step::Seconds(step),
-        start,
-        size: Some(size),
-        out: None,
-        contact_sheet: false,
-        gif: false,
-        float,
-        timeout,
-        progress: false,
-        started: Instant::now(),
-        dump_targets: false,
-    };
-    let prepared = prepare(c, outcome, &request)?;
-    let mode = if float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-    let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, &request, overrides, degenerate) {
-        Ok(d) => d,
-        Err(diags) => {
-            outcome.diagnostics.extend(diags);
-            return None;
-        }
-    };
-    let degenerate = drawer.scenes().filter_map(|(i, s)| Some((i, s.degenerate.clone()?))).collect();
-    let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock(), probes: Vec::new(), degenerate };
-    for i in 0..frames {
-        let state = frame_state(&drawer, i, start + f64::from(i) * step, step, size);
-        match drawer.draw(gpu, &state, timeout) {
-            Ok(Frame { pixels, gpu_ms, .. }) => {
-                run.frames.push(pixels);
-                run.gpu_ms.push(gpu_ms);
-            }
-            Err(e) => {
-                let hung = matches!(e, FrameError::Timeout(_));
-                let message = match e {
-                    FrameError::Timeout(t) => format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()),
-                    FrameError::Device(d) => format!("frame {i} failed on the device: {d}"),
-                };
-                outcome.diagnostics.push(Diagnostic::error(if hung { E_TIMEOUT } else { E_FRAME }, message).in_file(file));
-                if hung {
-                    // The device is still busy: dropping the scene would wait for it.
-                    std::mem::forget(drawer);
-                }
-                return None;
-            }
-        }
-    }
-    for (pass, scene) in drawer.scenes() {
-        let Some(buffer) = &scene.probe_counts else { continue };
-        let Some(instrumented) = prepared.units.iter().find(|u| u.0 == pass).and_then(|u| u.1.probes.clone()) else { continue };
-        match frames::read_u32s(gpu, buffer) {
-            Ok(counts) => {
-                let counts = instrumented.read(&counts);
-                run.probes.push(ProbeRun { pass, instrumented, counts });
-            }
-            Err(e) => {
-                outcome.diagnostics.push(Diagnostic::error(E_FRAME, match e {
-                    FrameError::Timeout(t) => format!("the probe counts were not ready within {:.1} s", t.as_secs_f64()),
-                    FrameError::Device(d) => format!("the probe counts could not be read: {d}"),
-                }).in_file(file));
-                return None;
-            }
-        }
-    }
-    Some(run)
 }
 
 /// The device of a run, opened on first use (the adapter's description goes to `adapter`).

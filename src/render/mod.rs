@@ -17,6 +17,8 @@
 //! - [`encode`], [`compare`]: PNG, contact sheet, GIF, NaN/Inf masks; reference-image
 //!   comparison for pixel tests.
 //! - [`command`]: `effectc render`.
+//! - [`memory`]: a program built once and drawn in memory with other uniform values
+//!   (`effectc bench`, `effectc stress`).
 
 pub mod attributes;
 pub mod camera;
@@ -26,6 +28,7 @@ pub mod degenerate;
 pub mod device;
 pub mod encode;
 pub mod frames;
+pub mod memory;
 pub mod mesh;
 pub mod passes;
 pub mod scene;

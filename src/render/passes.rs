@@ -256,6 +256,10 @@ impl PassGraph {
         self.passes.iter().map(|p| (p.index, &p.scene))
     }
 
+    pub fn scenes_mut(&mut self) -> impl Iterator<Item = (usize, &mut Scene)> {
+        self.passes.iter_mut().map(|p| (p.index, &mut p.scene))
+    }
+
     pub fn clock(&self) -> GpuClock {
         if self.timestamps.is_some() {
             GpuClock::Timestamps

@@ -694,8 +694,8 @@ fn bind_groups(
         storage.push((b.name.clone(), gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some(&b.name),
             size,
-            // COPY_SRC: the probe counts of `effectc stress` are read back.
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            // The probe counts of `effectc stress` are zeroed before a run and read back.
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         })));
     }

@@ -24,7 +24,8 @@ use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
-use crate::render::command::{self, MemoryRequest, ProbeRun};
+use crate::render::command;
+use crate::render::memory::{InMemory, MemoryRequest, MemoryRun, ProbeRun};
 use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::encode;
@@ -198,26 +199,36 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
     let (w, h) = request.size;
     let mut nominal: Option<Vec<f32>> = None;
     let mut reports = Vec::new();
+    let plain_request = MemoryRequest {
+        size: request.size,
+        frames: 1,
+        start: 0.0,
+        step: 0.0,
+        float: true,
+        timeout: request.timeout,
+        probe: false,
+        degenerate: None,
+    };
+    // Built once for every case that only changes uniform values or time. The pixels come
+    // from the plain program: the instrumented one computes the same values, but the
+    // driver compiles it differently and may fold a NaN another way.
+    let mut plain = InMemory::new(gpu, c, outcome, &[], plain_request)?;
+    let mut instrumented = InMemory::new(gpu, c, outcome, &[], MemoryRequest { probe: true, ..plain_request })?;
     for case in cases(effect, request.samples, request.seed) {
-        let memory = MemoryRequest {
-            size: request.size,
-            frames: 1,
-            start: case.time,
-            step: 0.0,
-            float: true,
-            timeout: request.timeout,
-            probe: false,
-            degenerate: case.degenerate,
-        };
         // A case that cannot render (a timeout, a device error) is reported by the render path.
-        let run = command::render_in_memory(gpu, c, outcome, &case.overrides, memory)?;
-        if case.degenerate.is_some() && run.degenerate.is_empty() {
-            // No mesh the program reads is changed by this variant: nothing to learn.
-            continue;
-        }
-        // The pixels come from the plain program: the instrumented one computes the same
-        // values, but the driver compiles it differently and may fold a NaN another way.
-        let probed = command::render_in_memory(gpu, c, outcome, &case.overrides, MemoryRequest { probe: true, ..memory })?;
+        let (run, probed) = match case.degenerate {
+            Some(d) => {
+                let m = MemoryRequest { degenerate: Some(d), ..plain_request };
+                let run = InMemory::new(gpu, c, outcome, &case.overrides, m)?.render(gpu, outcome, case.time)?;
+                if run.degenerate.is_empty() {
+                    // No mesh the program reads is changed by this variant: nothing to learn.
+                    continue;
+                }
+                let m = MemoryRequest { probe: true, ..m };
+                (run, InMemory::new(gpu, c, outcome, &case.overrides, m)?.render(gpu, outcome, case.time)?)
+            }
+            None => (render_case(gpu, &mut plain, &case, outcome)?, render_case(gpu, &mut instrumented, &case, outcome)?),
+        };
         let culprits = Culprit::all(&probed.probes);
         let Some(Pixels::Rgba32F(frame)) = run.frames.into_iter().next() else { return None };
         let (counts, mask) = encode::non_finite(&frame, w, h);
@@ -270,6 +281,15 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
         }
     }
     Some(StressReport { program, size: request.size, vertex_probes: gpu.vertex_storage(), cases: reports })
+}
+
+/// One frame of a built program with the case's uniform values, at its time.
+fn render_case(gpu: &Gpu, program: &mut InMemory<'_>, case: &Case, outcome: &mut Outcome) -> Option<MemoryRun> {
+    if let Err(e) = program.set_overrides(&case.overrides) {
+        outcome.diagnostics.push(Diagnostic::error(crate::render::scene::E_PIPELINE, e));
+        return None;
+    }
+    program.render(gpu, outcome, case.time)
 }
 
 fn max_delta(a: &[f32], b: &[f32]) -> f64 {

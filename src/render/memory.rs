@@ -1,0 +1,200 @@
+//! Rendering without files, for `effectc bench` and `effectc stress`: a checked program is
+//! translated and its scene (or pass graph) built once, then drawn as often as asked with
+//! other uniform values, the pixels and probe counts returned in memory.
+//!
+//! Building is the expensive part on lavapipe (every pipeline is compiled by LLVM), so a
+//! caller that only changes uniform values between runs keeps one [`InMemory`] and calls
+//! [`InMemory::set_overrides`]; a changed mesh needs a new one.
+
+use std::time::{Duration, Instant};
+
+use crate::back::TranslateOptions;
+use crate::check::{self, Outcome};
+use crate::diag::{Diagnostic, FileId};
+use crate::front::program::FrontOptions;
+use crate::manifest::{Effect, UniformValue};
+use crate::render::command::{build, frame_state, prepare, Drawer, Prepared, Request, Step, E_FRAME, E_TIMEOUT};
+use crate::render::degenerate::Degenerate;
+use crate::render::device::Gpu;
+use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels};
+use crate::render::scene::ColorMode;
+use crate::render::uniforms;
+use crate::stability::culprit::{Instrumented, StageCounts};
+
+/// Frames rendered in memory by [`InMemory::render`].
+pub struct MemoryRun {
+    /// Pixels per frame, top row first (RGBA8, or RGBA32F with `float`).
+    pub frames: Vec<Pixels>,
+    pub gpu_ms: Vec<f64>,
+    pub clock: GpuClock,
+    /// Instrumented runs: per instrumented program (one per pass of a multi-pass effect),
+    /// its probes and what they counted over all frames of this run.
+    pub probes: Vec<ProbeRun>,
+    /// What the degenerate mesh changed, per scene that draws one (index into
+    /// `Effect::passes`, 0 for a single pass; empty when none did).
+    pub degenerate: Vec<(usize, String)>,
+}
+
+/// The probes of one instrumented program and their counts.
+pub struct ProbeRun {
+    /// Index into `Effect::passes` (0 for a single-pass program).
+    pub pass: usize,
+    pub instrumented: Instrumented,
+    pub counts: Vec<StageCounts>,
+}
+
+/// What an [`InMemory`] draws: `frames` frames at times `start + i × step`.
+#[derive(Debug, Clone, Copy)]
+pub struct MemoryRequest {
+    pub size: (u32, u32),
+    pub frames: u32,
+    pub start: f64,
+    pub step: f64,
+    /// Render into Rgba32Float (NaN and Inf survive).
+    pub float: bool,
+    pub timeout: Duration,
+    /// Instrument the fragment stage (and the vertex stage where the device allows storage
+    /// writes there) to count the first non-finite value of every invocation
+    /// ([`crate::stability::culprit`]).
+    pub probe: bool,
+    /// Draw a degenerate variant of the mesh.
+    pub degenerate: Option<Degenerate>,
+}
+
+/// A program ready to draw in memory.
+pub struct InMemory<'c> {
+    c: &'c check::Checked,
+    m: MemoryRequest,
+    prepared: Prepared,
+    /// `None` after a frame timed out: the device may still be busy with it.
+    drawer: Option<Drawer>,
+    file: FileId,
+}
+
+/// Renders frames of a checked program without writing files, with uniform values
+/// replaced by `overrides`. Problems go to `outcome`; `None` when the program cannot be
+/// rendered.
+pub fn render_in_memory(
+    gpu: &Gpu,
+    c: &check::Checked,
+    outcome: &mut Outcome,
+    overrides: &[(String, UniformValue)],
+    m: MemoryRequest,
+) -> Option<MemoryRun> {
+    InMemory::new(gpu, c, outcome, overrides, m)?.render(gpu, outcome, m.start)
+}
+
+impl<'c> InMemory<'c> {
+    /// Translates and builds the program with `overrides`. Problems go to `outcome`.
+    pub fn new(gpu: &Gpu, c: &'c check::Checked, outcome: &mut Outcome, overrides: &[(String, UniformValue)], m: MemoryRequest) -> Option<Self> {
+        let request = Request {
+            inputs: Vec::new(),
+            stage: None,
+            front: FrontOptions::default(),
+            back: TranslateOptions { probe_nonfinite: m.probe, probe_vertex: gpu.vertex_storage(), ..TranslateOptions::for_rendering(true) },
+            frames: Some(m.frames),
+            step: Step::Seconds(m.step),
+            start: m.start,
+            size: Some(m.size),
+            out: None,
+            contact_sheet: false,
+            gif: false,
+            float: m.float,
+            timeout: m.timeout,
+            progress: false,
+            started: Instant::now(),
+            dump_targets: false,
+        };
+        let prepared = prepare(c, outcome, &request)?;
+        let mode = if m.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
+        match build(gpu, &prepared, c, m.size, mode, &request, overrides, m.degenerate) {
+            Ok((drawer, file)) => Some(InMemory { c, m, prepared, drawer: Some(drawer), file }),
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                None
+            }
+        }
+    }
+
+    /// Rewrites every uniform buffer from the manifest with `overrides` applied (the
+    /// semantic slots are rewritten each frame anyway).
+    pub fn set_overrides(&mut self, overrides: &[(String, UniformValue)]) -> Result<(), String> {
+        let Some(drawer) = self.drawer.as_mut() else { return Err("the device is still busy with a frame that timed out".into()) };
+        let c = self.c;
+        for (pass, scene) in drawer.scenes_mut() {
+            let effect = if c.passes.is_empty() { c.effect.as_ref() } else { c.passes.get(pass).map(|p| &p.view) };
+            let effect = effect.map(|e| with_overrides(e, overrides));
+            let (buffers, _) = uniforms::buffers(&scene.module, effect.as_ref())?;
+            for (data, (old, _)) in buffers.into_iter().zip(&mut scene.uniforms) {
+                *old = data;
+            }
+        }
+        Ok(())
+    }
+
+    /// Draws the request's frames from effect time `start`. Probe counts start from zero.
+    pub fn render(&mut self, gpu: &Gpu, outcome: &mut Outcome, start: f64) -> Option<MemoryRun> {
+        let MemoryRequest { size, frames, step, timeout, .. } = self.m;
+        let drawer = self.drawer.as_mut()?;
+        for (_, scene) in drawer.scenes() {
+            if let Some(counts) = &scene.probe_counts {
+                gpu.queue.write_buffer(counts, 0, &vec![0u8; counts.size() as usize]);
+            }
+        }
+        let degenerate = drawer.scenes().filter_map(|(i, s)| Some((i, s.degenerate.clone()?))).collect();
+        let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock(), probes: Vec::new(), degenerate };
+        for i in 0..frames {
+            let state = frame_state(drawer, i, start + f64::from(i) * step, step, size);
+            match drawer.draw(gpu, &state, timeout) {
+                Ok(Frame { pixels, gpu_ms, .. }) => {
+                    run.frames.push(pixels);
+                    run.gpu_ms.push(gpu_ms);
+                }
+                Err(e) => {
+                    let hung = matches!(e, FrameError::Timeout(_));
+                    let message = match e {
+                        FrameError::Timeout(t) => format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()),
+                        FrameError::Device(d) => format!("frame {i} failed on the device: {d}"),
+                    };
+                    outcome.diagnostics.push(Diagnostic::error(if hung { E_TIMEOUT } else { E_FRAME }, message).in_file(self.file));
+                    if hung {
+                        // The device is still busy: dropping the scene would wait for it.
+                        std::mem::forget(self.drawer.take());
+                    }
+                    return None;
+                }
+            }
+        }
+        for (pass, scene) in drawer.scenes() {
+            let Some(buffer) = &scene.probe_counts else { continue };
+            let unit = self.prepared.units.iter().find(|u| u.0 == pass);
+            let Some(instrumented) = unit.and_then(|u| u.1.probes.clone()) else { continue };
+            match frames::read_u32s(gpu, buffer) {
+                Ok(counts) => {
+                    let counts = instrumented.read(&counts);
+                    run.probes.push(ProbeRun { pass, instrumented, counts });
+                }
+                Err(e) => {
+                    let message = match e {
+                        FrameError::Timeout(t) => format!("the probe counts were not ready within {:.1} s", t.as_secs_f64()),
+                        FrameError::Device(d) => format!("the probe counts could not be read: {d}"),
+                    };
+                    outcome.diagnostics.push(Diagnostic::error(E_FRAME, message).in_file(self.file));
+                    return None;
+                }
+            }
+        }
+        Some(run)
+    }
+}
+
+/// `effect` with the values of `overrides` in place of the manifest's.
+pub fn with_overrides(effect: &Effect, overrides: &[(String, UniformValue)]) -> Effect {
+    let mut e = effect.clone();
+    for (name, value) in overrides {
+        if let Some(u) = e.uniforms.iter_mut().find(|u| u.name == *name) {
+            u.value = Some(value.clone());
+        }
+    }
+    e
+}
