@@ -76,10 +76,13 @@ impl Analyzer<'_> {
             Expression::Constant(k) => Some(Self::hash_key(("const", k.index()))),
             Expression::FunctionArgument(i) => c.args.get(*i as usize).and_then(|a| a.1),
             Expression::Load { pointer } => match self.eval(c, state, *pointer) {
-                Ev::P(p) => {
-                    let version = state.versions.get(&p.root).copied().unwrap_or(0);
-                    Some(Self::hash_key(("load", &p, version)))
-                }
+                Ev::P(p) => match state.stored.get(&p.root).filter(|_| p.path.is_empty()) {
+                    Some(&k) => Some(k),
+                    None => {
+                        let version = state.versions.get(&p.root).copied().unwrap_or(0);
+                        Some(Self::hash_key(("load", &p, version)))
+                    }
+                },
                 Ev::V(_) => None,
             },
             Expression::Unary { op, expr } => sub(c, *expr).map(|k| Self::hash_key(("un", format!("{op:?}"), k))),

@@ -58,6 +58,9 @@ pub struct State {
     pub locals: HashMap<(usize, Handle<LocalVariable>), Val>,
     pub globals: HashMap<Handle<naga::GlobalVariable>, Val>,
     pub versions: HashMap<Root, u64>,
+    /// The key of the value last stored whole into a variable: loading it back gives the
+    /// same key, so `float len = length(v); if (len > 0.0) normalize(v)` is guarded.
+    pub stored: HashMap<Root, u64>,
     pub refined: HashMap<u64, Refined>,
     /// False on paths that cannot run (after `break`, `return`, `discard`).
     pub live: bool,
@@ -65,7 +68,14 @@ pub struct State {
 
 impl State {
     pub fn dead() -> State {
-        State { locals: HashMap::new(), globals: HashMap::new(), versions: HashMap::new(), refined: HashMap::new(), live: false }
+        State {
+            locals: HashMap::new(),
+            globals: HashMap::new(),
+            versions: HashMap::new(),
+            stored: HashMap::new(),
+            refined: HashMap::new(),
+            live: false,
+        }
     }
 
     /// Both paths: values joined, refinements kept where both agree on a key.
@@ -91,6 +101,7 @@ impl State {
                 out.versions.insert(k.clone(), *fresh);
             }
         }
+        out.stored.retain(|k, v| o.stored.get(k) == Some(v));
         out.refined.retain(|k, r| match o.refined.get(k) {
             Some(q) => {
                 *r = Refined { iv: r.iv.join(q.iv), gap: r.gap.min(q.gap) };
@@ -304,6 +315,10 @@ impl<'a> Analyzer<'a> {
                 }
                 if let Ev::P(place) = self.eval(c, &state, *pointer) {
                     self.write(&mut state, &place, v);
+                    match c.keys[value.index()].filter(|_| place.path.is_empty()) {
+                        Some(k) => state.stored.insert(place.root.clone(), k),
+                        None => state.stored.remove(&place.root),
+                    };
                 }
                 state
             }

@@ -54,6 +54,16 @@ void main()
     float psi_r = asin(dot(normalize(V), normalize(u)) / N_CELLULOSE);
     float fibre = cos(0.5 * (psi_r - psi_i));
 
+    // the light's heading in the xz plane is zero when the light is overhead: its length,
+    // kept in a variable, is tested before normalize
+    vec2 lightXZ = vec2(lightX, lightZ);
+    vec2 heading = vec2(0.0, 1.0);
+    float headingLen = length(lightXZ);
+    if (headingLen > 1e-4) {
+        heading = normalize(lightXZ);
+    }
+    fibre *= 0.75 + 0.25 * heading.x;
+
     // seed 000 bloom pulse, with the phase wrapped before sin
     float currentBI = mix(minBI, maxBI, 0.5 + 0.5 * sin(mod(timeVarFrag * bFrequency, 6.2831853)));
 
