@@ -227,6 +227,10 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Ve
                 }
                 let bound: HashSet<String> = pass.samples.iter().map(|s| s.sampler.clone()).collect();
                 diags.extend(crate::link::check_pass_manifest(&view, &s, &out.files, &bound));
+                // Targets an earlier pass drew are unknown to the analysis: they raise nothing.
+                if !diags.iter().any(Diagnostic::is_error) {
+                    diags.extend(hazards::analyse(Some(&view), p));
+                }
                 syntaxes = Some(s);
             }
             out.diagnostics.extend(diags);

@@ -25,6 +25,14 @@ out vec4 fragColour[4];
 
 // normalize() that cannot divide by zero: a mesh with zero normals (degenerate faces;
 // `effectc stress`'s geometry cases) gives N = 0 here, not NaN.
+// A phase wrapped to [0, 2pi) before sin/cos (W0717): time * speed grows without bound, and
+// after hours f32 keeps too few digits of it. fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI).
+const float TWO_PI = 6.2831853;
+float wrapPhase(float x)
+{
+    return fract(x / TWO_PI) * TWO_PI;
+}
+
 vec3 safeNormalize(vec3 v)
 {
     return v * inversesqrt(max(dot(v, v), 1e-12));
@@ -39,7 +47,7 @@ void main(void)
     vec3 sand = vec3(0.78, 0.70, 0.48);
     vec3 grass = vec3(0.30, 0.52, 0.22);
     vec3 rock = vec3(0.45, 0.42, 0.40);
-    float waterY = waterLevel + levelAmplitude * sin(time * levelSpeed);
+    float waterY = waterLevel + levelAmplitude * sin(wrapPhase(time * levelSpeed));
     vec3 colour = mix(sand, grass, smoothstep(waterY + 0.15, waterY + 0.45, IN.worldPos.y));
     colour = mix(colour, rock, smoothstep(0.75, 0.55, N.y));
     colour *= 0.75 + 0.5 * grain;

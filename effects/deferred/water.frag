@@ -22,6 +22,14 @@ in Vertex {
 
 out vec4 fragColour;
 
+// A phase wrapped to [0, 2pi) before sin/cos (W0717): time * speed grows without bound, and
+// after hours f32 keeps too few digits of it. fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI).
+const float TWO_PI = 6.2831853;
+float wrapPhase(float x)
+{
+    return fract(x / TWO_PI) * TWO_PI;
+}
+
 vec3 safeNormalize(vec3 v)
 {
     return v * inversesqrt(max(dot(v, v), 1e-12));
@@ -38,8 +46,8 @@ void main(void)
 {
     vec2 p = IN.worldPos.xz * waveFrequency;
     float t = time * waveSpeed;
-    vec2 slope = vec2(cos(p.x + t) + 0.5 * cos(p.x * 0.7 + p.y * 1.3 + t * 1.3),
-                      cos(p.y * 1.1 - t * 0.8) + 0.5 * cos(p.y * 0.6 - p.x * 1.2 + t * 0.7));
+    vec2 slope = vec2(cos(p.x + wrapPhase(t)) + 0.5 * cos(p.x * 0.7 + p.y * 1.3 + wrapPhase(t * 1.3)),
+                      cos(p.y * 1.1 - wrapPhase(t * 0.8)) + 0.5 * cos(p.y * 0.6 - p.x * 1.2 + wrapPhase(t * 0.7)));
     vec3 N = safeNormalize(vec3(-slope.x * waveAmplitude, 1.0, -slope.y * waveAmplitude));
 
     vec3 I = safeNormalize(IN.worldPos - cameraPos);

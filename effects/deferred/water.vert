@@ -19,10 +19,18 @@ out Vertex {
     vec3 worldPos;
 } OUT;
 
+// A phase wrapped to [0, 2pi) before sin/cos (W0717): time * speed grows without bound, and
+// after hours f32 keeps too few digits of it. fract(x / TWO_PI) * TWO_PI is mod(x, TWO_PI).
+const float TWO_PI = 6.2831853;
+float wrapPhase(float x)
+{
+    return fract(x / TWO_PI) * TWO_PI;
+}
+
 void main(void)
 {
     vec4 worldPos = model * vec4(position, 1.0);
-    worldPos.y += waterLevel + levelAmplitude * sin(time * levelSpeed);
+    worldPos.y += waterLevel + levelAmplitude * sin(wrapPhase(time * levelSpeed));
     OUT.texCoord = texCoord;
     OUT.worldPos = worldPos.xyz;
     gl_Position = projection * view * worldPos;

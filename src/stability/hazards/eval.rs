@@ -348,8 +348,9 @@ impl Analyzer<'_> {
                     return state;
                 }
                 let (ai, bi) = (a.c[0], b.c[0]);
-                self.learn(c, &mut state, left, op, bi);
-                self.learn(c, &mut state, right, mirror(op), ai);
+                let int = matches!(a.kind, naga::ScalarKind::Sint | naga::ScalarKind::Uint);
+                self.learn(c, &mut state, left, op, bi, int);
+                self.learn(c, &mut state, right, mirror(op), ai, int);
             }
             _ => {}
         }
@@ -357,8 +358,15 @@ impl Analyzer<'_> {
     }
 
     /// Records `x op bound` for the expression `x` (and `|y| >= k` when `x` is `abs(y)`).
-    fn learn(&mut self, c: &mut Call<'_>, state: &mut State, x: Handle<Expression>, op: B, bound: Iv) {
+    /// Between integers a strict comparison is a closed one a step further (`i > 1` is
+    /// `i >= 2`).
+    fn learn(&mut self, c: &mut Call<'_>, state: &mut State, x: Handle<Expression>, op: B, bound: Iv, int: bool) {
         let Some(key) = c.keys[x.index()] else { return };
+        let (op, bound) = match (op, int) {
+            (B::Less, true) => (B::LessEqual, Iv::new(bound.lo - 1.0, bound.hi - 1.0)),
+            (B::Greater, true) => (B::GreaterEqual, Iv::new(bound.lo + 1.0, bound.hi + 1.0)),
+            _ => (op, bound),
+        };
         let (iv, gap) = match op {
             B::Less => (Iv::new(f64::NEG_INFINITY, bound.hi), if bound.hi <= 0.0 { f64::MIN_POSITIVE } else { 0.0 }),
             B::LessEqual => (Iv::new(f64::NEG_INFINITY, bound.hi), 0.0),

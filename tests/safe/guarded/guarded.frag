@@ -72,13 +72,18 @@ void main()
     vec2 delta = vec2(1.0 / 64.0, 0.0);
     float z = 0.0;
     int ranger = bloomRange;
+    // the shipped bloom's form: an integer guard, ranger > 1 means ranger - 1 >= 1
+    float curveStep = 0.0;
+    if (ranger > 1) {
+        curveStep = 16.0 / float(ranger - 1);
+    }
     float startCurve = 8.0;
     for (int i = 0; i < ranger; i++)
     {
         vec2 offset = delta * (z - float((ranger - 1) / 2));
         vec4 tmp = texture(sceneTex, vTexCoord + offset);
         float curve = 1.0 / (pow(2.0, abs(-startCurve + (startCurve * 2.0) / float(max(ranger - 1, 1)) * z)));
-        bloom += tmp * curve * bloomIntensity;
+        bloom += tmp * curve * bloomIntensity * (1.0 + 0.01 * curveStep);
         z += 1.0;
     }
 
