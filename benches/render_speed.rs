@@ -96,7 +96,7 @@ fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
         .expect("translates");
     let wgsl = String::from_utf8(effectc::back::emit(&t, BackTarget::Wgsl).unwrap().remove(0).bytes).unwrap();
     let input =
-        SceneInput { translation: &t, wgsl: &wgsl, program: c.program.as_ref().unwrap(), effect: c.effect.as_ref(), mode: ColorMode::Unorm8, flipped_y: true, pass: None };
+        SceneInput { translation: &t, wgsl: &wgsl, program: c.program.as_ref().unwrap(), effect: c.effect.as_ref(), mode: ColorMode::Unorm8, flipped_y: true, pass: None, degenerate: None };
     let mut scene = Scene::new(gpu, &input).expect("scene");
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: None,

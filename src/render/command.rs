@@ -147,7 +147,7 @@ pub fn run(request: &Request) -> RunResult {
             continue;
         }
         let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        let (mut drawer, file) = match build(gpu, &prepared, c, size, mode, request, &[], None) {
+        let (mut drawer, file) = match build(gpu, &prepared, c, (size, mode), request, Variant::default()) {
             Ok(d) => d,
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
@@ -314,18 +314,26 @@ impl Drawer {
     }
 }
 
+/// What a build changes from the manifest (`effectc bench`, `effectc stress`).
+#[derive(Default, Clone, Copy)]
+pub(crate) struct Variant<'a> {
+    /// Uniform values in place of the manifest's.
+    pub overrides: &'a [(String, UniformValue)],
+    /// A degenerate variant of the mesh.
+    pub degenerate: Option<Degenerate>,
+}
+
 /// Builds the scene (or the pass graph) of a prepared program; also returns the file
 /// program-wide diagnostics point at.
 pub(crate) fn build(
     gpu: &Gpu,
     prepared: &Prepared,
     c: &check::Checked,
-    size: (u32, u32),
-    mode: ColorMode,
+    (size, mode): ((u32, u32), ColorMode),
     request: &Request,
-    overrides: &[(String, UniformValue)],
-    degenerate: Option<Degenerate>,
+    variant: Variant<'_>,
 ) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
+    let Variant { overrides, degenerate } = variant;
     let flipped_y = request.back.flip_y;
     let with_overrides = |e: &Effect| crate::render::memory::with_overrides(e, overrides);
     match (&prepared.plan, c.effect.as_ref()) {

@@ -13,7 +13,7 @@ use crate::check::{self, Outcome};
 use crate::diag::{Diagnostic, FileId};
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
-use crate::render::command::{build, frame_state, prepare, Drawer, Prepared, Request, Step, E_FRAME, E_TIMEOUT};
+use crate::render::command::{build, frame_state, prepare, Drawer, Prepared, Request, Step, Variant, E_FRAME, E_TIMEOUT};
 use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels};
@@ -107,7 +107,7 @@ impl<'c> InMemory<'c> {
         };
         let prepared = prepare(c, outcome, &request)?;
         let mode = if m.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        match build(gpu, &prepared, c, m.size, mode, &request, overrides, m.degenerate) {
+        match build(gpu, &prepared, c, (m.size, mode), &request, Variant { overrides, degenerate: m.degenerate }) {
             Ok((drawer, file)) => Some(InMemory { c, m, prepared, drawer: Some(drawer), file }),
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
