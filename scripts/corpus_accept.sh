@@ -4,17 +4,27 @@
 # For each program: does glslangValidator link it (-l), does effectc check it without
 # errors? Prints the programs where the two disagree and the totals.
 #
-# Usage: scripts/corpus_accept.sh CORPUS_DIR
+# With `vulkan` as second argument the reference is `glslangValidator -V -l` (Vulkan GLSL:
+# set/binding, push constants, interfaces matched by location).
+#
+# Usage: scripts/corpus_accept.sh CORPUS_DIR [opengl|vulkan]
 set -uo pipefail
 cd "$(dirname "$0")/.."
-corpus=${1:?usage: scripts/corpus_accept.sh CORPUS_DIR}
+corpus=${1:?usage: scripts/corpus_accept.sh CORPUS_DIR [opengl|vulkan]}
+env=${2:-opengl}
+spv=$(mktemp -d)
+trap 'rm -rf "$spv"' EXIT
 bin=target/release/effectc
 [ -x "$bin" ] || cargo build --release
 both=0; only_glslang=0; only_effectc=0; neither=0
 for d in "$corpus"/*/; do
     files=$(ls "$d" | grep -E '\.(vert|frag|geom)$' | sed "s|^|$d|")
     [ -n "$files" ] || continue
-    glslangValidator -l $files >/dev/null 2>&1; g=$?
+    if [ "$env" = vulkan ]; then
+        (cd "$spv" && glslangValidator -V -l $(for f in $files; do realpath "$f"; done) >/dev/null 2>&1); g=$?
+    else
+        glslangValidator -l $files >/dev/null 2>&1; g=$?
+    fi
     "$bin" check --color never $files > /tmp/effectc-corpus.out 2>&1; e=$?
     if [ $g -eq 0 ] && [ $e -eq 0 ]; then both=$((both + 1))
     elif [ $g -eq 0 ]; then only_glslang=$((only_glslang + 1)); echo "glslang only: $d  $(grep -m1 -E '^error' /tmp/effectc-corpus.out)"

@@ -149,6 +149,27 @@ pub fn translate(
             );
             continue;
         }
+        if let Some(limit) = &stage.limitation {
+            let d = Diagnostic::error("E0306", format!("the {kind} stage uses {}, which naga cannot translate", limit.construct))
+                .with_note("the program is legal GLSL (`effectc check` accepts it); naga, which effectc translates with, does not take this construct");
+            diags.push(match &limit.span {
+                Some(span) => d.at(stage.syntax.file, span.clone(), "naga does not take this"),
+                None => d.in_file(stage.syntax.file),
+            });
+            continue;
+        }
+        if let Some(validated) = stage.naga.as_ref().filter(|v| !v.needs.is_empty()) {
+            diags.push(
+                Diagnostic::error(
+                    "E0306",
+                    format!("the {kind} stage needs {} , which WebGPU does not have", validated.needs.join(", ")),
+                )
+                .in_file(stage.syntax.file)
+                .with_note("legal in desktop GL; WebGPU has these only as optional features (or not at all), so effectc does not translate them")
+                .with_help(capability_help(&validated.needs)),
+            );
+            continue;
+        }
         let (Some(validated), Some(rewritten)) = (&stage.naga, &stage.rewritten) else {
             diags.push(
                 Diagnostic::error("E0304", format!("the {kind} stage did not validate, so it cannot be translated"))
@@ -216,6 +237,30 @@ fn probe(module: &mut Module, program: &CompiledProgram, stages: &[StageKind]) -
         program.stages.iter().filter_map(|s| Some((s.syntax.stage, s.rewritten.as_ref()?.text.as_str()))).collect();
     let binding = crate::stability::culprit::free_binding(module);
     crate::stability::culprit::instrument(module, &info, &texts, stages, binding)
+}
+
+/// What the GLSL construct behind each naga capability is.
+fn capability_help(needs: &[String]) -> String {
+    let what: Vec<&str> = needs
+        .iter()
+        .map(|n| match n.as_str() {
+            "PRIMITIVE_INDEX" => "`gl_PrimitiveID` (WebGPU feature `primitive-index`)",
+            "FLOAT64" => "double precision (`double`, `dvec*`, `dmat*`)",
+            "DUAL_SOURCE_BLENDING" => "`layout(index = 1)` outputs: dual-source blending (WebGPU feature `dual-source-blending`)",
+            "MULTISAMPLED_SHADING" => "per-sample shading (`gl_SampleID`, `sample` inputs)",
+            "CLIP_DISTANCES" => "`gl_ClipDistance` (WebGPU feature `clip-distances`)",
+            "CULL_DISTANCE" => "`gl_CullDistance`",
+            "IMMEDIATES" => "push constants (`layout(push_constant)`)",
+            "MULTIVIEW" => "`gl_ViewIndex` (multiview)",
+            "EARLY_DEPTH_TEST" => "`layout(early_fragment_tests)` / depth layout qualifiers",
+            "SHADER_INT64" => "64-bit integers",
+            "SHADER_FLOAT16" => "16-bit floats",
+            "SHADER_INT16" => "16-bit integers",
+            "DRAW_INDEX" => "`gl_DrawID`",
+            _ => "arrays of textures, samplers or buffers (binding arrays)",
+        })
+        .collect();
+    format!("the construct: {}", what.join("; "))
 }
 
 fn internal(file: crate::diag::FileId, message: String) -> Diagnostic {

@@ -4,8 +4,10 @@
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
 //! - [`edits`]: text edits with an offset map back to the user's file.
 //! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
-//! - [`naga_run`]: naga parse + validate, panics contained; [`program`]: all of it per program.
+//! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
+//!   errors with [`builtins`]; [`program`]: all of it per program.
 
+pub mod builtins;
 pub mod edits;
 pub mod syntax;
 pub mod version;

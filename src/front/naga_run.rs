@@ -2,22 +2,128 @@
 //!
 //! naga can panic on some inputs; every call here is wrapped in `catch_unwind`, and a panic
 //! becomes an error diagnostic instead of taking the process down.
+//!
+//! `check` asks whether the program is legal GLSL, not whether WebGPU can run it, so a
+//! stage is validated with every capability desktop GL has ([`gl_capabilities`]); the
+//! capabilities WebGPU lacks are recorded ([`Validated::needs`]) for `translate` to refuse
+//! with E0306. An error naga reports on a construct the GLSL specification allows (a
+//! built-in naga does not know, a qualifier its parser does not take) is a
+//! [`Limitation`], not an error in the user's program.
 
+use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
+use naga::front::glsl::ErrorKind;
+use naga::valid::Capabilities;
+
 use crate::diag::{Diagnostic, FileId};
+use crate::front::builtins;
 use crate::front::rewrite::Rewritten;
+use crate::front::version::Version;
 
 /// A naga module that passed validation, with its analysis.
 #[derive(Debug)]
 pub struct Validated {
     pub module: naga::Module,
     pub info: naga::valid::ModuleInfo,
+    /// Capabilities beyond WebGPU's defaults the module needs (e.g. `PRIMITIVE_INDEX` for
+    /// `gl_PrimitiveID`), by name; empty when WebGPU can run it as is.
+    pub needs: Vec<String>,
+}
+
+/// A legal construct naga cannot take: the stage is checked for syntax and interface only.
+#[derive(Debug, Clone)]
+pub struct Limitation {
+    /// What naga could not take, in words (`textureQueryLod`, `layout(row_major)` …).
+    pub construct: String,
+    /// Where, in the user's file.
+    pub span: Option<Range<usize>>,
+}
+
+/// What naga made of one stage.
+#[derive(Debug)]
+pub enum Outcome {
+    Valid(Validated),
+    Limited(Limitation),
+    Invalid(Vec<Diagnostic>),
 }
 
 /// The validator every backend output goes through: all checks, WebGPU capabilities.
 pub fn validator() -> naga::valid::Validator {
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), Capabilities::default())
+}
+
+/// Capabilities a desktop GL 4.6 implementation has that WebGPU's defaults lack.
+pub fn gl_capabilities() -> Capabilities {
+    Capabilities::default()
+        | Capabilities::IMMEDIATES
+        | Capabilities::FLOAT64
+        | Capabilities::PRIMITIVE_INDEX
+        | Capabilities::CLIP_DISTANCES
+        | Capabilities::CULL_DISTANCE
+        | Capabilities::MULTIVIEW
+        | Capabilities::EARLY_DEPTH_TEST
+        | Capabilities::MULTISAMPLED_SHADING
+        | Capabilities::DUAL_SOURCE_BLENDING
+        | Capabilities::CUBE_ARRAY_TEXTURES
+        | Capabilities::SHADER_INT64
+        | Capabilities::TEXTURE_AND_SAMPLER_BINDING_ARRAY
+        | Capabilities::BUFFER_BINDING_ARRAY
+        | Capabilities::STORAGE_TEXTURE_BINDING_ARRAY
+        | Capabilities::STORAGE_BUFFER_BINDING_ARRAY
+        | Capabilities::TEXTURE_AND_SAMPLER_BINDING_ARRAY_NON_UNIFORM_INDEXING
+        | Capabilities::BUFFER_BINDING_ARRAY_NON_UNIFORM_INDEXING
+        | Capabilities::STORAGE_TEXTURE_BINDING_ARRAY_NON_UNIFORM_INDEXING
+        | Capabilities::STORAGE_BUFFER_BINDING_ARRAY_NON_UNIFORM_INDEXING
+        | Capabilities::SHADER_FLOAT16
+        | Capabilities::SHADER_INT16
+        | Capabilities::DRAW_INDEX
+}
+
+/// The capabilities of [`gl_capabilities`] beyond WebGPU's defaults that `module` needs.
+fn needed_capabilities(module: &naga::Module) -> Vec<String> {
+    let valid = |caps: Capabilities| {
+        catch_unwind(AssertUnwindSafe(|| {
+            naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps).validate(module).is_ok()
+        }))
+        .unwrap_or(false)
+    };
+    if valid(Capabilities::default()) {
+        return Vec::new();
+    }
+    let extra = gl_capabilities() - Capabilities::default();
+    extra
+        .iter_names()
+        .filter(|(_, cap)| !valid(gl_capabilities() - *cap))
+        .map(|(name, _)| name.to_string())
+        .collect()
+}
+
+/// Whether naga's error is about a construct GLSL allows (a naga limitation). The text
+/// already passed glsl-lang's full GLSL grammar, so a naga syntax error is a limitation.
+fn limitation(kind: &ErrorKind, version: &Version) -> Option<String> {
+    // Conservative: naga's syntax errors, unexpected qualifiers and preprocessor errors stay
+    // errors (glsl-lang's grammar is looser than GLSL in places, so they can be real).
+    Some(match kind {
+        ErrorKind::NotImplemented(what) => format!("{what} (not implemented in naga)"),
+        ErrorKind::UnknownLayoutQualifier(q) if builtins::is_layout_qualifier(q) => format!("`layout({q})`"),
+        ErrorKind::UnsupportedMatrixWithTwoRowsInStd140 { columns } => {
+            format!("`mat{columns}x2` in a std140 block (naga issue gfx-rs/wgpu#4375)")
+        }
+        ErrorKind::UnknownVariable(name) if builtins::is_variable_naga_lacks(name, version) => {
+            format!("the built-in `{name}`")
+        }
+        ErrorKind::UnknownType(name) if builtins::is_type(name) => format!("the type `{name}`"),
+        ErrorKind::SemanticError(msg) => {
+            let name = msg.strip_prefix("Unknown function '").and_then(|r| r.strip_suffix('\''));
+            match name {
+                Some(f) if builtins::is_function_naga_lacks(f) => format!("the built-in function `{f}`"),
+                _ => return None,
+            }
+        }
+        ErrorKind::InternalError(what) => format!("this code (naga internal error: {what})"),
+        _ => return None,
+    })
 }
 
 fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
@@ -30,12 +136,43 @@ fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
     }
 }
 
+/// std140/std430 lay out every legal block; naga's layout rules for the uniform and storage
+/// address spaces (WGSL's) reject some of them (a `bool` or a `float[N]` inside a struct).
+/// That is naga's limitation, not an error in the program.
+fn layout_limitation(module: &naga::Module, err: &naga::valid::ValidationError) -> Option<String> {
+    let naga::valid::ValidationError::GlobalVariable { handle, source, .. } = err else { return None };
+    match source {
+        naga::valid::GlobalVariableError::Alignment(..) | naga::valid::GlobalVariableError::InvalidType(..) => {
+            let var = &module.global_variables[*handle];
+            let ty = module.types[var.ty].name.clone().unwrap_or_else(|| "a uniform block".into());
+            Some(format!("the std140/std430 layout of `{ty}` (naga's uniform/storage layout rules differ: {source})"))
+        }
+        _ => None,
+    }
+}
+
 /// Parses and validates one rewritten stage.
 pub fn parse_and_validate(
     file: FileId,
     rewritten: &Rewritten,
     stage: naga::ShaderStage,
-) -> Result<Validated, Vec<Diagnostic>> {
+    version: &Version,
+) -> Outcome {
+    match parse_and_validate_inner(file, rewritten, stage, version) {
+        Ok(v) => Outcome::Valid(v),
+        Err(Ok(limit)) => Outcome::Limited(limit),
+        Err(Err(diags)) => Outcome::Invalid(diags),
+    }
+}
+
+type Failure = Result<Limitation, Vec<Diagnostic>>;
+
+fn parse_and_validate_inner(
+    file: FileId,
+    rewritten: &Rewritten,
+    stage: naga::ShaderStage,
+    version: &Version,
+) -> Result<Validated, Failure> {
     let text = &rewritten.text;
     let map_span = |span: naga::Span| span.to_range().map(|r| rewritten.map.range_to_original(r));
     let parsed = catch_unwind(AssertUnwindSafe(|| {
@@ -45,9 +182,18 @@ pub fn parse_and_validate(
     let module = match parsed {
         Ok(Ok(m)) => m,
         Ok(Err(errors)) => {
-            return Err(errors
+            // A genuine error anywhere in the stage wins over naga's limitations.
+            let genuine = errors.errors.iter().any(|e| limitation(&e.kind, version).is_none());
+            if !genuine {
+                if let Some(e) = errors.errors.first() {
+                    let construct = limitation(&e.kind, version).unwrap_or_default();
+                    return Err(Ok(Limitation { construct, span: map_span(e.meta) }));
+                }
+            }
+            return Err(Err(errors
                 .errors
                 .iter()
+                .filter(|e| limitation(&e.kind, version).is_none())
                 .map(|e| {
                     let d = Diagnostic::error("E0150", e.kind.to_string());
                     match map_span(e.meta) {
@@ -55,15 +201,22 @@ pub fn parse_and_validate(
                         None => d.in_file(file),
                     }
                 })
-                .collect())
+                .collect()))
         }
-        Err(payload) => return Err(vec![crash(file, "GLSL front", &*payload)]),
+        Err(payload) => return Err(Err(vec![crash(file, "GLSL front", &*payload)])),
     };
-    let validated = catch_unwind(AssertUnwindSafe(|| validator().validate(&module)));
+    let gl = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), gl_capabilities());
+    let validated = catch_unwind(AssertUnwindSafe(|| { let mut gl = gl; gl.validate(&module) }));
     match validated {
-        Ok(Ok(info)) => Ok(Validated { module, info }),
-        Ok(Err(err)) => Err(vec![validation_diagnostic(file, &err, &map_span)]),
-        Err(payload) => Err(vec![crash(file, "validator", &*payload)]),
+        Ok(Ok(info)) => {
+            let needs = needed_capabilities(&module);
+            Ok(Validated { module, info, needs })
+        }
+        Ok(Err(err)) => match layout_limitation(&module, err.as_inner()) {
+            Some(construct) => Err(Ok(Limitation { construct, span: err.spans().next().and_then(|(s, _)| map_span(*s)) })),
+            None => Err(Err(vec![validation_diagnostic(file, &err, &map_span)])),
+        },
+        Err(payload) => Err(Err(vec![crash(file, "validator", &*payload)])),
     }
 }
 

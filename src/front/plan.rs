@@ -75,7 +75,16 @@ pub struct Plan {
     pub struct_texts: BTreeMap<String, String>,
     /// Non-opaque member types of every struct the block needs (its keys are those structs).
     pub struct_members: BTreeMap<String, Vec<GlslType>>,
+    /// Structs that get a trailing `vec4` filler member ([`STRUCT_ALIGN_FILLER`]) so naga
+    /// aligns them to 16 bytes in the uniform block, as std140 does (naga aligns a struct to
+    /// its largest member only, and WGSL's uniform rules then reject it).
+    pub padded_structs: Vec<String>,
+    /// Images and atomic counters without a binding of their own → binding (set 0).
+    pub opaque: BTreeMap<String, u32>,
 }
+
+/// Name of the filler member of [`Plan::padded_structs`].
+pub const STRUCT_ALIGN_FILLER: &str = "effectc_align16";
 
 impl Plan {
     pub fn member(&self, name: &str) -> Option<&BlockMember> {
@@ -154,6 +163,12 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
     // Uniforms, in stage order then declaration order.
     for s in stages {
         for g in &s.globals {
+            if let (Some(b), Storage::Buffer) = (&g.block, g.storage) {
+                if !plan.user_blocks.contains_key(&b.block_name) {
+                    plan.user_blocks.insert(b.block_name.clone(), 0);
+                }
+                continue;
+            }
             if g.storage != Storage::Uniform {
                 continue;
             }
@@ -164,6 +179,12 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
                 continue;
             }
             if plan.member(&g.name).is_some() || plan.textures.iter().any(|t| t.user_path == g.name) {
+                continue;
+            }
+            if crate::front::rewrite::is_unblocked_opaque(&g.ty.base) {
+                if !g.layout.iter().any(|(k, _)| k == "binding") {
+                    plan.opaque.insert(g.name.clone(), 0);
+                }
                 continue;
             }
             if let Some((tex, samp)) = sampler_parts(&g.ty.base) {
@@ -232,12 +253,29 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
         *b = next_binding;
         next_binding += 1;
     }
+    for b in plan.opaque.values_mut() {
+        *b = next_binding;
+        next_binding += 1;
+    }
     plan.varyings = varying_locations(stages);
-    for name in &plan.block_structs {
-        if let Some(def) = stages.iter().find_map(|s| s.struct_def(name)) {
-            plan.struct_texts.insert(name.clone(), struct_text(def));
-            plan.struct_members.insert(name.clone(), def.members.iter().filter(|m| !m.ty.is_sampler()).map(|m| m.ty.clone()).collect());
+    for name in plan.block_structs.clone() {
+        let Some(def) = stages.iter().find_map(|s| s.struct_def(&name)) else { continue };
+        plan.struct_members.insert(name.clone(), def.members.iter().filter(|m| !m.ty.is_sampler()).map(|m| m.ty.clone()).collect());
+        let constructed = stages.iter().any(|s| s.calls.iter().any(|c| c.name == name));
+        // A struct alone in the block is aligned by the block's own fillers; one nested in
+        // another struct or in an array is not.
+        let nested = plan.struct_members.values().flatten().any(|m| m.base == name)
+            || stages.iter().any(|s| s.structs.iter().any(|d| d.members.iter().any(|m| m.ty.base == name)))
+            || plan.members.iter().any(|m| m.block_ty.base == name && m.block_ty.is_array());
+        let (_, align) = block_size_align(&GlslType::scalar(&name), &plan);
+        if align < 16 && !constructed && nested {
+            plan.padded_structs.push(name.clone());
+            if let Some(members) = plan.struct_members.get_mut(&name) {
+                members.push(GlslType::scalar("vec4"));
+            }
         }
+        let padded = plan.padded_structs.contains(&name);
+        plan.struct_texts.insert(name.clone(), struct_text(def, padded));
     }
     plan
 }
@@ -282,7 +320,7 @@ pub fn block_size_align(ty: &GlslType, plan: &Plan) -> (u32, u32) {
 }
 
 /// A struct definition as the rewritten code declares it: sampler members removed.
-pub fn struct_text(def: &crate::front::syntax::StructDef) -> String {
+pub fn struct_text(def: &crate::front::syntax::StructDef, padded: bool) -> String {
     let mut text = format!("struct {} {{", def.name);
     let mut any = false;
     for m in def.members.iter().filter(|m| !m.ty.is_sampler()) {
@@ -291,6 +329,9 @@ pub fn struct_text(def: &crate::front::syntax::StructDef) -> String {
     }
     if !any {
         text.push_str(" int effectc_unused;");
+    }
+    if padded {
+        text.push_str(&format!(" vec4 {STRUCT_ALIGN_FILLER};"));
     }
     text.push_str(" };");
     text

@@ -5,7 +5,7 @@
 //! at the syntax and interface level only, and a note says so.
 
 use crate::diag::{Diagnostic, FileId, Files};
-use crate::front::naga_run::{self, Validated};
+use crate::front::naga_run::{self, Limitation, Outcome, Validated};
 use crate::front::plan::{self, Plan};
 use crate::front::rewrite::{self, Rewritten};
 use crate::front::syntax::{self, StageSyntax};
@@ -24,6 +24,8 @@ pub struct CompiledStage {
     pub syntax: StageSyntax,
     pub rewritten: Option<Rewritten>,
     pub naga: Option<Validated>,
+    /// A legal construct naga cannot take (the stage is checked for syntax and interface only).
+    pub limitation: Option<Limitation>,
 }
 
 /// The front's result for a program: per-stage results, the shared plan, and diagnostics.
@@ -74,7 +76,7 @@ pub fn compile(
                     .in_file(s.file)
                     .with_note("naga and WGSL have no geometry or tessellation stages, so it is not validated by naga"),
             );
-            compiled.push(CompiledStage { syntax: s, rewritten: None, naga: None });
+            compiled.push(CompiledStage { syntax: s, rewritten: None, naga: None, limitation: None });
             continue;
         };
         let (rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
@@ -85,18 +87,36 @@ pub fn compile(
         }
         let blocked = rdiags.iter().any(Diagnostic::is_error);
         diags.extend(rdiags);
-        let naga = if blocked || !s.has_main {
-            None
-        } else {
-            match naga_run::parse_and_validate(s.file, &rewritten, naga_stage) {
-                Ok(v) => Some(v),
-                Err(errs) => {
+        let mut limitation = None;
+        let outcome = match &rewritten.limitation {
+            _ if blocked || !s.has_main => None,
+            Some(limit) => Some(Outcome::Limited(limit.clone())),
+            None => Some(naga_run::parse_and_validate(s.file, &rewritten, naga_stage, &s.version)),
+        };
+        let naga = match outcome {
+            None => None,
+            Some(outcome) => match outcome {
+                Outcome::Valid(v) => Some(v),
+                Outcome::Limited(limit) => {
+                    let d = Diagnostic::note(
+                        "N0102",
+                        format!("naga cannot take {}, so the {} stage is checked for syntax and interface only", limit.construct, s.stage),
+                    );
+                    diags.push(match &limit.span {
+                        Some(span) => d.at(s.file, span.clone(), "legal GLSL naga does not take"),
+                        None => d.in_file(s.file),
+                    }
+                    .with_note("`effectc translate` cannot translate this stage until naga takes it"));
+                    limitation = Some(limit);
+                    None
+                }
+                Outcome::Invalid(errs) => {
                     diags.extend(errs);
                     None
                 }
-            }
+            },
         };
-        compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga });
+        compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation });
     }
     Some(CompiledProgram { stages: compiled, plan })
 }

@@ -22,6 +22,9 @@ use crate::stage::StageKind;
 pub struct Rewritten {
     pub text: String,
     pub map: OffsetMap,
+    /// A legal construct the rewrite cannot express for naga (the stage is then checked for
+    /// syntax and interface only).
+    pub limitation: Option<crate::front::naga_run::Limitation>,
 }
 
 /// Prefix of a uniform block member another stage declares and this stage shadows.
@@ -60,12 +63,13 @@ struct Ctx<'a> {
     prologue: String,
     /// Statements run before `main` returns (matrix outputs split into columns).
     epilogue: String,
+    limitation: Option<crate::front::naga_run::Limitation>,
 }
 
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
 /// constructs go to the returned diagnostics.
 pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Diagnostic>) {
-    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new() };
+    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new(), limitation: None };
     c.version();
     c.declarations();
     c.uses();
@@ -73,9 +77,12 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
     c.functions();
     c.calls();
     c.struct_samplers();
+    c.defaults_and_layouts();
+    c.row_major_uses();
+    c.unsized_arrays();
     c.insert_header();
     c.insert_main_hooks();
-    let Ctx { edits, mut diags, .. } = c;
+    let Ctx { edits, mut diags, limitation, .. } = c;
     let (text, map, dropped) = edits.apply(&s.text);
     for e in dropped {
         diags.push(
@@ -84,7 +91,7 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
                 .with_note("this is a limitation of effectc; naga may report an error nearby"),
         );
     }
-    (Rewritten { text, map }, diags)
+    (Rewritten { text, map, limitation }, diags)
 }
 
 impl Ctx<'_> {
@@ -133,9 +140,11 @@ impl Ctx<'_> {
             let first = &s.globals[idxs[0]];
             let decl = first.decl_span.clone();
             match first.storage {
-                Storage::Uniform if first.block.is_some() => {
+                Storage::Uniform | Storage::Buffer if first.block.is_some() => {
                     let b = first.block.as_ref().expect("block");
-                    if first.layout.iter().any(|(k, _)| k == "binding") {
+                    if first.layout.iter().any(|(k, _)| k == "push_constant") {
+                        // Push constants have no binding.
+                    } else if first.layout.iter().any(|(k, _)| k == "binding") {
                         // The user's own binding numbers live in set 1, clear of ours.
                         self.add_layout(first, "set = 1", "set");
                     } else {
@@ -143,11 +152,20 @@ impl Ctx<'_> {
                         self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
                     }
                 }
+                Storage::Uniform if is_unblocked_opaque(&first.ty.base) => {
+                    // Images and atomic counters stay declarations of their own.
+                    if first.layout.iter().any(|(k, _)| k == "binding") {
+                        self.add_layout(first, "set = 1", "set");
+                    } else {
+                        let binding = self.plan.opaque.get(&first.name).copied().unwrap_or(0);
+                        self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
+                    }
+                }
                 Storage::Uniform => {
                     let mut text = String::new();
                     // `uniform struct S { … } s;` keeps the struct type declared.
                     for def in s.structs.iter().filter(|d| decl.start <= d.span.start && d.span.end <= decl.end) {
-                        text.push_str(&struct_text(def));
+                        text.push_str(&struct_text(def, self.plan.padded_structs.contains(&def.name)));
                         text.push(' ');
                     }
                     for &i in &idxs {
@@ -250,6 +268,12 @@ impl Ctx<'_> {
 
     fn insert_main_hooks(&mut self) {
         let Some(body) = self.s.main_body.clone() else { return };
+        let s = self.s;
+        if s.stage == StageKind::Vertex && !s.uses.iter().any(|u| u.name == "gl_Position" && u.target == Target::Unresolved) {
+            // A vertex stage may leave `gl_Position` unwritten (a geometry stage or transform
+            // feedback follows); naga's entry point needs the output.
+            self.prologue.push_str(" gl_Position = vec4(0.0);");
+        }
         if !self.prologue.is_empty() {
             self.edits.insert(body.start + 1, self.prologue.clone());
         }
@@ -392,6 +416,18 @@ impl Ctx<'_> {
     }
 
     fn dynamic_sampler_index(&mut self, span: Range<usize>, name: &str) {
+        let v = &self.s.version;
+        if (!v.is_es() && v.number >= 400) || (v.is_es() && v.number >= 320) {
+            // Legal since GLSL 4.00 (dynamically uniform indices); WGSL has no arrays of
+            // combined samplers, which is a translation limit, not an error.
+            if self.limitation.is_none() {
+                self.limitation = Some(crate::front::naga_run::Limitation {
+                    construct: format!("`{}` indexed with a non-constant expression (an array of samplers; WGSL and naga have none)", self.s.original_name(name)),
+                    span: Some(span),
+                });
+            }
+            return;
+        }
         self.diags.push(
             Diagnostic::error("E0110", format!("`{}` is indexed with a non-constant expression", self.s.original_name(name)))
                 .at(self.s.file, span, "not a constant index")
@@ -457,8 +493,9 @@ impl Ctx<'_> {
                 ),
                 None => {}
             },
-            ("gl_VertexID", StageKind::Vertex) => self.edits.replace(u.span.clone(), "gl_VertexIndex"),
-            ("gl_InstanceID", StageKind::Vertex) => self.edits.replace(u.span.clone(), "gl_InstanceIndex"),
+            // naga types these `uint`; GLSL's are `int`.
+            ("gl_VertexID" | "gl_VertexIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_VertexIndex)"),
+            ("gl_InstanceID" | "gl_InstanceIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_InstanceIndex)"),
             ("gl_PointSize", _) => self.edits.replace(u.span.clone(), "effectc_PointSize"),
             ("gl_ClipDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
             _ => {}
@@ -496,6 +533,16 @@ impl Ctx<'_> {
                 self.edits.insert(close, ", 0.0");
                 continue;
             }
+            if c.name == "texture" && c.args.len() == 2 {
+                if let Some(sampler) = self.integer_sampler_text(c) {
+                    // GL samples integer textures with NEAREST filtering (they are incomplete
+                    // otherwise); naga and WebGPU only fetch them: fetch the texel under `P`.
+                    self.edits.replace(c.name_span.clone(), "texelFetch");
+                    self.edits.insert(c.args[1].start, format!("ivec2(vec2(textureSize({sampler}, 0)) * ("));
+                    self.edits.insert(c.args[1].end, ")), 0");
+                    continue;
+                }
+            }
             if let Some((old, new, widen)) = LEGACY_FUNCTIONS.iter().find(|(o, _, _)| *o == c.name) {
                 self.legacy(c.name_span.clone(), old, new);
                 if *widen {
@@ -509,10 +556,33 @@ impl Ctx<'_> {
         }
     }
 
-    /// Sampler members leave struct definitions (they became their own bindings).
+    /// For `texture(s, P)` on a 2D integer sampler `s` (a global or a parameter), the
+    /// rewritten sampler expression.
+    fn integer_sampler_text(&self, c: &crate::front::syntax::Call) -> Option<String> {
+        let s = self.s;
+        let name = c.first_arg_name.as_deref()?;
+        let integer = |ty: &str| matches!(ty, "isampler2D" | "usampler2D" | "isampler2DRect" | "usampler2DRect");
+        if let Some(f) = c.in_function.as_ref().and_then(|f| s.functions.iter().find(|x| &x.name == f && x.is_definition)) {
+            if let Some(p) = f.params.iter().find(|p| p.name.as_deref() == Some(name)) {
+                return integer(&p.ty.base).then(|| format!("{}({name}, {name}_sampler)", combined_ctor(&p.ty.base)));
+            }
+        }
+        let g = s.global(name).filter(|g| g.storage == Storage::Uniform && integer(&g.ty.base) && !g.ty.is_array())?;
+        let t = self.plan.texture(&g.name)?;
+        Some(format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name))
+    }
+
+    /// Sampler members leave struct definitions (they became their own bindings); structs
+    /// the plan pads get their filler member.
     fn struct_samplers(&mut self) {
         let s = self.s;
         for st in &s.structs {
+            let in_uniform_decl = s.globals.iter().any(|g| g.storage == Storage::Uniform && g.decl_span.start <= st.span.start && st.span.end <= g.decl_span.end);
+            if self.plan.padded_structs.contains(&st.name) && !in_uniform_decl {
+                if let Some(close) = s.text[..st.span.end].rfind('}') {
+                    self.edits.insert(close, format!(" vec4 {};", crate::front::plan::STRUCT_ALIGN_FILLER));
+                }
+            }
             let mut done: Vec<Range<usize>> = Vec::new();
             let opaque: Vec<_> = st.members.iter().filter(|m| m.ty.is_sampler()).collect();
             if opaque.is_empty() {
@@ -528,6 +598,151 @@ impl Ctx<'_> {
                 // GLSL structs cannot be empty.
                 if let Some(m) = opaque.first() {
                     self.edits.insert(m.field_span.start, "int effectc_unused;");
+                }
+            }
+        }
+    }
+
+    /// Default-qualifier declarations (`layout(std140, row_major) uniform;`) leave the text;
+    /// block layout items naga does not take (`row_major`, `column_major`, `shared`,
+    /// `packed`, `index = 0`) leave their qualifiers; member qualifiers of blocks
+    /// (`flat`, `layout(location = 3)`, `layout(row_major)`) leave the members (naga's
+    /// parser takes none of them: locations follow the block's, integers are flat anyway).
+    fn defaults_and_layouts(&mut self) {
+        let s = self.s;
+        for d in &s.defaults {
+            if matches!(d.storage, Some(Storage::Uniform | Storage::Buffer)) {
+                self.edits.delete(d.span.clone());
+            }
+        }
+        let dual_source = s.globals.iter().any(|g| g.layout.iter().any(|(k, v)| k == "index" && *v != Some(0)));
+        let mut by_decl: BTreeMap<usize, &crate::front::syntax::Global> = BTreeMap::new();
+        for g in &s.globals {
+            by_decl.entry(g.decl_span.start).or_insert(g);
+        }
+        for g in by_decl.values() {
+            let drop = |name: &str| match name {
+                "row_major" | "column_major" | "shared" | "packed" => g.block.is_some() || g.storage == Storage::Uniform,
+                "index" => !dual_source,
+                _ => false,
+            };
+            if let Some(span) = &g.layout_span {
+                if g.layout_items.iter().any(|(n, _)| drop(n)) {
+                    let kept: Vec<&str> =
+                        g.layout_items.iter().filter(|(n, _)| !drop(n)).map(|(_, sp)| &s.text[sp.clone()]).collect();
+                    let text = if kept.is_empty() { String::new() } else { format!("layout({})", kept.join(", ")) };
+                    // Items the rewrite adds go right after `layout(`; keep that position.
+                    let open = s.text[span.clone()].find('(').map(|i| span.start + i + 1).unwrap_or(span.start);
+                    self.edits.replace(span.start..open, "");
+                    self.edits.replace(open..span.end, text.strip_prefix("layout(").map(|t| t.to_string()).unwrap_or_default());
+                    if kept.is_empty() {
+                        // `layout(set = 0, binding = 1) ` may still be inserted at `open`.
+                        self.edits.insert(open, "layout(");
+                        self.edits.insert(span.end, "std140)");
+                    } else {
+                        self.edits.insert(open, "layout(");
+                    }
+                }
+            }
+            let Some(b) = &g.block else { continue };
+            let mut done: Vec<Range<usize>> = Vec::new();
+            for m in &b.members {
+                if let Some(q) = &m.qualifier_span {
+                    if done.contains(q) {
+                        continue;
+                    }
+                    done.push(q.clone());
+                    let text = &s.text[q.clone()];
+                    let only_precision = ["highp", "mediump", "lowp"].contains(&text.trim());
+                    if !only_precision {
+                        self.edits.delete(q.clone());
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether matrices of block `g` (a uniform or buffer block) are stored row-major.
+    fn block_row_major(&self, g: &crate::front::syntax::Global) -> bool {
+        let mut row = false;
+        for d in self.s.defaults.iter().filter(|d| d.span.end <= g.decl_span.start) {
+            if matches!(d.storage, Some(Storage::Uniform | Storage::Buffer)) && d.storage == Some(g.storage) {
+                for (k, _) in &d.layout {
+                    match k.as_str() {
+                        "row_major" => row = true,
+                        "column_major" => row = false,
+                        _ => {}
+                    }
+                }
+            }
+        }
+        for (k, _) in &g.layout {
+            match k.as_str() {
+                "row_major" => row = true,
+                "column_major" => row = false,
+                _ => {}
+            }
+        }
+        row
+    }
+
+    /// Row-major square matrices in uniform and buffer blocks: naga reads every matrix
+    /// column-major, so the stored matrix is the transpose; each read becomes
+    /// `transpose(…)`.
+    fn row_major_uses(&mut self) {
+        let s = self.s;
+        let mut row_major: Vec<(usize, String)> = Vec::new();
+        for (gi, g) in s.globals.iter().enumerate() {
+            let Some(b) = &g.block else { continue };
+            if !matches!(g.storage, Storage::Uniform | Storage::Buffer) {
+                continue;
+            }
+            let block_row = self.block_row_major(g);
+            for m in &b.members {
+                let mut row = block_row;
+                for (k, _) in &m.layout {
+                    match k.as_str() {
+                        "row_major" => row = true,
+                        "column_major" => row = false,
+                        _ => {}
+                    }
+                }
+                if row && matches!(m.ty.base.as_str(), "mat2" | "mat3" | "mat4" | "mat2x2" | "mat3x3" | "mat4x4") {
+                    row_major.push((gi, m.name.clone()));
+                }
+            }
+        }
+        if row_major.is_empty() {
+            return;
+        }
+        for u in &s.uses {
+            let Target::Global(gi) = u.target else { continue };
+            let b = s.globals[gi].block.as_ref();
+            let span = match (&u.field, b.and_then(|b| b.instance.as_ref())) {
+                (Some((field, dot)), Some(_)) if row_major.iter().any(|(g, m)| *g == gi && m == field) => dot.clone(),
+                (_, None) if row_major.iter().any(|(g, m)| *g == gi && *m == u.name) => u.span.clone(),
+                _ => continue,
+            };
+            self.edits.insert(span.start, "transpose(");
+            self.edits.insert(span.end, ")");
+        }
+    }
+
+    /// `vec3 p[] = vec3[](a, b)`: naga cannot construct unsized arrays; the size is the
+    /// initializer's length.
+    fn unsized_arrays(&mut self) {
+        let s = self.s;
+        for (span, n) in &s.unsized_sizes {
+            let text = &s.text[span.clone()];
+            if text.trim() == "[]" {
+                self.edits.replace(span.clone(), format!("[{n}]"));
+            } else if text.trim().is_empty() {
+                // The node spans nothing: find the brackets after it.
+                if let Some(open) = s.text[span.start..].find('[') {
+                    let at = span.start + open + 1;
+                    if s.text[at..].trim_start().starts_with(']') {
+                        self.edits.insert(at, n.to_string());
+                    }
                 }
             }
         }
@@ -634,6 +849,12 @@ impl Ctx<'_> {
         };
         self.edits.insert(at, h);
     }
+}
+
+/// Opaque uniform types that stay their own declarations (not in the uniform block, not
+/// split like combined samplers).
+pub fn is_unblocked_opaque(base: &str) -> bool {
+    base == "atomic_uint" || base.starts_with("image") || base.starts_with("iimage") || base.starts_with("uimage")
 }
 
 /// (columns, rows) of a matrix type name.

@@ -118,6 +118,9 @@ pub struct Member {
     pub centroid: bool,
     /// Declared together with other names (`float a, b;`).
     pub shares_field: bool,
+    /// Span of the member's qualifiers (`flat`, `layout(location = 3)`, `layout(row_major)`).
+    pub qualifier_span: Option<Range<usize>>,
+    pub layout: Vec<(String, Option<i64>)>,
 }
 
 /// A struct definition.
@@ -163,6 +166,8 @@ pub struct Global {
     /// Other names share this declaration.
     pub shares_decl: bool,
     pub initializer: Option<Range<usize>>,
+    /// Each item of the layout qualifier (`std140`, `binding = 2`) with its span.
+    pub layout_items: Vec<(String, Range<usize>)>,
 }
 
 impl Global {
@@ -223,6 +228,10 @@ pub struct Call {
     pub name_span: Range<usize>,
     pub span: Range<usize>,
     pub in_function: Option<String>,
+    /// Spans of the arguments.
+    pub args: Vec<Range<usize>>,
+    /// The first argument when it is a bare identifier (a sampler, for texture calls).
+    pub first_arg_name: Option<String>,
 }
 
 /// Everything the checker and the rewrite need to know about one stage's source.
@@ -250,6 +259,21 @@ pub struct StageSyntax {
     pub main_body: Option<Range<usize>>,
     /// `return` statements inside `main`.
     pub main_returns: Vec<Range<usize>>,
+    /// Default-qualifier declarations (`layout(std140, row_major) uniform;`, `layout(triangles) in;`).
+    pub defaults: Vec<DefaultDecl>,
+    /// Unsized array dimensions (`[]`) whose size the initializer gives: span and size.
+    pub unsized_sizes: Vec<(Range<usize>, u32)>,
+    /// Written in Vulkan GLSL (descriptor sets, push constants, specialization constants,
+    /// `gl_VertexIndex`, separate textures and samplers): interfaces match by location only.
+    pub vulkan: bool,
+}
+
+/// A declaration made of qualifiers only: it sets defaults for later declarations.
+#[derive(Debug, Clone)]
+pub struct DefaultDecl {
+    pub span: Range<usize>,
+    pub storage: Option<Storage>,
+    pub layout: Vec<(String, Option<i64>)>,
 }
 
 impl StageSyntax {
@@ -278,19 +302,40 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
-    let (text, renames) = version::rename_new_keywords(&version::blank_extensions(original), &version);
+    let (mut text, mut renames) = version::rename_new_keywords(&version::blank_extensions(original), &version, original);
     let opts = glsl_lang::parse::ParseOptions {
         default_version: 110,
+        // Vulkan GLSL's types (`texture2D`, `sampler`, `subpassInput`) are keywords there only.
+        target_vulkan: vulkan_source(original),
         ..Default::default()
     };
-    let parsed = std::panic::catch_unwind(|| {
-        ast::TranslationUnit::parse_with_options(text.as_str(), &opts).map(|(tu, _, _)| tu).map_err(|e| {
-            let pos = e.pos();
-            let start = usize::from(pos.start());
-            let end = usize::from(pos.end());
-            (trim_expected(&e.inner().to_string()), start..end)
+    if opts.target_vulkan && version.number >= 400 && !version.is_es() {
+        // glsl-lang enables Vulkan's types from `#version 460` only; Vulkan GLSL has them
+        // from 4.50 on. Same-length digits keep every offset.
+        if let Some(span) = version.number_span.clone() {
+            text.replace_range(span, "460");
+        }
+    }
+    let parse = |text: &str| {
+        std::panic::catch_unwind(|| {
+            ast::TranslationUnit::parse_with_options(text, &opts).map(|(tu, _, _)| tu).map_err(|e| {
+                let pos = e.pos();
+                let start = usize::from(pos.start());
+                let end = usize::from(pos.end());
+                (trim_expected(&e.inner().to_string()), start..end)
+            })
         })
-    });
+    };
+    let mut parsed = parse(text.as_str());
+    // glsl-lang's lexer takes a struct's name for a type everywhere, but GLSL lets a local
+    // variable hide it (`float Attenuation = …;` beside `struct Attenuation`). Rename the
+    // local, from its declaration to the end of its block, and parse again.
+    for _ in 0..16 {
+        let Ok(Err((msg, span))) = &parsed else { break };
+        let Some(hidden) = rename_struct_hiding_local(&text, msg, span.start, &mut renames) else { break };
+        text = hidden;
+        parsed = parse(text.as_str());
+    }
     let tu = match parsed {
         Ok(Ok(tu)) => tu,
         Ok(Err((msg, span))) => {
@@ -320,9 +365,61 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         has_main: false,
         main_body: None,
         main_returns: Vec::new(),
+        defaults: Vec::new(),
+        unsized_sizes: Vec::new(),
+        vulkan: false,
     };
     Collector::run(&mut syntax, &tu);
+    syntax.vulkan = looks_like_vulkan(&syntax, original);
     Ok(syntax)
+}
+
+/// For a parse error on a struct's name used as a variable at `at`, the text with that
+/// name renamed (same length) from `at` to the end of the enclosing `{ … }` block.
+fn rename_struct_hiding_local(text: &str, msg: &str, at: usize, renames: &mut Renames) -> Option<String> {
+    let name = msg.strip_prefix("unexpected type name `")?.split('`').next()?;
+    if !text.get(at..)?.starts_with(name) || name.len() < 2 {
+        return None;
+    }
+    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let declared_struct = text.match_indices("struct").any(|(i, _)| {
+        text[i + 6..].trim_start().strip_prefix(name).is_some_and(|r| !r.bytes().next().is_some_and(is_ident))
+    });
+    if !declared_struct {
+        return None;
+    }
+    // The local's scope: to the brace that closes the block it is declared in.
+    let bytes = text.as_bytes();
+    let mut depth = 0i32;
+    let mut end = text.len();
+    for (i, &b) in bytes.iter().enumerate().skip(at) {
+        match b {
+            b'{' => depth += 1,
+            b'}' => {
+                depth -= 1;
+                if depth < 0 {
+                    end = i;
+                    break;
+                }
+            }
+            _ => {}
+        }
+    }
+    let new = (0..100).map(|k| format!("{}{}", &name[..name.len() - 1], (b'a' + (k % 26) as u8) as char)).find(|c| c != name && !text.contains(c.as_str()))?;
+    let mut out = text.as_bytes().to_vec();
+    let mut i = at;
+    while let Some(off) = text[i..end].find(name) {
+        let s = i + off;
+        let e = s + name.len();
+        let before_ok = s == 0 || !is_ident(bytes[s - 1]);
+        let after_ok = e >= bytes.len() || !is_ident(bytes[e]);
+        if before_ok && after_ok {
+            out[s..e].copy_from_slice(new.as_bytes());
+        }
+        i = e;
+    }
+    renames.to_original.insert(new, name.to_string());
+    String::from_utf8(out).ok()
 }
 
 /// glsl-lang lists every token it would accept; keep the message readable.
@@ -499,7 +596,8 @@ impl<'a> Collector<'a> {
         let mut out = Vec::new();
         for f in fields {
             let base = self.type_of(&f.ty);
-            let (interp, centroid, _, _, _) = self.qualifiers(f.qualifier.as_ref());
+            let q = self.qualifiers(f.qualifier.as_ref());
+            let (interp, centroid) = (q.interp, q.centroid);
             for id in &f.identifiers {
                 let mut ty = base.clone();
                 if let Some(a) = &id.array_spec {
@@ -515,28 +613,21 @@ impl<'a> Collector<'a> {
                     interp,
                     centroid,
                     shares_field: f.identifiers.len() > 1,
+                    qualifier_span: f.qualifier.as_ref().map(span_of),
+                    layout: q.layout.clone(),
                 });
             }
         }
         out
     }
 
-    /// (interpolation, centroid, storage with span, layout span, layout ids)
-    #[allow(clippy::type_complexity)]
-    fn qualifiers(
-        &self,
-        q: Option<&ast::TypeQualifier>,
-    ) -> (Option<Interp>, bool, Option<(Storage, Range<usize>)>, Option<Range<usize>>, Vec<(String, Option<i64>)>) {
-        let mut interp = None;
-        let mut centroid = false;
-        let mut storage = None;
-        let mut layout_span = None;
-        let mut layout = Vec::new();
-        let Some(q) = q else { return (interp, centroid, storage, layout_span, layout) };
+    fn qualifiers(&self, q: Option<&ast::TypeQualifier>) -> Quals {
+        let mut out = Quals::default();
+        let Some(q) = q else { return out };
         for spec in &q.qualifiers {
             match &spec.content {
                 ast::TypeQualifierSpecData::Interpolation(i) => {
-                    interp = Some(match i.content {
+                    out.interp = Some(match i.content {
                         ast::InterpolationQualifierData::Smooth => Interp::Smooth,
                         ast::InterpolationQualifierData::Flat => Interp::Flat,
                         ast::InterpolationQualifierData::NoPerspective => Interp::NoPerspective,
@@ -546,7 +637,7 @@ impl<'a> Collector<'a> {
                     let sp = span_of(st);
                     let kind = match &st.content {
                         ast::StorageQualifierData::Centroid => {
-                            centroid = true;
+                            out.centroid = true;
                             None
                         }
                         ast::StorageQualifierData::Uniform => Some(Storage::Uniform),
@@ -560,23 +651,30 @@ impl<'a> Collector<'a> {
                     };
                     if let Some(k) = kind {
                         // `centroid varying` / `const in` keep the meaningful one.
-                        if storage.is_none() || k != Storage::Const {
-                            storage = Some((k, sp));
+                        if out.storage.is_none() || k != Storage::Const {
+                            out.storage = Some((k, sp));
                         }
                     }
                 }
                 ast::TypeQualifierSpecData::Layout(l) => {
-                    layout_span = Some(span_of(l));
+                    out.layout_span = Some(span_of(l));
                     for id in &l.ids {
-                        if let ast::LayoutQualifierSpecData::Identifier(name, value) = &id.content {
-                            layout.push((name.0.to_string(), value.as_ref().and_then(|v| self.const_int(v))));
+                        match &id.content {
+                            ast::LayoutQualifierSpecData::Identifier(name, value) => {
+                                out.layout.push((name.0.to_string(), value.as_ref().and_then(|v| self.const_int(v))));
+                                out.layout_items.push((name.0.to_string(), span_of(id)));
+                            }
+                            ast::LayoutQualifierSpecData::Shared => {
+                                out.layout.push(("shared".to_string(), None));
+                                out.layout_items.push(("shared".to_string(), span_of(id)));
+                            }
                         }
                     }
                 }
                 _ => {}
             }
         }
-        (interp, centroid, storage, layout_span, layout)
+        out
     }
 
     fn global_declaration(&mut self, d: &ast::Declaration, span: Range<usize>) {
@@ -589,7 +687,9 @@ impl<'a> Collector<'a> {
             }
             ast::DeclarationData::Precision(..) => self.s.precision_statements.push(span),
             ast::DeclarationData::Block(b) => {
-                let (interp, centroid, storage, layout_span, layout) = self.qualifiers(Some(&b.qualifier));
+                let q = self.qualifiers(Some(&b.qualifier));
+                let layout_items = q.layout_items.clone();
+                let Quals { interp, centroid, storage, layout_span, layout, .. } = q;
                 let members = self.members(&b.fields);
                 let (instance, instance_span, instance_dims) = match &b.identifier {
                     Some(id) => (
@@ -617,11 +717,22 @@ impl<'a> Collector<'a> {
                     block: Some(BlockInfo { block_name, block_name_span, instance, instance_span, instance_dims, members }),
                     shares_decl: false,
                     initializer: None,
+                    layout_items,
                 });
             }
             ast::DeclarationData::InitDeclaratorList(list) => {
                 let head = &list.head;
-                let (interp, centroid, storage, layout_span, layout) = self.qualifiers(head.ty.qualifier.as_ref());
+                let q = self.qualifiers(head.ty.qualifier.as_ref());
+                let layout_items = q.layout_items.clone();
+                let Quals { interp, centroid, storage, layout_span, layout, .. } = q;
+                if let (Some(a), Some(init)) = (&head.array_specifier, &head.initializer) {
+                    self.unsized_from_initializer(a, init);
+                }
+                for t in &list.tail {
+                    if let (Some(a), Some(init)) = (&t.ident.array_spec, &t.initializer) {
+                        self.unsized_from_initializer(a, init);
+                    }
+                }
                 let base = self.type_of(&head.ty.ty);
                 let shares = !list.tail.is_empty();
                 let storage_kind = storage.as_ref().map(|s| s.0).unwrap_or(Storage::Private);
@@ -660,6 +771,7 @@ impl<'a> Collector<'a> {
                         block: None,
                         shares_decl: shares,
                         initializer: init.map(span_of),
+                        layout_items: layout_items.clone(),
                     });
                 };
                 if let Some(name) = &head.name {
@@ -669,8 +781,28 @@ impl<'a> Collector<'a> {
                     declare(self, &t.ident.ident, t.ident.array_spec.as_ref(), t.initializer.as_ref());
                 }
             }
-            ast::DeclarationData::Invariant(_) | ast::DeclarationData::TypeOnly(_) => {}
+            ast::DeclarationData::TypeOnly(q) => {
+                let q = self.qualifiers(Some(q));
+                self.s.defaults.push(DefaultDecl { span, storage: q.storage.map(|s| s.0), layout: q.layout });
+            }
+            ast::DeclarationData::Invariant(_) => {}
         }
+    }
+
+    /// `T name[] = T[](a, b, c)` / `= { a, b, c }`: the size is the initializer's length.
+    fn unsized_from_initializer(&mut self, a: &ast::ArraySpecifier, init: &ast::Initializer) {
+        let Some(first) = a.dimensions.first() else { return };
+        if !matches!(first.content, ast::ArraySpecifierDimensionData::Unsized) {
+            return;
+        }
+        let n = match &init.content {
+            ast::InitializerData::List(items) => items.len(),
+            ast::InitializerData::Simple(e) => match &e.content {
+                ast::ExprData::FunCall(f, args) if matches!(&f.content, ast::FunIdentifierData::TypeSpecifier(t) if t.array_specifier.is_some()) => args.len(),
+                _ => return,
+            },
+        };
+        self.s.unsized_sizes.push((span_of(first), n as u32));
     }
 
     fn initializer(&mut self, i: &ast::Initializer) {
@@ -705,6 +837,14 @@ impl<'a> Collector<'a> {
                 }
                 if let Some(a) = &list.head.array_specifier {
                     self.array_exprs(a);
+                    if let Some(init) = &list.head.initializer {
+                        self.unsized_from_initializer(a, init);
+                    }
+                }
+                for t in &list.tail {
+                    if let (Some(a), Some(init)) = (&t.ident.array_spec, &t.initializer) {
+                        self.unsized_from_initializer(a, init);
+                    }
                 }
                 if let Some(i) = &list.head.initializer {
                     self.initializer(i);
@@ -910,6 +1050,9 @@ impl<'a> Collector<'a> {
                     ast::FunIdentifierData::TypeSpecifier(t) => {
                         if let Some(a) = &t.array_specifier {
                             self.array_exprs(a);
+                            if let Some(d) = a.dimensions.first().filter(|d| matches!(d.content, ast::ArraySpecifierDimensionData::Unsized)) {
+                                self.s.unsized_sizes.push((span_of(d), args.len() as u32));
+                            }
                         }
                         match &t.ty.content {
                             ast::TypeSpecifierNonArrayData::TypeName(n) => Some((n.0.to_string(), span_of(n))),
@@ -920,7 +1063,11 @@ impl<'a> Collector<'a> {
                 let is_user = name.as_ref().is_some_and(|(n, _)| self.user_functions.contains(n));
                 if let Some((n, sp)) = name {
                     let in_function = self.current_function.as_ref().map(|(n, _)| n.clone());
-                    self.s.calls.push(Call { name: n, name_span: sp, span: span_of(e), in_function });
+                    let first_arg_name = args.first().and_then(|a| match &a.content {
+                        ast::ExprData::Variable(id) => Some(id.0.to_string()),
+                        _ => None,
+                    });
+                    self.s.calls.push(Call { name: n, name_span: sp, span: span_of(e), in_function, args: args.iter().map(span_of).collect(), first_arg_name });
                 }
                 for a in args {
                     self.arg_context = is_user;
@@ -944,6 +1091,46 @@ impl<'a> Collector<'a> {
             | ast::ExprData::DoubleConst(_) => {}
         }
     }
+}
+
+/// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
+/// constants, subpass inputs, separate texture and sampler uniforms)?
+fn vulkan_source(text: &str) -> bool {
+    let squeezed: String = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    squeezed.contains("push_constant")
+        || squeezed.contains("subpassInput")
+        || squeezed.contains("input_attachment_index")
+        || squeezed.contains("GL_KHR_vulkan_glsl")
+        || squeezed.contains("uniform sampler ")
+        || squeezed.contains("uniform samplerShadow ")
+        || ["texture2D", "texture3D", "textureCube", "texture2DArray"].iter().any(|t| squeezed.contains(&format!("uniform {t} ")))
+        || squeezed.split("layout").skip(1).any(|l| {
+            let inside = l.trim_start().strip_prefix('(').and_then(|r| r.split(')').next()).unwrap_or("");
+            inside.split(',').any(|item| item.trim().starts_with("set"))
+        })
+}
+
+/// Vulkan GLSL shows itself by what only Vulkan has.
+fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
+    let layout_vulkan = s.globals.iter().any(|g| {
+        g.layout.iter().any(|(k, _)| matches!(k.as_str(), "set" | "push_constant" | "constant_id" | "input_attachment_index"))
+    });
+    let separate = s.globals.iter().any(|g| g.storage == Storage::Uniform && matches!(g.ty.base.as_str(), "sampler" | "samplerShadow" | "texture2D" | "textureCube" | "texture2DArray" | "texture3D"));
+    layout_vulkan
+        || separate
+        || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Target::Unresolved)
+        || original.contains("GL_KHR_vulkan_glsl")
+}
+
+/// The qualifiers of one declaration, as written.
+#[derive(Debug, Default)]
+struct Quals {
+    interp: Option<Interp>,
+    centroid: bool,
+    storage: Option<(Storage, Range<usize>)>,
+    layout_span: Option<Range<usize>>,
+    layout: Vec<(String, Option<i64>)>,
+    layout_items: Vec<(String, Range<usize>)>,
 }
 
 fn location_of(layout: &[(String, Option<i64>)]) -> Option<u32> {

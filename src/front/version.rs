@@ -212,10 +212,45 @@ pub fn blank_extensions(text: &str) -> String {
     String::from_utf8(out).unwrap_or_else(|_| text.to_string())
 }
 
+/// Keywords an `#extension` directive of the file makes reserved before their core version
+/// (`buffer` with GL_ARB_shader_storage_buffer_object in a 4.20 shader).
+fn extension_keywords(text: &str) -> Vec<&'static str> {
+    const BY_EXTENSION: &[(&str, &[&str])] = &[
+        ("GL_ARB_shader_storage_buffer_object", &["buffer", "coherent", "volatile", "restrict", "readonly", "writeonly"]),
+        ("GL_ARB_compute_shader", &["shared"]),
+        ("GL_ARB_shader_image_load_store", &["coherent", "volatile", "restrict", "readonly", "writeonly"]),
+        ("GL_ARB_gpu_shader5", &["precise", "sample"]),
+        ("GL_ARB_sample_shading", &["sample"]),
+        ("GL_ARB_shader_subroutine", &["subroutine"]),
+        ("GL_ARB_tessellation_shader", &["patch"]),
+        ("GL_ARB_explicit_attrib_location", &["layout"]),
+        ("GL_ARB_separate_shader_objects", &["layout"]),
+        ("GL_ARB_uniform_buffer_object", &["layout"]),
+        ("GL_EXT_gpu_shader4", &["flat", "noperspective", "centroid"]),
+    ];
+    let clean = blank_comments(text);
+    let clean = String::from_utf8_lossy(&clean);
+    let mut out = Vec::new();
+    for line in clean.lines() {
+        let t = line.trim_start();
+        let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("extension")) else { continue };
+        let name = rest.trim_start().split(|c: char| c.is_whitespace() || c == ':').next().unwrap_or("");
+        for (ext, words) in BY_EXTENSION {
+            if *ext == name {
+                out.extend_from_slice(words);
+            }
+        }
+    }
+    out
+}
+
 /// Renames identifiers that are keywords in 4.50 but not in `version`, keeping lengths.
-pub fn rename_new_keywords(text: &str, version: &Version) -> (String, Renames) {
+/// `directives` is the text whose `#extension` lines count (the file as written).
+pub fn rename_new_keywords(text: &str, version: &Version, directives: &str) -> (String, Renames) {
     let v = version.desktop_equivalent();
-    let gated: Vec<&str> = NEWER_KEYWORDS.iter().filter(|(_, since)| *since > v).map(|(k, _)| *k).collect();
+    let enabled = extension_keywords(directives);
+    let gated: Vec<&str> =
+        NEWER_KEYWORDS.iter().filter(|(k, since)| *since > v && !enabled.contains(k)).map(|(k, _)| *k).collect();
     let mut renames = Renames::default();
     if gated.is_empty() {
         return (text.to_string(), renames);
@@ -295,7 +330,7 @@ mod tests {
     fn renames_new_keywords_keeping_length() {
         let src = "#version 330 core\nin float sample; // sample\nvoid main(){ float x = sample; }";
         let v = parse_version(src).unwrap();
-        let (out, renames) = rename_new_keywords(src, &v);
+        let (out, renames) = rename_new_keywords(src, &v, src);
         assert_eq!(out.len(), src.len());
         assert!(!out.contains("float sample;"));
         assert!(out.contains("// sample"), "comments untouched");
@@ -303,7 +338,7 @@ mod tests {
         assert_eq!(renames.original(new), "sample");
         // Not renamed in 4.50.
         let src450 = src.replace("330", "450");
-        let (out450, r) = rename_new_keywords(&src450, &parse_version(&src450).unwrap());
+        let (out450, r) = rename_new_keywords(&src450, &parse_version(&src450).unwrap(), &src450);
         assert_eq!(out450, src450);
         assert!(r.to_original.is_empty());
     }
