@@ -621,26 +621,24 @@ impl Ctx<'_> {
             by_decl.entry(g.decl_span.start).or_insert(g);
         }
         for g in by_decl.values() {
+            let is_block = g.block.is_some();
             let drop = |name: &str| match name {
-                "row_major" | "column_major" | "shared" | "packed" => g.block.is_some() || g.storage == Storage::Uniform,
-                "index" => !dual_source,
+                "row_major" | "column_major" | "shared" | "packed" => is_block,
+                "index" => !is_block && !dual_source,
                 _ => false,
             };
-            if let Some(span) = &g.layout_span {
+            if let (Some(first), Some(last)) = (g.layout_items.first(), g.layout_items.last()) {
                 if g.layout_items.iter().any(|(n, _)| drop(n)) {
-                    let kept: Vec<&str> =
+                    let mut kept: Vec<&str> =
                         g.layout_items.iter().filter(|(n, _)| !drop(n)).map(|(_, sp)| &s.text[sp.clone()]).collect();
-                    let text = if kept.is_empty() { String::new() } else { format!("layout({})", kept.join(", ")) };
-                    // Items the rewrite adds go right after `layout(`; keep that position.
-                    let open = s.text[span.clone()].find('(').map(|i| span.start + i + 1).unwrap_or(span.start);
-                    self.edits.replace(span.start..open, "");
-                    self.edits.replace(open..span.end, text.strip_prefix("layout(").map(|t| t.to_string()).unwrap_or_default());
-                    if kept.is_empty() {
-                        // `layout(set = 0, binding = 1) ` may still be inserted at `open`.
-                        self.edits.insert(open, "layout(");
-                        self.edits.insert(span.end, "std140)");
-                    } else {
-                        self.edits.insert(open, "layout(");
+                    if kept.is_empty() && is_block {
+                        // `layout()` is not GLSL: a block keeps the packing naga uses anyway.
+                        kept.push(if g.storage == Storage::Buffer { "std430" } else { "std140" });
+                    }
+                    if !kept.is_empty() {
+                        // One edit over the items only: what `add_layout` inserts right
+                        // after `layout(` stays in front of them.
+                        self.edits.replace(first.1.start..last.1.end, kept.join(", "));
                     }
                 }
             }
