@@ -194,6 +194,9 @@ impl Ctx<'_> {
                         continue;
                     }
                     self.storage_keyword(first);
+                    if idxs.len() == 1 {
+                        self.flat_integer_output(first);
+                    }
                     let kind = if is_vertex_input(s, first.storage) {
                         Some(&mut vertex_inputs)
                     } else if is_fragment_output(s, first.storage) {
@@ -232,6 +235,7 @@ impl Ctx<'_> {
                             };
                             let interp = match g.interp {
                                 Some(i) => format!("{} ", interp_word(i)),
+                                None if self.needs_flat(g) => "flat ".to_string(),
                                 None => String::new(),
                             };
                             let dir = storage_word(s.stage, g.storage);
@@ -284,6 +288,24 @@ impl Ctx<'_> {
             }
             let close = self.s.text[..body.end].rfind('}').unwrap_or(body.end);
             self.edits.insert(close, format!("{}\n", self.epilogue));
+        }
+    }
+
+    /// Whether `g` is an integer varying naga needs marked `flat` (GLSL interpolates no
+    /// integer, and requires `flat` only on the fragment side; naga wants it on both).
+    fn needs_flat(&self, g: &crate::front::syntax::Global) -> bool {
+        g.interp.is_none()
+            && g.block.is_none()
+            && g.ty.is_integer()
+            && matches!(g.storage, Storage::Out | Storage::Varying | Storage::In)
+            && !is_vertex_input(self.s, g.storage)
+            && !is_fragment_output(self.s, g.storage)
+    }
+
+    fn flat_integer_output(&mut self, g: &crate::front::syntax::Global) {
+        if self.needs_flat(g) {
+            let at = g.storage_span.as_ref().map(|s| s.start).unwrap_or(g.decl_span.start);
+            self.edits.insert(at, "flat ");
         }
     }
 
@@ -498,6 +520,7 @@ impl Ctx<'_> {
             ("gl_InstanceID" | "gl_InstanceIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_InstanceIndex)"),
             ("gl_PointSize", _) => self.edits.replace(u.span.clone(), "effectc_PointSize"),
             ("gl_ClipDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
+            ("gl_CullDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_CullDistance"),
             _ => {}
         }
     }
@@ -822,6 +845,10 @@ impl Ctx<'_> {
         if s.stage == StageKind::Vertex && unresolved("gl_ClipDistance") {
             // User clip planes need a WebGPU feature; the distances are computed, not used.
             h.push_str("float effectc_ClipDistance[8];\n");
+        }
+        if s.stage == StageKind::Vertex && unresolved("gl_CullDistance") {
+            // Cull distances have no WebGPU equivalent; computed, not used.
+            h.push_str("float effectc_CullDistance[8];\n");
         }
         if self.need_mat2_helper {
             h.push_str("mat2 effectc_mat2(vec4 v) { return mat2(v.xy, v.zw); }\n");

@@ -59,6 +59,10 @@ impl GlslType {
     pub fn element(&self) -> GlslType {
         GlslType { base: self.base.clone(), dims: self.dims.iter().skip(1).cloned().collect() }
     }
+    /// Integer scalar or vector (`int`, `uvec3`, …): never interpolated, so `flat` in effect.
+    pub fn is_integer(&self) -> bool {
+        matches!(self.base.as_str(), "int" | "uint") || ["ivec", "uvec"].iter().any(|p| self.base.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")))
+    }
     /// Opaque (sampler) base type.
     pub fn is_sampler(&self) -> bool {
         sampler_parts(&self.base).is_some()

@@ -487,14 +487,17 @@ impl Pair<'_> {
                 .push(d.with_help(format!("declare the {bt} input as `{want};`")));
         }
         let relaxed = qualifiers_relaxed(a, b);
-        let (ia, ib) = (
-            ga.interp.unwrap_or(Interp::Smooth),
-            gb.interp.unwrap_or(Interp::Smooth),
-        );
+        // Integers are never interpolated: without a qualifier they are `flat` in effect.
+        let effective = |g: &Global| match g.interp {
+            Some(i) => i,
+            None if g.ty.is_integer() => Interp::Flat,
+            None => Interp::Smooth,
+        };
+        let (ia, ib) = (effective(ga), effective(gb));
         if ia != ib {
             let shown = |g: &Global, i: Interp| match g.interp {
                 Some(_) => format!("`{}`", interp_text(i)),
-                None => "`smooth` (no qualifier)".to_string(),
+                None => format!("`{}` (no qualifier)", interp_text(i)),
             };
             let message = format!(
                 "`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage",

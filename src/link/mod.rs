@@ -33,6 +33,7 @@
 //! | `E0210` | error    | explicit `layout(location)` values differ |
 //! | `E0211` | error    | interface blocks of the same block name differ (members, order, types, qualifiers, array size, location) |
 //! | `E0212` | error    | a geometry-stage input is not an array |
+//! | `E0213` | error    | GLSL ES 3.00+: a fragment stage with several outputs leaves one without `layout(location)` |
 //! | `E0220` | error    | a `[uniforms]` entry names no declared uniform |
 //! | `E0221` | error    | a `[uniforms]` default does not fit the declared type |
 //! | `E0222` | error    | a `semantic` provides a type the uniform is not declared with |
@@ -79,6 +80,7 @@ pub const E_CENTROID: &str = "E0209";
 pub const E_LOCATION: &str = "E0210";
 pub const E_BLOCK_MISMATCH: &str = "E0211";
 pub const E_NOT_ARRAYED: &str = "E0212";
+pub const E_ES_OUTPUT_LOCATION: &str = "E0213";
 pub const E_MANIFEST_UNKNOWN: &str = "E0220";
 pub const E_MANIFEST_VALUE: &str = "E0221";
 pub const E_MANIFEST_SEMANTIC: &str = "E0222";
@@ -128,6 +130,10 @@ pub const CODES: &[(&str, &str)] = &[
     (E_LOCATION, "explicit locations differ"),
     (E_BLOCK_MISMATCH, "interface blocks of the same name differ"),
     (E_NOT_ARRAYED, "geometry input is not an array"),
+    (
+        E_ES_OUTPUT_LOCATION,
+        "GLSL ES fragment output without a location beside others",
+    ),
     (
         E_MANIFEST_UNKNOWN,
         "manifest uniform is not declared by any stage",
@@ -184,9 +190,43 @@ pub fn check_interface(stages: &[StageSyntax]) -> Vec<Diagnostic> {
     for pair in graphics.windows(2) {
         interface::check_pair(pair[0], pair[1], &mut out);
     }
+    for s in &graphics {
+        es_fragment_output_locations(s, &mut out);
+    }
     names::check(&graphics, &mut out);
     uniforms::check(&graphics, &mut out);
     out
+}
+
+/// GLSL ES 3.00 §4.3.8.2: with more than one fragment output, every one needs a location
+/// (desktop GL can bind them from the API, ES cannot).
+fn es_fragment_output_locations(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
+    if s.stage != StageKind::Fragment || !s.version.is_es() || s.version.number < 300 {
+        return;
+    }
+    let outputs: Vec<&Global> = s
+        .globals
+        .iter()
+        .filter(|g| g.storage == crate::front::syntax::Storage::Out && !is_builtin(s, g))
+        .collect();
+    if outputs.len() < 2 {
+        return;
+    }
+    for g in outputs.iter().filter(|g| g.location.is_none()) {
+        out.push(
+            Diagnostic::error(
+                E_ES_OUTPUT_LOCATION,
+                format!(
+                    "fragment output `{}` has no `layout(location)`, but the stage has {} outputs",
+                    s.original_name(&g.name),
+                    outputs.len()
+                ),
+            )
+            .at(s.file, g.name_span.clone(), "declared without a location")
+            .with_note("in GLSL ES 3.00 and later, when a fragment stage has more than one output, every output needs `layout(location = N)`")
+            .with_help(format!("declare it as `layout(location = N) out {} {};`", type_text(s, &g.ty), s.original_name(&g.name))),
+        );
+    }
 }
 
 /// `effect.toml` against the stages' declarations: every `[uniforms]` default names a
@@ -244,9 +284,13 @@ pub(crate) fn type_text(s: &StageSyntax, ty: &GlslType) -> String {
     .to_string()
 }
 
-/// Types of two stages' declarations equal (base names compared as written).
+/// Types of two stages' declarations equal (base names compared as written). An implicitly
+/// sized array (`vec4 a[]`) takes its size at link time, so it matches any size of the
+/// other stage's (glslang merges them the same way).
 pub(crate) fn same_type(a: &StageSyntax, at: &GlslType, b: &StageSyntax, bt: &GlslType) -> bool {
-    a.original_name(&at.base) == b.original_name(&bt.base) && at.dims == bt.dims
+    a.original_name(&at.base) == b.original_name(&bt.base)
+        && at.dims.len() == bt.dims.len()
+        && at.dims.iter().zip(&bt.dims).all(|(x, y)| x.is_none() || y.is_none() || x == y)
 }
 
 /// The qualifier as written in GLSL.
