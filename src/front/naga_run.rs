@@ -50,12 +50,19 @@ pub enum Outcome {
 
 /// The validator every backend output goes through: all checks, WebGPU capabilities.
 pub fn validator() -> naga::valid::Validator {
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), Capabilities::default())
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), webgpu_capabilities())
+}
+
+/// What every WebGPU implementation has: naga's defaults plus the half-float packing
+/// built-ins (`pack2x16float`/`unpack2x16float`/`quantizeToF16` are core WGSL; naga gates
+/// them behind a capability wgpu grants on every backend).
+pub fn webgpu_capabilities() -> Capabilities {
+    Capabilities::default() | Capabilities::SHADER_FLOAT16_IN_FLOAT32
 }
 
 /// Capabilities a desktop GL 4.6 implementation has that WebGPU's defaults lack.
 pub fn gl_capabilities() -> Capabilities {
-    Capabilities::default()
+    webgpu_capabilities()
         | Capabilities::IMMEDIATES
         | Capabilities::FLOAT64
         | Capabilities::PRIMITIVE_INDEX
@@ -88,10 +95,10 @@ fn needed_capabilities(module: &naga::Module) -> Vec<String> {
         }))
         .unwrap_or(false)
     };
-    if valid(Capabilities::default()) {
+    if valid(webgpu_capabilities()) {
         return Vec::new();
     }
-    let extra = gl_capabilities() - Capabilities::default();
+    let extra = gl_capabilities() - webgpu_capabilities();
     extra
         .iter_names()
         .filter(|(_, cap)| !valid(gl_capabilities() - *cap))

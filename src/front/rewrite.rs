@@ -556,6 +556,7 @@ impl Ctx<'_> {
                 self.edits.insert(close, ", 0.0");
                 continue;
             }
+            self.shadow_bias(c);
             if c.name == "texture" && c.args.len() == 2 {
                 if let Some(sampler) = self.integer_sampler_text(c) {
                     // GL samples integer textures with NEAREST filtering (they are incomplete
@@ -582,17 +583,59 @@ impl Ctx<'_> {
     /// For `texture(s, P)` on a 2D integer sampler `s` (a global or a parameter), the
     /// rewritten sampler expression.
     fn integer_sampler_text(&self, c: &crate::front::syntax::Call) -> Option<String> {
-        let s = self.s;
         let name = c.first_arg_name.as_deref()?;
         let integer = |ty: &str| matches!(ty, "isampler2D" | "usampler2D" | "isampler2DRect" | "usampler2DRect");
+        match self.first_arg_sampler(c)? {
+            FirstArg::Param(ty) => integer(&ty).then(|| format!("{}({name}, {name}_sampler)", combined_ctor(&ty))),
+            FirstArg::Global(g) if integer(&g.ty.base) && !g.ty.is_array() => {
+                let t = self.plan.texture(&g.name)?;
+                Some(format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name))
+            }
+            FirstArg::Global(_) => None,
+        }
+    }
+
+    /// The declaration the call's first argument (a bare identifier) names: a parameter of
+    /// the enclosing function, else a uniform.
+    fn first_arg_sampler(&self, c: &crate::front::syntax::Call) -> Option<FirstArg<'_>> {
+        let s = self.s;
+        let name = c.first_arg_name.as_deref()?;
         if let Some(f) = c.in_function.as_ref().and_then(|f| s.functions.iter().find(|x| &x.name == f && x.is_definition)) {
             if let Some(p) = f.params.iter().find(|p| p.name.as_deref() == Some(name)) {
-                return integer(&p.ty.base).then(|| format!("{}({name}, {name}_sampler)", combined_ctor(&p.ty.base)));
+                return Some(FirstArg::Param(p.ty.base.clone()));
             }
         }
-        let g = s.global(name).filter(|g| g.storage == Storage::Uniform && integer(&g.ty.base) && !g.ty.is_array())?;
-        let t = self.plan.texture(&g.name)?;
-        Some(format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name))
+        s.global(name).filter(|g| g.storage == Storage::Uniform).map(FirstArg::Global)
+    }
+
+    /// `texture(shadowSampler, P, bias)`: naga's depth-compare sampling takes no bias (nor
+    /// does WGSL's `textureSampleCompare`). The bias only moves the level of detail, which a
+    /// comparison of a depth texture without mipmaps (the usual shadow map) never uses:
+    /// the bias is dropped, with a note.
+    fn shadow_bias(&mut self, c: &crate::front::syntax::Call) {
+        let base_args = match c.name.as_str() {
+            "texture" | "textureProj" | "shadow2D" | "shadow2DProj" | "shadow1D" | "shadow1DProj" => 2,
+            "textureOffset" | "textureProjOffset" => 3,
+            _ => return,
+        };
+        if c.args.len() != base_args + 1 {
+            return;
+        }
+        let shadow = match self.first_arg_sampler(c) {
+            Some(FirstArg::Param(ty)) => ty.ends_with("Shadow"),
+            Some(FirstArg::Global(g)) => g.ty.base.ends_with("Shadow"),
+            None => false,
+        };
+        if !shadow {
+            return;
+        }
+        let bias = c.args[base_args].clone();
+        self.edits.delete(c.args[base_args - 1].end..bias.end);
+        self.diags.push(
+            Diagnostic::note("N0103", "the bias of this shadow lookup is dropped")
+                .at(self.s.file, bias, "level-of-detail bias on a depth comparison")
+                .with_note("naga and WGSL compare depth without a bias; it changes nothing unless the depth texture has mipmaps"),
+        );
     }
 
     /// Sampler members leave struct definitions (they became their own bindings); structs
@@ -878,6 +921,13 @@ impl Ctx<'_> {
 
 /// Opaque uniform types that stay their own declarations (not in the uniform block, not
 /// split like combined samplers).
+/// What the first argument of a built-in call names.
+enum FirstArg<'a> {
+    /// A parameter of the enclosing function, by its type.
+    Param(String),
+    Global(&'a crate::front::syntax::Global),
+}
+
 pub fn is_unblocked_opaque(base: &str) -> bool {
     base == "atomic_uint" || base.starts_with("image") || base.starts_with("iimage") || base.starts_with("uimage")
 }
