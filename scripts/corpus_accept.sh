@@ -25,9 +25,9 @@ for d in "$corpus"/*/; do
     else
         glslangValidator -l $files >/dev/null 2>&1; g=$?
     fi
-    "$bin" check --color never $files > /tmp/effectc-corpus.out 2>&1; e=$?
+    "$bin" check --color never $files > "$spv/effectc.out" 2>&1; e=$?
     if [ $g -eq 0 ] && [ $e -eq 0 ]; then both=$((both + 1))
-    elif [ $g -eq 0 ]; then only_glslang=$((only_glslang + 1)); echo "glslang only: $d  $(grep -m1 -E '^error' /tmp/effectc-corpus.out)"
+    elif [ $g -eq 0 ]; then only_glslang=$((only_glslang + 1)); echo "glslang only: $d  $(grep -m1 -E '^error' "$spv/effectc.out")"
     elif [ $e -eq 0 ]; then only_effectc=$((only_effectc + 1)); echo "effectc only: $d"
     else neither=$((neither + 1)); fi
 done

@@ -53,7 +53,8 @@ const FUNCTIONS: &[&str] = &[
     "memoryBarrierImage", "groupMemoryBarrier", "subpassLoad", "anyInvocation", "allInvocations",
     "allInvocationsEqual", "anyInvocationARB", "allInvocationsARB", "allInvocationsEqualARB",
     "ballotARB", "readInvocationARB", "readFirstInvocationARB", "subgroupBallot", "subgroupElect",
-    "nonuniformEXT",
+    "nonuniformEXT", "sparseTextureLodARB", "sparseTexelFetchARB", "sparseTextureOffsetARB",
+    "sparseTextureGradARB", "sparseTextureGatherARB", "sparseTexelsResidentARB", "sparseTextureClampARB",
 ];
 
 /// Built-in variables of the compatibility profile (removed from core 1.40+/3.xx).
@@ -104,6 +105,7 @@ const TYPES: &[&str] = &[
     "iimage2DArray", "uimage1D", "uimage2D", "uimage3D", "uimageCube", "uimage2DArray", "subpassInput",
     "subpassInputMS", "isubpassInput", "usubpassInput", "int64_t", "uint64_t", "i64vec2", "i64vec3",
     "i64vec4", "u64vec2", "u64vec3", "u64vec4", "float16_t", "f16vec2", "f16vec3", "f16vec4",
+    "accelerationStructureEXT", "rayQueryEXT",
 ];
 
 /// Built-in functions naga 30's GLSL front implements (its `builtins.rs`). For these an
@@ -135,14 +137,29 @@ const NAGA_VARIABLES: &[&str] = &[
 
 /// Whether `name` is a built-in function of GLSL that naga's GLSL front does not implement.
 pub fn is_function_naga_lacks(name: &str) -> bool {
-    (FUNCTIONS.contains(&name) || name.starts_with("subgroup")) && !NAGA_FUNCTIONS.contains(&name)
+    (FUNCTIONS.contains(&name) || name.starts_with("subgroup") || name.starts_with("rayQuery"))
+        && !NAGA_FUNCTIONS.contains(&name)
 }
+
+/// Built-in variables of the GL_EXT_/GL_ARB_/GL_NV_ extensions seen in practice (shading
+/// rate, barycentrics, fragment density, subgroups, multiview, stencil export).
+const EXTENSION_VARIABLES: &[&str] = &[
+    "gl_ShadingRateEXT", "gl_PrimitiveShadingRateEXT", "gl_FragSizeEXT", "gl_FragInvocationCountEXT",
+    "gl_BaryCoordEXT", "gl_BaryCoordNoPerspEXT", "gl_BaryCoordNV", "gl_BaryCoordNoPerspNV",
+    "gl_SubgroupSize", "gl_SubgroupInvocationID", "gl_SubgroupEqMask", "gl_SubgroupGeMask", "gl_SubgroupGtMask",
+    "gl_SubgroupLeMask", "gl_SubgroupLtMask", "gl_NumSubgroups", "gl_SubgroupID", "gl_FragStencilRefARB",
+    "gl_ViewportMask", "gl_ViewIndex", "gl_DeviceIndex", "gl_FragFullyCoveredNV", "gl_SecondaryPositionNV",
+    "gl_WarpIDNV", "gl_SMIDNV", "gl_ThreadInWarpNV", "gl_WarpSizeNV", "gl_HelperInvocation",
+];
 
 /// Whether `name` is a built-in variable the program's version and profile declare and
 /// naga's GLSL front does not.
 pub fn is_variable_naga_lacks(name: &str, version: &Version) -> bool {
     if NAGA_VARIABLES.contains(&name) {
         return false;
+    }
+    if EXTENSION_VARIABLES.contains(&name) {
+        return true;
     }
     // Output-only and stage-specific ones effectc rewrites are not listed here.
     const CORE_NAGA_LACKS: &[&str] = &[

@@ -1,6 +1,8 @@
 //! The GLSL front: syntax analysis of desktop GLSL, rewrite to GLSL 4.50, naga parse.
 //!
 //! - [`version`]: the `#version` line and identifiers that are keywords in 4.50 only.
+//! - [`lexical`]: same-length masks for legal GLSL glsl-lang cannot lex (wide hex literals,
+//!   `debugPrintfEXT`, explicit arithmetic types, buffer references).
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
 //! - [`edits`]: text edits with an offset map back to the user's file.
 //! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
@@ -11,6 +13,7 @@ pub mod builtins;
 pub mod edits;
 pub mod syntax;
 pub mod version;
+pub mod lexical;
 pub mod plan;
 pub mod rewrite;
 pub mod naga_run;

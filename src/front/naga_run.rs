@@ -121,6 +121,9 @@ fn limitation(kind: &ErrorKind, version: &Version) -> Option<String> {
             format!("the built-in `{name}`")
         }
         ErrorKind::UnknownType(name) if builtins::is_type(name) => format!("the type `{name}`"),
+        ErrorKind::SemanticError(msg) if msg.contains("override-expression") => {
+            "a specialization constant where naga needs a constant (an array size)".to_string()
+        }
         ErrorKind::SemanticError(msg) => {
             let name = msg.strip_prefix("Unknown function '").and_then(|r| r.strip_suffix('\''));
             match name {
@@ -147,6 +150,12 @@ fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
 /// address spaces (WGSL's) reject some of them (a `bool` or a `float[N]` inside a struct).
 /// That is naga's limitation, not an error in the program.
 fn layout_limitation(module: &naga::Module, err: &naga::valid::ValidationError) -> Option<String> {
+    if let naga::valid::ValidationError::Type { source: naga::valid::TypeError::InvalidArrayBaseType(base), .. } = err {
+        // `uniform sampler s[3];`, `uniform texture2D t[2];`: GLSL arrays of opaque
+        // handles, which naga's GLSL front types as plain arrays (binding arrays elsewhere).
+        let opaque = matches!(module.types[*base].inner, naga::TypeInner::Image { .. } | naga::TypeInner::Sampler { .. } | naga::TypeInner::AccelerationStructure { .. });
+        return opaque.then(|| "an array of textures or samplers (naga's GLSL front has no binding arrays)".to_string());
+    }
     let naga::valid::ValidationError::GlobalVariable { handle, source, .. } = err else { return None };
     match source {
         naga::valid::GlobalVariableError::Alignment(..) | naga::valid::GlobalVariableError::InvalidType(..) => {

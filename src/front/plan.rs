@@ -244,18 +244,31 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             plan.members.push(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
         }
     }
+    // Declarations that name `set = 0` and a binding keep both (Vulkan GLSL): the bindings
+    // handed out here skip theirs.
+    let reserved: std::collections::BTreeSet<u32> = stages
+        .iter()
+        .flat_map(|s| &s.globals)
+        .filter(|g| g.layout.iter().any(|(k, v)| k == "set" && *v == Some(0)))
+        .filter_map(|g| g.layout.iter().find(|(k, _)| k == "binding").and_then(|(_, v)| *v))
+        .filter_map(|b| u32::try_from(b).ok())
+        .collect();
+    let mut next = || {
+        while reserved.contains(&next_binding) {
+            next_binding += 1;
+        }
+        next_binding += 1;
+        next_binding - 1
+    };
     for t in &mut plan.textures {
-        t.texture_binding = next_binding;
-        t.sampler_binding = next_binding + 1;
-        next_binding += 2;
+        t.texture_binding = next();
+        t.sampler_binding = next();
     }
     for b in plan.user_blocks.values_mut() {
-        *b = next_binding;
-        next_binding += 1;
+        *b = next();
     }
     for b in plan.opaque.values_mut() {
-        *b = next_binding;
-        next_binding += 1;
+        *b = next();
     }
     plan.varyings = varying_locations(stages);
     for name in plan.block_structs.clone() {

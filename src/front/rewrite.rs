@@ -69,7 +69,8 @@ struct Ctx<'a> {
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
 /// constructs go to the returned diagnostics.
 pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Diagnostic>) {
-    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new(), limitation: None };
+    let limitation = s.unsupported.as_ref().map(|(construct, span)| crate::front::naga_run::Limitation { construct: construct.clone(), span: Some(span.clone()) });
+    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new(), limitation };
     c.version();
     c.declarations();
     c.uses();
@@ -384,7 +385,22 @@ impl Ctx<'_> {
                     };
                     self.edits.replace(u.span.clone(), text);
                 }
-                Target::Unresolved => self.builtin_use(u),
+                Target::Unresolved => {
+                    if self.limitation.is_none() && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version) {
+                        // naga reports these unevenly ("unknown variable", or a field
+                        // lookup failing on `gl_BaryCoordEXT.x`): decide before asking it.
+                        self.limitation = Some(crate::front::naga_run::Limitation { construct: format!("the built-in `{}`", u.name), span: Some(u.span.clone()) });
+                    }
+                    self.builtin_use(u)
+                }
+            }
+        }
+        for p in &s.precision_statements {
+            // `precision highp sampler2DShadow;` (GLSL ES): naga takes precision for
+            // `float` and `int` only, and it means nothing on desktop.
+            let text = &s.text[p.clone()];
+            if !text.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| matches!(w, "float" | "int")) {
+                self.edits.delete(p.clone());
             }
         }
     }
@@ -928,8 +944,13 @@ enum FirstArg<'a> {
     Global(&'a crate::front::syntax::Global),
 }
 
+/// Opaque uniforms that stay declarations of their own (with a binding): images, atomic
+/// counters, and Vulkan GLSL's separate textures, samplers and subpass inputs.
 pub fn is_unblocked_opaque(base: &str) -> bool {
-    base == "atomic_uint" || base.starts_with("image") || base.starts_with("iimage") || base.starts_with("uimage")
+    let kinds = ["image", "texture", "subpassInput"];
+    let of_kind = |b: &str| kinds.iter().any(|k| b.starts_with(k));
+    let integer = base.strip_prefix('i').or_else(|| base.strip_prefix('u')).is_some_and(of_kind);
+    base == "atomic_uint" || base == "sampler" || base == "samplerShadow" || of_kind(base) || integer
 }
 
 /// (columns, rows) of a matrix type name.

@@ -244,6 +244,12 @@ pub struct StageSyntax {
     pub file: FileId,
     pub stage: StageKind,
     pub version: Version,
+    /// A legal construct naga has no form of, found while masking the text for glsl-lang
+    /// (what, where): the stage is checked for syntax and interface only.
+    pub unsupported: Option<(String, Range<usize>)>,
+    /// Offsets of `pervertexEXT` qualifiers: the inputs they qualify are arrays with one
+    /// element per vertex, like a geometry stage's.
+    pub per_vertex: Vec<usize>,
     pub renames: Renames,
     /// Source after same-length keyword renames (offsets equal the original's).
     pub text: String,
@@ -306,7 +312,9 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
-    let (mut text, mut renames) = version::rename_new_keywords(&version::blank_extensions(original), &version, original);
+    let (text, mut renames) = version::rename_new_keywords(&version::blank_extensions(original), &version, original);
+    let masked = crate::front::lexical::mask(&text, &version::blank_comments(&text));
+    let mut text = masked.for_parser;
     let opts = glsl_lang::parse::ParseOptions {
         default_version: 110,
         // Vulkan GLSL's types (`texture2D`, `sampler`, `subpassInput`) are keywords there only.
@@ -357,7 +365,9 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         stage,
         version,
         renames,
-        text,
+        text: crate::front::lexical::restored(&text, &masked.restore),
+        unsupported: masked.unsupported,
+        per_vertex: masked.per_vertex,
         globals: Vec::new(),
         structs: Vec::new(),
         functions: Vec::new(),
@@ -460,6 +470,8 @@ struct Collector<'a> {
     user_functions: HashSet<String>,
     /// The expression being walked is a whole argument of a user-function call.
     arg_context: bool,
+    /// Macro-body occurrences already recorded (a macro expands at many sites).
+    macro_uses: HashSet<(String, usize)>,
 }
 
 impl<'a> Collector<'a> {
@@ -476,7 +488,7 @@ impl<'a> Collector<'a> {
                 _ => None,
             })
             .collect();
-        let mut c = Collector { s, scopes: Vec::new(), current_function: None, user_functions, arg_context: false };
+        let mut c = Collector { s, scopes: Vec::new(), current_function: None, user_functions, arg_context: false, macro_uses: HashSet::new() };
         for decl in &tu.0 {
             c.external(decl);
         }
@@ -1010,7 +1022,18 @@ impl<'a> Collector<'a> {
         if is_local && !matches!(target, Target::Param(..)) {
             return;
         }
-        self.s.uses.push(Use { name, target, span: span_of(id), index, field, user_call_arg, in_function });
+        let span = span_of(id);
+        if self.s.text.get(span.clone()) != Some(name.as_str()) {
+            // Expanded from a macro: glsl-lang gives the invocation's span. The name is
+            // written in `#define` bodies; record it there (once), so rewrites edit the body.
+            for at in macro_body_occurrences(&self.s.text, &name) {
+                if self.macro_uses.insert((name.clone(), at.start)) {
+                    self.s.uses.push(Use { name: name.clone(), target: target.clone(), span: at, index: None, field: None, user_call_arg, in_function: in_function.clone() });
+                }
+            }
+            return;
+        }
+        self.s.uses.push(Use { name, target, span, index, field, user_call_arg, in_function });
     }
 
     fn expr(&mut self, e: &ast::Expr) {
@@ -1099,6 +1122,31 @@ impl<'a> Collector<'a> {
 
 /// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
 /// constants, subpass inputs, separate texture and sampler uniforms)?
+/// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
+fn macro_body_occurrences(text: &str, name: &str) -> Vec<Range<usize>> {
+    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let mut out = Vec::new();
+    let mut line_start = 0;
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        if let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("define")) {
+            let body_from = line.len() - rest.len();
+            let rest_trim = rest.trim_start();
+            let macro_name_len = rest_trim.bytes().take_while(|b| is_ident(*b)).count();
+            let body = body_from + (rest.len() - rest_trim.len()) + macro_name_len;
+            let bytes = line.as_bytes();
+            for (i, _) in line[body..].match_indices(name) {
+                let (s, e) = (body + i, body + i + name.len());
+                if (s == 0 || !is_ident(bytes[s - 1])) && (e >= bytes.len() || !is_ident(bytes[e])) {
+                    out.push(line_start + s..line_start + e);
+                }
+            }
+        }
+        line_start += line.len();
+    }
+    out
+}
+
 fn vulkan_source(text: &str) -> bool {
     let squeezed: String = text.split_whitespace().collect::<Vec<_>>().join(" ");
     squeezed.contains("push_constant")

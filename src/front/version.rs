@@ -62,7 +62,7 @@ impl Version {
 }
 
 /// Strips `//` and `/* */` comments from a line-oriented scan, keeping offsets.
-fn blank_comments(text: &str) -> Vec<u8> {
+pub(crate) fn blank_comments(text: &str) -> Vec<u8> {
     let bytes = text.as_bytes();
     let mut out = bytes.to_vec();
     let mut i = 0;

@@ -55,6 +55,13 @@ fn arrayed_inputs(kind: StageKind) -> bool {
     )
 }
 
+/// Whether input `gi` of `s` has one element per vertex (a geometry or tessellation
+/// stage's, or a fragment input qualified `pervertexEXT`).
+fn input_arrayed(s: &StageSyntax, gi: usize) -> bool {
+    let g = &s.globals[gi];
+    arrayed_inputs(s.stage) || s.per_vertex.iter().any(|o| g.decl_span.contains(o))
+}
+
 /// Stages whose outputs are arrays with one element per vertex.
 fn arrayed_outputs(kind: StageKind) -> bool {
     kind == StageKind::TessControl
@@ -194,7 +201,7 @@ impl Pair<'_> {
         let mut ins: Vec<usize> = self.ins.loose.clone();
         ins.extend(self.ins.blocks.iter().copied());
         for bi in ins {
-            let in_slots = located_slots(b, &[bi], arrayed_inputs(b.stage));
+            let in_slots = located_slots(b, &[bi], input_arrayed(b, bi));
             if in_slots.is_empty() {
                 continue;
             }
@@ -442,7 +449,7 @@ impl Pair<'_> {
             base: ga.ty.base.clone(),
             dims: per_vertex(&ga.ty.dims, arrayed_outputs(a.stage)),
         };
-        let b_arrayed = arrayed_inputs(b.stage) && gb.ty.is_array();
+        let b_arrayed = input_arrayed(b, bi) && gb.ty.is_array();
         let tb = GlslType {
             base: gb.ty.base.clone(),
             dims: per_vertex(&gb.ty.dims, b_arrayed),

@@ -1,0 +1,327 @@
+//! Same-length masks over a stage's text for constructs glsl-lang cannot lex or parse.
+//!
+//! Legal GLSL that glsl-lang's grammar lacks is replaced, byte for byte, by text it takes,
+//! so every span stays the user's:
+//! - hex and octal literals above `INT_MAX` without a `u` suffix (`0xFFFFFFFF`, an `int`
+//!   with that bit pattern): zeroed for glsl-lang, put back for naga, which reads them;
+//! - `debugPrintfEXT("…", …)` calls (GL_EXT_debug_printf; glsl-lang has no string
+//!   literals): blanked for both parsers, they compute nothing;
+//! - explicit arithmetic types (`float32_t`, `u8vec4`, `uint64_t`, `f16mat3`;
+//!   GL_EXT_shader_explicit_arithmetic_types): the 32-bit ones are exact aliases and become
+//!   the core type for both parsers; 8/16/64-bit ones become the core type of their kind
+//!   for glsl-lang, and naga (which has none of them) is not asked: the stage is limited;
+//! - `buffer_reference` blocks (GL_EXT_buffer_reference), used as types: the block reads as
+//!   a struct for glsl-lang, and the stage is limited (naga has no buffer references);
+//! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited.
+
+use std::ops::Range;
+
+/// The masked text and what naga cannot be given.
+#[derive(Debug, Clone, Default)]
+pub struct Masked {
+    /// The text glsl-lang parses.
+    pub for_parser: String,
+    /// Spans to put back (with the original text) in what naga gets.
+    pub restore: Vec<(Range<usize>, String)>,
+    /// A construct naga has no form of, with its first span: the stage is checked for
+    /// syntax and interface only.
+    pub unsupported: Option<(String, Range<usize>)>,
+    /// Offsets of `pervertexEXT` qualifiers (their inputs have one element per vertex).
+    pub per_vertex: Vec<usize>,
+}
+
+/// Masks `text` (the stage after keyword renames; `clean` is the same text with comments blanked).
+pub fn mask(text: &str, clean: &[u8]) -> Masked {
+    let mut parser = text.as_bytes().to_vec();
+    let mut restore = Vec::new();
+    let mut per_vertex = Vec::new();
+    let mut unsupported: Option<(String, Range<usize>)> = None;
+    let mut limit = |what: String, span: Range<usize>| {
+        unsupported.get_or_insert((what, span));
+    };
+    let mut i = 0;
+    while i < clean.len() {
+        let c = clean[i];
+        if c == b'#' && line_start(clean, i) {
+            // Preprocessor lines keep their text (`#if X > 0xFFFF`, `#define` bodies are
+            // masked where the macro is used, not here).
+            while i < clean.len() && clean[i] != b'\n' {
+                i += 1;
+            }
+            continue;
+        }
+        if c.is_ascii_alphabetic() || c == b'_' {
+            let start = i;
+            while i < clean.len() && (clean[i].is_ascii_alphanumeric() || clean[i] == b'_') {
+                i += 1;
+            }
+            let word = std::str::from_utf8(&clean[start..i]).unwrap_or("");
+            if let Some((core, exact)) = explicit_arithmetic_type(word) {
+                parser[start..i].copy_from_slice(pad(&core, word.len()).as_bytes());
+                if !exact {
+                    limit(format!("the type `{word}` (GL_EXT_shader_explicit_arithmetic_types)"), start..i);
+                }
+            } else if let Some((mask, what)) = extension_word(word) {
+                parser[start..i].copy_from_slice(pad(mask, word.len()).as_bytes());
+                limit(what.to_string(), start..i);
+                if word == "pervertexEXT" {
+                    per_vertex.push(start);
+                }
+            } else if word == "debugPrintfEXT" {
+                if let Some(end) = call_end(clean, text.as_bytes(), i) {
+                    blank(&mut parser, start..end);
+                    i = end;
+                }
+            } else if word == "layout" {
+                if let Some(end) = buffer_reference(clean, &mut parser, start) {
+                    limit("`buffer_reference` blocks (GL_EXT_buffer_reference)".to_string(), start..end);
+                    i = end;
+                }
+            }
+            continue;
+        }
+        if c.is_ascii_digit() {
+            let start = i;
+            while i < clean.len() && (clean[i].is_ascii_alphanumeric() || clean[i] == b'.') {
+                i += 1;
+            }
+            let literal = std::str::from_utf8(&clean[start..i]).unwrap_or("");
+            if wide_int_literal(literal) {
+                let digits_from = if literal.starts_with("0x") || literal.starts_with("0X") { start + 2 } else { start + 1 };
+                restore.push((start..i, literal.to_string()));
+                for b in &mut parser[digits_from..i] {
+                    *b = b'0';
+                }
+            }
+            continue;
+        }
+        i += 1;
+    }
+    let for_parser = String::from_utf8(parser).unwrap_or_else(|_| text.to_string());
+    Masked { for_parser, restore, unsupported, per_vertex }
+}
+
+/// `text` (the parser's, possibly renamed further) with the masked literals put back.
+pub fn restored(text: &str, restore: &[(Range<usize>, String)]) -> String {
+    let mut out = text.to_string();
+    for (span, original) in restore {
+        if out.get(span.clone()).is_some_and(|t| t.len() == original.len()) {
+            out.replace_range(span.clone(), original);
+        }
+    }
+    out
+}
+
+/// Extension types and qualifiers glsl-lang lacks: what it reads instead, and what naga
+/// cannot take.
+fn extension_word(word: &str) -> Option<(&'static str, &'static str)> {
+    Some(match word {
+        "accelerationStructureEXT" => ("image2D", "ray queries (`accelerationStructureEXT`, GL_EXT_ray_query)"),
+        "rayQueryEXT" => ("int", "ray queries (`rayQueryEXT`, GL_EXT_ray_query)"),
+        "pervertexEXT" => ("", "per-vertex fragment inputs (`pervertexEXT`, GL_EXT_fragment_shader_barycentric)"),
+        _ => return None,
+    })
+}
+
+fn line_start(clean: &[u8], at: usize) -> bool {
+    clean[..at].iter().rev().take_while(|b| **b != b'\n').all(|b| b.is_ascii_whitespace())
+}
+
+fn blank(bytes: &mut [u8], span: Range<usize>) {
+    for b in &mut bytes[span] {
+        if *b != b'\n' && *b != b'\r' {
+            *b = b' ';
+        }
+    }
+}
+
+fn pad(word: &str, len: usize) -> String {
+    format!("{word:<len$}")
+}
+
+/// `(core type, exact)` for an explicit arithmetic type name: `f16vec3` → (`vec3`, false),
+/// `uint32_t` → (`uint`, true).
+fn explicit_arithmetic_type(word: &str) -> Option<(String, bool)> {
+    let scalar = |kind: &str, bits: &str| -> Option<(String, bool)> {
+        let exact = bits == "32";
+        let core = match (kind, bits) {
+            ("float", "16" | "32") => "float",
+            ("float", "64") => "double",
+            ("int", "8" | "16" | "32" | "64") => "int",
+            ("uint", "8" | "16" | "32" | "64") => "uint",
+            _ => return None,
+        };
+        Some((core.to_string(), exact))
+    };
+    for kind in ["float", "uint", "int"] {
+        if let Some(bits) = word.strip_prefix(kind).and_then(|r| r.strip_suffix("_t")) {
+            return scalar(kind, bits);
+        }
+    }
+    // f16vec3, i64vec2, u8vec4, f32mat3x4, f64mat2
+    let (prefix, rest) = word.split_at(1);
+    let bits_len = rest.bytes().take_while(u8::is_ascii_digit).count();
+    let (bits, shape) = rest.split_at(bits_len);
+    if !matches!(bits, "8" | "16" | "32" | "64") {
+        return None;
+    }
+    let n = |s: &str| matches!(s, "2" | "3" | "4");
+    let vector = shape.strip_prefix("vec").is_some_and(n);
+    let matrix = shape.strip_prefix("mat").is_some_and(|m| n(m) || m.split_once('x').is_some_and(|(a, b)| n(a) && n(b)));
+    let exact = bits == "32";
+    let core = match (prefix, vector, matrix) {
+        ("f", true, _) if bits != "8" => if bits == "64" { format!("d{shape}") } else { shape.to_string() },
+        ("f", _, true) if bits != "8" => if bits == "64" { format!("d{shape}") } else { shape.to_string() },
+        ("i", true, _) => format!("i{shape}"),
+        ("u", true, _) => format!("u{shape}"),
+        _ => return None,
+    };
+    (core.len() <= word.len()).then_some((core, exact))
+}
+
+/// Hex or octal integer literal without a `u` suffix above `INT_MAX` that still fits 32 bits.
+fn wide_int_literal(literal: &str) -> bool {
+    let value = if let Some(hex) = literal.strip_prefix("0x").or_else(|| literal.strip_prefix("0X")) {
+        u64::from_str_radix(hex, 16).ok()
+    } else if literal.len() > 1 && literal.starts_with('0') && literal.bytes().all(|b| b.is_ascii_digit()) {
+        u64::from_str_radix(&literal[1..], 8).ok()
+    } else {
+        None
+    };
+    value.is_some_and(|v| v > i32::MAX as u64 && v <= u32::MAX as u64)
+}
+
+/// The end (after `)`) of the call whose name ends before `at`, skipping string literals.
+fn call_end(clean: &[u8], raw: &[u8], at: usize) -> Option<usize> {
+    let mut i = at;
+    while i < clean.len() && clean[i].is_ascii_whitespace() {
+        i += 1;
+    }
+    if clean.get(i) != Some(&b'(') {
+        return None;
+    }
+    let mut depth = 0;
+    while i < raw.len() {
+        match raw[i] {
+            b'"' => {
+                i += 1;
+                while i < raw.len() && raw[i] != b'"' {
+                    i += if raw[i] == b'\\' { 2 } else { 1 };
+                }
+            }
+            b'(' => depth += 1,
+            b')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i + 1);
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    None
+}
+
+/// At `layout` of a `layout(… buffer_reference …) … buffer Name {` declaration, masks it into
+/// `struct Name {` (a forward declaration `… buffer Name;` is blanked). Returns the end of
+/// the masked head.
+fn buffer_reference(clean: &[u8], out: &mut [u8], at: usize) -> Option<usize> {
+    let after = at + "layout".len();
+    let open = after + clean[after..].iter().position(|b| !b.is_ascii_whitespace())?;
+    if clean.get(open) != Some(&b'(') {
+        return None;
+    }
+    let close = open + clean[open..].iter().position(|b| *b == b')')?;
+    let items = std::str::from_utf8(&clean[open..close]).ok()?;
+    if !items.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| w == "buffer_reference") {
+        return None;
+    }
+    // Qualifiers up to `buffer`, then the block name, then `{` or `;`.
+    let mut i = close + 1;
+    let mut keyword = None;
+    while i < clean.len() {
+        while i < clean.len() && clean[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        let start = i;
+        while i < clean.len() && (clean[i].is_ascii_alphanumeric() || clean[i] == b'_') {
+            i += 1;
+        }
+        match std::str::from_utf8(&clean[start..i]).ok()? {
+            "buffer" => {
+                keyword = Some(start);
+                break;
+            }
+            "readonly" | "writeonly" | "restrict" | "coherent" | "volatile" => {}
+            _ => return None,
+        }
+    }
+    let keyword = keyword?;
+    let mut j = keyword + 6;
+    while j < clean.len() && (clean[j].is_ascii_whitespace() || clean[j].is_ascii_alphanumeric() || clean[j] == b'_') {
+        j += 1;
+    }
+    match clean.get(j) {
+        Some(b';') => {
+            blank(out, at..j + 1);
+            Some(j + 1)
+        }
+        Some(b'{') => {
+            blank(out, at..keyword);
+            out[keyword..keyword + 6].copy_from_slice(b"struct");
+            Some(j)
+        }
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn masked(src: &str) -> Masked {
+        let m = mask(src, src.as_bytes());
+        assert_eq!(m.for_parser.len(), src.len());
+        m
+    }
+
+    #[test]
+    fn wide_hex_literals_are_zeroed_for_the_parser_only() {
+        let m = masked("uint a = 0xFFFFFFFF; int b = 0x7FFFFFFF; uint c = 0xFFFFFFFFu; int d = 037777777777;");
+        assert!(m.for_parser.contains("a = 0x00000000;"));
+        assert!(m.for_parser.contains("b = 0x7FFFFFFF;"), "fits int");
+        assert!(m.for_parser.contains("c = 0xFFFFFFFFu;"), "suffixed");
+        assert!(m.for_parser.contains("d = 000000000000;"));
+        let naga = restored(&m.for_parser, &m.restore);
+        assert!(naga.contains("a = 0xFFFFFFFF;") && naga.contains("d = 037777777777;"));
+        assert!(m.unsupported.is_none());
+    }
+
+    #[test]
+    fn debug_printf_calls_are_blanked() {
+        let m = masked("void main() { debugPrintfEXT(\"p = %f (%d)\", x, f(y)); z = 1; }");
+        assert!(m.for_parser.contains("{                                         ; z = 1; }"), "{}", m.for_parser);
+        assert!(m.restore.is_empty());
+    }
+
+    #[test]
+    fn explicit_arithmetic_types() {
+        let m = masked("uint32_t a; f32vec3 b; float16_t c; u8vec4 d; i64vec2 e; f64mat3x4 f; int g;");
+        assert!(m.for_parser.starts_with("uint     a; vec3    b;"), "32-bit aliases are exact: {}", m.for_parser);
+        assert!(m.for_parser.contains("float     c; uvec4  d; ivec2   e; dmat3x4   f; int g;"), "{}", m.for_parser);
+        let (what, span) = m.unsupported.expect("16-bit types are limited");
+        assert!(what.contains("float16_t"));
+        assert_eq!(span, 24..33);
+    }
+
+    #[test]
+    fn buffer_reference_blocks_read_as_structs() {
+        let src = "layout(buffer_reference) buffer Node;\nlayout(buffer_reference, std430) readonly buffer Verts { vec4 v[]; };\nlayout(push_constant) uniform PC { Verts verts; } pc;";
+        let m = masked(src);
+        assert!(m.for_parser.starts_with("                                     \n"), "{}", m.for_parser);
+        assert!(m.for_parser.contains("                                          struct Verts { vec4 v[]; };"), "{}", m.for_parser);
+        assert!(m.for_parser.contains("layout(push_constant) uniform PC"));
+        assert!(m.unsupported.expect("limited").0.contains("buffer_reference"));
+    }
+}
