@@ -12,7 +12,9 @@
 //!   for glsl-lang, and naga (which has none of them) is not asked: the stage is limited;
 //! - `buffer_reference` blocks (GL_EXT_buffer_reference), used as types: the block reads as
 //!   a struct for glsl-lang, and the stage is limited (naga has no buffer references);
-//! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited.
+//! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited;
+//! - precision qualifiers outside `precision` statements (`highp vec2 w` as a parameter or
+//!   block member, which naga's parser rejects): blanked; desktop GL and WGSL ignore them.
 
 use std::ops::Range;
 
@@ -35,6 +37,7 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
     let mut parser = text.as_bytes().to_vec();
     let mut restore = Vec::new();
     let mut per_vertex = Vec::new();
+    let mut previous_word_precision = false;
     let mut unsupported: Option<(String, Range<usize>)> = None;
     let mut limit = |what: String, span: Range<usize>| {
         unsupported.get_or_insert((what, span));
@@ -56,7 +59,12 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
                 i += 1;
             }
             let word = std::str::from_utf8(&clean[start..i]).unwrap_or("");
-            if let Some((core, exact)) = explicit_arithmetic_type(word) {
+            let after_precision = std::mem::replace(&mut previous_word_precision, word == "precision");
+            if matches!(word, "highp" | "mediump" | "lowp") && !after_precision {
+                // Precision qualifiers mean nothing on desktop and nothing to WGSL; naga's
+                // parser rejects them on parameters and block members.
+                blank(&mut parser, start..i);
+            } else if let Some((core, exact)) = explicit_arithmetic_type(word) {
                 parser[start..i].copy_from_slice(pad(&core, word.len()).as_bytes());
                 if !exact {
                     limit(format!("the type `{word}` (GL_EXT_shader_explicit_arithmetic_types)"), start..i);
@@ -296,6 +304,12 @@ mod tests {
         let naga = restored(&m.for_parser, &m.restore);
         assert!(naga.contains("a = 0xFFFFFFFF;") && naga.contains("d = 037777777777;"));
         assert!(m.unsupported.is_none());
+    }
+
+    #[test]
+    fn precision_qualifiers_leave_all_but_precision_statements() {
+        let m = masked("precision highp float; float f(highp vec2 w); uniform B { mediump mat3 n; };");
+        assert_eq!(m.for_parser, "precision highp float; float f(      vec2 w); uniform B {         mat3 n; };");
     }
 
     #[test]

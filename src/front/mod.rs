@@ -1,6 +1,8 @@
 //! The GLSL front: syntax analysis of desktop GLSL, rewrite to GLSL 4.50, naga parse.
 //!
 //! - [`version`]: the `#version` line and identifiers that are keywords in 4.50 only.
+//! - [`conditionals`]: `#if`/`#ifdef` resolved for the user's `#version`, with GL's predefined
+//!   macros (inactive groups blanked).
 //! - [`lexical`]: same-length masks for legal GLSL glsl-lang cannot lex (wide hex literals,
 //!   `debugPrintfEXT`, explicit arithmetic types, buffer references).
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
@@ -14,6 +16,7 @@ pub mod edits;
 pub mod syntax;
 pub mod version;
 pub mod lexical;
+pub mod conditionals;
 pub mod plan;
 pub mod rewrite;
 pub mod naga_run;

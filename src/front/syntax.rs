@@ -312,7 +312,9 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
-    let (text, mut renames) = version::rename_new_keywords(&version::blank_extensions(original), &version, original);
+    let unextended = version::blank_extensions(original);
+    let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
+    let (text, mut renames) = version::rename_new_keywords(&resolved, &version, original);
     let masked = crate::front::lexical::mask(&text, &version::blank_comments(&text));
     let mut text = masked.for_parser;
     let opts = glsl_lang::parse::ParseOptions {
