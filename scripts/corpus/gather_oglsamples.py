@@ -17,7 +17,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mirror import Mirror, write_program
+from mirror import Mirror, strip_cpp_comments, write_program
 
 STAGES = {"VERTEX": "vertex", "FRAGMENT": "fragment", "GEOMETRY": "geometry",
           "TESS_CONTROL": "tess-control", "TESS_EVALUATION": "tess-eval", "COMPUTE": "compute"}
@@ -69,10 +69,6 @@ def preprocess(m, path, args):
                 text += body.decode("latin-1")
                 break
     return text.encode("latin-1")
-
-
-def strip_comments(src):
-    return re.sub(r"//[^\n]*|/\*.*?\*/", "", src, flags=re.S)
 
 
 def enums(src):
@@ -128,8 +124,8 @@ def norm(vals, expr):
     return re.sub(r"\[([^\]]*)\]", idx, re.sub(r"this->", "", expr)).replace(" ", "")
 
 
-def sample_programs(m, src):
-    src = strip_comments(src)
+def sample_programs(src):
+    src = strip_cpp_comments(src)
     vals = enums(src)
     consts = dict(re.findall(r'(\w+)\s*(?:\(|=)\s*"([^"]+)"\s*\)?\s*;', src))
     arrays = {n: re.findall(r'"([^"]+)"', body)
@@ -202,7 +198,7 @@ def main():
         if not sample.startswith("gl-") or not m.exists(f"samples/{sample}.cpp"):
             continue
         progs = []
-        for key, shaders in sample_programs(m, m.text(f"samples/{sample}.cpp")).items():
+        for key, shaders in sample_programs(m.text(f"samples/{sample}.cpp")).items():
             if not shaders or any(sh is None or sh[0] is None or sh[1] is None for sh in shaders):
                 skipped.append(f"{sample}:{key}")
                 continue
