@@ -129,22 +129,35 @@ pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outc
     }
     let mut program = None;
     if readable && !stage_files.is_empty() {
-        let mut diags = Vec::new();
-        program = program::compile(&out.files, &stage_files, options, &mut diags);
-        if let Some(p) = &program {
-            let syntaxes: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
-            diags.extend(crate::link::check_interface(&syntaxes));
-            if let Some(e) = &effect {
-                diags.extend(crate::link::check_manifest(e, &syntaxes, &out.files));
-            }
-            if !diags.iter().any(Diagnostic::is_error) {
-                diags.extend(hazards::analyse(effect.as_ref(), p));
-            }
-        }
+        let (p, diags) = check_stages(&out.files, &stage_files, effect.as_ref(), options);
+        program = p;
         out.diagnostics.extend(diags);
     }
     let failed = out.diagnostics[start..].iter().any(Diagnostic::is_error);
     Checked { name: input.display_name(), effect, program, failed, passes }
+}
+
+/// Checks the stages of one program already in `files` (front, link rules, the manifest
+/// when there is one, static hazards): what `check` does after reading the files.
+pub fn check_stages(
+    files: &Files,
+    stage_files: &[(FileId, StageKind)],
+    effect: Option<&Effect>,
+    options: FrontOptions,
+) -> (Option<CompiledProgram>, Vec<Diagnostic>) {
+    let mut diags = Vec::new();
+    let program = program::compile(files, stage_files, options, &mut diags);
+    if let Some(p) = &program {
+        let syntaxes: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
+        diags.extend(crate::link::check_interface(&syntaxes));
+        if let Some(e) = effect {
+            diags.extend(crate::link::check_manifest(e, &syntaxes, files));
+        }
+        if !diags.iter().any(Diagnostic::is_error) {
+            diags.extend(hazards::analyse(effect, p));
+        }
+    }
+    (program, diags)
 }
 
 /// Drops repeated diagnostics after `start` (two passes sharing a stage file report its

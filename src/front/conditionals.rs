@@ -123,7 +123,8 @@ fn resolve_inner(text: &str, clean: &[u8], version: &Version) -> Option<String> 
             end = nl;
             break;
         }
-        let line = String::from_utf8_lossy(&clean[start..end]).replace("\\\r\n", " ").replace("\\\n", " ");
+        // Continuations become spaces of the same length, so offsets in `line` are the text's.
+        let line = String::from_utf8_lossy(&clean[start..end]).replace("\\\r\n", "   ").replace("\\\n", "  ");
         let active = stack.last().is_none_or(|g| g.active);
         let directive = line.trim_start().strip_prefix('#').map(str::trim_start);
         let (name, rest) = match directive {
@@ -175,6 +176,11 @@ fn resolve_inner(text: &str, clean: &[u8], version: &Version) -> Option<String> 
                         applied.push((macro_name.to_string(), body.clone()));
                         blank(&mut out[start..end]);
                         changed = true;
+                    } else if !applied.is_empty() {
+                        // A later macro's body uses a renamed type's name.
+                        let body_at = start + (after.as_ptr() as usize - line.as_ptr() as usize);
+                        let body_end = body_at + after.len();
+                        changed |= substitute(&clean[body_at..body_end], &mut out[body_at..body_end], &applied);
                     }
                     macros.insert(macro_name.to_string(), Some(body));
                 }
@@ -474,9 +480,10 @@ mod tests {
 
     #[test]
     fn type_renaming_macros_are_applied() {
-        let src = "#version 130\n#define texture2D texture\nvec4 f(sampler2D s) { return texture2D(s, vec2(0)); }\n";
+        let src = "#version 130\n#define texture2D texture\n#define T(s) texture2D(s, vec2(0))\nvec4 f(sampler2D s) { return texture2D(s, vec2(0)); }\n";
         let out = run(src);
-        assert!(!out.contains("#define"));
+        assert!(!out.contains("#define texture2D"));
+        assert!(out.contains("#define T(s) texture  (s, vec2(0))"), "{out}");
         assert!(out.contains("return texture  (s, vec2(0));"));
     }
 

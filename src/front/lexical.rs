@@ -13,6 +13,7 @@
 //! - `buffer_reference` blocks (GL_EXT_buffer_reference), used as types: the block reads as
 //!   a struct for glsl-lang, and the stage is limited (naga has no buffer references);
 //! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited;
+//! - `precise` (GLSL 4.00), which naga does not know: blanked;
 //! - precision qualifiers outside `precision` statements (`highp vec2 w` as a parameter or
 //!   block member, which naga's parser rejects): blanked; desktop GL and WGSL ignore them.
 
@@ -60,7 +61,12 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
             }
             let word = std::str::from_utf8(&clean[start..i]).unwrap_or("");
             let after_precision = std::mem::replace(&mut previous_word_precision, word == "precision");
-            if matches!(word, "highp" | "mediump" | "lowp") && !after_precision {
+            if word == "precise" {
+                // GLSL 4.00's `precise` (still a keyword here: older versions had it
+                // renamed) only forbids reassociating the computation; naga has no such
+                // qualifier and WGSL evaluates as written.
+                blank(&mut parser, start..i);
+            } else if matches!(word, "highp" | "mediump" | "lowp") && !after_precision {
                 // Precision qualifiers mean nothing on desktop and nothing to WGSL; naga's
                 // parser rejects them on parameters and block members.
                 blank(&mut parser, start..i);

@@ -561,6 +561,14 @@ impl Ctx<'_> {
             if s.functions.iter().any(|f| f.name == c.name) {
                 continue;
             }
+            if c.from_macro {
+                // Only the name is known (in the `#define` body): rename legacy built-ins.
+                if let Some((old, new, false)) = LEGACY_FUNCTIONS.iter().find(|(o, _, _)| *o == c.name) {
+                    self.legacy(c.name_span.clone(), old, new);
+                    self.edits.replace(c.name_span.clone(), *new);
+                }
+                continue;
+            }
             let implicit_lod = matches!(c.name.as_str(), "texture" | "texture2D" | "textureCube" | "texture3D" | "texture1D");
             if s.stage == StageKind::Vertex && implicit_lod {
                 // Vertex shaders have no derivatives: GL samples the base level; naga wants it explicit.

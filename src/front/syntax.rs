@@ -236,6 +236,8 @@ pub struct Call {
     pub args: Vec<Range<usize>>,
     /// The first argument when it is a bare identifier (a sampler, for texture calls).
     pub first_arg_name: Option<String>,
+    /// The call is written in a `#define` body (`name_span` is there; no arguments known).
+    pub from_macro: bool,
 }
 
 /// Everything the checker and the rewrite need to know about one stage's source.
@@ -1096,7 +1098,16 @@ impl<'a> Collector<'a> {
                         ast::ExprData::Variable(id) => Some(id.0.to_string()),
                         _ => None,
                     });
-                    self.s.calls.push(Call { name: n, name_span: sp, span: span_of(e), in_function, args: args.iter().map(span_of).collect(), first_arg_name });
+                    if self.s.text.get(sp.clone()) != Some(n.as_str()) {
+                        // Expanded from a macro: the name is written in `#define` bodies.
+                        for at in macro_body_occurrences(&self.s.text, &n) {
+                            if self.macro_uses.insert((n.clone(), at.start)) {
+                                self.s.calls.push(Call { name: n.clone(), name_span: at.clone(), span: at, in_function: in_function.clone(), args: Vec::new(), first_arg_name: None, from_macro: true });
+                            }
+                        }
+                    } else {
+                        self.s.calls.push(Call { name: n, name_span: sp, span: span_of(e), in_function, args: args.iter().map(span_of).collect(), first_arg_name, from_macro: false });
+                    }
                 }
                 for a in args {
                     self.arg_context = is_user;
