@@ -9,6 +9,9 @@
 //! - GL clip-space depth (z in [-w, w]) is mapped to WebGPU/Vulkan's (z in [0, w]) at the end
 //!   of the vertex stage, so a GL projection matrix keeps its near and far planes. For
 //!   rendering, clip y is also negated so the framebuffer runs bottom-up as GL's does.
+//! - Storage buffers no function writes become read-only (`var<storage, read>`): GLSL's
+//!   `buffer` blocks are read-write unless `readonly`, and WebGPU forbids writable storage in
+//!   the vertex stage, where vertex-pulling samples read them.
 //! - For rendering only: fragment colour outputs narrower than four components (`out vec3
 //!   color`) are widened to four (missing colour 0, alpha 1), because a WebGPU colour target
 //!   needs as many components from the shader as its format has; GL writes the narrower
@@ -387,5 +390,23 @@ mod tests {
         assert!(out.contains("@location(2) full: vec4<f32>"), "{out}");
         naga::compact::compact(&mut m, naga::compact::KeepUnused::No);
         wgsl(&m).unwrap();
+    }
+}
+
+/// Marks storage buffers that no function or entry point writes as read-only.
+pub fn read_only_unwritten_storage(module: &mut Module) {
+    let Ok(info) = crate::front::naga_run::validator().validate(module) else { return };
+    let written = |h: naga::Handle<naga::GlobalVariable>| {
+        module.functions.iter().any(|(f, _)| info[f][h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
+            || (0..module.entry_points.len()).any(|i| info.get_entry_point(i)[h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
+    };
+    let unwritten: Vec<_> = module
+        .global_variables
+        .iter()
+        .filter(|(h, v)| matches!(v.space, naga::AddressSpace::Storage { access } if access.contains(naga::StorageAccess::STORE)) && !written(*h))
+        .map(|(h, _)| h)
+        .collect();
+    for h in unwritten {
+        module.global_variables[h].space = naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD };
     }
 }

@@ -210,6 +210,7 @@ pub fn translate(
         vec![internal(file, format!("the merged module does not validate: {}", e.as_inner()))]
     })?;
     let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
+    fixes::read_only_unwritten_storage(&mut module);
     let mut probes = None;
     if options.probe_nonfinite {
         let stages: &[StageKind] = if options.probe_vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };

@@ -166,6 +166,11 @@ fn resolve_inner(text: &str, clean: &[u8], version: &Version) -> Option<String> 
                 let (macro_name, after) = rest.split_at(n);
                 if after.starts_with('(') {
                     macros.insert(macro_name.to_string(), None);
+                    if !applied.is_empty() {
+                        let body_at = start + (after.as_ptr() as usize - line.as_ptr() as usize);
+                        let body_end = body_at + after.len();
+                        changed |= substitute(&clean[body_at..body_end], &mut out[body_at..body_end], &applied);
+                    }
                 } else {
                     let body = after.trim().to_string();
                     let renames_generated = GENERATED_TYPES.contains(&macro_name)

@@ -534,7 +534,20 @@ impl Ctx<'_> {
             // naga types these `uint`; GLSL's are `int`.
             ("gl_VertexID" | "gl_VertexIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_VertexIndex)"),
             ("gl_InstanceID" | "gl_InstanceIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_InstanceIndex)"),
+            ("gl_DrawID" | "gl_BaseVertex" | "gl_BaseInstance", StageKind::Vertex) | ("gl_PrimitiveID" | "gl_SampleID", StageKind::Fragment) => {
+                self.edits.replace(u.span.clone(), format!("int({})", u.name))
+            }
             ("gl_PointSize", _) => self.edits.replace(u.span.clone(), "effectc_PointSize"),
+            ("gl_PointCoord", StageKind::Fragment) => {
+                // WebGPU rasterizes points one pixel wide, so the one fragment of a point
+                // is its centre: what GL gives for a point of size 1.
+                self.edits.replace(u.span.clone(), "vec2(0.5)");
+                self.diags.push(
+                    Diagnostic::note("N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU draws points one pixel wide")
+                        .at(self.s.file, u.span.clone(), "the centre of a one-pixel point")
+                        .with_note("WebGPU has no point sprites (and no `gl_PointSize`); draw a quad per point to keep a sprite's texture coordinates"),
+                );
+            }
             ("gl_ClipDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
             ("gl_CullDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_CullDistance"),
             _ => {}
@@ -570,6 +583,12 @@ impl Ctx<'_> {
                 continue;
             }
             let implicit_lod = matches!(c.name.as_str(), "texture" | "texture2D" | "textureCube" | "texture3D" | "texture1D");
+            if s.stage == StageKind::Vertex && c.name == "textureOffset" && c.args.len() == 3 {
+                // textureOffset(s, P, offset) in a vertex stage: the base level, explicitly.
+                self.edits.replace(c.name_span.clone(), "textureLodOffset");
+                self.edits.insert(c.args[1].end, ", 0.0");
+                continue;
+            }
             if s.stage == StageKind::Vertex && implicit_lod {
                 // Vertex shaders have no derivatives: GL samples the base level; naga wants it explicit.
                 if c.name != "texture" {
