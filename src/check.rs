@@ -66,7 +66,10 @@ pub fn check_inputs(inputs: &[std::path::PathBuf], forced: Option<StageKind>, op
 fn read_stage(path: &Path, files: &mut Files, diags: &mut Vec<Diagnostic>, io_error: &mut bool) -> Option<FileId> {
     match std::fs::read(path) {
         Ok(bytes) => match String::from_utf8(bytes) {
-            Ok(text) => Some(files.add(path.display().to_string(), text)),
+            Ok(text) => {
+                let id = files.add(path.display().to_string(), text);
+                crate::includes::expand(path, id, files, diags)
+            }
             Err(e) => {
                 let valid = e.utf8_error().valid_up_to();
                 let text = String::from_utf8_lossy(e.as_bytes()).to_string();

@@ -125,10 +125,21 @@ pub struct SourceFile {
     pub text: String,
 }
 
+/// A piece of an expanded stage text (a file with its `#include`s inlined): bytes `at` of
+/// the expanded text are bytes `start..` of `file`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Segment {
+    pub at: Range<usize>,
+    pub file: FileId,
+    pub start: usize,
+}
+
 /// All files diagnostics may point into.
 #[derive(Debug, Clone, Default)]
 pub struct Files {
     files: Vec<SourceFile>,
+    /// Expanded texts (by their id): where each piece came from, and the file they stand for.
+    expansions: std::collections::HashMap<FileId, (FileId, Vec<Segment>)>,
 }
 
 impl Files {
@@ -141,6 +152,55 @@ impl Files {
             text: text.into(),
         });
         FileId(self.files.len() - 1)
+    }
+    /// Registers the expanded text of `origin` (its `#include`s inlined). The front reads
+    /// this id; spans into it are resolved to the files the text came from before they are
+    /// shown ([`Files::resolve`]).
+    pub fn add_expanded(&mut self, origin: FileId, text: String, segments: Vec<Segment>) -> FileId {
+        let path = self.path(origin).to_string();
+        let id = self.add(path, text);
+        self.expansions.insert(id, (origin, segments));
+        id
+    }
+    /// Where a span of `id` lies in the user's files: itself, or for an expanded text the
+    /// included (or including) file and offset it came from. A span crossing pieces is cut
+    /// at the end of the piece it starts in.
+    pub fn resolve(&self, id: FileId, span: Option<Range<usize>>) -> (FileId, Option<Range<usize>>) {
+        let Some((origin, segments)) = self.expansions.get(&id) else { return (id, span) };
+        let Some(span) = span else { return (*origin, None) };
+        let seg = segments
+            .iter()
+            .find(|g| g.at.start <= span.start && span.start < g.at.end)
+            .or_else(|| segments.iter().rev().find(|g| g.at.start <= span.start))
+            .or(segments.first());
+        match seg {
+            Some(g) => {
+                let start = g.start + span.start.saturating_sub(g.at.start);
+                let end = g.start + span.end.min(g.at.end).max(span.start).saturating_sub(g.at.start);
+                (g.file, Some(start..end))
+            }
+            None => (*origin, None),
+        }
+    }
+    /// `diags` with every span resolved to the user's files ([`Files::resolve`]).
+    pub fn resolved(&self, diags: &[Diagnostic]) -> Vec<Diagnostic> {
+        let mut out = diags.to_vec();
+        if self.expansions.is_empty() {
+            return out;
+        }
+        for d in &mut out {
+            if let Some(f) = d.file {
+                let (file, span) = self.resolve(f, d.span.clone());
+                d.file = Some(file);
+                d.span = span;
+            }
+            for l in &mut d.labels {
+                let (file, span) = self.resolve(l.file, Some(l.span.clone()));
+                l.file = file;
+                l.span = span.unwrap_or(0..0);
+            }
+        }
+        out
     }
     pub fn get(&self, id: FileId) -> &SourceFile {
         &self.files[id.0]

@@ -29,6 +29,7 @@ fn escape_property(s: &str) -> String {
 /// `help: ...`, joined by escaped newlines (`%0A`). Escaping follows GitHub's rules: `%`,
 /// `\r`, `\n` everywhere, additionally `:` and `,` in property values.
 pub fn render_github(diags: &[Diagnostic], files: &Files) -> String {
+    let diags = &files.resolved(diags)[..];
     let mut out = String::new();
     for d in diags {
         let command = match d.severity {

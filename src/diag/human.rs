@@ -103,6 +103,7 @@ fn to_codespan(d: &Diagnostic, files: &Files) -> cs::Diagnostic<FileId> {
 /// the output is plain text. Each diagnostic ends with a blank line; no diagnostics give "".
 /// Labels pointing at unregistered files are left out; spans are clamped to their file.
 pub fn render_human(diags: &[Diagnostic], files: &Files, color: bool) -> String {
+    let diags = &files.resolved(diags)[..];
     let mut buffer = if color {
         Buffer::ansi()
     } else {

@@ -80,6 +80,7 @@ struct Summary {
 /// - `summary` counts all diagnostics in the document by severity.
 /// - New fields may be added within version 1; removals or changes bump `version`.
 pub fn render_json(diags: &[Diagnostic], files: &Files) -> String {
+    let diags = &files.resolved(diags)[..];
     let diagnostics = diags
         .iter()
         .map(|d| {

@@ -149,6 +149,7 @@ fn location(
 /// length) when the diagnostic has a file, and `relatedLocations` (with the label text as
 /// their message) for secondary labels. Paths become URI references with forward slashes.
 pub fn render_sarif(diags: &[Diagnostic], files: &Files) -> String {
+    let diags = &files.resolved(diags)[..];
     let codes: Vec<&str> = diags
         .iter()
         .map(|d| d.code)

@@ -316,6 +316,11 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
     };
     let unextended = version::blank_extensions(original);
     let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
+    if let Some(span) = compiled_include(&resolved) {
+        return Err(vec![Diagnostic::error(crate::includes::E_INCLUDE, format!("cannot read included file `{}`", &original[span.clone()]))
+            .at(file, span, "not found relative to the including file")
+            .with_note("`#include` names a file relative to the file that includes it")]);
+    }
     let (text, mut renames) = version::rename_new_keywords(&resolved, &version, original);
     let masked = crate::front::lexical::mask(&text, &version::blank_comments(&text));
     let mut text = masked.for_parser;
@@ -1135,6 +1140,25 @@ impl<'a> Collector<'a> {
 
 /// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
 /// constants, subpass inputs, separate texture and sampler uniforms)?
+/// The file name of an `#include` left in the compiled text (one `includes` could not read).
+fn compiled_include(text: &str) -> Option<Range<usize>> {
+    let clean = version::blank_comments(text);
+    let clean = String::from_utf8_lossy(&clean);
+    let mut start = 0;
+    for line in clean.split_inclusive('\n') {
+        let t = line.trim_start();
+        if let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("include")) {
+            let r = rest.trim_start();
+            let at = start + line.len() - r.len() + 1;
+            let close = if r.starts_with('<') { '>' } else { '"' };
+            let n = r.get(1..).and_then(|x| x.find(close)).unwrap_or(0);
+            return Some(at..at + n);
+        }
+        start += line.len();
+    }
+    None
+}
+
 /// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
 fn macro_body_occurrences(text: &str, name: &str) -> Vec<Range<usize>> {
     let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';

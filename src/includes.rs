@@ -1,0 +1,189 @@
+//! `#include` (GL_GOOGLE_include_directive, GL_ARB_shading_language_include): included
+//! files are inlined into the stage text, resolved relative to the including file.
+//!
+//! The expanded text is registered in [`Files`] beside the user's files, with a map of the
+//! pieces it is made of, so every span the front, the link checks or translate report in it
+//! is shown in the file it came from (the stage or an included file, at its own line).
+//! Include guards work as written (`#ifndef X`/`#define X` are resolved on the expanded
+//! text); `#pragma once` is honoured. A file that includes itself is error E0104 at the
+//! directive; one that cannot be read keeps its directive, which the front reports (E0104)
+//! unless conditional compilation leaves it out (`#ifdef __cplusplus` in a shared header).
+
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+use crate::diag::{Diagnostic, FileId, Files, Segment};
+use crate::front::version::blank_comments;
+
+/// An `#include` that cannot be resolved.
+pub const E_INCLUDE: &str = "E0104";
+
+/// Deepest include nesting followed.
+const MAX_DEPTH: usize = 32;
+
+/// The id the front should read for stage `main` (read from `path`): `main` itself, or its
+/// expanded text when it includes files. Errors are pushed to `diags` (then `None`).
+pub fn expand(path: &Path, main: FileId, files: &mut Files, diags: &mut Vec<Diagnostic>) -> Option<FileId> {
+    let text = files.text(main).to_string();
+    if !has_include(&text) {
+        return Some(main);
+    }
+    let mut x = Expansion { out: String::new(), segments: Vec::new(), stack: vec![canonical(path)], once: HashSet::new(), failed: false };
+    x.inline(path, main, &text, files, diags);
+    if x.failed {
+        return None;
+    }
+    Some(files.add_expanded(main, x.out, x.segments))
+}
+
+fn has_include(text: &str) -> bool {
+    text.contains("include") && directives(text).next().is_some()
+}
+
+fn canonical(path: &Path) -> PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
+}
+
+/// `(line range incl. its end, name, name span)` of every `#include` line outside comments.
+fn directives(text: &str) -> impl Iterator<Item = (std::ops::Range<usize>, String, std::ops::Range<usize>)> + '_ {
+    let clean = blank_comments(text);
+    let mut found = Vec::new();
+    let mut start = 0;
+    for line in clean.split_inclusive(|b| *b == b'\n') {
+        let l = String::from_utf8_lossy(line);
+        let t = l.trim_start();
+        if let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("include")) {
+            let r = rest.trim_start();
+            let close = match r.chars().next() {
+                Some('"') => '"',
+                Some('<') => '>',
+                _ => {
+                    start += line.len();
+                    continue;
+                }
+            };
+            if let Some(n) = r[1..].find(close) {
+                let name_at = start + (l.len() - r.len()) + 1;
+                found.push((start..start + line.len(), r[1..1 + n].to_string(), name_at..name_at + n));
+            }
+        }
+        start += line.len();
+    }
+    found.into_iter()
+}
+
+struct Expansion {
+    out: String,
+    segments: Vec<Segment>,
+    /// Files being inlined (cycle detection).
+    stack: Vec<PathBuf>,
+    /// Files with `#pragma once` already inlined.
+    once: HashSet<PathBuf>,
+    failed: bool,
+}
+
+impl Expansion {
+    fn copy(&mut self, file: FileId, text: &str, from: usize, to: usize) {
+        if to > from {
+            self.segments.push(Segment { at: self.out.len()..self.out.len() + (to - from), file, start: from });
+            self.out.push_str(&text[from..to]);
+        }
+    }
+
+    fn inline(&mut self, path: &Path, id: FileId, text: &str, files: &mut Files, diags: &mut Vec<Diagnostic>) {
+        let mut copied = 0;
+        for (line, name, name_span) in directives(text).collect::<Vec<_>>() {
+            self.copy(id, text, copied, line.start);
+            copied = line.end;
+            let target = path.parent().unwrap_or(Path::new(".")).join(&name);
+            let key = canonical(&target);
+            if self.stack.contains(&key) || self.stack.len() > MAX_DEPTH {
+                self.fail(diags, Diagnostic::error(E_INCLUDE, format!("`{name}` includes itself")).at(id, name_span, "included again here"));
+                continue;
+            }
+            if self.once.contains(&key) {
+                continue;
+            }
+            let Ok(bytes) = std::fs::read(&target) else {
+                // Kept as written: inside an inactive `#ifdef __cplusplus` it is blanked
+                // with its group; where it is compiled the front reports it (E0104).
+                self.copy(id, text, line.start, line.end);
+                continue;
+            };
+            let included = String::from_utf8_lossy(&bytes).into_owned();
+            if included.lines().any(|l| l.trim_start().strip_prefix('#').map(str::trim_start).is_some_and(|r| r.starts_with("pragma") && r.contains("once"))) {
+                self.once.insert(key.clone());
+            }
+            let inc_id = files.add(target.display().to_string(), included.clone());
+            self.stack.push(key);
+            self.inline(&target, inc_id, &included, files, diags);
+            self.stack.pop();
+            if !self.out.ends_with('\n') {
+                self.out.push('\n');
+            }
+        }
+        self.copy(id, text, copied, text.len());
+    }
+
+    fn fail(&mut self, diags: &mut Vec<Diagnostic>, d: Diagnostic) {
+        self.failed = true;
+        diags.push(d);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inlines_relative_files_and_maps_spans_back() {
+        let dir = std::env::temp_dir().join(format!("effectc-includes-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("lib")).unwrap();
+        std::fs::write(dir.join("lib/common.glsl"), "#pragma once\nfloat two() { return 2.0; }\n").unwrap();
+        std::fs::write(dir.join("lib/more.glsl"), "#include \"common.glsl\"\nfloat three() { return 3.0; }").unwrap();
+        let main = "#version 450\n#include \"lib/common.glsl\"\n// #include \"missing.glsl\"\n#include \"lib/more.glsl\"\nvoid main() {}\n";
+        let path = dir.join("a.frag");
+        let mut files = Files::new();
+        let id = files.add(path.display().to_string(), main);
+        let mut diags = Vec::new();
+        let x = expand(&path, id, &mut files, &mut diags).expect("expands");
+        assert!(diags.is_empty(), "{diags:?}");
+        let text = files.text(x).to_string();
+        assert_eq!(text.matches("float two()").count(), 1, "pragma once: {text}");
+        assert!(text.contains("float three() { return 3.0; }\nvoid main() {}"));
+        let at = text.find("three").unwrap();
+        let (file, span) = files.resolve(x, Some(at..at + 5));
+        assert!(files.path(file).ends_with("more.glsl"));
+        assert_eq!(span, Some(29..34));
+        let at = text.find("void main").unwrap();
+        let (file, span) = files.resolve(x, Some(at..at + 4));
+        assert_eq!(file, id);
+        assert_eq!(&main[span.unwrap()], "void");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn recursive_includes_are_errors_at_the_directive_and_missing_ones_stay() {
+        let dir = std::env::temp_dir().join(format!("effectc-includes-bad-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("self.glsl"), "#include \"self.glsl\"\n").unwrap();
+        std::fs::write(dir.join("ok.glsl"), "float one() { return 1.0; }\n").unwrap();
+        let path = dir.join("b.frag");
+        let mut files = Files::new();
+        let id = files.add(path.display().to_string(), "#include <self.glsl>\n");
+        let mut diags = Vec::new();
+        assert!(expand(&path, id, &mut files, &mut diags).is_none());
+        assert_eq!(diags[0].code, E_INCLUDE);
+        let resolved = files.resolved(&diags);
+        let f = resolved[0].file.unwrap();
+        assert!(files.path(f).ends_with("self.glsl"));
+        assert_eq!(&files.text(f)[resolved[0].span.clone().unwrap()], "self.glsl");
+
+        let main = "#ifdef __cplusplus\n#include <glm/glm.hpp>\n#endif\n#include \"ok.glsl\"\n";
+        let id = files.add(path.display().to_string(), main);
+        let mut diags = Vec::new();
+        let x = expand(&path, id, &mut files, &mut diags).expect("a missing file is left to the front");
+        assert_eq!(files.text(x), "#ifdef __cplusplus\n#include <glm/glm.hpp>\n#endif\nfloat one() { return 1.0; }\n");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,3 @@
+#pragma once
+const float PI = 3.14159265;
+const float INV_PI = 1.0 / PI;
