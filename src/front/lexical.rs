@@ -13,7 +13,9 @@
 //! - `buffer_reference` blocks (GL_EXT_buffer_reference), used as types: the block reads as
 //!   a struct for glsl-lang, and the stage is limited (naga has no buffer references);
 //! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited;
-//! - `precise` (GLSL 4.00), which naga does not know: blanked;
+//! - `precise` (GLSL 4.00), `coherent` and `restrict` (4.20; older versions have them
+//!   renamed as identifiers), which naga does not take: blanked (WGSL makes storage
+//!   accesses visible through barriers alone, and `restrict` only promises no aliasing);
 //! - precision qualifiers outside `precision` statements (`highp vec2 w` as a parameter or
 //!   block member, which naga's parser rejects): blanked; desktop GL and WGSL ignore them.
 
@@ -61,7 +63,11 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
             }
             let word = std::str::from_utf8(&clean[start..i]).unwrap_or("");
             let after_precision = std::mem::replace(&mut previous_word_precision, word == "precision");
-            if word == "precise" {
+            if matches!(word, "coherent" | "restrict") {
+                // Memory qualifiers naga does not take: `restrict` is an aliasing promise
+                // and `coherent` asks for what WGSL's barriers give every storage access.
+                blank(&mut parser, start..i);
+            } else if word == "precise" {
                 // GLSL 4.00's `precise` (still a keyword here: older versions had it
                 // renamed) only forbids reassociating the computation; naga has no such
                 // qualifier and WGSL evaluates as written.
@@ -316,6 +322,12 @@ mod tests {
     fn precision_qualifiers_leave_all_but_precision_statements() {
         let m = masked("precision highp float; float f(highp vec2 w); uniform B { mediump mat3 n; };");
         assert_eq!(m.for_parser, "precision highp float; float f(      vec2 w); uniform B {         mat3 n; };");
+    }
+
+    #[test]
+    fn memory_qualifiers_naga_lacks_are_blanked() {
+        let m = masked("layout(r32ui) coherent uniform uimage2D a; restrict readonly buffer B { uint x[]; };");
+        assert_eq!(m.for_parser, "layout(r32ui)          uniform uimage2D a;          readonly buffer B { uint x[]; };");
     }
 
     #[test]

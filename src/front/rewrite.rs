@@ -27,6 +27,14 @@ pub struct Rewritten {
     pub limitation: Option<crate::front::naga_run::Limitation>,
 }
 
+/// Sets that user-numbered bindings (`layout(binding = N)` without a set) move to. GL
+/// numbers uniform blocks, storage blocks, images and atomic counters in separate
+/// namespaces (binding 0 of each can coexist), so each kind gets a set of its own.
+pub const USER_UNIFORM_SET: u32 = 1;
+pub const USER_BUFFER_SET: u32 = 2;
+pub const USER_IMAGE_SET: u32 = 3;
+pub const USER_COUNTER_SET: u32 = 4;
+
 /// Prefix of a uniform block member another stage declares and this stage shadows.
 pub const OTHER_STAGE_PREFIX: &str = "effectc_other_";
 
@@ -147,7 +155,8 @@ impl Ctx<'_> {
                         // Push constants have no binding.
                     } else if first.layout.iter().any(|(k, _)| k == "binding") {
                         // The user's own binding numbers live in set 1, clear of ours.
-                        self.add_layout(first, "set = 1", "set");
+                        let set = if first.storage == Storage::Buffer { USER_BUFFER_SET } else { USER_UNIFORM_SET };
+                        self.add_layout(first, &format!("set = {set}"), "set");
                     } else {
                         let binding = self.plan.user_blocks.get(&b.block_name).copied().unwrap_or(0);
                         self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
@@ -156,7 +165,15 @@ impl Ctx<'_> {
                 Storage::Uniform if is_unblocked_opaque(&first.ty.base) => {
                     // Images and atomic counters stay declarations of their own.
                     if first.layout.iter().any(|(k, _)| k == "binding") {
-                        self.add_layout(first, "set = 1", "set");
+                        let base = first.ty.base.as_str();
+                        let set = if base == "atomic_uint" {
+                            USER_COUNTER_SET
+                        } else if ["image", "iimage", "uimage"].iter().any(|p| base.starts_with(p)) {
+                            USER_IMAGE_SET
+                        } else {
+                            USER_UNIFORM_SET
+                        };
+                        self.add_layout(first, &format!("set = {set}"), "set");
                     } else {
                         let binding = self.plan.opaque.get(&first.name).copied().unwrap_or(0);
                         self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
