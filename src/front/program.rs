@@ -79,7 +79,22 @@ pub fn compile(
             compiled.push(CompiledStage { syntax: s, rewritten: None, naga: None, limitation: None });
             continue;
         };
-        let (rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
+        let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
+        if rewritten.limitation.is_none() && !rdiags.iter().any(Diagnostic::is_error) && s.has_main {
+            // GLSL 4.20 swizzles scalars (`x.rrr`); naga does not. Its "can't lookup field"
+            // on a swizzle-shaped access tells which bases are scalars: rewrite those as
+            // constructors and parse again.
+            let mut scalar: Vec<usize> = Vec::new();
+            for _ in 0..8 {
+                let found = naga_run::scalar_swizzles(&s, &rewritten, naga_stage);
+                let new: Vec<usize> = found.into_iter().filter(|i| !scalar.contains(i)).collect();
+                if new.is_empty() || !allows_scalar_swizzle(&s) {
+                    break;
+                }
+                scalar.extend(new);
+                (rewritten, rdiags) = rewrite::rewrite_with(&s, &plan, options.strict, &scalar);
+            }
+        }
         if let Some(dir) = std::env::var_os("EFFECTC_DUMP_REWRITE") {
             // Debugging aid: the 4.50 text naga sees.
             let name = std::path::Path::new(files.path(s.file)).file_name().map(|n| n.to_os_string()).unwrap_or_default();
@@ -119,4 +134,9 @@ pub fn compile(
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation });
     }
     Some(CompiledProgram { stages: compiled, plan })
+}
+
+/// Scalar swizzles are GLSL 4.20 (and Vulkan GLSL, which is 4.50).
+fn allows_scalar_swizzle(s: &StageSyntax) -> bool {
+    (!s.version.is_es() && s.version.number >= 420) || s.vulkan
 }

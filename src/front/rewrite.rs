@@ -77,6 +77,12 @@ struct Ctx<'a> {
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
 /// constructs go to the returned diagnostics.
 pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Diagnostic>) {
+    rewrite_with(s, plan, strict, &[])
+}
+
+/// [`rewrite`], with the swizzles (indices into `s.swizzles`) naga found applied to a
+/// scalar written as constructors: `x.rrr` → `vec3(x)`, `x.r` → `(x)`.
+pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles: &[usize]) -> (Rewritten, Vec<Diagnostic>) {
     let limitation = s.unsupported.as_ref().map(|(construct, span)| crate::front::naga_run::Limitation { construct: construct.clone(), span: Some(span.clone()) });
     let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new(), limitation };
     c.version();
@@ -89,6 +95,14 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
     c.defaults_and_layouts();
     c.row_major_uses();
     c.unsized_arrays();
+    for &i in scalar_swizzles {
+        let w = &s.swizzles[i];
+        let ctor = if w.width == 1 { "(".to_string() } else { format!("vec{}(", w.width) };
+        // Only `.field` is replaced, so a parenthesised base keeps its own parentheses.
+        let dot = s.text[w.whole.clone()].rfind('.').map_or(w.base.end, |d| w.whole.start + d);
+        c.edits.insert(w.base.start, ctor);
+        c.edits.replace(dot..w.whole.end, ")");
+    }
     c.insert_header();
     c.insert_main_hooks();
     let Ctx { edits, mut diags, limitation, .. } = c;

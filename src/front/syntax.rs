@@ -225,6 +225,17 @@ pub struct Use {
     pub in_function: Option<String>,
 }
 
+/// `expr.xyz`-shaped field access: if naga finds `expr` is a scalar (GLSL 4.20's scalar
+/// swizzle), it is rewritten as a constructor.
+#[derive(Debug, Clone)]
+pub struct Swizzle {
+    pub base: Range<usize>,
+    /// The whole `base.field` expression.
+    pub whole: Range<usize>,
+    /// Number of components selected.
+    pub width: usize,
+}
+
 /// A function call site.
 #[derive(Debug, Clone)]
 pub struct Call {
@@ -249,6 +260,8 @@ pub struct StageSyntax {
     /// A legal construct naga has no form of, found while masking the text for glsl-lang
     /// (what, where): the stage is checked for syntax and interface only.
     pub unsupported: Option<(String, Range<usize>)>,
+    /// Swizzle-shaped field accesses (`x.rrr`), in source order.
+    pub swizzles: Vec<Swizzle>,
     /// Offsets of `pervertexEXT` qualifiers: the inputs they qualify are arrays with one
     /// element per vertex, like a geometry stage's.
     pub per_vertex: Vec<usize>,
@@ -377,6 +390,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         text: crate::front::lexical::restored(&text, &masked.restore),
         unsupported: masked.unsupported,
         per_vertex: masked.per_vertex,
+        swizzles: Vec::new(),
         globals: Vec::new(),
         structs: Vec::new(),
         functions: Vec::new(),
@@ -1059,6 +1073,13 @@ impl<'a> Collector<'a> {
                 self.expr(idx);
             }
             ast::ExprData::Dot(base, field) => {
+                let name = field.0.as_str();
+                let sets = ["xyzw", "rgba", "stpq"];
+                let (whole, base_span) = (span_of(e), span_of(base));
+                let swizzle_like = (1..=4).contains(&name.len()) && sets.iter().any(|set| name.chars().all(|c| set.contains(c)));
+                if swizzle_like && self.s.text.get(whole.clone()).is_some_and(|t| t.ends_with(name)) && base_span.end <= whole.end {
+                    self.s.swizzles.push(Swizzle { base: base_span, whole, width: name.len() });
+                }
                 let f = Some((field.0.to_string(), span_of(e)));
                 match &base.content {
                     ast::ExprData::Variable(id) => self.record(id, None, f, arg),
