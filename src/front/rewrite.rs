@@ -921,7 +921,7 @@ impl Ctx<'_> {
                 offset = offset.next_multiple_of(align) + size;
                 // A uniform another stage declares must not shadow this stage's own
                 // variable of that name: keep its bytes, not its name.
-                let shadowed = s.global(&m.name).is_some_and(|g| g.storage != Storage::Uniform);
+                let shadowed = s.global(&m.name).is_some_and(|g| g.storage != Storage::Uniform) || defines_macro(&s.text, &m.name);
                 let name = if shadowed { format!("{OTHER_STAGE_PREFIX}{}", m.name) } else { m.name.clone() };
                 let _ = writeln!(h, "    {} {name}{};", m.block_ty.base, dims_text(&m.block_ty));
                 if is_struct && !m.block_ty.is_array() && i + 1 < self.plan.members.len() {
@@ -995,6 +995,19 @@ impl Ctx<'_> {
 
 /// Opaque uniform types that stay their own declarations (not in the uniform block, not
 /// split like combined samplers).
+/// Whether `text` has a `#define name` (a uniform of another stage by that name would be
+/// macro-expanded in this stage's copy of the shared block).
+fn defines_macro(text: &str, name: &str) -> bool {
+    text.lines().any(|l| {
+        l.trim_start()
+            .strip_prefix('#')
+            .map(str::trim_start)
+            .and_then(|r| r.strip_prefix("define"))
+            .and_then(|r| r.trim_start().strip_prefix(name))
+            .is_some_and(|rest| !rest.starts_with(|c: char| c.is_ascii_alphanumeric() || c == '_'))
+    })
+}
+
 /// What the first argument of a built-in call names.
 enum FirstArg<'a> {
     /// A parameter of the enclosing function, by its type.
