@@ -1,8 +1,8 @@
 //! effectc: a shader toolchain for desktop-GLSL effects.
 //!
 //! # Steps
-//! 1. [`inputs`]: command-line paths → programs (manifests, directories, stage files).
-//! 1b. [`includes`]: `#include`d files inlined into a stage, with the map back to each file.
+//! 1. [`inputs`]: command-line paths → programs (manifests, directories, stage files);
+//!    [`includes`] inlines `#include`d files into a stage, with the map back to each file.
 //! 2. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures, mesh).
 //! 3. [`front`]: each GLSL stage → syntax facts (glsl-lang, spans) → GLSL 4.50 rewrite with an
 //!    offset map → naga parse + validate.
