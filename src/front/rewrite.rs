@@ -870,6 +870,9 @@ impl Ctx<'_> {
     /// initializer's length.
     fn unsized_arrays(&mut self) {
         let s = self.s;
+        for (span, n) in &s.constant_sizes {
+            self.edits.replace(span.clone(), n.to_string());
+        }
         for (span, n) in &s.unsized_sizes {
             let text = &s.text[span.clone()];
             if text.trim() == "[]" {

@@ -288,6 +288,9 @@ pub struct StageSyntax {
     pub defaults: Vec<DefaultDecl>,
     /// Unsized array dimensions (`[]`) whose size the initializer gives: span and size.
     pub unsized_sizes: Vec<(Range<usize>, u32)>,
+    /// Array sizes and case labels written with local constants (`[TAPS + 1]`, `case TAPS:`):
+    /// the expression and its value, which the rewrite writes for naga.
+    pub constant_sizes: Vec<(Range<usize>, u32)>,
     /// Written in Vulkan GLSL (descriptor sets, push constants, specialization constants,
     /// `gl_VertexIndex`, separate textures and samplers): interfaces match by location only.
     pub vulkan: bool,
@@ -404,6 +407,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         main_returns: Vec::new(),
         defaults: Vec::new(),
         unsized_sizes: Vec::new(),
+        constant_sizes: Vec::new(),
         vulkan: false,
     };
     Collector::run(&mut syntax, &tu);
@@ -495,6 +499,8 @@ struct Collector<'a> {
     arg_context: bool,
     /// Macro-body occurrences already recorded (a macro expands at many sites).
     macro_uses: HashSet<(String, usize)>,
+    /// `const int` locals of the current function with their values.
+    local_consts: HashMap<String, i64>,
 }
 
 impl<'a> Collector<'a> {
@@ -511,7 +517,7 @@ impl<'a> Collector<'a> {
                 _ => None,
             })
             .collect();
-        let mut c = Collector { s, scopes: Vec::new(), current_function: None, user_functions, arg_context: false, macro_uses: HashSet::new() };
+        let mut c = Collector { s, scopes: Vec::new(), current_function: None, user_functions, arg_context: false, macro_uses: HashSet::new(), local_consts: HashMap::new() };
         for decl in &tu.0 {
             c.external(decl);
         }
@@ -532,6 +538,7 @@ impl<'a> Collector<'a> {
                     self.s.main_body = Some(span_of(&def.statement));
                 }
                 self.current_function = Some((name, idx));
+                self.local_consts.clear();
                 let mut scope = HashMap::new();
                 for p in &self.s.functions[idx].params {
                     if let Some(n) = &p.name {
@@ -605,7 +612,9 @@ impl<'a> Collector<'a> {
         match &e.content {
             ast::ExprData::IntConst(v) => Some(*v as i64),
             ast::ExprData::UIntConst(v) => Some(*v as i64),
-            ast::ExprData::Variable(id) => self.s.int_consts.get(id.0.as_str()).copied(),
+            ast::ExprData::Variable(id) => {
+                self.local_consts.get(id.0.as_str()).or_else(|| self.s.int_consts.get(id.0.as_str())).copied()
+            }
             ast::ExprData::Binary(op, a, b) => {
                 let (a, b) = (self.const_int(a)?, self.const_int(b)?);
                 match op.content {
@@ -876,8 +885,17 @@ impl<'a> Collector<'a> {
                 }
                 if let Some(a) = &list.head.array_specifier {
                     self.array_exprs(a);
+                    self.local_constant_sizes(a);
                     if let Some(init) = &list.head.initializer {
                         self.unsized_from_initializer(a, init);
+                    }
+                }
+                let is_const = list.head.ty.qualifier.as_ref().is_some_and(|q| {
+                    q.qualifiers.iter().any(|x| matches!(&x.content, ast::TypeQualifierSpecData::Storage(sq) if matches!(sq.content, ast::StorageQualifierData::Const)))
+                });
+                if let (true, Some(n), Some(ast::InitializerData::Simple(e))) = (is_const, &list.head.name, list.head.initializer.as_ref().map(|i| &i.content)) {
+                    if let Some(v) = self.const_int(e) {
+                        self.local_consts.insert(n.0.to_string(), v);
                     }
                 }
                 for t in &list.tail {
@@ -900,6 +918,22 @@ impl<'a> Collector<'a> {
             }
             ast::DeclarationData::Block(_) | ast::DeclarationData::FunctionPrototype(_) => {}
             _ => {}
+        }
+    }
+
+    /// A local array sized by a local `const int` (`float k[TAPS + 1];`): naga resolves
+    /// array sizes among globals only, so the rewrite writes the value.
+    fn local_constant_sizes(&mut self, a: &ast::ArraySpecifier) {
+        for d in &a.dimensions {
+            if let ast::ArraySpecifierDimensionData::ExplicitlySized(e) = &d.content {
+                let literal = matches!(e.content, ast::ExprData::IntConst(_) | ast::ExprData::UIntConst(_));
+                let uses_local = expr_text(e).split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| self.local_consts.contains_key(w));
+                if let (false, true, Some(v)) = (literal, uses_local, self.const_int(e)) {
+                    if let Ok(v) = u32::try_from(v) {
+                        self.s.constant_sizes.push((span_of(e), v));
+                    }
+                }
+            }
         }
     }
 
@@ -940,6 +974,13 @@ impl<'a> Collector<'a> {
             ast::StatementData::CaseLabel(c) => {
                 if let ast::CaseLabelData::Case(e) = &c.content {
                     self.expr(e);
+                    // `case TAPS:` with a local constant: naga wants the value.
+                    let uses_local = expr_text(e).split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| self.local_consts.contains_key(w));
+                    if let (true, Some(v)) = (uses_local, self.const_int(e)) {
+                        if let Ok(v) = u32::try_from(v) {
+                            self.s.constant_sizes.push((span_of(e), v));
+                        }
+                    }
                 }
             }
             ast::StatementData::Iteration(it) => {
