@@ -9,6 +9,9 @@
 //! - GL clip-space depth (z in [-w, w]) is mapped to WebGPU/Vulkan's (z in [0, w]) at the end
 //!   of the vertex stage, so a GL projection matrix keeps its near and far planes. For
 //!   rendering, clip y is also negated so the framebuffer runs bottom-up as GL's does.
+//! - Interpolation qualifiers of interface-block members (`flat vec4 c;`,
+//!   `noperspective`, `centroid` inside `out Block { … }`), which naga's GLSL parser does
+//!   not take, are put on the entry point's bindings from the declarations.
 //! - Storage buffers no function writes become read-only (`var<storage, read>`): GLSL's
 //!   `buffer` blocks are read-write unless `readonly`, and WebGPU forbids writable storage in
 //!   the vertex stage, where vertex-pulling samples read them.
@@ -408,5 +411,79 @@ pub fn read_only_unwritten_storage(module: &mut Module) {
         .collect();
     for h in unwritten {
         module.global_variables[h].space = naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD };
+    }
+}
+
+/// Puts the interpolation and sampling qualifiers the user wrote on interface-block members
+/// onto the bindings of this stage's outputs (vertex) or inputs (fragment), by member name.
+pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::syntax::StageSyntax) {
+    use crate::front::syntax::{Interp, Storage};
+    let side = match syntax.stage {
+        crate::stage::StageKind::Vertex => Storage::Out,
+        crate::stage::StageKind::Fragment => Storage::In,
+        _ => return,
+    };
+    let mut wanted: std::collections::HashMap<String, (Option<Interp>, bool)> = std::collections::HashMap::new();
+    for g in syntax.globals.iter().filter(|g| g.storage == side) {
+        let Some(b) = &g.block else { continue };
+        for m in b.members.iter().filter(|m| m.interp.is_some() || m.centroid) {
+            wanted.insert(m.name.clone(), (m.interp, m.centroid));
+            if let Some(instance) = &b.instance {
+                wanted.insert(format!("{instance}_{}", m.name), (m.interp, m.centroid));
+            }
+        }
+    }
+    if wanted.is_empty() {
+        return;
+    }
+    let apply = |binding: &mut Binding, name: Option<&String>| {
+        let (Binding::Location { interpolation, sampling, .. }, Some((interp, centroid))) = (binding, name.and_then(|n| wanted.get(n))) else { return };
+        match interp {
+            Some(Interp::Flat) => {
+                *interpolation = Some(Interpolation::Flat);
+                *sampling = None;
+                return;
+            }
+            Some(Interp::NoPerspective) => *interpolation = Some(Interpolation::Linear),
+            Some(Interp::Smooth) => *interpolation = Some(Interpolation::Perspective),
+            None => {}
+        }
+        if *centroid {
+            *sampling = Some(Sampling::Centroid);
+        }
+    };
+    let mut struct_types = Vec::new();
+    for ep in &mut module.entry_points {
+        match side {
+            Storage::Out => {
+                if let Some(r) = &ep.function.result {
+                    struct_types.push(r.ty);
+                }
+            }
+            _ => {
+                for a in &mut ep.function.arguments {
+                    if let Some(b) = &mut a.binding {
+                        apply(b, a.name.as_ref());
+                    } else {
+                        struct_types.push(a.ty);
+                    }
+                }
+            }
+        }
+    }
+    struct_types.sort();
+    struct_types.dedup();
+    for ty in struct_types {
+        let t = module.types[ty].clone();
+        let TypeInner::Struct { mut members, span } = t.inner else { continue };
+        for m in &mut members {
+            if let Some(b) = &mut m.binding {
+                apply(b, m.name.as_ref());
+            }
+        }
+        let new = Type { name: t.name, inner: TypeInner::Struct { members, span } };
+        if module.types.get(&new).is_none() {
+            module.types.replace(ty, new);
+        }
     }
 }

@@ -178,6 +178,7 @@ pub fn translate(
             continue;
         };
         let mut module = validated.module.clone();
+        fixes::block_member_interpolation(&mut module, &stage.syntax);
         for span in fixes::fix_switch_fallthrough(&mut module) {
             let mut d = Diagnostic::error("E0302", "a `switch` case falls through into the next case's code")
                 .with_note("WGSL has no fall-through between cases, so this cannot be translated")

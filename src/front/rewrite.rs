@@ -750,6 +750,18 @@ impl Ctx<'_> {
     /// parser takes none of them: locations follow the block's, integers are flat anyway).
     fn defaults_and_layouts(&mut self) {
         let s = self.s;
+        let io_block_array = s.globals.iter().filter(|g| matches!(g.storage, Storage::In | Storage::Out) && !g.name.starts_with("gl_")).find_map(|g| {
+            let b = g.block.as_ref()?;
+            b.members.iter().find(|m| m.ty.is_array()).map(|m| (b.block_name.clone(), m.span.clone()))
+        });
+        if let (None, Some((block, span))) = (&self.limitation, io_block_array) {
+            // naga's GLSL front gives every member of an interface block one location,
+            // so an array member collides with the next member.
+            self.limitation = Some(crate::front::naga_run::Limitation {
+                construct: format!("an array member of the interface block `{}` (naga gives it one location)", s.original_name(&block)),
+                span: Some(span),
+            });
+        }
         for d in &s.defaults {
             if matches!(d.storage, Some(Storage::Uniform | Storage::Buffer)) {
                 self.edits.delete(d.span.clone());
