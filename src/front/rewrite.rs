@@ -752,13 +752,13 @@ impl Ctx<'_> {
         let s = self.s;
         let io_block_array = s.globals.iter().filter(|g| matches!(g.storage, Storage::In | Storage::Out) && !g.name.starts_with("gl_")).find_map(|g| {
             let b = g.block.as_ref()?;
-            b.members.iter().find(|m| m.ty.is_array()).map(|m| (b.block_name.clone(), m.span.clone()))
+            b.members.iter().find(|m| m.ty.is_array() || matrix_shape(&m.ty.base).is_some()).map(|m| (b.block_name.clone(), m.span.clone()))
         });
         if let (None, Some((block, span))) = (&self.limitation, io_block_array) {
-            // naga's GLSL front gives every member of an interface block one location,
-            // so an array member collides with the next member.
+            // naga's GLSL front gives every member of an interface block one location, so
+            // an array member collides with the next one, and it takes no matrix varyings.
             self.limitation = Some(crate::front::naga_run::Limitation {
-                construct: format!("an array member of the interface block `{}` (naga gives it one location)", s.original_name(&block)),
+                construct: format!("an array or matrix member of the interface block `{}` (naga gives each member one location and no matrix varyings)", s.original_name(&block)),
                 span: Some(span),
             });
         }
