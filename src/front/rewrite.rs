@@ -752,11 +752,18 @@ impl Ctx<'_> {
         let s = self.s;
         let io_block_array = s.globals.iter().filter(|g| matches!(g.storage, Storage::In | Storage::Out) && !g.name.starts_with("gl_")).find_map(|g| {
             let b = g.block.as_ref()?;
-            b.members.iter().find(|m| m.ty.is_array() || matrix_shape(&m.ty.base).is_some()).map(|m| (b.block_name.clone(), m.span.clone()))
+            // An array member is fine last (nothing follows it to collide with).
+            let n = b.members.len();
+            b.members
+                .iter()
+                .enumerate()
+                .find(|(i, m)| (m.ty.is_array() && i + 1 < n) || matrix_shape(&m.ty.base).is_some())
+                .map(|(_, m)| (b.block_name.clone(), m.span.clone()))
         });
         if let (None, Some((block, span))) = (&self.limitation, io_block_array) {
             // naga's GLSL front gives every member of an interface block one location, so
-            // an array member collides with the next one, and it takes no matrix varyings.
+            // an array member collides with the member after it; and it takes no matrix
+            // varyings.
             self.limitation = Some(crate::front::naga_run::Limitation {
                 construct: format!("an array or matrix member of the interface block `{}` (naga gives each member one location and no matrix varyings)", s.original_name(&block)),
                 span: Some(span),
