@@ -72,13 +72,19 @@ fn ends_in_jump(block: &naga::Block) -> bool {
 
 /// Makes interpolation and sampling explicit on vertex outputs and fragment inputs.
 pub fn normalize_interpolation(module: &mut Module) {
+    for_each_interface_binding(module, |binding, ty, _| normalize_binding(binding, ty));
+}
+
+/// Calls `f(binding, type, name)` on every vertex output and fragment input binding
+/// (struct members included), writing changed struct types back.
+fn for_each_interface_binding(module: &mut Module, mut f: impl FnMut(&mut Binding, &TypeInner, Option<&String>)) {
     let mut struct_types = Vec::new();
     for ep in &mut module.entry_points {
         match ep.stage {
             naga::ShaderStage::Vertex => {
                 if let Some(r) = &mut ep.function.result {
                     match &mut r.binding {
-                        Some(b) => normalize_binding(b, &module.types[r.ty].inner),
+                        Some(b) => f(b, &module.types[r.ty].inner, None),
                         None => struct_types.push(r.ty),
                     }
                 }
@@ -86,7 +92,7 @@ pub fn normalize_interpolation(module: &mut Module) {
             naga::ShaderStage::Fragment => {
                 for a in &mut ep.function.arguments {
                     match &mut a.binding {
-                        Some(b) => normalize_binding(b, &module.types[a.ty].inner),
+                        Some(b) => f(b, &module.types[a.ty].inner, a.name.as_ref()),
                         None => struct_types.push(a.ty),
                     }
                 }
@@ -101,7 +107,7 @@ pub fn normalize_interpolation(module: &mut Module) {
         let TypeInner::Struct { mut members, span } = t.inner else { continue };
         for m in &mut members {
             if let Some(b) = &mut m.binding {
-                normalize_binding(b, &module.types[m.ty].inner);
+                f(b, &module.types[m.ty].inner, m.name.as_ref());
             }
         }
         let new = Type { name: t.name, inner: TypeInner::Struct { members, span } };
@@ -436,7 +442,7 @@ pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::sy
     if wanted.is_empty() {
         return;
     }
-    let apply = |binding: &mut Binding, name: Option<&String>| {
+    for_each_interface_binding(module, |binding, _, name| {
         let (Binding::Location { interpolation, sampling, .. }, Some((interp, centroid))) = (binding, name.and_then(|n| wanted.get(n))) else { return };
         match interp {
             Some(Interp::Flat) => {
@@ -451,39 +457,5 @@ pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::sy
         if *centroid {
             *sampling = Some(Sampling::Centroid);
         }
-    };
-    let mut struct_types = Vec::new();
-    for ep in &mut module.entry_points {
-        match side {
-            Storage::Out => {
-                if let Some(r) = &ep.function.result {
-                    struct_types.push(r.ty);
-                }
-            }
-            _ => {
-                for a in &mut ep.function.arguments {
-                    if let Some(b) = &mut a.binding {
-                        apply(b, a.name.as_ref());
-                    } else {
-                        struct_types.push(a.ty);
-                    }
-                }
-            }
-        }
-    }
-    struct_types.sort();
-    struct_types.dedup();
-    for ty in struct_types {
-        let t = module.types[ty].clone();
-        let TypeInner::Struct { mut members, span } = t.inner else { continue };
-        for m in &mut members {
-            if let Some(b) = &mut m.binding {
-                apply(b, m.name.as_ref());
-            }
-        }
-        let new = Type { name: t.name, inner: TypeInner::Struct { members, span } };
-        if module.types.get(&new).is_none() {
-            module.types.replace(ty, new);
-        }
-    }
+    });
 }
