@@ -167,18 +167,14 @@ fn layout_limitation(module: &naga::Module, err: &naga::valid::ValidationError) 
     }
 }
 
-/// Indices into `s.swizzles` of the accesses naga reports as field lookups on a type that
-/// has no fields (scalar bases: naga has no scalar swizzles). Parse only.
-pub fn scalar_swizzles(s: &crate::front::syntax::StageSyntax, rewritten: &Rewritten, stage: naga::ShaderStage) -> Vec<usize> {
-    let parsed = catch_unwind(AssertUnwindSafe(|| {
-        naga::front::glsl::Frontend::default().parse(&naga::front::glsl::Options::from(stage), &rewritten.text)
-    }));
-    let Ok(Err(errors)) = parsed else { return Vec::new() };
+/// Indices into `s.swizzles` of the accesses naga's `errors` (E0150, at the user's spans)
+/// report as field lookups on a type that has no fields: scalar bases, as naga has no
+/// scalar swizzles.
+pub fn scalar_swizzles(s: &crate::front::syntax::StageSyntax, errors: &[Diagnostic]) -> Vec<usize> {
     errors
-        .errors
         .iter()
-        .filter(|e| matches!(&e.kind, ErrorKind::SemanticError(m) if m.starts_with("Can't lookup field on this type")))
-        .filter_map(|e| e.meta.to_range().map(|r| rewritten.map.range_to_original(r)))
+        .filter(|d| d.code == "E0150" && d.message.starts_with("Can't lookup field on this type"))
+        .filter_map(|d| d.span.clone())
         .filter_map(|span| s.swizzles.iter().position(|w| w.whole.end == span.end || (w.base.end <= span.start && span.end <= w.whole.end)))
         .collect()
 }

@@ -80,19 +80,26 @@ pub fn compile(
             continue;
         };
         let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
-        if rewritten.limitation.is_none() && !rdiags.iter().any(Diagnostic::is_error) && s.has_main {
+        let run = |rewritten: &Rewritten, rdiags: &[Diagnostic]| match &rewritten.limitation {
+            _ if rdiags.iter().any(Diagnostic::is_error) || !s.has_main => None,
+            Some(limit) => Some(Outcome::Limited(limit.clone())),
+            None => Some(naga_run::parse_and_validate(s.file, rewritten, naga_stage, &s.version)),
+        };
+        let mut outcome = run(&rewritten, &rdiags);
+        if allows_scalar_swizzle(&s) {
             // GLSL 4.20 swizzles scalars (`x.rrr`); naga does not. Its "can't lookup field"
             // on a swizzle-shaped access tells which bases are scalars: rewrite those as
             // constructors and parse again.
             let mut scalar: Vec<usize> = Vec::new();
             for _ in 0..8 {
-                let found = naga_run::scalar_swizzles(&s, &rewritten, naga_stage);
-                let new: Vec<usize> = found.into_iter().filter(|i| !scalar.contains(i)).collect();
-                if new.is_empty() || !allows_scalar_swizzle(&s) {
+                let Some(Outcome::Invalid(errors)) = &outcome else { break };
+                let new: Vec<usize> = naga_run::scalar_swizzles(&s, errors).into_iter().filter(|i| !scalar.contains(i)).collect();
+                if new.is_empty() {
                     break;
                 }
                 scalar.extend(new);
                 (rewritten, rdiags) = rewrite::rewrite_with(&s, &plan, options.strict, &scalar);
+                outcome = run(&rewritten, &rdiags);
             }
         }
         if let Some(dir) = std::env::var_os("EFFECTC_DUMP_REWRITE") {
@@ -100,14 +107,8 @@ pub fn compile(
             let name = std::path::Path::new(files.path(s.file)).file_name().map(|n| n.to_os_string()).unwrap_or_default();
             let _ = std::fs::write(std::path::Path::new(&dir).join(name), &rewritten.text);
         }
-        let blocked = rdiags.iter().any(Diagnostic::is_error);
         diags.extend(rdiags);
         let mut limitation = None;
-        let outcome = match &rewritten.limitation {
-            _ if blocked || !s.has_main => None,
-            Some(limit) => Some(Outcome::Limited(limit.clone())),
-            None => Some(naga_run::parse_and_validate(s.file, &rewritten, naga_stage, &s.version)),
-        };
         let naga = match outcome {
             None => None,
             Some(outcome) => match outcome {
