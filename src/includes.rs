@@ -13,10 +13,8 @@ use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 use crate::diag::{Diagnostic, FileId, Files, Segment};
-use crate::front::version::blank_comments;
-
-/// An `#include` that cannot be resolved.
-pub const E_INCLUDE: &str = "E0104";
+pub use crate::front::conditionals::E_INCLUDE;
+use crate::front::conditionals::include_directives;
 
 /// Deepest include nesting followed.
 const MAX_DEPTH: usize = 32;
@@ -37,39 +35,11 @@ pub fn expand(path: &Path, main: FileId, files: &mut Files, diags: &mut Vec<Diag
 }
 
 fn has_include(text: &str) -> bool {
-    text.contains("include") && directives(text).next().is_some()
+    text.contains("include") && !include_directives(text).is_empty()
 }
 
 fn canonical(path: &Path) -> PathBuf {
     std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
-}
-
-/// `(line range incl. its end, name, name span)` of every `#include` line outside comments.
-fn directives(text: &str) -> impl Iterator<Item = (std::ops::Range<usize>, String, std::ops::Range<usize>)> + '_ {
-    let clean = blank_comments(text);
-    let mut found = Vec::new();
-    let mut start = 0;
-    for line in clean.split_inclusive(|b| *b == b'\n') {
-        let l = String::from_utf8_lossy(line);
-        let t = l.trim_start();
-        if let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("include")) {
-            let r = rest.trim_start();
-            let close = match r.chars().next() {
-                Some('"') => '"',
-                Some('<') => '>',
-                _ => {
-                    start += line.len();
-                    continue;
-                }
-            };
-            if let Some(n) = r[1..].find(close) {
-                let name_at = start + (l.len() - r.len()) + 1;
-                found.push((start..start + line.len(), r[1..1 + n].to_string(), name_at..name_at + n));
-            }
-        }
-        start += line.len();
-    }
-    found.into_iter()
 }
 
 struct Expansion {
@@ -92,7 +62,7 @@ impl Expansion {
 
     fn inline(&mut self, path: &Path, id: FileId, text: &str, files: &mut Files, diags: &mut Vec<Diagnostic>) {
         let mut copied = 0;
-        for (line, name, name_span) in directives(text).collect::<Vec<_>>() {
+        for (line, name, name_span) in include_directives(text) {
             self.copy(id, text, copied, line.start);
             copied = line.end;
             let target = path.parent().unwrap_or(Path::new(".")).join(&name);

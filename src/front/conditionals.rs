@@ -21,6 +21,52 @@ use std::collections::HashMap;
 
 use crate::front::version::{Profile, Version};
 
+/// An `#include` that cannot be resolved (see [`crate::includes`]).
+pub const E_INCLUDE: &str = "E0104";
+
+/// `(line range incl. its end, file name, name span)` of every `#include` line outside comments.
+pub fn include_directives(text: &str) -> Vec<(std::ops::Range<usize>, String, std::ops::Range<usize>)> {
+    let clean = crate::front::version::blank_comments(text);
+    let mut found = Vec::new();
+    let mut start = 0;
+    for line in clean.split_inclusive(|b| *b == b'\n') {
+        let l = String::from_utf8_lossy(line);
+        let t = l.trim_start();
+        if let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("include")) {
+            let r = rest.trim_start();
+            let close = match r.chars().next() {
+                Some('"') => Some('"'),
+                Some('<') => Some('>'),
+                _ => None,
+            };
+            if let Some(n) = close.and_then(|c| r[1..].find(c)) {
+                let name_at = start + (l.len() - r.len()) + 1;
+                found.push((start..start + line.len(), r[1..1 + n].to_string(), name_at..name_at + n));
+            }
+        }
+        start += line.len();
+    }
+    found
+}
+
+/// `(macro name, body span)` of every `#define` line (the body starts after the name, or
+/// after the parameter list's name for function-like macros).
+pub fn define_lines(text: &str) -> Vec<(String, std::ops::Range<usize>)> {
+    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let mut out = Vec::new();
+    let mut line_start = 0;
+    for line in text.split_inclusive('\n') {
+        if let Some(rest) = line.trim_start().strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("define")) {
+            let rest_trim = rest.trim_start();
+            let name_len = rest_trim.bytes().take_while(|b| is_ident(*b)).count();
+            let body = line.len() - rest_trim.len() + name_len;
+            out.push((rest_trim[..name_len].to_string(), line_start + body..line_start + line.len()));
+        }
+        line_start += line.len();
+    }
+    out
+}
+
 /// Type names the rewrite generates (Vulkan GLSL's separate textures and samplers).
 const GENERATED_TYPES: &[&str] = &[
     "texture1D", "texture2D", "texture3D", "textureCube", "texture2DRect", "texture1DArray", "texture2DArray",

@@ -1020,14 +1020,7 @@ impl Ctx<'_> {
 /// Whether `text` has a `#define name` (a uniform of another stage by that name would be
 /// macro-expanded in this stage's copy of the shared block).
 fn defines_macro(text: &str, name: &str) -> bool {
-    text.lines().any(|l| {
-        l.trim_start()
-            .strip_prefix('#')
-            .map(str::trim_start)
-            .and_then(|r| r.strip_prefix("define"))
-            .and_then(|r| r.trim_start().strip_prefix(name))
-            .is_some_and(|rest| !rest.starts_with(|c: char| c.is_ascii_alphanumeric() || c == '_'))
-    })
+    crate::front::conditionals::define_lines(text).iter().any(|(n, _)| n == name)
 }
 
 /// What the first argument of a built-in call names.

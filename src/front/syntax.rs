@@ -333,7 +333,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
     let unextended = version::blank_extensions(original);
     let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
     if let Some(span) = compiled_include(&resolved) {
-        return Err(vec![Diagnostic::error(crate::includes::E_INCLUDE, format!("cannot read included file `{}`", &original[span.clone()]))
+        return Err(vec![Diagnostic::error(crate::front::conditionals::E_INCLUDE, format!("cannot read included file `{}`", &original[span.clone()]))
             .at(file, span, "not found relative to the including file")
             .with_note("`#include` names a file relative to the file that includes it")]);
     }
@@ -926,14 +926,16 @@ impl<'a> Collector<'a> {
     fn local_constant_sizes(&mut self, a: &ast::ArraySpecifier) {
         for d in &a.dimensions {
             if let ast::ArraySpecifierDimensionData::ExplicitlySized(e) = &d.content {
-                let literal = matches!(e.content, ast::ExprData::IntConst(_) | ast::ExprData::UIntConst(_));
-                let uses_local = expr_text(e).split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| self.local_consts.contains_key(w));
-                if let (false, true, Some(v)) = (literal, uses_local, self.const_int(e)) {
-                    if let Ok(v) = u32::try_from(v) {
-                        self.s.constant_sizes.push((span_of(e), v));
-                    }
-                }
+                self.fold_local_constant(e);
             }
+        }
+    }
+
+    /// Records `e` for the rewrite to write as its value when it reads a local constant.
+    fn fold_local_constant(&mut self, e: &ast::Expr) {
+        let uses_local = expr_text(e).split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| self.local_consts.contains_key(w));
+        if let (true, Some(Ok(v))) = (uses_local, self.const_int(e).map(u32::try_from)) {
+            self.s.constant_sizes.push((span_of(e), v));
         }
     }
 
@@ -975,12 +977,7 @@ impl<'a> Collector<'a> {
                 if let ast::CaseLabelData::Case(e) = &c.content {
                     self.expr(e);
                     // `case TAPS:` with a local constant: naga wants the value.
-                    let uses_local = expr_text(e).split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| self.local_consts.contains_key(w));
-                    if let (true, Some(v)) = (uses_local, self.const_int(e)) {
-                        if let Ok(v) = u32::try_from(v) {
-                            self.s.constant_sizes.push((span_of(e), v));
-                        }
-                    }
+                    self.fold_local_constant(e);
                 }
             }
             ast::StatementData::Iteration(it) => {
@@ -1200,52 +1197,29 @@ impl<'a> Collector<'a> {
     }
 }
 
-/// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
-/// constants, subpass inputs, separate texture and sampler uniforms)?
 /// The file name of an `#include` left in the compiled text (one `includes` could not read).
 fn compiled_include(text: &str) -> Option<Range<usize>> {
-    let clean = version::blank_comments(text);
-    let clean = String::from_utf8_lossy(&clean);
-    let mut start = 0;
-    for line in clean.split_inclusive('\n') {
-        let t = line.trim_start();
-        if let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("include")) {
-            let r = rest.trim_start();
-            let at = start + line.len() - r.len() + 1;
-            let close = if r.starts_with('<') { '>' } else { '"' };
-            let n = r.get(1..).and_then(|x| x.find(close)).unwrap_or(0);
-            return Some(at..at + n);
-        }
-        start += line.len();
-    }
-    None
+    crate::front::conditionals::include_directives(text).into_iter().next().map(|(_, _, name)| name)
 }
 
 /// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
 fn macro_body_occurrences(text: &str, name: &str) -> Vec<Range<usize>> {
     let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let bytes = text.as_bytes();
     let mut out = Vec::new();
-    let mut line_start = 0;
-    for line in text.split_inclusive('\n') {
-        let t = line.trim_start();
-        if let Some(rest) = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("define")) {
-            let body_from = line.len() - rest.len();
-            let rest_trim = rest.trim_start();
-            let macro_name_len = rest_trim.bytes().take_while(|b| is_ident(*b)).count();
-            let body = body_from + (rest.len() - rest_trim.len()) + macro_name_len;
-            let bytes = line.as_bytes();
-            for (i, _) in line[body..].match_indices(name) {
-                let (s, e) = (body + i, body + i + name.len());
-                if (s == 0 || !is_ident(bytes[s - 1])) && (e >= bytes.len() || !is_ident(bytes[e])) {
-                    out.push(line_start + s..line_start + e);
-                }
+    for (_, body) in crate::front::conditionals::define_lines(text) {
+        for (i, _) in text[body.clone()].match_indices(name) {
+            let (s, e) = (body.start + i, body.start + i + name.len());
+            if (s == 0 || !is_ident(bytes[s - 1])) && (e >= bytes.len() || !is_ident(bytes[e])) {
+                out.push(s..e);
             }
         }
-        line_start += line.len();
     }
     out
 }
 
+/// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
+/// constants, subpass inputs, separate texture and sampler uniforms)?
 fn vulkan_source(text: &str) -> bool {
     let squeezed: String = text.split_whitespace().collect::<Vec<_>>().join(" ");
     squeezed.contains("push_constant")
