@@ -24,10 +24,8 @@ use effectc::render::device::Gpu;
 use effectc::render::scene::{ColorMode, Scene, SceneInput};
 use effectc::render::semantics::FrameState;
 
-const PROGRAMS: &[(&str, &str)] = &[
-    ("sun (169-tap in-shader blur)", "effects/sun/effect.toml"),
-    ("obj triangle (cheap shader)", "tests/render/obj/effect.toml"),
-];
+const PROGRAMS: &[(&str, &str)] =
+    &[("sun (169-tap in-shader blur)", "effects/sun/effect.toml"), ("obj triangle (cheap shader)", "tests/render/obj/effect.toml")];
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -91,12 +89,18 @@ fn effectc_steady_ms(manifest: &Path, size: u32, frames: u32) -> f64 {
 fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
     let (outcome, checked) = check_inputs(&[manifest.to_path_buf()], None, FrontOptions::default());
     let c = &checked[0];
-    let t = effectc::translate::translate_checked(c, &outcome, TranslateOptions::for_rendering(true))
-        .expect("checks")
-        .expect("translates");
+    let t = effectc::translate::translate_checked(c, &outcome, TranslateOptions::for_rendering(true)).expect("checks").expect("translates");
     let wgsl = String::from_utf8(effectc::back::emit(&t, BackTarget::Wgsl).unwrap().remove(0).bytes).unwrap();
-    let input =
-        SceneInput { translation: &t, wgsl: &wgsl, program: c.program.as_ref().unwrap(), effect: c.effect.as_ref(), mode: ColorMode::Unorm8, flipped_y: true, pass: None, degenerate: None };
+    let input = SceneInput {
+        translation: &t,
+        wgsl: &wgsl,
+        program: c.program.as_ref().unwrap(),
+        effect: c.effect.as_ref(),
+        mode: ColorMode::Unorm8,
+        flipped_y: true,
+        pass: None,
+        degenerate: None,
+    };
     let mut scene = Scene::new(gpu, &input).expect("scene");
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: None,

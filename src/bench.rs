@@ -20,9 +20,9 @@ use crate::diag::Diagnostic;
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command;
-use crate::render::memory::{self, MemoryRequest, MemoryRun};
 use crate::render::device::Gpu;
 use crate::render::frames::{GpuClock, Pixels};
+use crate::render::memory::{self, MemoryRequest, MemoryRun};
 use crate::stage::StageKind;
 
 pub const E_KNOB_UNKNOWN: &str = "E0801";
@@ -143,9 +143,15 @@ fn knobs_of(effect: &Effect, request: &Request) -> Result<Vec<Knob>, Box<Diagnos
                 .filter(|u| u.value.as_ref().and_then(UniformValue::as_f64).is_some())
                 .map(|u| format!("`{}`", u.name))
                 .collect();
-            return Err(Box::new(Diagnostic::error(E_KNOB_UNKNOWN, format!("--knob `{name}` names no numeric [uniforms] entry of `{}`", effect.name))
-                .in_file(effect.file)
-                .with_note(if numeric.is_empty() { "the manifest gives no numeric uniform".to_string() } else { format!("numeric uniforms: {}", numeric.join(", ")) })));
+            return Err(Box::new(
+                Diagnostic::error(E_KNOB_UNKNOWN, format!("--knob `{name}` names no numeric [uniforms] entry of `{}`", effect.name))
+                    .in_file(effect.file)
+                    .with_note(if numeric.is_empty() {
+                        "the manifest gives no numeric uniform".to_string()
+                    } else {
+                        format!("numeric uniforms: {}", numeric.join(", "))
+                    }),
+            ));
         };
         let reference = *values.last().expect("parsed lists are non-empty");
         out.push((name.clone(), values.clone(), reference, template));
@@ -275,12 +281,7 @@ fn frame_error(frame: &[u8], reference: &[u8], (w, h): (u32, u32)) -> FrameError
         (Some(a), Some(b)) => image_compare::rgb_hybrid_compare(&a, &b).map_or(f64::NAN, |s| s.score),
         _ => f64::NAN,
     };
-    FrameError {
-        mean: sum / count,
-        max,
-        psnr_db: (mse > 0.0).then(|| 10.0 * (255.0f64 * 255.0 / mse).log10()),
-        ssim,
-    }
+    FrameError { mean: sum / count, max, psnr_db: (mse > 0.0).then(|| 10.0 * (255.0f64 * 255.0 / mse).log10()), ssim }
 }
 
 /// `NAME=v1,v2,…` → (name, values).
@@ -288,7 +289,9 @@ pub fn parse_knob(s: &str) -> Result<(String, Vec<f64>), String> {
     let (name, list) = s.split_once('=').ok_or_else(|| format!("{E_KNOB_VALUES}: expected NAME=v1,v2,…, got `{s}`"))?;
     let values: Result<Vec<f64>, String> = list
         .split(',')
-        .map(|v| v.trim().parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| format!("{E_KNOB_VALUES}: `{v}` is not a finite number")))
+        .map(|v| {
+            v.trim().parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| format!("{E_KNOB_VALUES}: `{v}` is not a finite number"))
+        })
         .collect();
     let values = values?;
     if name.trim().is_empty() || values.is_empty() {
@@ -315,7 +318,10 @@ pub fn table(r: &KnobReport) -> String {
         r.repeats,
         if r.repeats == 1 { "" } else { "s" },
     );
-    text.push_str(&format!("  {:>10}  {:>26}  {:>9}  {:>8}  {:>8}  {:>7}\n", "value", "ms/frame median [min-max]", "mean err", "max err", "PSNR dB", "SSIM"));
+    text.push_str(&format!(
+        "  {:>10}  {:>26}  {:>9}  {:>8}  {:>8}  {:>7}\n",
+        "value", "ms/frame median [min-max]", "mean err", "max err", "PSNR dB", "SSIM"
+    ));
     for row in &r.rows {
         let psnr = row.psnr_db.map_or("inf".to_string(), |p| format!("{p:.1}"));
         let ms = format!("{:.3} [{:.3}-{:.3}]", row.ms_median, row.ms_min, row.ms_max);

@@ -200,8 +200,11 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Ve
                 Err(diags) => {
                     out.io_error |= diags.iter().any(manifest::is_io_error);
                     out.diagnostics.push(
-                        Diagnostic::error(manifest::E_VALUE, format!("pass `{}` reuses an effect that has errors", pass.name))
-                            .at(effect.file, span.clone(), "this effect"),
+                        Diagnostic::error(manifest::E_VALUE, format!("pass `{}` reuses an effect that has errors", pass.name)).at(
+                            effect.file,
+                            span.clone(),
+                            "this effect",
+                        ),
                     );
                     out.diagnostics.extend(diags);
                     None
@@ -218,9 +221,8 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Ve
         let mut stage_files = Vec::new();
         let mut readable = true;
         for s in &view.stages {
-            let id = *read
-                .entry(s.path.clone())
-                .or_insert_with(|| read_stage(&s.path, &mut out.files, &mut out.diagnostics, &mut out.io_error));
+            let id =
+                *read.entry(s.path.clone()).or_insert_with(|| read_stage(&s.path, &mut out.files, &mut out.diagnostics, &mut out.io_error));
             match id {
                 Some(id) => stage_files.push((id, s.kind)),
                 None => readable = false,

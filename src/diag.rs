@@ -92,17 +92,8 @@ impl Diagnostic {
         self.file = Some(file);
         self
     }
-    pub fn with_label(
-        mut self,
-        file: FileId,
-        span: Range<usize>,
-        message: impl Into<String>,
-    ) -> Self {
-        self.labels.push(Label {
-            file,
-            span,
-            message: message.into(),
-        });
+    pub fn with_label(mut self, file: FileId, span: Range<usize>, message: impl Into<String>) -> Self {
+        self.labels.push(Label { file, span, message: message.into() });
         self
     }
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
@@ -147,10 +138,7 @@ impl Files {
         Self::default()
     }
     pub fn add(&mut self, path: impl Into<String>, text: impl Into<String>) -> FileId {
-        self.files.push(SourceFile {
-            path: path.into(),
-            text: text.into(),
-        });
+        self.files.push(SourceFile { path: path.into(), text: text.into() });
         FileId(self.files.len() - 1)
     }
     /// Registers the expanded text of `origin` (its `#include`s inlined). The front reads
@@ -254,11 +242,7 @@ impl Files {
             start -= 1;
         }
         // An empty (or reversed) span stays empty at `start`.
-        let mut end = if span.end <= span.start {
-            start
-        } else {
-            span.end.clamp(start, text.len())
-        };
+        let mut end = if span.end <= span.start { start } else { span.end.clamp(start, text.len()) };
         while !text.is_char_boundary(end) {
             end += 1;
         }
@@ -271,14 +255,7 @@ impl Files {
         let span = self.clamp_span(id, span)?;
         let (line, column) = self.line_col(id, span.start);
         let (end_line, end_column) = self.line_col(id, span.end);
-        Some(SpanLocation {
-            start: span.start,
-            end: span.end,
-            line,
-            column,
-            end_line,
-            end_column,
-        })
+        Some(SpanLocation { start: span.start, end: span.end, line, column, end_line, end_column })
     }
 }
 
@@ -309,14 +286,7 @@ pub fn count(diags: &[Diagnostic], severity: Severity) -> usize {
 /// equal on all of these keep their relative order.
 pub fn sort(diags: &mut [Diagnostic]) {
     diags.sort_by(|a, b| {
-        let key = |d: &Diagnostic| {
-            (
-                d.file,
-                d.span.as_ref().map(|s| s.start),
-                std::cmp::Reverse(d.severity),
-                d.code,
-            )
-        };
+        let key = |d: &Diagnostic| (d.file, d.span.as_ref().map(|s| s.start), std::cmp::Reverse(d.severity), d.code);
         key(a).cmp(&key(b))
     });
 }
@@ -329,22 +299,14 @@ pub fn summary_line(diags: &[Diagnostic], programs: usize) -> String {
     fn plural(n: usize, word: &str) -> String {
         format!("{n} {word}{}", if n == 1 { "" } else { "s" })
     }
-    let parts: Vec<String> = [
-        (Severity::Error, "error"),
-        (Severity::Warning, "warning"),
-        (Severity::Note, "note"),
-    ]
-    .into_iter()
-    .filter_map(|(sev, word)| match count(diags, sev) {
-        0 => None,
-        n => Some(plural(n, word)),
-    })
-    .collect();
-    let found = if parts.is_empty() {
-        "no problems".to_string()
-    } else {
-        parts.join(", ")
-    };
+    let parts: Vec<String> = [(Severity::Error, "error"), (Severity::Warning, "warning"), (Severity::Note, "note")]
+        .into_iter()
+        .filter_map(|(sev, word)| match count(diags, sev) {
+            0 => None,
+            n => Some(plural(n, word)),
+        })
+        .collect();
+    let found = if parts.is_empty() { "no problems".to_string() } else { parts.join(", ") };
     format!("checked {}: {found}", plural(programs, "program"))
 }
 
@@ -378,10 +340,7 @@ mod tests {
         assert_eq!(files.clamp_span(id, 4..1), Some(4..4));
         assert_eq!(files.clamp_span(FileId(7), 0..1), None);
         let loc = files.span_location(id, 4..5).unwrap();
-        assert_eq!(
-            (loc.line, loc.column, loc.end_line, loc.end_column),
-            (2, 1, 2, 2)
-        );
+        assert_eq!((loc.line, loc.column, loc.end_line, loc.end_column), (2, 1, 2, 2));
     }
 
     #[test]
@@ -390,24 +349,14 @@ mod tests {
         let w = Diagnostic::warning("W1", "y");
         let n = Diagnostic::note("N1", "z");
         assert_eq!(summary_line(&[], 1), "checked 1 program: no problems");
-        assert_eq!(
-            summary_line(&[e.clone(), w.clone(), w.clone()], 3),
-            "checked 3 programs: 1 error, 2 warnings"
-        );
-        assert_eq!(
-            summary_line(&[e.clone(), e, n], 0),
-            "checked 0 programs: 2 errors, 1 note"
-        );
+        assert_eq!(summary_line(&[e.clone(), w.clone(), w.clone()], 3), "checked 3 programs: 1 error, 2 warnings");
+        assert_eq!(summary_line(&[e.clone(), e, n], 0), "checked 0 programs: 2 errors, 1 note");
         assert_eq!(summary_line(&[w], 2), "checked 2 programs: 1 warning");
     }
 
     #[test]
     fn counts_and_has_errors() {
-        let diags = vec![
-            Diagnostic::warning("W1", "a"),
-            Diagnostic::error("E1", "b"),
-            Diagnostic::warning("W2", "c"),
-        ];
+        let diags = vec![Diagnostic::warning("W1", "a"), Diagnostic::error("E1", "b"), Diagnostic::warning("W2", "c")];
         assert!(has_errors(&diags));
         assert!(!has_errors(&diags[..1]));
         assert_eq!(count(&diags, Severity::Warning), 2);

@@ -109,13 +109,7 @@ pub fn plan(effect: &Effect, output_size: (u32, u32), keep_all: bool) -> PassPla
 }
 
 /// Lifetimes of the targets the running passes use, then a greedy assignment to textures.
-fn allocate(
-    effect: &Effect,
-    output_size: (u32, u32),
-    runs: &[bool],
-    attached: &[Vec<bool>],
-    keep_all: bool,
-) -> Vec<PhysicalTexture> {
+fn allocate(effect: &Effect, output_size: (u32, u32), runs: &[bool], attached: &[Vec<bool>], keep_all: bool) -> Vec<PhysicalTexture> {
     let last = effect.passes.len();
     // (name, first, last) in order of first use.
     let mut lifetimes: Vec<(String, usize, usize)> = Vec::new();
@@ -147,9 +141,7 @@ fn allocate(
         let size = decl.size.resolve(output_size);
         let free = (!keep_all)
             .then(|| {
-                textures.iter().position(|t| {
-                    t.format == decl.format && t.size == size && t.targets.iter().all(|(_, _, e)| *e < first)
-                })
+                textures.iter().position(|t| t.format == decl.format && t.size == size && t.targets.iter().all(|(_, _, e)| *e < first))
             })
             .flatten();
         match free {
@@ -222,12 +214,14 @@ mod tests {
 
     #[test]
     fn passes_that_do_not_reach_the_output_do_not_run() {
-        let e = effect(&[
-            pass("scene", "targets = [\"a\", \"b\"]"),
-            pass("debug", "targets = [\"c\"]"),
-            pass("post", "samples = { t = \"a\" }\ntargets = [\"final\"]"),
-        ]
-        .concat());
+        let e = effect(
+            &[
+                pass("scene", "targets = [\"a\", \"b\"]"),
+                pass("debug", "targets = [\"c\"]"),
+                pass("post", "samples = { t = \"a\" }\ntargets = [\"final\"]"),
+            ]
+            .concat(),
+        );
         let plan = plan(&e, (64, 64), false);
         assert_eq!(plan.runs, [true, false, true]);
         assert_eq!(plan.attached[0], [true, false], "b is never read");
@@ -246,12 +240,14 @@ mod tests {
     fn a_kept_target_makes_its_earlier_writer_run() {
         // `overlay` draws onto `final` with clear = false: the combine before it must run;
         // the first write of `final` is overwritten by `combine` (it clears), so `early` does not.
-        let e = effect(&[
-            pass("early", "targets = [\"final\"]"),
-            pass("combine", "targets = [\"final\"]\ndepth = \"z\""),
-            pass("overlay", "targets = [\"final\"]\ndepth = \"z\"\nclear = false"),
-        ]
-        .concat());
+        let e = effect(
+            &[
+                pass("early", "targets = [\"final\"]"),
+                pass("combine", "targets = [\"final\"]\ndepth = \"z\""),
+                pass("overlay", "targets = [\"final\"]\ndepth = \"z\"\nclear = false"),
+            ]
+            .concat(),
+        );
         let plan = plan(&e, (64, 64), false);
         assert_eq!(plan.runs, [false, true, true]);
         assert_eq!(plan.depth_kept, [false, true, false]);
@@ -259,14 +255,16 @@ mod tests {
 
     #[test]
     fn targets_share_a_texture_when_lifetimes_do_not_overlap() {
-        let e = effect(&[
-            pass("p0", "targets = [\"a\"]"),
-            pass("p1", "samples = { t = \"a\" }\ntargets = [\"b\"]"),
-            pass("p2", "samples = { t = \"b\" }\ntargets = [\"c\"]"),
-            pass("p3", "samples = { t = \"c\" }\ntargets = [\"d\"]"),
-            pass("p4", "samples = { t = \"d\" }\ntargets = [\"final\"]"),
-        ]
-        .concat());
+        let e = effect(
+            &[
+                pass("p0", "targets = [\"a\"]"),
+                pass("p1", "samples = { t = \"a\" }\ntargets = [\"b\"]"),
+                pass("p2", "samples = { t = \"b\" }\ntargets = [\"c\"]"),
+                pass("p3", "samples = { t = \"c\" }\ntargets = [\"d\"]"),
+                pass("p4", "samples = { t = \"d\" }\ntargets = [\"final\"]"),
+            ]
+            .concat(),
+        );
         let plan = plan(&e, (64, 64), false);
         // a [0,1], c [2,3] and final [4,end] share the first texture; b [1,2] overlaps
         // both a and c; d is rgba16f: its own.
@@ -285,13 +283,15 @@ mod tests {
 
     #[test]
     fn cycles_are_found_with_their_chain() {
-        let e = effect(&[
-            pass("first", "samples = { t = \"b\" }\ntargets = [\"a\"]"),
-            pass("second", "samples = { t = \"a\" }\ntargets = [\"b\"]"),
-            pass("third", "samples = { t = \"c\" }\ntargets = [\"final\"]"),
-            pass("fourth", "targets = [\"c\"]"),
-        ]
-        .concat());
+        let e = effect(
+            &[
+                pass("first", "samples = { t = \"b\" }\ntargets = [\"a\"]"),
+                pass("second", "samples = { t = \"a\" }\ntargets = [\"b\"]"),
+                pass("third", "samples = { t = \"c\" }\ntargets = [\"final\"]"),
+                pass("fourth", "targets = [\"c\"]"),
+            ]
+            .concat(),
+        );
         let chain = cycle_through(&e, 0, "b").expect("first ← second ← first");
         assert_eq!(chain, [(1, "b".to_string()), (0, "a".to_string())]);
         // `third` reads `c` before `fourth` writes it, but `fourth` does not depend on `third`.

@@ -13,8 +13,8 @@ use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 use crate::diag::{Diagnostic, FileId, Files, Segment};
-pub use crate::front::conditionals::E_INCLUDE;
 use crate::front::conditionals::include_directives;
+pub use crate::front::conditionals::E_INCLUDE;
 
 /// Deepest include nesting followed.
 const MAX_DEPTH: usize = 32;
@@ -68,7 +68,10 @@ impl Expansion {
             let target = path.parent().unwrap_or(Path::new(".")).join(&name);
             let key = canonical(&target);
             if self.stack.contains(&key) || self.stack.len() > MAX_DEPTH {
-                self.fail(diags, Diagnostic::error(E_INCLUDE, format!("`{name}` includes itself")).at(id, name_span, "included again here"));
+                self.fail(
+                    diags,
+                    Diagnostic::error(E_INCLUDE, format!("`{name}` includes itself")).at(id, name_span, "included again here"),
+                );
                 continue;
             }
             if self.once.contains(&key) {
@@ -81,7 +84,9 @@ impl Expansion {
                 continue;
             };
             let included = String::from_utf8_lossy(&bytes).into_owned();
-            if included.lines().any(|l| l.trim_start().strip_prefix('#').map(str::trim_start).is_some_and(|r| r.starts_with("pragma") && r.contains("once"))) {
+            if included.lines().any(|l| {
+                l.trim_start().strip_prefix('#').map(str::trim_start).is_some_and(|r| r.starts_with("pragma") && r.contains("once"))
+            }) {
                 self.once.insert(key.clone());
             }
             let inc_id = files.add(target.display().to_string(), included.clone());

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use effectc::back::{Target, TranslateOptions};
 use effectc::check::Outcome;
-use effectc::cli::{BenchArgs, CheckArgs, Cli, StressArgs, ColorChoice, Command, CommonArgs, Format, RenderArgs, TargetArg, TranslateArgs};
+use effectc::cli::{BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, StressArgs, TargetArg, TranslateArgs};
 use effectc::diag;
 use effectc::front::program::FrontOptions;
 
@@ -141,8 +141,8 @@ fn bench(args: BenchArgs) -> ExitCode {
 
 fn stress(args: StressArgs) -> ExitCode {
     let c = &args.common;
-    let sizes_ok = (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.0)
-        && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.1);
+    let sizes_ok =
+        (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.0) && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.1);
     if !sizes_ok || args.samples > 10_000 || !(args.timeout.is_finite() && args.timeout > 0.0) {
         eprintln!("error: --size must be 1..=8192 per side, --samples at most 10000, --timeout positive");
         return ExitCode::from(2);
@@ -255,8 +255,7 @@ fn diagnostics_text(c: &CommonArgs, outcome: &Outcome) -> String {
 /// The JSON document of `bench` and `stress`: the reports under `key`, the adapter and the
 /// diagnostics (the same objects as `--format json` elsewhere).
 fn report_json(key: &str, reports: &impl serde::Serialize, adapter: &Option<String>, outcome: &Outcome) -> String {
-    let diagnostics: serde_json::Value =
-        serde_json::from_str(&diag::render_json(&outcome.diagnostics, &outcome.files)).unwrap_or_default();
+    let diagnostics: serde_json::Value = serde_json::from_str(&diag::render_json(&outcome.diagnostics, &outcome.files)).unwrap_or_default();
     let mut doc = serde_json::json!({ "version": 1, "adapter": adapter, "diagnostics": diagnostics });
     doc[key] = serde_json::to_value(reports).unwrap_or_default();
     serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"

@@ -15,14 +15,8 @@ pub enum StageKind {
 }
 
 impl StageKind {
-    pub const ALL: [StageKind; 6] = [
-        StageKind::Vertex,
-        StageKind::TessControl,
-        StageKind::TessEval,
-        StageKind::Geometry,
-        StageKind::Fragment,
-        StageKind::Compute,
-    ];
+    pub const ALL: [StageKind; 6] =
+        [StageKind::Vertex, StageKind::TessControl, StageKind::TessEval, StageKind::Geometry, StageKind::Fragment, StageKind::Compute];
 
     /// The manifest key / `--stage` value.
     pub fn name(self) -> &'static str {

@@ -43,38 +43,38 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
     let inputs = input_paths(&outcome, &request.inputs);
     let mut written = Vec::new();
     for c in &checked {
-      for (result, dir_name) in translate_units(c, &outcome, request.back) {
-        let translation = match result {
-            Ok(t) => t,
-            Err(diags) => {
-                outcome.diagnostics.extend(diags);
-                continue;
-            }
-        };
-        let file = translation.file;
-        let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&dir_name));
-        let mut files = Vec::new();
-        for &target in &request.targets {
-            let outputs = match emit_contained(&translation, target) {
-                Ok(o) => o,
-                Err(e) => {
-                    outcome.diagnostics.push(target_error(file, target, &e));
+        for (result, dir_name) in translate_units(c, &outcome, request.back) {
+            let translation = match result {
+                Ok(t) => t,
+                Err(diags) => {
+                    outcome.diagnostics.extend(diags);
                     continue;
                 }
             };
-            for o in outputs {
-                let path = dir.join(&o.file_name);
-                match write_atomic(&path, &o.bytes, &inputs) {
-                    Ok(()) => files.push(path),
+            let file = translation.file;
+            let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(&dir_name));
+            let mut files = Vec::new();
+            for &target in &request.targets {
+                let outputs = match emit_contained(&translation, target) {
+                    Ok(o) => o,
                     Err(e) => {
-                        outcome.io_error = true;
-                        outcome.diagnostics.push(Diagnostic::error(E_OUTPUT_IO, e));
+                        outcome.diagnostics.push(target_error(file, target, &e));
+                        continue;
+                    }
+                };
+                for o in outputs {
+                    let path = dir.join(&o.file_name);
+                    match write_atomic(&path, &o.bytes, &inputs) {
+                        Ok(()) => files.push(path),
+                        Err(e) => {
+                            outcome.io_error = true;
+                            outcome.diagnostics.push(Diagnostic::error(E_OUTPUT_IO, e));
+                        }
                     }
                 }
             }
+            written.push(Written { translation, dir, files });
         }
-        written.push(Written { translation, dir, files });
-      }
     }
     crate::diag::sort(&mut outcome.diagnostics);
     (outcome, written)
@@ -83,12 +83,19 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
 /// The translations of a checked program, each with the directory name its files go to:
 /// one for a single-pass program, one per pass that reaches the output for a multi-pass
 /// effect (`<effect>.<pass>`, all in the effect's directory). None when check found errors.
-pub fn translate_units(c: &check::Checked, outcome: &Outcome, options: TranslateOptions) -> Vec<(Result<Translation, Vec<Diagnostic>>, String)> {
+pub fn translate_units(
+    c: &check::Checked,
+    outcome: &Outcome,
+    options: TranslateOptions,
+) -> Vec<(Result<Translation, Vec<Diagnostic>>, String)> {
     let Some(effect) = c.effect.as_ref().filter(|e| e.is_multi_pass()) else {
-        return translate_checked(c, outcome, options).map(|r| {
-            let dir = r.as_ref().map(|t| t.name.clone()).unwrap_or_default();
-            (r, dir)
-        }).into_iter().collect();
+        return translate_checked(c, outcome, options)
+            .map(|r| {
+                let dir = r.as_ref().map(|t| t.name.clone()).unwrap_or_default();
+                (r, dir)
+            })
+            .into_iter()
+            .collect();
     };
     if c.failed {
         return Vec::new();
@@ -158,7 +165,8 @@ fn program_name(outcome: &Outcome, program: &crate::front::program::CompiledProg
 
 /// Canonical paths of every file the run read.
 pub fn input_paths(outcome: &Outcome, inputs: &[PathBuf]) -> BTreeSet<PathBuf> {
-    let mut set: BTreeSet<PathBuf> = outcome.files.iter().filter_map(|(id, _)| std::fs::canonicalize(outcome.files.path(id)).ok()).collect();
+    let mut set: BTreeSet<PathBuf> =
+        outcome.files.iter().filter_map(|(id, _)| std::fs::canonicalize(outcome.files.path(id)).ok()).collect();
     set.extend(inputs.iter().filter_map(|p| std::fs::canonicalize(p).ok()));
     set
 }
@@ -185,8 +193,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8], inputs: &BTreeSet<PathBuf>) -> Re
 
 /// Human summary of one translated program, with `--explain` detail when asked.
 pub fn summary(w: &Written, explain: bool) -> String {
-    let names: Vec<String> =
-        w.files.iter().map(|f| f.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()).collect();
+    let names: Vec<String> = w.files.iter().map(|f| f.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()).collect();
     let mut text = format!("translated {} → {}: {}\n", w.translation.name, w.dir.display(), names.join(", "));
     let left = w.translation.left_out();
     if !left.is_empty() {

@@ -31,14 +31,14 @@ mod common;
 mod fail;
 #[path = "suite/hazards.rs"]
 mod hazards;
-#[path = "suite/rewrite.rs"]
-mod rewrite;
 #[path = "suite/passes.rs"]
 mod passes;
 #[path = "suite/pixels.rs"]
 mod pixels;
 #[path = "suite/render.rs"]
 mod render;
+#[path = "suite/rewrite.rs"]
+mod rewrite;
 #[path = "suite/robust.rs"]
 mod robust;
 #[path = "suite/stress.rs"]

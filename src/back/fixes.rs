@@ -21,8 +21,7 @@
 //!   value into an RGBA framebuffer.
 
 use naga::{
-    BinaryOperator, Binding, Expression, Handle, Interpolation, Literal, Module, Sampling, Span, Statement,
-    StructMember, Type, TypeInner,
+    BinaryOperator, Binding, Expression, Handle, Interpolation, Literal, Module, Sampling, Span, Statement, StructMember, Type, TypeInner,
 };
 
 use crate::back::merge::visit_statements;
@@ -125,9 +124,7 @@ fn normalize_binding(binding: &mut Binding, ty: &TypeInner) {
         *interpolation = Some(if float { Interpolation::Perspective } else { Interpolation::Flat });
     }
     match interpolation {
-        Some(Interpolation::Perspective | Interpolation::Linear) if sampling.is_none() => {
-            *sampling = Some(Sampling::Center)
-        }
+        Some(Interpolation::Perspective | Interpolation::Linear) if sampling.is_none() => *sampling = Some(Sampling::Center),
         _ => {}
     }
 }
@@ -218,7 +215,9 @@ pub fn widen_fragment_outputs(module: &mut Module) -> Vec<String> {
         let mut new_members = members.clone();
         let mut vec4s = Vec::new();
         for &(i, scalar, _) in &narrow {
-            let ty = module.types.insert(Type { name: None, inner: TypeInner::Vector { size: naga::VectorSize::Quad, scalar } }, Span::UNDEFINED);
+            let ty = module
+                .types
+                .insert(Type { name: None, inner: TypeInner::Vector { size: naga::VectorSize::Quad, scalar } }, Span::UNDEFINED);
             new_members[i].ty = ty;
             vec4s.push(ty);
             widened.push(members[i].name.clone().unwrap_or_default());
@@ -240,7 +239,10 @@ pub fn widen_fragment_outputs(module: &mut Module) -> Vec<String> {
                         naga::ScalarKind::Uint => (Literal::U32(0), Literal::U32(1)),
                         _ => (Literal::F32(0.0), Literal::F32(1.0)),
                     };
-                    (f.expressions.append(Expression::Literal(zero), Span::UNDEFINED), f.expressions.append(Expression::Literal(one), Span::UNDEFINED))
+                    (
+                        f.expressions.append(Expression::Literal(zero), Span::UNDEFINED),
+                        f.expressions.append(Expression::Literal(one), Span::UNDEFINED),
+                    )
                 })
                 .collect();
             let mut first = None;
@@ -407,12 +409,15 @@ pub fn read_only_unwritten_storage(module: &mut Module) {
     let Ok(info) = crate::front::naga_run::validator().validate(module) else { return };
     let written = |h: naga::Handle<naga::GlobalVariable>| {
         module.functions.iter().any(|(f, _)| info[f][h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
-            || (0..module.entry_points.len()).any(|i| info.get_entry_point(i)[h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
+            || (0..module.entry_points.len())
+                .any(|i| info.get_entry_point(i)[h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
     };
     let unwritten: Vec<_> = module
         .global_variables
         .iter()
-        .filter(|(h, v)| matches!(v.space, naga::AddressSpace::Storage { access } if access.contains(naga::StorageAccess::STORE)) && !written(*h))
+        .filter(|(h, v)| {
+            matches!(v.space, naga::AddressSpace::Storage { access } if access.contains(naga::StorageAccess::STORE)) && !written(*h)
+        })
         .map(|(h, _)| h)
         .collect();
     for h in unwritten {
@@ -443,7 +448,10 @@ pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::sy
         return;
     }
     for_each_interface_binding(module, |binding, _, name| {
-        let (Binding::Location { interpolation, sampling, .. }, Some((interp, centroid))) = (binding, name.and_then(|n| wanted.get(n))) else { return };
+        let (Binding::Location { interpolation, sampling, .. }, Some((interp, centroid))) = (binding, name.and_then(|n| wanted.get(n)))
+        else {
+            return;
+        };
         match interp {
             Some(Interp::Flat) => {
                 *interpolation = Some(Interpolation::Flat);

@@ -19,13 +19,7 @@ pub fn write(module: &Module) -> String {
                 let _ = writeln!(out, "  [{}] {name}: struct (span {span})", h.index());
                 for m in members {
                     let binding = m.binding.as_ref().map(|b| format!(" {b:?}")).unwrap_or_default();
-                    let _ = writeln!(
-                        out,
-                        "      +{} {}: [{}]{binding}",
-                        m.offset,
-                        m.name.as_deref().unwrap_or("_"),
-                        m.ty.index()
-                    );
+                    let _ = writeln!(out, "      +{} {}: [{}]{binding}", m.offset, m.name.as_deref().unwrap_or("_"), m.ty.index());
                 }
             }
             inner => {
@@ -36,14 +30,7 @@ pub fn write(module: &Module) -> String {
     if !module.constants.is_empty() {
         out.push_str("constants:\n");
         for (h, c) in module.constants.iter() {
-            let _ = writeln!(
-                out,
-                "  [{}] {}: [{}] = g[{}]",
-                h.index(),
-                c.name.as_deref().unwrap_or("_"),
-                c.ty.index(),
-                c.init.index()
-            );
+            let _ = writeln!(out, "  [{}] {}: [{}] = g[{}]", h.index(), c.name.as_deref().unwrap_or("_"), c.ty.index(), c.init.index());
         }
     }
     if !module.overrides.is_empty() {
@@ -62,14 +49,7 @@ pub fn write(module: &Module) -> String {
     for (h, g) in module.global_variables.iter() {
         let binding = g.binding.as_ref().map(|b| format!(" @group({}) @binding({})", b.group, b.binding)).unwrap_or_default();
         let init = g.init.map(|i| format!(" = g[{}]", i.index())).unwrap_or_default();
-        let _ = writeln!(
-            out,
-            "  [{}] {}: {:?} [{}]{binding}{init}",
-            h.index(),
-            g.name.as_deref().unwrap_or("_"),
-            g.space,
-            g.ty.index()
-        );
+        let _ = writeln!(out, "  [{}] {}: {:?} [{}]{binding}{init}", h.index(), g.name.as_deref().unwrap_or("_"), g.space, g.ty.index());
     }
     for (h, f) in module.functions.iter() {
         let _ = writeln!(out, "function [{}]", h.index());

@@ -11,10 +11,7 @@
 
 use std::collections::HashMap;
 
-use naga::{
-    Block, Constant, EntryPoint, Expression, Function, GlobalVariable, Handle, Module, Override,
-    Statement, Type, TypeInner,
-};
+use naga::{Block, Constant, EntryPoint, Expression, Function, GlobalVariable, Handle, Module, Override, Statement, Type, TypeInner};
 
 use crate::stage::StageKind;
 
@@ -282,14 +279,12 @@ impl<'a> Importer<'a> {
 /// and differ only in member names: the front renames a uniform that a stage shadows with
 /// its own variable (`effectc_other_<name>`). The shared type takes the user's names.
 fn share_layout(types: &mut naga::UniqueArena<Type>, a: Handle<Type>, b: Handle<Type>) -> Option<Handle<Type>> {
-    let (TypeInner::Struct { members: ma, span: sa }, TypeInner::Struct { members: mb, span: sb }) =
-        (&types[a].inner, &types[b].inner)
+    let (TypeInner::Struct { members: ma, span: sa }, TypeInner::Struct { members: mb, span: sb }) = (&types[a].inner, &types[b].inner)
     else {
         return None;
     };
-    let same = sa == sb
-        && ma.len() == mb.len()
-        && ma.iter().zip(mb).all(|(x, y)| x.ty == y.ty && x.offset == y.offset && x.binding == y.binding);
+    let same =
+        sa == sb && ma.len() == mb.len() && ma.iter().zip(mb).all(|(x, y)| x.ty == y.ty && x.offset == y.offset && x.binding == y.binding);
     if !same {
         return None;
     }
@@ -315,14 +310,7 @@ fn same_function(a: &Function, b: &Function) -> bool {
 }
 
 fn fingerprint(f: &Function) -> String {
-    format!(
-        "{:?}{:?}{:?}{:?}{:?}",
-        f.arguments,
-        f.result,
-        f.local_variables,
-        f.expressions,
-        without_spans(&f.body)
-    )
+    format!("{:?}{:?}{:?}{:?}{:?}", f.arguments, f.result, f.local_variables, f.expressions, without_spans(&f.body))
 }
 
 /// Every function of a module, entry points included.

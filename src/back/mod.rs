@@ -151,7 +151,9 @@ pub fn translate(
         }
         if let Some(limit) = &stage.limitation {
             let d = Diagnostic::error("E0306", format!("the {kind} stage uses {}, which naga cannot translate", limit.construct))
-                .with_note("the program is legal GLSL (`effectc check` accepts it); naga, which effectc translates with, does not take this construct");
+                .with_note(
+                "the program is legal GLSL (`effectc check` accepts it); naga, which effectc translates with, does not take this construct",
+            );
             diags.push(match &limit.span {
                 Some(span) => d.at(stage.syntax.file, span.clone(), "naga does not take this"),
                 None => d.in_file(stage.syntax.file),
@@ -207,9 +209,9 @@ pub fn translate(
         fixes::widen_fragment_outputs(&mut module);
     }
     // Compaction assumes a valid module; prove it first.
-    crate::front::naga_run::validator().validate(&module).map_err(|e| {
-        vec![internal(file, format!("the merged module does not validate: {}", e.as_inner()))]
-    })?;
+    crate::front::naga_run::validator()
+        .validate(&module)
+        .map_err(|e| vec![internal(file, format!("the merged module does not validate: {}", e.as_inner()))])?;
     let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
     fixes::read_only_unwritten_storage(&mut module);
     let mut probes = None;
@@ -217,9 +219,9 @@ pub fn translate(
         let stages: &[StageKind] = if options.probe_vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };
         probes = Some(probe(&mut module, program, stages).map_err(|m| vec![internal(file, m)])?);
     }
-    let info = crate::front::naga_run::validator().validate(&module).map_err(|e| {
-        vec![internal(file, format!("the translated module does not validate: {}", e.as_inner()))]
-    })?;
+    let info = crate::front::naga_run::validator()
+        .validate(&module)
+        .map_err(|e| vec![internal(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
     let reflection = reflect::reflect(name, &module, &program.plan, effect, left_out);
     Ok(Translation {
         name: name.to_string(),
@@ -276,10 +278,7 @@ pub fn emit(t: &Translation, target: Target) -> Result<Vec<Output>, String> {
     let (m, info) = (&t.module, &t.info);
     let text = |name: String, text: String| Output { file_name: name, bytes: text.into_bytes() };
     let per_stage = |write: &dyn Fn(StageKind, naga::ShaderStage, &str) -> Result<Output, String>| -> Result<Vec<Output>, String> {
-        t.stages
-            .iter()
-            .map(|s| write(*s, s.naga().expect("translated stages have naga stages"), merge::entry_name(*s)))
-            .collect()
+        t.stages.iter().map(|s| write(*s, s.naga().expect("translated stages have naga stages"), merge::entry_name(*s))).collect()
     };
     let stage_file = |stage: StageKind, ext: &str| format!("{}.{}.{ext}", t.name, stage.short_name());
     Ok(match target {
@@ -292,9 +291,7 @@ pub fn emit(t: &Translation, target: Target) -> Result<Vec<Output>, String> {
             let words = spirv::write(m, info, stage, entry)?;
             Ok(text(stage_file(kind, "spvasm"), spirv::disassemble(&words)?))
         })?,
-        Target::Glsl => per_stage(&|kind, stage, entry| {
-            Ok(text(stage_file(kind, "glsl"), glsl_es::write(m, info, stage, entry)?))
-        })?,
+        Target::Glsl => per_stage(&|kind, stage, entry| Ok(text(stage_file(kind, "glsl"), glsl_es::write(m, info, stage, entry)?)))?,
         Target::Msl => vec![text(format!("{}.metal", t.name), msl::write(m, info)?)],
         Target::Hlsl => vec![text(format!("{}.hlsl", t.name), hlsl::write(m, info)?)],
         Target::Reflect => {

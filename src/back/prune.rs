@@ -66,11 +66,8 @@ fn compact(module: &mut Module) -> Vec<LeftOut> {
         left.push(LeftOut { kind: "function", name: f, reason: "never called from an entry point".into() });
     }
     for (g, bound) in g0.into_iter().filter(|g| !g1.contains(g)) {
-        let (kind, reason) = if bound {
-            ("resource", "no stage reads it; its binding is not emitted")
-        } else {
-            ("global", "never used by code that runs")
-        };
+        let (kind, reason) =
+            if bound { ("resource", "no stage reads it; its binding is not emitted") } else { ("global", "never used by code that runs") };
         left.push(LeftOut { kind, name: g, reason: reason.into() });
     }
     for c in c0.into_iter().filter(|c| !c1.contains(c)) {
@@ -274,8 +271,7 @@ fn drop_unreceived_vertex_outputs(module: &mut Module) -> Vec<LeftOut> {
     let Some(result) = module.entry_points[vi].function.result.clone() else { return left };
     let old = module.types[result.ty].clone();
     let TypeInner::Struct { members, .. } = &old.inner else { return left };
-    let keep: Vec<bool> =
-        members.iter().map(|m| location_of(&m.binding).is_none_or(|l| received.contains(&l))).collect();
+    let keep: Vec<bool> = members.iter().map(|m| location_of(&m.binding).is_none_or(|l| received.contains(&l))).collect();
     if keep.iter().all(|k| *k) {
         return left;
     }
@@ -324,10 +320,7 @@ fn drop_unreceived_vertex_outputs(module: &mut Module) -> Vec<LeftOut> {
 fn relaid_struct(module: &mut Module, name: Option<String>, members: Vec<StructMember>, uniform: bool) -> (Handle<Type>, Vec<u32>) {
     let mut layouter = naga::proc::Layouter::default();
     layouter.update(module.to_ctx()).expect("types of a validated module lay out");
-    let filler_ty = module.types.insert(
-        Type { name: None, inner: TypeInner::Scalar(naga::Scalar::F32) },
-        naga::Span::UNDEFINED,
-    );
+    let filler_ty = module.types.insert(Type { name: None, inner: TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED);
     let mut out: Vec<StructMember> = Vec::new();
     let mut end = 0u32;
     let mut after_struct = 0u32;
@@ -404,9 +397,10 @@ fn remove_stores(block: &mut naga::Block, into_dead: &dyn Fn(Handle<Expression>)
 
 fn drop_unread_uniform_members(module: &mut Module, block_name: &str) -> Vec<LeftOut> {
     let mut left = Vec::new();
-    let found = module.global_variables.iter().find(|(_, g)| {
-        g.space == naga::AddressSpace::Uniform && module.types[g.ty].name.as_deref() == Some(block_name)
-    });
+    let found = module
+        .global_variables
+        .iter()
+        .find(|(_, g)| g.space == naga::AddressSpace::Uniform && module.types[g.ty].name.as_deref() == Some(block_name));
     let Some((g, var)) = found else { return left };
     let old_ty = var.ty;
     let TypeInner::Struct { members, .. } = module.types[old_ty].inner.clone() else { return left };

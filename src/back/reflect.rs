@@ -347,11 +347,7 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
     Reflection {
         schema: SCHEMA_VERSION,
         effect: name.to_string(),
-        entry_points: module
-            .entry_points
-            .iter()
-            .map(|e| EntryPointInfo { stage: stage_name(e.stage), name: e.name.clone() })
-            .collect(),
+        entry_points: module.entry_points.iter().map(|e| EntryPointInfo { stage: stage_name(e.stage), name: e.name.clone() }).collect(),
         bindings,
         uniform_block,
         vertex_inputs,

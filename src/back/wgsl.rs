@@ -27,9 +27,7 @@ pub fn write(module: &Module, info: &ModuleInfo) -> Result<String, String> {
 fn same_block_layout(ir: &Module, reparsed: &Module) -> Result<(), String> {
     let offsets = |m: &Module| {
         m.types.iter().find(|(_, t)| t.name.as_deref() == Some(UNIFORM_BLOCK)).and_then(|(_, t)| match &t.inner {
-            naga::TypeInner::Struct { members, span } => {
-                Some((members.iter().map(|m| m.offset).collect::<Vec<_>>(), *span))
-            }
+            naga::TypeInner::Struct { members, span } => Some((members.iter().map(|m| m.offset).collect::<Vec<_>>(), *span)),
             _ => None,
         })
     };
@@ -45,8 +43,7 @@ fn same_block_layout(ir: &Module, reparsed: &Module) -> Result<(), String> {
 
 /// Parses and validates WGSL text with naga's WGSL front; returns the parsed module.
 pub fn verify(text: &str) -> Result<Module, String> {
-    let module = naga::front::wgsl::parse_str(text)
-        .map_err(|e| format!("the emitted WGSL does not parse: {}", e.emit_to_string(text)))?;
+    let module = naga::front::wgsl::parse_str(text).map_err(|e| format!("the emitted WGSL does not parse: {}", e.emit_to_string(text)))?;
     crate::front::naga_run::validator()
         .validate(&module)
         .map_err(|e| format!("the emitted WGSL does not validate: {}", e.emit_to_string(text)))?;

@@ -31,11 +31,7 @@ fn chart(area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>, r: &KnobRep
         .x_label_area_size(40)
         .y_label_area_size(56)
         .build_cartesian_2d(0.0..x_max, 0.0..y_max)?;
-    chart
-        .configure_mesh()
-        .x_desc(format!("ms/frame ({})", r.clock))
-        .y_desc("mean abs error vs reference (8-bit levels)")
-        .draw()?;
+    chart.configure_mesh().x_desc(format!("ms/frame ({})", r.clock)).y_desc("mean abs error vs reference (8-bit levels)").draw()?;
     let mut points: Vec<(f64, f64, f64)> = r.rows.iter().map(|row| (row.ms_median, row.mean_error, row.value)).collect();
     points.sort_by(|a, b| a.0.total_cmp(&b.0));
     chart.draw_series(LineSeries::new(points.iter().map(|(x, y, _)| (*x, *y)), BLUE.stroke_width(2)))?;

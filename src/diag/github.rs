@@ -7,9 +7,7 @@ use super::{Diagnostic, Files, Severity};
 
 /// Escape workflow-command message data: `%`, `\r`, `\n`.
 fn escape_data(s: &str) -> String {
-    s.replace('%', "%25")
-        .replace('\r', "%0D")
-        .replace('\n', "%0A")
+    s.replace('%', "%25").replace('\r', "%0D").replace('\n', "%0A")
 }
 
 /// Escape a workflow-command property value: as message data, plus `:` and `,`.
@@ -40,11 +38,7 @@ pub fn render_github(diags: &[Diagnostic], files: &Files) -> String {
         let mut props = Vec::new();
         if let Some((id, file)) = d.file.and_then(|id| Some((id, files.try_get(id)?))) {
             props.push(format!("file={}", escape_property(&file.path)));
-            if let Some(loc) = d
-                .span
-                .clone()
-                .and_then(|span| files.span_location(id, span))
-            {
+            if let Some(loc) = d.span.clone().and_then(|span| files.span_location(id, span)) {
                 props.push(format!("line={}", loc.line));
                 props.push(format!("col={}", loc.column));
                 props.push(format!("endLine={}", loc.end_line));
@@ -57,21 +51,14 @@ pub fn render_github(diags: &[Diagnostic], files: &Files) -> String {
         for label in &d.labels {
             if let Some(loc) = files.span_location(label.file, label.span.clone()) {
                 let path = files.path(label.file);
-                lines.push(format!(
-                    "{path}:{}:{}: {}",
-                    loc.line, loc.column, label.message
-                ));
+                lines.push(format!("{path}:{}:{}: {}", loc.line, loc.column, label.message));
             }
         }
         lines.extend(d.notes.iter().cloned());
         if let Some(help) = &d.help {
             lines.push(format!("help: {help}"));
         }
-        let message = lines
-            .iter()
-            .map(|l| escape_data(l))
-            .collect::<Vec<_>>()
-            .join("%0A");
+        let message = lines.iter().map(|l| escape_data(l)).collect::<Vec<_>>().join("%0A");
         let _ = writeln!(out, "::{command} {}::{message}", props.join(","));
     }
     out

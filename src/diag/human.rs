@@ -28,39 +28,25 @@ impl<'a> csfiles::Files<'a> for Files {
     fn source(&'a self, id: FileId) -> Result<Cow<'a, str>, csfiles::Error> {
         let text = &self.try_get(id).ok_or(csfiles::Error::FileMissing)?.text;
         let lone_cr = |(i, _): &(usize, char)| !text[i + 1..].starts_with('\n');
-        if !text
-            .char_indices()
-            .filter(|(_, c)| *c == '\r')
-            .any(|ic| lone_cr(&ic))
-        {
+        if !text.char_indices().filter(|(_, c)| *c == '\r').any(|ic| lone_cr(&ic)) {
             return Ok(Cow::Borrowed(text));
         }
         let mut out = String::with_capacity(text.len());
         for (i, c) in text.char_indices() {
-            out.push(if c == '\r' && lone_cr(&(i, c)) {
-                ' '
-            } else {
-                c
-            });
+            out.push(if c == '\r' && lone_cr(&(i, c)) { ' ' } else { c });
         }
         Ok(Cow::Owned(out))
     }
 
     fn line_index(&'a self, id: FileId, byte_index: usize) -> Result<usize, csfiles::Error> {
         let text = &self.try_get(id).ok_or(csfiles::Error::FileMissing)?.text;
-        Ok(line_starts(text)
-            .take_while(|&start| start <= byte_index)
-            .count()
-            - 1)
+        Ok(line_starts(text).take_while(|&start| start <= byte_index).count() - 1)
     }
 
     fn line_range(&'a self, id: FileId, line_index: usize) -> Result<Range<usize>, csfiles::Error> {
         let text = &self.try_get(id).ok_or(csfiles::Error::FileMissing)?.text;
         let mut starts = line_starts(text).skip(line_index);
-        let start = starts.next().ok_or_else(|| csfiles::Error::LineTooLarge {
-            given: line_index,
-            max: line_starts(text).count() - 1,
-        })?;
+        let start = starts.next().ok_or_else(|| csfiles::Error::LineTooLarge { given: line_index, max: line_starts(text).count() - 1 })?;
         Ok(start..starts.next().unwrap_or(text.len()))
     }
 }
@@ -89,11 +75,7 @@ fn to_codespan(d: &Diagnostic, files: &Files) -> cs::Diagnostic<FileId> {
     if let Some(help) = &d.help {
         notes.push(format!("help: {help}"));
     }
-    cs::Diagnostic::new(severity)
-        .with_code(d.code)
-        .with_message(&d.message)
-        .with_labels(labels)
-        .with_notes(notes)
+    cs::Diagnostic::new(severity).with_code(d.code).with_message(&d.message).with_labels(labels).with_notes(notes)
 }
 
 /// Render diagnostics for a terminal, rustc style (`error[E0101]: message`, source
@@ -104,20 +86,14 @@ fn to_codespan(d: &Diagnostic, files: &Files) -> cs::Diagnostic<FileId> {
 /// Labels pointing at unregistered files are left out; spans are clamped to their file.
 pub fn render_human(diags: &[Diagnostic], files: &Files, color: bool) -> String {
     let diags = &files.resolved(diags)[..];
-    let mut buffer = if color {
-        Buffer::ansi()
-    } else {
-        Buffer::no_color()
-    };
+    let mut buffer = if color { Buffer::ansi() } else { Buffer::no_color() };
     let config = term::Config::default();
     for d in diags {
         let diagnostic = to_codespan(d, files);
         if term::emit_to_write_style(&mut buffer, &config, files, &diagnostic).is_err() {
             // Cannot happen with clamped spans and known files; never lose the message.
-            let fallback = cs::Diagnostic::new(diagnostic.severity)
-                .with_code(d.code)
-                .with_message(&d.message)
-                .with_notes(diagnostic.notes.clone());
+            let fallback =
+                cs::Diagnostic::new(diagnostic.severity).with_code(d.code).with_message(&d.message).with_notes(diagnostic.notes.clone());
             let _ = term::emit_to_write_style(&mut buffer, &config, files, &fallback);
         }
     }
@@ -132,38 +108,23 @@ mod tests {
     fn two_file_diagnostic_shows_both_files_and_lines() {
         let mut files = Files::new();
         let vs = files.add("shaders/a.vert", "#version 330\nout vec3 vColor;\n");
-        let fs = files.add(
-            "shaders/a.frag",
-            "#version 330\n\nin vec4 vColor;\nvoid main() {}\n",
-        );
+        let fs = files.add("shaders/a.frag", "#version 330\n\nin vec4 vColor;\nvoid main() {}\n");
         let d = Diagnostic::error("E0301", "interface mismatch for `vColor`")
             .at(fs, 17..28, "declared as vec4 here")
             .with_label(vs, 17..28, "declared as vec3 here")
             .with_note("outputs and inputs must have the same type")
             .with_help("change one of the declarations");
         let out = render_human(&[d], &files, false);
-        assert!(
-            out.starts_with("error[E0301]: interface mismatch for `vColor`\n"),
-            "{out}"
-        );
+        assert!(out.starts_with("error[E0301]: interface mismatch for `vColor`\n"), "{out}");
         assert!(out.contains("┌─ shaders/a.frag:3:4"), "{out}");
         assert!(out.contains("┌─ shaders/a.vert:2:5"), "{out}");
         assert!(out.contains("3 │ in vec4 vColor;"), "{out}");
         assert!(out.contains("2 │ out vec3 vColor;"), "{out}");
         assert!(out.contains("^^^^^^^^^^^ declared as vec4 here"), "{out}");
         assert!(out.contains("----------- declared as vec3 here"), "{out}");
-        assert!(
-            out.contains("= outputs and inputs must have the same type"),
-            "{out}"
-        );
-        assert!(
-            out.contains("= help: change one of the declarations"),
-            "{out}"
-        );
-        assert!(
-            !out.contains('\u{1b}'),
-            "no ANSI escapes without color: {out}"
-        );
+        assert!(out.contains("= outputs and inputs must have the same type"), "{out}");
+        assert!(out.contains("= help: change one of the declarations"), "{out}");
+        assert!(!out.contains('\u{1b}'), "no ANSI escapes without color: {out}");
         let colored = render_human(&[Diagnostic::error("E1", "x")], &files, true);
         assert!(colored.contains('\u{1b}'), "{colored}");
     }
@@ -177,9 +138,11 @@ mod tests {
         assert_eq!(files.line_col(id, start), (4, 3));
         // One single-line and one multi-line label (which spans the `\r\n`s).
         let m = text.find("void").unwrap();
-        let d = Diagnostic::error("E0101", "undeclared identifier `x`")
-            .at(id, start..start + 1, "not declared")
-            .with_label(id, m..text.len() - 2, "in this function");
+        let d = Diagnostic::error("E0101", "undeclared identifier `x`").at(id, start..start + 1, "not declared").with_label(
+            id,
+            m..text.len() - 2,
+            "in this function",
+        );
         let out = render_human(&[d], &files, false);
         assert!(out.contains("┌─ a.frag:4:3"), "{out}");
         assert!(out.contains("4 │ │   x = 1;\n"), "{out}");
@@ -203,8 +166,7 @@ mod tests {
         let id = files.add("missing.frag", "");
         let out = render_human(
             &[
-                Diagnostic::error("E0001", "no effect.toml found")
-                    .with_help("run in an effect directory"),
+                Diagnostic::error("E0001", "no effect.toml found").with_help("run in an effect directory"),
                 Diagnostic::error("E0002", "cannot read file").in_file(id),
             ],
             &files,
@@ -226,12 +188,8 @@ mod tests {
         let diags = vec![
             Diagnostic::error("E1", "past the end").at(id, 100..200, "here"),
             Diagnostic::error("E2", "inside a char").at(id, 1..1, "here"),
-            Diagnostic::error("E3", "reversed")
-                .at(id, 9..3, "here")
-                .with_label(empty, 5..9, "empty file"),
-            Diagnostic::error("E4", "unknown file")
-                .at(FileId(42), 0..1, "x")
-                .with_label(FileId(9), 0..1, "y"),
+            Diagnostic::error("E3", "reversed").at(id, 9..3, "here").with_label(empty, 5..9, "empty file"),
+            Diagnostic::error("E4", "unknown file").at(FileId(42), 0..1, "x").with_label(FileId(9), 0..1, "y"),
         ];
         let out = render_human(&diags, &files, false);
         for code in ["E1", "E2", "E3", "E4"] {

@@ -84,17 +84,13 @@ pub fn render_json(diags: &[Diagnostic], files: &Files) -> String {
     let diagnostics = diags
         .iter()
         .map(|d| {
-            let file = d
-                .file
-                .and_then(|id| files.try_get(id).map(|f| (id, f.path.as_str())));
+            let file = d.file.and_then(|id| files.try_get(id).map(|f| (id, f.path.as_str())));
             JsonDiagnostic {
                 severity: d.severity,
                 code: d.code,
                 message: &d.message,
                 file: file.map(|(_, path)| path),
-                span: file
-                    .zip(d.span.clone())
-                    .and_then(|((id, _), span)| files.span_location(id, span)),
+                span: file.zip(d.span.clone()).and_then(|((id, _), span)| files.span_location(id, span)),
                 label: Some(d.primary_label.as_str()).filter(|l| !l.is_empty()),
                 labels: d
                     .labels
@@ -121,8 +117,7 @@ pub fn render_json(diags: &[Diagnostic], files: &Files) -> String {
             notes: count(diags, Severity::Note),
         },
     };
-    let mut out = serde_json::to_string_pretty(&report)
-        .expect("JSON serialization of plain data cannot fail");
+    let mut out = serde_json::to_string_pretty(&report).expect("JSON serialization of plain data cannot fail");
     out.push('\n');
     out
 }
@@ -182,15 +177,7 @@ mod tests {
             })
         );
         // Key order is fixed (serde structs, not maps).
-        let keys = [
-            "\"severity\"",
-            "\"code\"",
-            "\"message\"",
-            "\"file\"",
-            "\"span\"",
-            "\"label\"",
-            "\"labels\"",
-        ];
+        let keys = ["\"severity\"", "\"code\"", "\"message\"", "\"file\"", "\"span\"", "\"label\"", "\"labels\""];
         let positions: Vec<usize> = keys.iter().map(|k| out.find(k).unwrap()).collect();
         assert!(positions.windows(2).all(|w| w[0] < w[1]), "{out}");
         assert!(out.find("\"version\"").unwrap() < out.find("\"diagnostics\"").unwrap());
@@ -202,17 +189,10 @@ mod tests {
     fn json_clamps_bad_spans() {
         let mut files = Files::new();
         let id = files.add("a.frag", "ab");
-        let d = Diagnostic::error("E1", "x").at(id, 5..1, "").with_label(
-            super::super::FileId(3),
-            0..1,
-            "gone",
-        );
+        let d = Diagnostic::error("E1", "x").at(id, 5..1, "").with_label(super::super::FileId(3), 0..1, "gone");
         let v: Value = serde_json::from_str(&render_json(&[d], &files)).unwrap();
         let diag = &v["diagnostics"][0];
-        assert_eq!(
-            diag["span"],
-            json!({"start": 2, "end": 2, "line": 1, "column": 3, "end_line": 1, "end_column": 3})
-        );
+        assert_eq!(diag["span"], json!({"start": 2, "end": 2, "line": 1, "column": 3, "end_line": 1, "end_column": 3}));
         assert_eq!(diag["labels"], json!([]));
     }
 }

@@ -106,8 +106,7 @@ fn path_to_uri(path: &str) -> String {
         _ => "",
     });
     for (i, &b) in bytes.iter().enumerate() {
-        let keep =
-            b.is_ascii_alphanumeric() || b"-._~/!$&'()*+,;=@".contains(&b) || (drive && i == 1);
+        let keep = b.is_ascii_alphanumeric() || b"-._~/!$&'()*+,;=@".contains(&b) || (drive && i == 1);
         if keep {
             uri.push(b as char);
         } else {
@@ -117,28 +116,17 @@ fn path_to_uri(path: &str) -> String {
     uri
 }
 
-fn location(
-    files: &Files,
-    file: FileId,
-    span: Option<std::ops::Range<usize>>,
-) -> Option<PhysicalLocation> {
+fn location(files: &Files, file: FileId, span: Option<std::ops::Range<usize>>) -> Option<PhysicalLocation> {
     let source = files.try_get(file)?;
-    let region = span
-        .and_then(|span| files.span_location(file, span))
-        .map(|loc| Region {
-            start_line: loc.line,
-            start_column: loc.column,
-            end_line: loc.end_line,
-            end_column: loc.end_column,
-            byte_offset: loc.start,
-            byte_length: loc.end - loc.start,
-        });
-    Some(PhysicalLocation {
-        artifact_location: ArtifactLocation {
-            uri: path_to_uri(&source.path),
-        },
-        region,
-    })
+    let region = span.and_then(|span| files.span_location(file, span)).map(|loc| Region {
+        start_line: loc.line,
+        start_column: loc.column,
+        end_line: loc.end_line,
+        end_column: loc.end_column,
+        byte_offset: loc.start,
+        byte_length: loc.end - loc.start,
+    });
+    Some(PhysicalLocation { artifact_location: ArtifactLocation { uri: path_to_uri(&source.path) }, region })
 }
 
 /// Render diagnostics as a SARIF 2.1.0 log (pretty JSON, ending in a newline) with one run
@@ -150,35 +138,22 @@ fn location(
 /// their message) for secondary labels. Paths become URI references with forward slashes.
 pub fn render_sarif(diags: &[Diagnostic], files: &Files) -> String {
     let diags = &files.resolved(diags)[..];
-    let codes: Vec<&str> = diags
-        .iter()
-        .map(|d| d.code)
-        .collect::<BTreeSet<_>>()
-        .into_iter()
-        .collect();
+    let codes: Vec<&str> = diags.iter().map(|d| d.code).collect::<BTreeSet<_>>().into_iter().collect();
     let results = diags
         .iter()
         .map(|d| SarifResult {
             rule_id: d.code,
-            rule_index: codes
-                .binary_search(&d.code)
-                .expect("every code is in the rules"),
+            rule_index: codes.binary_search(&d.code).expect("every code is in the rules"),
             level: match d.severity {
                 Severity::Error => "error",
                 Severity::Warning => "warning",
                 Severity::Note => "note",
             },
-            message: Message {
-                text: full_message(d),
-            },
+            message: Message { text: full_message(d) },
             locations: d
                 .file
                 .and_then(|file| location(files, file, d.span.clone()))
-                .map(|physical_location| Location {
-                    id: None,
-                    physical_location,
-                    message: None,
-                })
+                .map(|physical_location| Location { id: None, physical_location, message: None })
                 .into_iter()
                 .collect(),
             related_locations: d
@@ -209,8 +184,7 @@ pub fn render_sarif(diags: &[Diagnostic], files: &Files) -> String {
             results,
         }],
     };
-    let mut out =
-        serde_json::to_string_pretty(&log).expect("JSON serialization of plain data cannot fail");
+    let mut out = serde_json::to_string_pretty(&log).expect("JSON serialization of plain data cannot fail");
     out.push('\n');
     out
 }
@@ -235,10 +209,7 @@ mod tests {
             Diagnostic::error("E0301", "again").in_file(vs),
         ];
         let v: Value = serde_json::from_str(&render_sarif(&diags, &files)).unwrap();
-        assert_eq!(
-            v["$schema"],
-            "https://json.schemastore.org/sarif-2.1.0.json"
-        );
+        assert_eq!(v["$schema"], "https://json.schemastore.org/sarif-2.1.0.json");
         assert_eq!(v["version"], "2.1.0");
         assert_eq!(v["runs"].as_array().unwrap().len(), 1);
         let driver = &v["runs"][0]["tool"]["driver"];
@@ -272,14 +243,8 @@ mod tests {
                 }]
             })
         );
-        assert_eq!(
-            results[1],
-            json!({"ruleId": "W0001", "ruleIndex": 1, "level": "warning", "message": {"text": "run-level"}})
-        );
-        assert_eq!(
-            results[2]["locations"],
-            json!([{"physicalLocation": {"artifactLocation": {"uri": "shaders/a%20b.vert"}}}])
-        );
+        assert_eq!(results[1], json!({"ruleId": "W0001", "ruleIndex": 1, "level": "warning", "message": {"text": "run-level"}}));
+        assert_eq!(results[2]["locations"], json!([{"physicalLocation": {"artifactLocation": {"uri": "shaders/a%20b.vert"}}}]));
     }
 
     #[test]

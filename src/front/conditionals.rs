@@ -69,40 +69,102 @@ pub fn define_lines(text: &str) -> Vec<(String, std::ops::Range<usize>)> {
 
 /// Type names the rewrite generates (Vulkan GLSL's separate textures and samplers).
 const GENERATED_TYPES: &[&str] = &[
-    "texture1D", "texture2D", "texture3D", "textureCube", "texture2DRect", "texture1DArray", "texture2DArray",
-    "textureCubeArray", "texture2DMS", "texture2DMSArray", "itexture2D", "utexture2D", "itexture3D",
-    "utexture3D", "itexture2DArray", "utexture2DArray", "sampler", "samplerShadow",
+    "texture1D",
+    "texture2D",
+    "texture3D",
+    "textureCube",
+    "texture2DRect",
+    "texture1DArray",
+    "texture2DArray",
+    "textureCubeArray",
+    "texture2DMS",
+    "texture2DMSArray",
+    "itexture2D",
+    "utexture2D",
+    "itexture3D",
+    "utexture3D",
+    "itexture2DArray",
+    "utexture2DArray",
+    "sampler",
+    "samplerShadow",
 ];
 
 /// Extension macros a desktop GL implementation defines (glslangValidator's preamble).
 const DESKTOP_EXTENSIONS: &[&str] = &[
-    "GL_ARB_texture_rectangle", "GL_ARB_shading_language_420pack", "GL_ARB_texture_gather", "GL_ARB_gpu_shader5",
-    "GL_ARB_separate_shader_objects", "GL_ARB_compute_shader", "GL_ARB_tessellation_shader",
-    "GL_ARB_enhanced_layouts", "GL_ARB_texture_cube_map_array", "GL_ARB_texture_multisample",
-    "GL_ARB_shader_texture_lod", "GL_ARB_explicit_attrib_location", "GL_ARB_explicit_uniform_location",
-    "GL_ARB_shader_image_load_store", "GL_ARB_shader_atomic_counters", "GL_ARB_shader_draw_parameters",
-    "GL_ARB_shader_group_vote", "GL_ARB_derivative_control", "GL_ARB_shader_texture_image_samples",
-    "GL_ARB_viewport_array", "GL_ARB_gpu_shader_int64", "GL_ARB_gpu_shader_fp64", "GL_ARB_shader_ballot",
-    "GL_ARB_sparse_texture2", "GL_ARB_sparse_texture_clamp", "GL_ARB_shader_stencil_export",
-    "GL_ARB_sample_shading", "GL_ARB_shader_image_size", "GL_ARB_shading_language_packing",
-    "GL_ARB_cull_distance", "GL_ARB_post_depth_coverage", "GL_ARB_fragment_shader_interlock",
-    "GL_ARB_uniform_buffer_object", "GL_ARB_shader_bit_encoding", "GL_ARB_shader_storage_buffer_object",
-    "GL_ARB_texture_query_lod", "GL_ARB_vertex_attrib_64bit", "GL_ARB_draw_instanced",
-    "GL_ARB_fragment_coord_conventions", "GL_ARB_conservative_depth", "GL_NV_gpu_shader5",
-    "GL_EXT_shader_image_load_formatted", "GL_EXT_post_depth_coverage", "GL_EXT_control_flow_attributes",
-    "GL_EXT_nonuniform_qualifier", "GL_EXT_samplerless_texture_functions", "GL_EXT_scalar_block_layout",
-    "GL_EXT_demote_to_helper_invocation", "GL_EXT_debug_printf", "GL_EXT_shader_16bit_storage",
-    "GL_EXT_shader_8bit_storage", "GL_KHR_shader_subgroup_basic", "GL_KHR_shader_subgroup_vote",
-    "GL_KHR_shader_subgroup_arithmetic", "GL_KHR_shader_subgroup_ballot",
+    "GL_ARB_texture_rectangle",
+    "GL_ARB_shading_language_420pack",
+    "GL_ARB_texture_gather",
+    "GL_ARB_gpu_shader5",
+    "GL_ARB_separate_shader_objects",
+    "GL_ARB_compute_shader",
+    "GL_ARB_tessellation_shader",
+    "GL_ARB_enhanced_layouts",
+    "GL_ARB_texture_cube_map_array",
+    "GL_ARB_texture_multisample",
+    "GL_ARB_shader_texture_lod",
+    "GL_ARB_explicit_attrib_location",
+    "GL_ARB_explicit_uniform_location",
+    "GL_ARB_shader_image_load_store",
+    "GL_ARB_shader_atomic_counters",
+    "GL_ARB_shader_draw_parameters",
+    "GL_ARB_shader_group_vote",
+    "GL_ARB_derivative_control",
+    "GL_ARB_shader_texture_image_samples",
+    "GL_ARB_viewport_array",
+    "GL_ARB_gpu_shader_int64",
+    "GL_ARB_gpu_shader_fp64",
+    "GL_ARB_shader_ballot",
+    "GL_ARB_sparse_texture2",
+    "GL_ARB_sparse_texture_clamp",
+    "GL_ARB_shader_stencil_export",
+    "GL_ARB_sample_shading",
+    "GL_ARB_shader_image_size",
+    "GL_ARB_shading_language_packing",
+    "GL_ARB_cull_distance",
+    "GL_ARB_post_depth_coverage",
+    "GL_ARB_fragment_shader_interlock",
+    "GL_ARB_uniform_buffer_object",
+    "GL_ARB_shader_bit_encoding",
+    "GL_ARB_shader_storage_buffer_object",
+    "GL_ARB_texture_query_lod",
+    "GL_ARB_vertex_attrib_64bit",
+    "GL_ARB_draw_instanced",
+    "GL_ARB_fragment_coord_conventions",
+    "GL_ARB_conservative_depth",
+    "GL_NV_gpu_shader5",
+    "GL_EXT_shader_image_load_formatted",
+    "GL_EXT_post_depth_coverage",
+    "GL_EXT_control_flow_attributes",
+    "GL_EXT_nonuniform_qualifier",
+    "GL_EXT_samplerless_texture_functions",
+    "GL_EXT_scalar_block_layout",
+    "GL_EXT_demote_to_helper_invocation",
+    "GL_EXT_debug_printf",
+    "GL_EXT_shader_16bit_storage",
+    "GL_EXT_shader_8bit_storage",
+    "GL_KHR_shader_subgroup_basic",
+    "GL_KHR_shader_subgroup_vote",
+    "GL_KHR_shader_subgroup_arithmetic",
+    "GL_KHR_shader_subgroup_ballot",
 ];
 
 /// Extension macros a GL ES implementation defines (glslangValidator's preamble, the common ones).
 const ES_EXTENSIONS: &[&str] = &[
-    "GL_FRAGMENT_PRECISION_HIGH", "GL_OES_texture_3D", "GL_OES_standard_derivatives", "GL_EXT_frag_depth",
-    "GL_EXT_shader_texture_lod", "GL_EXT_shadow_samplers", "GL_OES_sample_variables",
-    "GL_OES_shader_multisample_interpolation", "GL_EXT_geometry_shader", "GL_EXT_gpu_shader5",
-    "GL_EXT_shader_io_blocks", "GL_EXT_tessellation_shader", "GL_EXT_texture_buffer",
-    "GL_EXT_texture_cube_map_array", "GL_EXT_blend_func_extended",
+    "GL_FRAGMENT_PRECISION_HIGH",
+    "GL_OES_texture_3D",
+    "GL_OES_standard_derivatives",
+    "GL_EXT_frag_depth",
+    "GL_EXT_shader_texture_lod",
+    "GL_EXT_shadow_samplers",
+    "GL_OES_sample_variables",
+    "GL_OES_shader_multisample_interpolation",
+    "GL_EXT_geometry_shader",
+    "GL_EXT_gpu_shader5",
+    "GL_EXT_shader_io_blocks",
+    "GL_EXT_tessellation_shader",
+    "GL_EXT_texture_buffer",
+    "GL_EXT_texture_cube_map_array",
+    "GL_EXT_blend_func_extended",
 ];
 
 /// Macro definitions: `Some(body)` for object-like macros, `None` for function-like ones.
@@ -300,10 +362,8 @@ enum Tok {
     Op(&'static str),
 }
 
-const OPS: &[&str] = &[
-    "||", "&&", "==", "!=", "<=", ">=", "<<", ">>", "(", ")", "!", "~", "-", "+", "*", "/", "%", "<", ">", "&", "^",
-    "|", "?", ":", ",",
-];
+const OPS: &[&str] =
+    &["||", "&&", "==", "!=", "<=", ">=", "<<", ">>", "(", ")", "!", "~", "-", "+", "*", "/", "%", "<", ">", "&", "^", "|", "?", ":", ","];
 
 fn tokenize(expr: &str) -> Option<Vec<Tok>> {
     let b = expr.as_bytes();
@@ -540,7 +600,12 @@ mod tests {
 
     #[test]
     fn what_it_cannot_follow_is_left_alone() {
-        for src in ["#version 330\n#endif\n", "#version 330\n#if 1\n", "#version 330\n#define F(x) x\n#if F(1)\n#endif\n", "#version 330\nvoid main(){}\n"] {
+        for src in [
+            "#version 330\n#endif\n",
+            "#version 330\n#if 1\n",
+            "#version 330\n#define F(x) x\n#if F(1)\n#endif\n",
+            "#version 330\nvoid main(){}\n",
+        ] {
             assert_eq!(run(src), src);
         }
     }

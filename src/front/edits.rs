@@ -66,8 +66,7 @@ impl Edits {
         let mut cursor = 0usize;
         for edit in self.edits {
             let Range { start, end } = edit.range;
-            if start < cursor || end > original.len() || start > end
-                || !original.is_char_boundary(start) || !original.is_char_boundary(end)
+            if start < cursor || end > original.len() || start > end || !original.is_char_boundary(start) || !original.is_char_boundary(end)
             {
                 dropped.push(edit);
                 continue;

@@ -190,8 +190,20 @@ fn explicit_arithmetic_type(word: &str) -> Option<(String, bool)> {
     let matrix = shape.strip_prefix("mat").is_some_and(|m| n(m) || m.split_once('x').is_some_and(|(a, b)| n(a) && n(b)));
     let exact = bits == "32";
     let core = match (prefix, vector, matrix) {
-        ("f", true, _) if bits != "8" => if bits == "64" { format!("d{shape}") } else { shape.to_string() },
-        ("f", _, true) if bits != "8" => if bits == "64" { format!("d{shape}") } else { shape.to_string() },
+        ("f", true, _) if bits != "8" => {
+            if bits == "64" {
+                format!("d{shape}")
+            } else {
+                shape.to_string()
+            }
+        }
+        ("f", _, true) if bits != "8" => {
+            if bits == "64" {
+                format!("d{shape}")
+            } else {
+                shape.to_string()
+            }
+        }
         ("i", true, _) => format!("i{shape}"),
         ("u", true, _) => format!("u{shape}"),
         _ => return None,

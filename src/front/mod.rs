@@ -12,12 +12,12 @@
 //!   errors with [`builtins`]; [`program`]: all of it per program.
 
 pub mod builtins;
+pub mod conditionals;
 pub mod edits;
+pub mod lexical;
+pub mod naga_run;
+pub mod plan;
+pub mod program;
+pub mod rewrite;
 pub mod syntax;
 pub mod version;
-pub mod lexical;
-pub mod conditionals;
-pub mod plan;
-pub mod rewrite;
-pub mod naga_run;
-pub mod program;

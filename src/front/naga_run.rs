@@ -90,20 +90,14 @@ pub fn gl_capabilities() -> Capabilities {
 /// The capabilities of [`gl_capabilities`] beyond WebGPU's defaults that `module` needs.
 fn needed_capabilities(module: &naga::Module) -> Vec<String> {
     let valid = |caps: Capabilities| {
-        catch_unwind(AssertUnwindSafe(|| {
-            naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps).validate(module).is_ok()
-        }))
-        .unwrap_or(false)
+        catch_unwind(AssertUnwindSafe(|| naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps).validate(module).is_ok()))
+            .unwrap_or(false)
     };
     if valid(webgpu_capabilities()) {
         return Vec::new();
     }
     let extra = gl_capabilities() - webgpu_capabilities();
-    extra
-        .iter_names()
-        .filter(|(_, cap)| !valid(gl_capabilities() - *cap))
-        .map(|(name, _)| name.to_string())
-        .collect()
+    extra.iter_names().filter(|(_, cap)| !valid(gl_capabilities() - *cap)).map(|(name, _)| name.to_string()).collect()
 }
 
 /// Whether naga's error is about a construct GLSL allows (a naga limitation). The text
@@ -153,7 +147,10 @@ fn layout_limitation(module: &naga::Module, err: &naga::valid::ValidationError) 
     if let naga::valid::ValidationError::Type { source: naga::valid::TypeError::InvalidArrayBaseType(base), .. } = err {
         // `uniform sampler s[3];`, `uniform texture2D t[2];`: GLSL arrays of opaque
         // handles, which naga's GLSL front types as plain arrays (binding arrays elsewhere).
-        let opaque = matches!(module.types[*base].inner, naga::TypeInner::Image { .. } | naga::TypeInner::Sampler { .. } | naga::TypeInner::AccelerationStructure { .. });
+        let opaque = matches!(
+            module.types[*base].inner,
+            naga::TypeInner::Image { .. } | naga::TypeInner::Sampler { .. } | naga::TypeInner::AccelerationStructure { .. }
+        );
         return opaque.then(|| "an array of textures or samplers (naga's GLSL front has no binding arrays)".to_string());
     }
     let naga::valid::ValidationError::GlobalVariable { handle, source, .. } = err else { return None };
@@ -180,12 +177,7 @@ pub fn scalar_swizzles(s: &crate::front::syntax::StageSyntax, errors: &[Diagnost
 }
 
 /// Parses and validates one rewritten stage.
-pub fn parse_and_validate(
-    file: FileId,
-    rewritten: &Rewritten,
-    stage: naga::ShaderStage,
-    version: &Version,
-) -> Outcome {
+pub fn parse_and_validate(file: FileId, rewritten: &Rewritten, stage: naga::ShaderStage, version: &Version) -> Outcome {
     match parse_and_validate_inner(file, rewritten, stage, version) {
         Ok(v) => Outcome::Valid(v),
         Err(Ok(limit)) => Outcome::Limited(limit),
@@ -229,12 +221,15 @@ fn parse_and_validate_inner(
                         None => d.in_file(file),
                     }
                 })
-                .collect()))
+                .collect()));
         }
         Err(payload) => return Err(Err(vec![crash(file, "GLSL front", &*payload)])),
     };
     let gl = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), gl_capabilities());
-    let validated = catch_unwind(AssertUnwindSafe(|| { let mut gl = gl; gl.validate(&module) }));
+    let validated = catch_unwind(AssertUnwindSafe(|| {
+        let mut gl = gl;
+        gl.validate(&module)
+    }));
     match validated {
         Ok(Ok(info)) => {
             let needs = needed_capabilities(&module);

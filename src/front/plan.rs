@@ -128,9 +128,8 @@ fn repr_for(ty: &GlslType) -> (GlslType, Repr) {
     if ty.dims.len() != 1 {
         return (ty.clone(), Repr::Plain);
     }
-    let padded = |b: &str, swizzle, bool_elems| {
-        (GlslType { base: b.to_string(), dims: ty.dims.clone() }, Repr::Padded { swizzle, bool_elems })
-    };
+    let padded =
+        |b: &str, swizzle, bool_elems| (GlslType { base: b.to_string(), dims: ty.dims.clone() }, Repr::Padded { swizzle, bool_elems });
     match base {
         "float" => padded("vec4", "x", false),
         "int" => padded("ivec4", "x", false),
@@ -147,9 +146,7 @@ fn repr_for(ty: &GlslType) -> (GlslType, Repr) {
 /// A name not used by any global of any stage.
 fn fresh(base: String, stages: &[StageSyntax], taken: &[String]) -> String {
     let mut name = base;
-    while stages.iter().any(|s| s.global(&name).is_some() || s.text.contains(&format!(" {name}")))
-        || taken.contains(&name)
-    {
+    while stages.iter().any(|s| s.global(&name).is_some() || s.text.contains(&format!(" {name}"))) || taken.contains(&name) {
         name.push('_');
     }
     name
@@ -190,9 +187,7 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             if let Some((tex, samp)) = sampler_parts(&g.ty.base) {
                 let count = g.ty.dims.first().copied().flatten();
                 let paths: Vec<(String, String)> = match count {
-                    Some(n) if g.ty.dims.len() == 1 => {
-                        (0..n).map(|i| (format!("{}[{i}]", g.name), format!("{}_{i}", g.name))).collect()
-                    }
+                    Some(n) if g.ty.dims.len() == 1 => (0..n).map(|i| (format!("{}[{i}]", g.name), format!("{}_{i}", g.name))).collect(),
                     _ => vec![(g.name.clone(), g.name.clone())],
                 };
                 for (user_path, name) in paths {
@@ -214,9 +209,7 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             // Struct uniforms: sampler members become their own bindings.
             if let Some(st) = s.struct_def(&g.ty.base) {
                 let instances: Vec<(String, String)> = match g.ty.dims.first().copied().flatten() {
-                    Some(n) if g.ty.dims.len() == 1 => {
-                        (0..n).map(|i| (format!("{}[{i}]", g.name), format!("{}_{i}", g.name))).collect()
-                    }
+                    Some(n) if g.ty.dims.len() == 1 => (0..n).map(|i| (format!("{}[{i}]", g.name), format!("{}_{i}", g.name))).collect(),
                     _ => vec![(g.name.clone(), g.name.clone())],
                 };
                 for m in st.members.iter().filter(|m| m.ty.is_sampler() && !m.ty.is_array()) {
@@ -406,9 +399,7 @@ fn slots_of(g: &crate::front::syntax::Global, s: &StageSyntax) -> u32 {
         Some(b) => b.members.iter().map(|m| location_slots(&m.ty, s)).sum::<u32>().max(1),
         None => {
             // Geometry/tessellation inputs are per-vertex arrays of the varying.
-            let ty = if matches!(s.stage, StageKind::Geometry | StageKind::TessControl | StageKind::TessEval)
-                && g.storage == Storage::In
-            {
+            let ty = if matches!(s.stage, StageKind::Geometry | StageKind::TessControl | StageKind::TessEval) && g.storage == Storage::In {
                 g.ty.element()
             } else {
                 g.ty.clone()

@@ -118,11 +118,13 @@ pub fn compile(
                         "N0102",
                         format!("naga cannot take {}, so the {} stage is checked for syntax and interface only", limit.construct, s.stage),
                     );
-                    diags.push(match &limit.span {
-                        Some(span) => d.at(s.file, span.clone(), "legal GLSL naga does not take"),
-                        None => d.in_file(s.file),
-                    }
-                    .with_note("`effectc translate` cannot translate this stage until naga takes it"));
+                    diags.push(
+                        match &limit.span {
+                            Some(span) => d.at(s.file, span.clone(), "legal GLSL naga does not take"),
+                            None => d.in_file(s.file),
+                        }
+                        .with_note("`effectc translate` cannot translate this stage until naga takes it"),
+                    );
                     limitation = Some(limit);
                     None
                 }

@@ -83,8 +83,21 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
 /// [`rewrite`], with the swizzles (indices into `s.swizzles`) naga found applied to a
 /// scalar written as constructors: `x.rrr` → `vec3(x)`, `x.r` → `(x)`.
 pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles: &[usize]) -> (Rewritten, Vec<Diagnostic>) {
-    let limitation = s.unsupported.as_ref().map(|(construct, span)| crate::front::naga_run::Limitation { construct: construct.clone(), span: Some(span.clone()) });
-    let mut c = Ctx { s, plan, strict, edits: Edits::new(), diags: Vec::new(), need_mat2_helper: false, prologue: String::new(), epilogue: String::new(), limitation };
+    let limitation = s
+        .unsupported
+        .as_ref()
+        .map(|(construct, span)| crate::front::naga_run::Limitation { construct: construct.clone(), span: Some(span.clone()) });
+    let mut c = Ctx {
+        s,
+        plan,
+        strict,
+        edits: Edits::new(),
+        diags: Vec::new(),
+        need_mat2_helper: false,
+        prologue: String::new(),
+        epilogue: String::new(),
+        limitation,
+    };
     c.version();
     c.declarations();
     c.uses();
@@ -154,8 +167,12 @@ impl Ctx<'_> {
         for (i, g) in s.globals.iter().enumerate() {
             by_decl.entry(g.decl_span.start).or_default().push(i);
         }
-        let mut vertex_inputs = LocationAllocator::new(s.globals.iter().filter(|g| is_vertex_input(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))));
-        let mut fragment_outputs = LocationAllocator::new(s.globals.iter().filter(|g| is_fragment_output(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))));
+        let mut vertex_inputs = LocationAllocator::new(
+            s.globals.iter().filter(|g| is_vertex_input(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))),
+        );
+        let mut fragment_outputs = LocationAllocator::new(
+            s.globals.iter().filter(|g| is_fragment_output(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))),
+        );
         if s.stage == StageKind::Fragment && s.uses.iter().any(|u| u.name == "gl_FragColor" && u.target == Target::Unresolved) {
             fragment_outputs.reserve(0, 1);
         }
@@ -202,7 +219,9 @@ impl Ctx<'_> {
                     }
                     for &i in &idxs {
                         let g = &s.globals[i];
-                        for t in self.plan.textures.iter().filter(|t| t.user_path == g.name || t.user_path.starts_with(&format!("{}[", g.name))) {
+                        for t in
+                            self.plan.textures.iter().filter(|t| t.user_path == g.name || t.user_path.starts_with(&format!("{}[", g.name)))
+                        {
                             let _ = write!(
                                 text,
                                 "layout(set = 0, binding = {}) uniform {} {}; layout(set = 0, binding = {}) uniform {} {};",
@@ -384,7 +403,9 @@ impl Ctx<'_> {
                         let path = match &u.index {
                             Some((_, _, Some(k))) => format!("{}[{k}].{field}", g.name),
                             Some((_, isp, None)) => {
-                                if self.plan.textures.iter().any(|t| t.user_path.starts_with(&format!("{}[", g.name)) && t.user_path.ends_with(&format!(".{field}"))) {
+                                if self.plan.textures.iter().any(|t| {
+                                    t.user_path.starts_with(&format!("{}[", g.name)) && t.user_path.ends_with(&format!(".{field}"))
+                                }) {
                                     self.dynamic_sampler_index(isp.clone(), &g.name);
                                     continue;
                                 }
@@ -420,7 +441,10 @@ impl Ctx<'_> {
                     if self.limitation.is_none() && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version) {
                         // naga reports these unevenly ("unknown variable", or a field
                         // lookup failing on `gl_BaryCoordEXT.x`): decide before asking it.
-                        self.limitation = Some(crate::front::naga_run::Limitation { construct: format!("the built-in `{}`", u.name), span: Some(u.span.clone()) });
+                        self.limitation = Some(crate::front::naga_run::Limitation {
+                            construct: format!("the built-in `{}`", u.name),
+                            span: Some(u.span.clone()),
+                        });
                     }
                     self.builtin_use(u)
                 }
@@ -443,8 +467,7 @@ impl Ctx<'_> {
     /// by location after the name-level checks, so the other stage is unaffected.
     fn shadowed_block_members(&mut self) {
         let s = self.s;
-        let loose: std::collections::HashSet<&str> =
-            s.globals.iter().filter(|g| g.block.is_none()).map(|g| g.name.as_str()).collect();
+        let loose: std::collections::HashSet<&str> = s.globals.iter().filter(|g| g.block.is_none()).map(|g| g.name.as_str()).collect();
         let mut renamed: Vec<(usize, String, String)> = Vec::new();
         for (gi, g) in s.globals.iter().enumerate() {
             let Some(b) = &g.block else { continue };
@@ -491,7 +514,10 @@ impl Ctx<'_> {
             // combined samplers, which is a translation limit, not an error.
             if self.limitation.is_none() {
                 self.limitation = Some(crate::front::naga_run::Limitation {
-                    construct: format!("`{}` indexed with a non-constant expression (an array of samplers; WGSL and naga have none)", self.s.original_name(name)),
+                    construct: format!(
+                        "`{}` indexed with a non-constant expression (an array of samplers; WGSL and naga have none)",
+                        self.s.original_name(name)
+                    ),
                     span: Some(span),
                 });
             }
@@ -500,7 +526,9 @@ impl Ctx<'_> {
         self.diags.push(
             Diagnostic::error("E0110", format!("`{}` is indexed with a non-constant expression", self.s.original_name(name)))
                 .at(self.s.file, span, "not a constant index")
-                .with_note("effectc splits sampler arrays into one texture binding per element; WGSL and naga have no arrays of combined samplers")
+                .with_note(
+                    "effectc splits sampler arrays into one texture binding per element; WGSL and naga have no arrays of combined samplers",
+                )
                 .with_help("index with a literal or a `const int`, e.g. unroll the loop"),
         );
     }
@@ -565,9 +593,8 @@ impl Ctx<'_> {
             // naga types these `uint`; GLSL's are `int`.
             ("gl_VertexID" | "gl_VertexIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_VertexIndex)"),
             ("gl_InstanceID" | "gl_InstanceIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_InstanceIndex)"),
-            ("gl_DrawID" | "gl_BaseVertex" | "gl_BaseInstance", StageKind::Vertex) | ("gl_PrimitiveID" | "gl_SampleID", StageKind::Fragment) => {
-                self.edits.replace(u.span.clone(), format!("int({})", u.name))
-            }
+            ("gl_DrawID" | "gl_BaseVertex" | "gl_BaseInstance", StageKind::Vertex)
+            | ("gl_PrimitiveID" | "gl_SampleID", StageKind::Fragment) => self.edits.replace(u.span.clone(), format!("int({})", u.name)),
             ("gl_PointSize", _) => self.edits.replace(u.span.clone(), "effectc_PointSize"),
             ("gl_PointCoord", StageKind::Fragment) => {
                 // WebGPU rasterizes points one pixel wide, so the one fragment of a point
@@ -717,7 +744,10 @@ impl Ctx<'_> {
     fn struct_samplers(&mut self) {
         let s = self.s;
         for st in &s.structs {
-            let in_uniform_decl = s.globals.iter().any(|g| g.storage == Storage::Uniform && g.decl_span.start <= st.span.start && st.span.end <= g.decl_span.end);
+            let in_uniform_decl = s
+                .globals
+                .iter()
+                .any(|g| g.storage == Storage::Uniform && g.decl_span.start <= st.span.start && st.span.end <= g.decl_span.end);
             if self.plan.padded_structs.contains(&st.name) && !in_uniform_decl {
                 if let Some(close) = s.text[..st.span.end].rfind('}') {
                     self.edits.insert(close, format!(" vec4 {};", crate::front::plan::STRUCT_ALIGN_FILLER));
@@ -750,22 +780,26 @@ impl Ctx<'_> {
     /// parser takes none of them: locations follow the block's, integers are flat anyway).
     fn defaults_and_layouts(&mut self) {
         let s = self.s;
-        let io_block_array = s.globals.iter().filter(|g| matches!(g.storage, Storage::In | Storage::Out) && !g.name.starts_with("gl_")).find_map(|g| {
-            let b = g.block.as_ref()?;
-            // An array member is fine last (nothing follows it to collide with).
-            let n = b.members.len();
-            b.members
-                .iter()
-                .enumerate()
-                .find(|(i, m)| (m.ty.is_array() && i + 1 < n) || matrix_shape(&m.ty.base).is_some())
-                .map(|(_, m)| (b.block_name.clone(), m.span.clone()))
-        });
+        let io_block_array =
+            s.globals.iter().filter(|g| matches!(g.storage, Storage::In | Storage::Out) && !g.name.starts_with("gl_")).find_map(|g| {
+                let b = g.block.as_ref()?;
+                // An array member is fine last (nothing follows it to collide with).
+                let n = b.members.len();
+                b.members
+                    .iter()
+                    .enumerate()
+                    .find(|(i, m)| (m.ty.is_array() && i + 1 < n) || matrix_shape(&m.ty.base).is_some())
+                    .map(|(_, m)| (b.block_name.clone(), m.span.clone()))
+            });
         if let (None, Some((block, span))) = (&self.limitation, io_block_array) {
             // naga's GLSL front gives every member of an interface block one location, so
             // an array member collides with the member after it; and it takes no matrix
             // varyings.
             self.limitation = Some(crate::front::naga_run::Limitation {
-                construct: format!("an array or matrix member of the interface block `{}` (naga gives each member one location and no matrix varyings)", s.original_name(&block)),
+                construct: format!(
+                    "an array or matrix member of the interface block `{}` (naga gives each member one location and no matrix varyings)",
+                    s.original_name(&block)
+                ),
                 span: Some(span),
             });
         }
@@ -788,8 +822,7 @@ impl Ctx<'_> {
             };
             if let (Some(first), Some(last)) = (g.layout_items.first(), g.layout_items.last()) {
                 if g.layout_items.iter().any(|(n, _)| drop(n)) {
-                    let mut kept: Vec<&str> =
-                        g.layout_items.iter().filter(|(n, _)| !drop(n)).map(|(_, sp)| &s.text[sp.clone()]).collect();
+                    let mut kept: Vec<&str> = g.layout_items.iter().filter(|(n, _)| !drop(n)).map(|(_, sp)| &s.text[sp.clone()]).collect();
                     if kept.is_empty() && is_block {
                         // `layout()` is not GLSL: a block keeps the packing naga uses anyway.
                         kept.push(if g.storage == Storage::Buffer { "std430" } else { "std140" });
@@ -970,7 +1003,12 @@ impl Ctx<'_> {
             h.push_str("layout(location = 0) out vec4 effectc_FragColor;\n");
         }
         if s.stage == StageKind::Fragment {
-            let mut ks: Vec<i64> = s.uses.iter().filter(|u| u.name == "gl_FragData" && u.target == Target::Unresolved).filter_map(|u| u.index.as_ref().and_then(|i| i.2)).collect();
+            let mut ks: Vec<i64> = s
+                .uses
+                .iter()
+                .filter(|u| u.name == "gl_FragData" && u.target == Target::Unresolved)
+                .filter_map(|u| u.index.as_ref().and_then(|i| i.2))
+                .collect();
             ks.sort();
             ks.dedup();
             for k in ks {
@@ -996,14 +1034,8 @@ impl Ctx<'_> {
             return;
         }
         // After every struct the block needs, before the first function.
-        let structs_end = self
-            .plan
-            .block_structs
-            .iter()
-            .filter_map(|n| s.struct_def(n))
-            .map(|d| line_end(&s.text, d.span.end))
-            .max()
-            .unwrap_or(0);
+        let structs_end =
+            self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).map(|d| line_end(&s.text, d.span.end)).max().unwrap_or(0);
         let at = s.first_function.unwrap_or(s.text.len()).max(structs_end);
         let at = if at >= s.text.len() && !s.text.ends_with('\n') {
             h.insert(0, '\n');

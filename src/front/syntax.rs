@@ -61,7 +61,8 @@ impl GlslType {
     }
     /// Integer scalar or vector (`int`, `uvec3`, …): never interpolated, so `flat` in effect.
     pub fn is_integer(&self) -> bool {
-        matches!(self.base.as_str(), "int" | "uint") || ["ivec", "uvec"].iter().any(|p| self.base.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")))
+        matches!(self.base.as_str(), "int" | "uint")
+            || ["ivec", "uvec"].iter().any(|p| self.base.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")))
     }
     /// Opaque (sampler) base type.
     pub fn is_sampler(&self) -> bool {
@@ -326,16 +327,20 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
     let version = match version::parse_version(original) {
         Ok(v) => v,
         Err((msg, span)) => {
-            return Err(vec![Diagnostic::error("E0101", msg).at(file, span, "in this `#version` directive")
+            return Err(vec![Diagnostic::error("E0101", msg)
+                .at(file, span, "in this `#version` directive")
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
     let unextended = version::blank_extensions(original);
     let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
     if let Some(span) = compiled_include(&resolved) {
-        return Err(vec![Diagnostic::error(crate::front::conditionals::E_INCLUDE, format!("cannot read included file `{}`", &original[span.clone()]))
-            .at(file, span, "not found relative to the including file")
-            .with_note("`#include` names a file relative to the file that includes it")]);
+        return Err(vec![Diagnostic::error(
+            crate::front::conditionals::E_INCLUDE,
+            format!("cannot read included file `{}`", &original[span.clone()]),
+        )
+        .at(file, span, "not found relative to the including file")
+        .with_note("`#include` names a file relative to the file that includes it")]);
     }
     let (text, mut renames) = version::rename_new_keywords(&resolved, &version, original);
     let masked = crate::front::lexical::mask(&text, &version::blank_comments(&text));
@@ -377,13 +382,9 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         Ok(Ok(tu)) => tu,
         Ok(Err((msg, span))) => {
             let span = clamp(span, original);
-            return Err(vec![Diagnostic::error("E0102", format!("syntax error: {msg}"))
-                .at(file, span, "the GLSL parser stopped here")]);
+            return Err(vec![Diagnostic::error("E0102", format!("syntax error: {msg}")).at(file, span, "the GLSL parser stopped here")]);
         }
-        Err(_) => {
-            return Err(vec![Diagnostic::error("E0102", "syntax error: the GLSL parser failed on this file")
-                .in_file(file)])
-        }
+        Err(_) => return Err(vec![Diagnostic::error("E0102", "syntax error: the GLSL parser failed on this file").in_file(file)]),
     };
     let mut syntax = StageSyntax {
         file,
@@ -423,9 +424,9 @@ fn rename_struct_hiding_local(text: &str, msg: &str, at: usize, renames: &mut Re
         return None;
     }
     let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
-    let declared_struct = text.match_indices("struct").any(|(i, _)| {
-        text[i + 6..].trim_start().strip_prefix(name).is_some_and(|r| !r.bytes().next().is_some_and(is_ident))
-    });
+    let declared_struct = text
+        .match_indices("struct")
+        .any(|(i, _)| text[i + 6..].trim_start().strip_prefix(name).is_some_and(|r| !r.bytes().next().is_some_and(is_ident)));
     if !declared_struct {
         return None;
     }
@@ -446,7 +447,9 @@ fn rename_struct_hiding_local(text: &str, msg: &str, at: usize, renames: &mut Re
             _ => {}
         }
     }
-    let new = (0..100).map(|k| format!("{}{}", &name[..name.len() - 1], (b'a' + (k % 26) as u8) as char)).find(|c| c != name && !text.contains(c.as_str()))?;
+    let new = (0..100)
+        .map(|k| format!("{}{}", &name[..name.len() - 1], (b'a' + (k % 26) as u8) as char))
+        .find(|c| c != name && !text.contains(c.as_str()))?;
     let mut out = text.as_bytes().to_vec();
     let mut i = at;
     while let Some(off) = text[i..end].find(name) {
@@ -471,7 +474,8 @@ fn trim_expected(msg: &str) -> String {
     if items.len() <= 6 {
         return msg.to_string();
     }
-    let mut short: Vec<&str> = items.iter().copied().filter(|i| !i.contains("texture") && !i.contains("subpass") && !i.contains("sampler")).take(6).collect();
+    let mut short: Vec<&str> =
+        items.iter().copied().filter(|i| !i.contains("texture") && !i.contains("subpass") && !i.contains("sampler")).take(6).collect();
     if short.is_empty() {
         short = items[..6].to_vec();
     }
@@ -505,19 +509,26 @@ struct Collector<'a> {
 
 impl<'a> Collector<'a> {
     fn run(s: &'a mut StageSyntax, tu: &ast::TranslationUnit) {
-        let user_functions = tu
-            .0
-            .iter()
-            .filter_map(|d| match &d.content {
-                ast::ExternalDeclarationData::FunctionDefinition(f) => Some(f.prototype.name.0.to_string()),
-                ast::ExternalDeclarationData::Declaration(d) => match &d.content {
-                    ast::DeclarationData::FunctionPrototype(p) => Some(p.name.0.to_string()),
+        let user_functions =
+            tu.0.iter()
+                .filter_map(|d| match &d.content {
+                    ast::ExternalDeclarationData::FunctionDefinition(f) => Some(f.prototype.name.0.to_string()),
+                    ast::ExternalDeclarationData::Declaration(d) => match &d.content {
+                        ast::DeclarationData::FunctionPrototype(p) => Some(p.name.0.to_string()),
+                        _ => None,
+                    },
                     _ => None,
-                },
-                _ => None,
-            })
-            .collect();
-        let mut c = Collector { s, scopes: Vec::new(), current_function: None, user_functions, arg_context: false, macro_uses: HashSet::new(), local_consts: HashMap::new() };
+                })
+                .collect();
+        let mut c = Collector {
+            s,
+            scopes: Vec::new(),
+            current_function: None,
+            user_functions,
+            arg_context: false,
+            macro_uses: HashSet::new(),
+            local_consts: HashMap::new(),
+        };
         for decl in &tu.0 {
             c.external(decl);
         }
@@ -600,9 +611,7 @@ impl<'a> Collector<'a> {
             .iter()
             .map(|d| match &d.content {
                 ast::ArraySpecifierDimensionData::Unsized => None,
-                ast::ArraySpecifierDimensionData::ExplicitlySized(e) => {
-                    self.const_int(e).and_then(|v| u32::try_from(v).ok())
-                }
+                ast::ArraySpecifierDimensionData::ExplicitlySized(e) => self.const_int(e).and_then(|v| u32::try_from(v).ok()),
             })
             .collect()
     }
@@ -612,9 +621,7 @@ impl<'a> Collector<'a> {
         match &e.content {
             ast::ExprData::IntConst(v) => Some(*v as i64),
             ast::ExprData::UIntConst(v) => Some(*v as i64),
-            ast::ExprData::Variable(id) => {
-                self.local_consts.get(id.0.as_str()).or_else(|| self.s.int_consts.get(id.0.as_str())).copied()
-            }
+            ast::ExprData::Variable(id) => self.local_consts.get(id.0.as_str()).or_else(|| self.s.int_consts.get(id.0.as_str())).copied(),
             ast::ExprData::Binary(op, a, b) => {
                 let (a, b) = (self.const_int(a)?, self.const_int(b)?);
                 match op.content {
@@ -784,44 +791,42 @@ impl<'a> Collector<'a> {
                 let base = self.type_of(&head.ty.ty);
                 let shares = !list.tail.is_empty();
                 let storage_kind = storage.as_ref().map(|s| s.0).unwrap_or(Storage::Private);
-                let declare = |this: &mut Self,
-                                   name: &ast::Identifier,
-                                   array: Option<&ast::ArraySpecifier>,
-                                   init: Option<&ast::Initializer>| {
-                    let mut ty = base.clone();
-                    if let Some(a) = array {
-                        let mut dims = this.dims(a);
-                        dims.extend(ty.dims);
-                        ty.dims = dims;
-                    }
-                    if let Some(i) = init {
-                        this.initializer(i);
-                        if storage_kind == Storage::Const && (ty.base == "int" || ty.base == "uint") && !ty.is_array() {
-                            if let ast::InitializerData::Simple(e) = &i.content {
-                                if let Some(v) = this.const_int(e) {
-                                    this.s.int_consts.insert(name.0.to_string(), v);
+                let declare =
+                    |this: &mut Self, name: &ast::Identifier, array: Option<&ast::ArraySpecifier>, init: Option<&ast::Initializer>| {
+                        let mut ty = base.clone();
+                        if let Some(a) = array {
+                            let mut dims = this.dims(a);
+                            dims.extend(ty.dims);
+                            ty.dims = dims;
+                        }
+                        if let Some(i) = init {
+                            this.initializer(i);
+                            if storage_kind == Storage::Const && (ty.base == "int" || ty.base == "uint") && !ty.is_array() {
+                                if let ast::InitializerData::Simple(e) = &i.content {
+                                    if let Some(v) = this.const_int(e) {
+                                        this.s.int_consts.insert(name.0.to_string(), v);
+                                    }
                                 }
                             }
                         }
-                    }
-                    this.s.globals.push(Global {
-                        storage: storage_kind,
-                        name: name.0.to_string(),
-                        name_span: span_of(name),
-                        ty,
-                        decl_span: span.clone(),
-                        storage_span: storage.as_ref().map(|s| s.1.clone()),
-                        layout_span: layout_span.clone(),
-                        layout: layout.clone(),
-                        location: location_of(&layout),
-                        interp,
-                        centroid,
-                        block: None,
-                        shares_decl: shares,
-                        initializer: init.map(span_of),
-                        layout_items: layout_items.clone(),
-                    });
-                };
+                        this.s.globals.push(Global {
+                            storage: storage_kind,
+                            name: name.0.to_string(),
+                            name_span: span_of(name),
+                            ty,
+                            decl_span: span.clone(),
+                            storage_span: storage.as_ref().map(|s| s.1.clone()),
+                            layout_span: layout_span.clone(),
+                            layout: layout.clone(),
+                            location: location_of(&layout),
+                            interp,
+                            centroid,
+                            block: None,
+                            shares_decl: shares,
+                            initializer: init.map(span_of),
+                            layout_items: layout_items.clone(),
+                        });
+                    };
                 if let Some(name) = &head.name {
                     declare(self, name, head.array_specifier.as_ref(), head.initializer.as_ref());
                 }
@@ -846,7 +851,9 @@ impl<'a> Collector<'a> {
         let n = match &init.content {
             ast::InitializerData::List(items) => items.len(),
             ast::InitializerData::Simple(e) => match &e.content {
-                ast::ExprData::FunCall(f, args) if matches!(&f.content, ast::FunIdentifierData::TypeSpecifier(t) if t.array_specifier.is_some()) => args.len(),
+                ast::ExprData::FunCall(f, args) if matches!(&f.content, ast::FunIdentifierData::TypeSpecifier(t) if t.array_specifier.is_some()) => {
+                    args.len()
+                }
                 _ => return,
             },
         };
@@ -893,7 +900,9 @@ impl<'a> Collector<'a> {
                 let is_const = list.head.ty.qualifier.as_ref().is_some_and(|q| {
                     q.qualifiers.iter().any(|x| matches!(&x.content, ast::TypeQualifierSpecData::Storage(sq) if matches!(sq.content, ast::StorageQualifierData::Const)))
                 });
-                if let (true, Some(n), Some(ast::InitializerData::Simple(e))) = (is_const, &list.head.name, list.head.initializer.as_ref().map(|i| &i.content)) {
+                if let (true, Some(n), Some(ast::InitializerData::Simple(e))) =
+                    (is_const, &list.head.name, list.head.initializer.as_ref().map(|i| &i.content))
+                {
                     if let Some(v) = self.const_int(e) {
                         self.local_consts.insert(n.0.to_string(), v);
                     }
@@ -1060,21 +1069,28 @@ impl<'a> Collector<'a> {
             return Target::Global(i);
         }
         // Members of anonymous blocks are globals too.
-        if let Some(i) = self.s.globals.iter().rposition(|g| {
-            g.block.as_ref().is_some_and(|b| b.instance.is_none() && b.members.iter().any(|m| m.name == name))
-        }) {
+        if let Some(i) = self
+            .s
+            .globals
+            .iter()
+            .rposition(|g| g.block.as_ref().is_some_and(|b| b.instance.is_none() && b.members.iter().any(|m| m.name == name)))
+        {
             return Target::Global(i);
         }
         // Instance names of blocks.
-        if let Some(i) = self.s.globals.iter().rposition(|g| {
-            g.block.as_ref().is_some_and(|b| b.instance.as_deref() == Some(name))
-        }) {
+        if let Some(i) = self.s.globals.iter().rposition(|g| g.block.as_ref().is_some_and(|b| b.instance.as_deref() == Some(name))) {
             return Target::Global(i);
         }
         Target::Unresolved
     }
 
-    fn record(&mut self, id: &ast::Identifier, index: Option<(Range<usize>, Range<usize>, Option<i64>)>, field: Option<(String, Range<usize>)>, user_call_arg: bool) {
+    fn record(
+        &mut self,
+        id: &ast::Identifier,
+        index: Option<(Range<usize>, Range<usize>, Option<i64>)>,
+        field: Option<(String, Range<usize>)>,
+        user_call_arg: bool,
+    ) {
         let name = id.0.to_string();
         let target = self.resolve(&name);
         let in_function = self.current_function.as_ref().map(|(n, _)| n.clone());
@@ -1089,7 +1105,15 @@ impl<'a> Collector<'a> {
             // written in `#define` bodies; record it there (once), so rewrites edit the body.
             for at in macro_body_occurrences(&self.s.text, &name) {
                 if self.macro_uses.insert((name.clone(), at.start)) {
-                    self.s.uses.push(Use { name: name.clone(), target: target.clone(), span: at, index: None, field: None, user_call_arg, in_function: in_function.clone() });
+                    self.s.uses.push(Use {
+                        name: name.clone(),
+                        target: target.clone(),
+                        span: at,
+                        index: None,
+                        field: None,
+                        user_call_arg,
+                        in_function: in_function.clone(),
+                    });
                 }
             }
             return;
@@ -1145,7 +1169,8 @@ impl<'a> Collector<'a> {
                     ast::FunIdentifierData::TypeSpecifier(t) => {
                         if let Some(a) = &t.array_specifier {
                             self.array_exprs(a);
-                            if let Some(d) = a.dimensions.first().filter(|d| matches!(d.content, ast::ArraySpecifierDimensionData::Unsized)) {
+                            if let Some(d) = a.dimensions.first().filter(|d| matches!(d.content, ast::ArraySpecifierDimensionData::Unsized))
+                            {
                                 self.s.unsized_sizes.push((span_of(d), args.len() as u32));
                             }
                         }
@@ -1166,11 +1191,27 @@ impl<'a> Collector<'a> {
                         // Expanded from a macro: the name is written in `#define` bodies.
                         for at in macro_body_occurrences(&self.s.text, &n) {
                             if self.macro_uses.insert((n.clone(), at.start)) {
-                                self.s.calls.push(Call { name: n.clone(), name_span: at.clone(), span: at, in_function: in_function.clone(), args: Vec::new(), first_arg_name: None, from_macro: true });
+                                self.s.calls.push(Call {
+                                    name: n.clone(),
+                                    name_span: at.clone(),
+                                    span: at,
+                                    in_function: in_function.clone(),
+                                    args: Vec::new(),
+                                    first_arg_name: None,
+                                    from_macro: true,
+                                });
                             }
                         }
                     } else {
-                        self.s.calls.push(Call { name: n, name_span: sp, span: span_of(e), in_function, args: args.iter().map(span_of).collect(), first_arg_name, from_macro: false });
+                        self.s.calls.push(Call {
+                            name: n,
+                            name_span: sp,
+                            span: span_of(e),
+                            in_function,
+                            args: args.iter().map(span_of).collect(),
+                            first_arg_name,
+                            from_macro: false,
+                        });
                     }
                 }
                 for a in args {
@@ -1237,10 +1278,14 @@ fn vulkan_source(text: &str) -> bool {
 
 /// Vulkan GLSL shows itself by what only Vulkan has.
 fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
-    let layout_vulkan = s.globals.iter().any(|g| {
-        g.layout.iter().any(|(k, _)| matches!(k.as_str(), "set" | "push_constant" | "constant_id" | "input_attachment_index"))
+    let layout_vulkan = s
+        .globals
+        .iter()
+        .any(|g| g.layout.iter().any(|(k, _)| matches!(k.as_str(), "set" | "push_constant" | "constant_id" | "input_attachment_index")));
+    let separate = s.globals.iter().any(|g| {
+        g.storage == Storage::Uniform
+            && matches!(g.ty.base.as_str(), "sampler" | "samplerShadow" | "texture2D" | "textureCube" | "texture2DArray" | "texture3D")
     });
-    let separate = s.globals.iter().any(|g| g.storage == Storage::Uniform && matches!(g.ty.base.as_str(), "sampler" | "samplerShadow" | "texture2D" | "textureCube" | "texture2DArray" | "texture3D"));
     layout_vulkan
         || separate
         || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Target::Unresolved)

@@ -58,7 +58,6 @@ impl Version {
             self.number >= 420 && self.profile == Profile::Core
         }
     }
-
 }
 
 /// Strips `//` and `/* */` comments from a line-oriented scan, keeping offsets.
@@ -123,9 +122,7 @@ pub fn parse_version(text: &str) -> Result<Version, (String, Range<usize>)> {
                 let Some((num, num_span)) = words.first().cloned() else {
                     return Err(("`#version` needs a version number".into(), directive));
                 };
-                let number: u16 = num
-                    .parse()
-                    .map_err(|_| (format!("`{num}` is not a GLSL version number"), num_span.clone()))?;
+                let number: u16 = num.parse().map_err(|_| (format!("`{num}` is not a GLSL version number"), num_span.clone()))?;
                 let valid = [100, 110, 120, 130, 140, 150, 300, 310, 320, 330, 400, 410, 420, 430, 440, 450, 460];
                 if !valid.contains(&number) {
                     return Err((format!("GLSL has no version {number}"), num_span));
@@ -140,13 +137,7 @@ pub fn parse_version(text: &str) -> Result<Version, (String, Range<usize>)> {
                         return Err((format!("unknown GLSL profile `{other}` (expected core, compatibility or es)"), s.clone()))
                     }
                 };
-                return Ok(Version {
-                    number,
-                    profile,
-                    directive: Some(directive),
-                    number_span: Some(num_span),
-                    profile_span,
-                });
+                return Ok(Version { number, profile, directive: Some(directive), number_span: Some(num_span), profile_span });
             }
         }
         line_start += line.len();
@@ -249,8 +240,7 @@ fn extension_keywords(text: &str) -> Vec<&'static str> {
 pub fn rename_new_keywords(text: &str, version: &Version, directives: &str) -> (String, Renames) {
     let v = version.desktop_equivalent();
     let enabled = extension_keywords(directives);
-    let gated: Vec<&str> =
-        NEWER_KEYWORDS.iter().filter(|(k, since)| *since > v && !enabled.contains(k)).map(|(k, _)| *k).collect();
+    let gated: Vec<&str> = NEWER_KEYWORDS.iter().filter(|(k, since)| *since > v && !enabled.contains(k)).map(|(k, _)| *k).collect();
     let mut renames = Renames::default();
     if gated.is_empty() {
         return (text.to_string(), renames);

@@ -36,8 +36,11 @@ pub fn check(effect: &Effect, stages: &[StageSyntax]) -> Vec<Diagnostic> {
     let names: Vec<&str> = inputs.iter().map(|(n, _)| n.as_str()).collect();
     let mut out = Vec::new();
     let unknown = |name: &str, span: std::ops::Range<usize>, section: &str, out: &mut Vec<Diagnostic>| {
-        let mut d = Diagnostic::error(E_ATTRIBUTE_UNKNOWN, format!("`{name}` in [{section}] is not an input of the vertex stage"))
-            .at(effect.file, span, "no vertex input has this name");
+        let mut d = Diagnostic::error(E_ATTRIBUTE_UNKNOWN, format!("`{name}` in [{section}] is not an input of the vertex stage")).at(
+            effect.file,
+            span,
+            "no vertex input has this name",
+        );
         d = if names.is_empty() {
             d.with_note("the vertex stage declares no inputs")
         } else {

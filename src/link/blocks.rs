@@ -23,12 +23,7 @@ pub struct Side<'a> {
 
 impl<'a> Side<'a> {
     pub fn new(stage: &'a StageSyntax, members: &'a [Member]) -> Self {
-        Side {
-            stage,
-            members,
-            block_interp: None,
-            block_centroid: false,
-        }
+        Side { stage, members, block_interp: None, block_centroid: false }
     }
     fn name(&self, m: &'a Member) -> &'a str {
         self.stage.original_name(&m.name)
@@ -64,10 +59,7 @@ pub struct MemberDiff {
 /// Same member names and types in the same order (qualifiers not compared).
 pub fn same_members(a: Side, b: Side) -> bool {
     a.members.len() == b.members.len()
-        && a.members
-            .iter()
-            .zip(b.members)
-            .all(|(ma, mb)| a.name(ma) == b.name(mb) && same_type(a.stage, &ma.ty, b.stage, &mb.ty))
+        && a.members.iter().zip(b.members).all(|(ma, mb)| a.name(ma) == b.name(mb) && same_type(a.stage, &ma.ty, b.stage, &mb.ty))
 }
 
 /// Number of member names the two sides share.
@@ -90,11 +82,7 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
             if !bset.contains(a.name(m)) {
                 out.push(MemberDiff {
                     qualifier: false,
-                    note: format!(
-                        "member `{} {}` is declared only in the {at} stage",
-                        type_text(a.stage, &m.ty),
-                        a.name(m)
-                    ),
+                    note: format!("member `{} {}` is declared only in the {at} stage", type_text(a.stage, &m.ty), a.name(m)),
                     a: Some((m.span.clone(), format!("only in the {at} stage"))),
                     b: None,
                 });
@@ -104,11 +92,7 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
             if !aset.contains(b.name(m)) {
                 out.push(MemberDiff {
                     qualifier: false,
-                    note: format!(
-                        "member `{} {}` is declared only in the {bt} stage",
-                        type_text(b.stage, &m.ty),
-                        b.name(m)
-                    ),
+                    note: format!("member `{} {}` is declared only in the {bt} stage", type_text(b.stage, &m.ty), b.name(m)),
                     a: None,
                     b: Some((m.span.clone(), format!("only in the {bt} stage"))),
                 });
@@ -117,11 +101,7 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
         let common_a: Vec<&str> = an.iter().copied().filter(|n| bset.contains(n)).collect();
         let common_b: Vec<&str> = bn.iter().copied().filter(|n| aset.contains(n)).collect();
         if common_a != common_b {
-            let pos = common_a
-                .iter()
-                .zip(&common_b)
-                .position(|(x, y)| x != y)
-                .unwrap_or(0);
+            let pos = common_a.iter().zip(&common_b).position(|(x, y)| x != y).unwrap_or(0);
             let (ma, mb) = (a.find(common_a[pos]), b.find(common_b[pos]));
             out.push(MemberDiff {
                 qualifier: false,
@@ -142,9 +122,7 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
             let (ta, tb) = (type_text(a.stage, &ma.ty), type_text(b.stage, &mb.ty));
             out.push(MemberDiff {
                 qualifier: false,
-                note: format!(
-                    "member `{name}` is `{ta}` in the {at} stage but `{tb}` in the {bt} stage"
-                ),
+                note: format!("member `{name}` is `{ta}` in the {at} stage but `{tb}` in the {bt} stage"),
                 a: Some((ma.span.clone(), format!("`{ta}` here"))),
                 b: Some((mb.span.clone(), format!("`{tb}` here"))),
             });
@@ -170,11 +148,7 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
             let word = |c: bool| if c { "`centroid`" } else { "not `centroid`" };
             out.push(MemberDiff {
                 qualifier: true,
-                note: format!(
-                    "member `{name}` is {} in the {at} stage but {} in the {bt} stage",
-                    word(ca),
-                    word(cb)
-                ),
+                note: format!("member `{name}` is {} in the {at} stage but {} in the {bt} stage", word(ca), word(cb)),
                 a: Some((ma.span.clone(), word(ca).to_string())),
                 b: Some((mb.span.clone(), word(cb).to_string())),
             });

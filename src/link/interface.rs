@@ -17,8 +17,8 @@ use std::collections::HashSet;
 use super::blocks::{self, MemberDiff, Side};
 use super::{interp_text, is_builtin, is_read, list, same_type, stage_title, type_text};
 use super::{
-    E_BLOCK_MISMATCH, E_BLOCK_UNMATCHED, E_CENTROID, E_INTERP, E_LOCATION, E_NOT_ARRAYED,
-    E_NO_PRODUCER, E_VARYING_TYPE, W_CENTROID, W_INTERP, W_UNREAD_OUTPUT, W_UNUSED_INPUT,
+    E_BLOCK_MISMATCH, E_BLOCK_UNMATCHED, E_CENTROID, E_INTERP, E_LOCATION, E_NOT_ARRAYED, E_NO_PRODUCER, E_VARYING_TYPE, W_CENTROID,
+    W_INTERP, W_UNREAD_OUTPUT, W_UNUSED_INPUT,
 };
 use crate::diag::Diagnostic;
 use crate::front::syntax::{Global, GlslType, Interp, StageSyntax, Storage};
@@ -49,10 +49,7 @@ pub fn direction(stage: StageKind, g: &Global) -> Option<Dir> {
 
 /// Stages whose inputs are arrays with one element per vertex.
 fn arrayed_inputs(kind: StageKind) -> bool {
-    matches!(
-        kind,
-        StageKind::TessControl | StageKind::TessEval | StageKind::Geometry
-    )
+    matches!(kind, StageKind::TessControl | StageKind::TessEval | StageKind::Geometry)
 }
 
 /// Whether input `gi` of `s` has one element per vertex (a geometry or tessellation
@@ -77,11 +74,7 @@ fn per_vertex(dims: &[Option<u32>], arrayed: bool) -> Vec<Option<u32>> {
 }
 
 fn dims_text(dims: &[Option<u32>]) -> String {
-    GlslType {
-        base: String::new(),
-        dims: dims.to_vec(),
-    }
-    .to_string()
+    GlslType { base: String::new(), dims: dims.to_vec() }.to_string()
 }
 
 /// Indices of a stage's loose and block inputs or outputs.
@@ -91,10 +84,7 @@ struct Ports {
 }
 
 fn ports(s: &StageSyntax, dir: Dir) -> Ports {
-    let mut p = Ports {
-        loose: Vec::new(),
-        blocks: Vec::new(),
-    };
+    let mut p = Ports { loose: Vec::new(), blocks: Vec::new() };
     for (i, g) in s.globals.iter().enumerate() {
         if direction(s.stage, g) != Some(dir) || is_builtin(s, g) {
             continue;
@@ -223,9 +213,12 @@ impl Pair<'_> {
                     if read {
                         let what = self.slot_name(b, slot);
                         self.out.push(
-                            Diagnostic::error(E_NO_PRODUCER, format!("{bt} input `{what}` at location {} has no matching output in the {at} stage", slot.location))
-                                .at(b.file, slot.span.clone(), format!("no {at} output has location {}", slot.location))
-                                .with_note("an input with an explicit location matches the output with the same location, whatever its name"),
+                            Diagnostic::error(
+                                E_NO_PRODUCER,
+                                format!("{bt} input `{what}` at location {} has no matching output in the {at} stage", slot.location),
+                            )
+                            .at(b.file, slot.span.clone(), format!("no {at} output has location {}", slot.location))
+                            .with_note("an input with an explicit location matches the output with the same location, whatever its name"),
                         );
                     }
                     continue;
@@ -235,11 +228,17 @@ impl Pair<'_> {
                     let (wa, wb) = (self.slot_name(a, o), self.slot_name(b, slot));
                     let (ta, tb) = (type_text(a, &o.ty), type_text(b, &slot.ty));
                     self.out.push(
-                        Diagnostic::error(E_VARYING_TYPE, format!("location {}: `{wb}` is `{tb}` in the {bt} stage but the {at} stage's `{wa}` there is `{ta}`", slot.location))
-                            .at(b.file, slot.span.clone(), format!("{bt} input `{tb}` at location {}", slot.location))
-                            .with_label(a.file, o.span.clone(), format!("{at} output `{ta}` at location {}", o.location))
-                            .with_note("an output and an input matched by location must have the same type")
-                            .with_help(format!("declare both as `{ta}`, or give them different locations")),
+                        Diagnostic::error(
+                            E_VARYING_TYPE,
+                            format!(
+                                "location {}: `{wb}` is `{tb}` in the {bt} stage but the {at} stage's `{wa}` there is `{ta}`",
+                                slot.location
+                            ),
+                        )
+                        .at(b.file, slot.span.clone(), format!("{bt} input `{tb}` at location {}", slot.location))
+                        .with_label(a.file, o.span.clone(), format!("{at} output `{ta}` at location {}", o.location))
+                        .with_note("an output and an input matched by location must have the same type")
+                        .with_help(format!("declare both as `{ta}`, or give them different locations")),
                     );
                 }
             }
@@ -296,15 +295,9 @@ impl Pair<'_> {
             let bn = b.original_name(&blk.block_name);
             let (span, label) = match &blk.instance_span {
                 Some(s) => (s.clone(), "instance declared without `[]`"),
-                None => (
-                    blk.block_name_span.clone(),
-                    "block declared without an instance array",
-                ),
+                None => (blk.block_name_span.clone(), "block declared without an instance array"),
             };
-            let inst = blk
-                .instance
-                .as_deref()
-                .map_or("gs_in", |n| b.original_name(n));
+            let inst = blk.instance.as_deref().map_or("gs_in", |n| b.original_name(n));
             self.out.push(
                 Diagnostic::error(
                     E_NOT_ARRAYED,
@@ -318,20 +311,10 @@ impl Pair<'_> {
     }
 
     fn loose_inputs(&mut self) {
-        let input_names: HashSet<String> = self
-            .ins
-            .loose
-            .iter()
-            .map(|&i| self.bname(i).to_string())
-            .collect();
+        let input_names: HashSet<String> = self.ins.loose.iter().map(|&i| self.bname(i).to_string()).collect();
         for bi in self.ins.loose.clone() {
             let name = self.bname(bi).to_string();
-            let matched = self
-                .outs
-                .loose
-                .iter()
-                .copied()
-                .find(|&ai| self.aname(ai) == name);
+            let matched = self.outs.loose.iter().copied().find(|&ai| self.aname(ai) == name);
             match matched {
                 Some(ai) => {
                     self.consumed.insert(ai);
@@ -349,69 +332,37 @@ impl Pair<'_> {
         let name = b.original_name(&g.name);
         let read = is_read(b, bi);
         let mut d = if read {
-            Diagnostic::error(
-                E_NO_PRODUCER,
-                format!("{bt} input `{name}` has no matching output in the {at} stage"),
-            )
+            Diagnostic::error(E_NO_PRODUCER, format!("{bt} input `{name}` has no matching output in the {at} stage"))
         } else {
-            Diagnostic::warning(
-                W_UNUSED_INPUT,
-                format!("{bt} input `{name}` has no matching output in the {at} stage (it is never read)"),
-            )
+            Diagnostic::warning(W_UNUSED_INPUT, format!("{bt} input `{name}` has no matching output in the {at} stage (it is never read)"))
         }
         .at(b.file, g.name_span.clone(), format!("no {at} output is named `{name}`"))
         .with_note("an output of one stage and an input of the next match by variable name (interface blocks by block name)");
         // A member of an output block with that name?
         let member = self.outs.blocks.iter().find_map(|&ai| {
             let blk = a.globals[ai].block.as_ref()?;
-            let m = blk
-                .members
-                .iter()
-                .find(|m| a.original_name(&m.name) == name)?;
+            let m = blk.members.iter().find(|m| a.original_name(&m.name) == name)?;
             Some((ai, a.original_name(&blk.block_name), m))
         });
         if let Some((ai, block, m)) = member {
             self.consumed.insert(ai);
-            d = d
-                .with_label(a.file, m.span.clone(), format!("a member of output block `{block}`"))
-                .with_help(format!(
-                    "`{name}` is a member of output block `{block}` in the {at} stage; declare the input inside `in {block} {{ … }}`"
-                ));
+            d = d.with_label(a.file, m.span.clone(), format!("a member of output block `{block}`")).with_help(format!(
+                "`{name}` is a member of output block `{block}` in the {at} stage; declare the input inside `in {block} {{ … }}`"
+            ));
         } else {
-            let candidates: Vec<&str> = self
-                .outs
-                .loose
-                .iter()
-                .map(|&ai| a.original_name(&a.globals[ai].name))
-                .filter(|n| !input_names.contains(*n))
-                .collect();
+            let candidates: Vec<&str> =
+                self.outs.loose.iter().map(|&ai| a.original_name(&a.globals[ai].name)).filter(|n| !input_names.contains(*n)).collect();
             match did_you_mean(name, &candidates) {
                 Some(c) => {
-                    let ai = self
-                        .outs
-                        .loose
-                        .iter()
-                        .copied()
-                        .find(|&ai| a.original_name(&a.globals[ai].name) == c);
+                    let ai = self.outs.loose.iter().copied().find(|&ai| a.original_name(&a.globals[ai].name) == c);
                     if let Some(ai) = ai {
                         self.consumed.insert(ai);
-                        d = d.with_label(
-                            a.file,
-                            a.globals[ai].name_span.clone(),
-                            format!("the {at} stage writes `{c}`"),
-                        );
+                        d = d.with_label(a.file, a.globals[ai].name_span.clone(), format!("the {at} stage writes `{c}`"));
                     }
-                    d = d.with_help(format!(
-                        "did you mean `{c}`? rename one of the two so the names agree"
-                    ));
+                    d = d.with_help(format!("did you mean `{c}`? rename one of the two so the names agree"));
                 }
                 None => {
-                    let outs: Vec<String> = self
-                        .outs
-                        .loose
-                        .iter()
-                        .map(|&ai| a.original_name(&a.globals[ai].name).to_string())
-                        .collect();
+                    let outs: Vec<String> = self.outs.loose.iter().map(|&ai| a.original_name(&a.globals[ai].name).to_string()).collect();
                     d = d.with_note(if outs.is_empty() {
                         format!("the {at} stage declares no loose outputs")
                     } else {
@@ -420,22 +371,14 @@ impl Pair<'_> {
                     if read {
                         d = d.with_help(format!(
                             "declare `out {} {name};` in the {at} stage and write it there",
-                            type_text(
-                                b,
-                                &GlslType {
-                                    base: g.ty.base.clone(),
-                                    dims: per_vertex(&g.ty.dims, arrayed_inputs(b.stage)),
-                                }
-                            )
+                            type_text(b, &GlslType { base: g.ty.base.clone(), dims: per_vertex(&g.ty.dims, arrayed_inputs(b.stage)) })
                         ));
                     }
                 }
             }
         }
         if !read {
-            d = d.with_note(
-                "GL only rejects an unmatched input the stage reads; this one is dead code",
-            );
+            d = d.with_note("GL only rejects an unmatched input the stage reads; this one is dead code");
         }
         self.out.push(d);
     }
@@ -445,15 +388,9 @@ impl Pair<'_> {
         let (a, b, at, bt) = (self.a, self.b, self.at, self.bt);
         let (ga, gb) = (&a.globals[ai], &b.globals[bi]);
         let name = b.original_name(&gb.name);
-        let ta = GlslType {
-            base: ga.ty.base.clone(),
-            dims: per_vertex(&ga.ty.dims, arrayed_outputs(a.stage)),
-        };
+        let ta = GlslType { base: ga.ty.base.clone(), dims: per_vertex(&ga.ty.dims, arrayed_outputs(a.stage)) };
         let b_arrayed = input_arrayed(b, bi) && gb.ty.is_array();
-        let tb = GlslType {
-            base: gb.ty.base.clone(),
-            dims: per_vertex(&gb.ty.dims, b_arrayed),
-        };
+        let tb = GlslType { base: gb.ty.base.clone(), dims: per_vertex(&gb.ty.dims, b_arrayed) };
         if !same_type(a, &ta, b, &tb) {
             let (sa, sb) = (type_text(a, &ga.ty), type_text(b, &gb.ty));
             let mut want_dims = Vec::new();
@@ -461,28 +398,11 @@ impl Pair<'_> {
                 want_dims.push(gb.ty.dims[0]);
             }
             want_dims.extend(ta.dims.iter().copied());
-            let want = format!(
-                "in {} {name}{}",
-                a.original_name(&ta.base),
-                dims_text(&want_dims)
-            );
-            let mut d = Diagnostic::error(
-                E_VARYING_TYPE,
-                format!("`{name}` is `{sa}` in the {at} stage but `{sb}` in the {bt} stage"),
-            )
-            .at(
-                b.file,
-                gb.name_span.clone(),
-                format!("{bt} input declared as `{sb}`"),
-            )
-            .with_label(
-                a.file,
-                ga.name_span.clone(),
-                format!("{at} output declared as `{sa}`"),
-            )
-            .with_note(
-                "an output and the input of the same name must have the same type and array size",
-            );
+            let want = format!("in {} {name}{}", a.original_name(&ta.base), dims_text(&want_dims));
+            let mut d = Diagnostic::error(E_VARYING_TYPE, format!("`{name}` is `{sa}` in the {at} stage but `{sb}` in the {bt} stage"))
+                .at(b.file, gb.name_span.clone(), format!("{bt} input declared as `{sb}`"))
+                .with_label(a.file, ga.name_span.clone(), format!("{at} output declared as `{sa}`"))
+                .with_note("an output and the input of the same name must have the same type and array size");
             if b_arrayed {
                 d = d.with_note(format!(
                     "{bt} inputs are arrays with one element per vertex: `in {} {name}[]` matches `out {} {name}`",
@@ -490,8 +410,7 @@ impl Pair<'_> {
                     type_text(a, &ta)
                 ));
             }
-            self.out
-                .push(d.with_help(format!("declare the {bt} input as `{want};`")));
+            self.out.push(d.with_help(format!("declare the {bt} input as `{want};`")));
         }
         let relaxed = qualifiers_relaxed(a, b);
         // Integers are never interpolated: without a qualifier they are `flat` in effect.
@@ -506,11 +425,7 @@ impl Pair<'_> {
                 Some(_) => format!("`{}`", interp_text(i)),
                 None => format!("`{}` (no qualifier)", interp_text(i)),
             };
-            let message = format!(
-                "`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage",
-                interp_text(ia),
-                interp_text(ib)
-            );
+            let message = format!("`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage", interp_text(ia), interp_text(ib));
             let d = if relaxed {
                 Diagnostic::warning(W_INTERP, message).with_note(format!(
                     "since GLSL 4.30 the qualifiers may differ and the {bt} stage's `{}` is used; the {at} stage's `{}` has no effect",
@@ -523,33 +438,19 @@ impl Pair<'_> {
                 )
             };
             self.out.push(
-                d.at(
-                    b.file,
-                    gb.name_span.clone(),
-                    format!("{} here", shown(gb, ib)),
-                )
-                .with_label(
-                    a.file,
-                    ga.name_span.clone(),
-                    format!("{} here", shown(ga, ia)),
-                )
-                .with_help("write the same interpolation qualifier in both stages"),
+                d.at(b.file, gb.name_span.clone(), format!("{} here", shown(gb, ib)))
+                    .with_label(a.file, ga.name_span.clone(), format!("{} here", shown(ga, ia)))
+                    .with_help("write the same interpolation qualifier in both stages"),
             );
         }
         if ga.centroid != gb.centroid {
             let word = |c: bool| if c { "`centroid`" } else { "not `centroid`" };
-            let message = format!(
-                "`{name}` is {} in the {at} stage but {} in the {bt} stage",
-                word(ga.centroid),
-                word(gb.centroid)
-            );
+            let message = format!("`{name}` is {} in the {at} stage but {} in the {bt} stage", word(ga.centroid), word(gb.centroid));
             let d = if relaxed {
-                Diagnostic::warning(W_CENTROID, message).with_note(format!(
-                    "since GLSL 4.30 auxiliary qualifiers may differ and the {bt} stage's declaration is used"
-                ))
+                Diagnostic::warning(W_CENTROID, message)
+                    .with_note(format!("since GLSL 4.30 auxiliary qualifiers may differ and the {bt} stage's declaration is used"))
             } else {
-                Diagnostic::error(E_CENTROID, message)
-                    .with_note("before GLSL 4.30 an output and its input must agree on `centroid`")
+                Diagnostic::error(E_CENTROID, message).with_note("before GLSL 4.30 an output and its input must agree on `centroid`")
             };
             self.out.push(
                 d.at(b.file, gb.name_span.clone(), word(gb.centroid))
@@ -559,14 +460,8 @@ impl Pair<'_> {
         }
         if let (Some(la), Some(lb)) = (ga.location, gb.location) {
             if la != lb {
-                let span_a = ga
-                    .layout_span
-                    .clone()
-                    .unwrap_or_else(|| ga.name_span.clone());
-                let span_b = gb
-                    .layout_span
-                    .clone()
-                    .unwrap_or_else(|| gb.name_span.clone());
+                let span_a = ga.layout_span.clone().unwrap_or_else(|| ga.name_span.clone());
+                let span_b = gb.layout_span.clone().unwrap_or_else(|| gb.name_span.clone());
                 self.out.push(
                     Diagnostic::error(
                         E_LOCATION,
@@ -584,23 +479,13 @@ impl Pair<'_> {
     fn block_inputs(&mut self) {
         let (a, b) = (self.a, self.b);
         let block_name = |s: &StageSyntax, i: usize| -> String {
-            s.globals[i]
-                .block
-                .as_ref()
-                .map(|blk| s.original_name(&blk.block_name).to_string())
-                .unwrap_or_default()
+            s.globals[i].block.as_ref().map(|blk| s.original_name(&blk.block_name).to_string()).unwrap_or_default()
         };
         let mut unmatched_b = Vec::new();
         let mut matched_a = HashSet::new();
         for bi in self.ins.blocks.clone() {
             let name = block_name(b, bi);
-            match self
-                .outs
-                .blocks
-                .iter()
-                .copied()
-                .find(|&ai| block_name(a, ai) == name)
-            {
+            match self.outs.blocks.iter().copied().find(|&ai| block_name(a, ai) == name) {
                 Some(ai) => {
                     matched_a.insert(ai);
                     self.consumed.insert(ai);
@@ -609,13 +494,7 @@ impl Pair<'_> {
                 None => unmatched_b.push(bi),
             }
         }
-        let unmatched_a: Vec<usize> = self
-            .outs
-            .blocks
-            .iter()
-            .copied()
-            .filter(|ai| !matched_a.contains(ai))
-            .collect();
+        let unmatched_a: Vec<usize> = self.outs.blocks.iter().copied().filter(|ai| !matched_a.contains(ai)).collect();
         let mut taken = HashSet::new();
         for &bi in &unmatched_b {
             let mut best: Option<(usize, usize)> = None;
@@ -639,12 +518,7 @@ impl Pair<'_> {
     fn side<'s>(s: &'s StageSyntax, i: usize) -> Side<'s> {
         let g = &s.globals[i];
         let members = g.block.as_ref().map_or(&[][..], |b| &b.members[..]);
-        Side {
-            stage: s,
-            members,
-            block_interp: g.interp,
-            block_centroid: g.centroid,
-        }
+        Side { stage: s, members, block_interp: g.interp, block_centroid: g.centroid }
     }
 
     /// How likely output block `ai` is the one input block `bi` was meant to match.
@@ -672,46 +546,28 @@ impl Pair<'_> {
         let Some(blk) = &g.block else { return };
         let bname = b.original_name(&blk.block_name);
         let read = is_read(b, bi);
-        let message =
-            format!("{bt} input block `{bname}` has no matching output block in the {at} stage");
+        let message = format!("{bt} input block `{bname}` has no matching output block in the {at} stage");
         let mut d = if read {
             Diagnostic::error(E_BLOCK_UNMATCHED, message)
         } else {
             Diagnostic::warning(W_UNUSED_INPUT, format!("{message} (it is never read)"))
         }
-        .at(
-            b.file,
-            blk.block_name_span.clone(),
-            format!("no {at} output block is named `{bname}`"),
-        );
+        .at(b.file, blk.block_name_span.clone(), format!("no {at} output block is named `{bname}`"));
         if let Some(ai) = pair {
             self.consumed.insert(ai);
-            let ablk = a.globals[ai]
-                .block
-                .as_ref()
-                .expect("output blocks are blocks");
+            let ablk = a.globals[ai].block.as_ref().expect("output blocks are blocks");
             let aname = a.original_name(&ablk.block_name);
             d = d
-                .with_label(
-                    a.file,
-                    ablk.block_name_span.clone(),
-                    format!("the {at} stage's output block is named `{aname}`"),
-                )
-                .with_note(format!(
-                    "interface blocks match by block name (`{bname}` vs `{aname}`), not by instance name"
-                ));
+                .with_label(a.file, ablk.block_name_span.clone(), format!("the {at} stage's output block is named `{aname}`"))
+                .with_note(format!("interface blocks match by block name (`{bname}` vs `{aname}`), not by instance name"));
             let (sa, sb) = (Self::side(a, ai), Self::side(b, bi));
             if blocks::same_members(sa, sb) {
-                d = d.with_help(format!(
-                    "rename `in {bname}` to `in {aname}` (the members match)"
-                ));
+                d = d.with_help(format!("rename `in {bname}` to `in {aname}` (the members match)"));
             } else {
                 for diff in blocks::diff(sa, sb, !qualifiers_relaxed(a, b)) {
                     d = self.add_diff(d, diff);
                 }
-                d = d.with_help(format!(
-                    "rename `in {bname}` to `in {aname}` and make the members agree"
-                ));
+                d = d.with_help(format!("rename `in {bname}` to `in {aname}` and make the members agree"));
             }
         } else {
             d = d.with_note("interface blocks match by block name, not by instance name");
@@ -721,22 +577,13 @@ impl Pair<'_> {
                 .loose
                 .iter()
                 .copied()
-                .filter(|&ai| {
-                    blk.members
-                        .iter()
-                        .any(|m| b.original_name(&m.name) == self.aname(ai))
-                })
+                .filter(|&ai| blk.members.iter().any(|m| b.original_name(&m.name) == self.aname(ai)))
                 .collect();
             if !loose.is_empty() {
-                let names: Vec<String> =
-                    loose.iter().map(|&ai| self.aname(ai).to_string()).collect();
+                let names: Vec<String> = loose.iter().map(|&ai| self.aname(ai).to_string()).collect();
                 for &ai in &loose {
                     self.consumed.insert(ai);
-                    d = d.with_label(
-                        a.file,
-                        a.globals[ai].name_span.clone(),
-                        "a separate output, not a block member",
-                    );
+                    d = d.with_label(a.file, a.globals[ai].name_span.clone(), "a separate output, not a block member");
                 }
                 d = d.with_help(format!(
                     "the {at} stage writes {} as separate outputs: declare `out {bname} {{ … }}` there, or declare the inputs here as separate `in` variables",
@@ -751,20 +598,13 @@ impl Pair<'_> {
                     .map(|ob| a.original_name(&ob.block_name).to_string())
                     .collect();
                 if !others.is_empty() {
-                    d = d.with_note(format!(
-                        "the {at} stage's output blocks are {}",
-                        list(&others)
-                    ));
+                    d = d.with_note(format!("the {at} stage's output blocks are {}", list(&others)));
                 }
-                d = d.with_help(format!(
-                    "declare `out {bname} {{ … }}` with the same members in the {at} stage"
-                ));
+                d = d.with_help(format!("declare `out {bname} {{ … }}` with the same members in the {at} stage"));
             }
         }
         if !read {
-            d = d.with_note(
-                "GL only rejects an unmatched input the stage reads; this one is dead code",
-            );
+            d = d.with_note("GL only rejects an unmatched input the stage reads; this one is dead code");
         }
         self.out.push(d);
     }
@@ -789,13 +629,9 @@ impl Pair<'_> {
         let name = b.original_name(&bb.block_name);
         let relaxed = qualifiers_relaxed(a, b);
         let all = blocks::diff(Self::side(a, ai), Self::side(b, bi), true);
-        let (mut errors, warnings): (Vec<MemberDiff>, Vec<MemberDiff>) =
-            all.into_iter().partition(|d| !(relaxed && d.qualifier));
+        let (mut errors, warnings): (Vec<MemberDiff>, Vec<MemberDiff>) = all.into_iter().partition(|d| !(relaxed && d.qualifier));
         let da = per_vertex(&ba.instance_dims, arrayed_outputs(a.stage));
-        let db = per_vertex(
-            &bb.instance_dims,
-            arrayed_inputs(b.stage) && !bb.instance_dims.is_empty(),
-        );
+        let db = per_vertex(&bb.instance_dims, arrayed_inputs(b.stage) && !bb.instance_dims.is_empty());
         if da != db {
             let shown = |d: &[Option<u32>]| {
                 if d.is_empty() {
@@ -806,11 +642,7 @@ impl Pair<'_> {
             };
             errors.push(MemberDiff {
                 qualifier: false,
-                note: format!(
-                    "the instance is {} in the {at} stage but {} in the {bt} stage",
-                    shown(&da),
-                    shown(&db)
-                ),
+                note: format!("the instance is {} in the {at} stage but {} in the {bt} stage", shown(&da), shown(&db)),
                 a: ba.instance_span.clone().map(|s| (s, shown(&da))),
                 b: bb.instance_span.clone().map(|s| (s, shown(&db))),
             });
@@ -826,22 +658,15 @@ impl Pair<'_> {
             }
         }
         let head = |d: Diagnostic| {
-            d.at(
-                b.file,
-                bb.block_name_span.clone(),
-                format!("{bt} input block"),
-            )
-            .with_label(
+            d.at(b.file, bb.block_name_span.clone(), format!("{bt} input block")).with_label(
                 a.file,
                 ba.block_name_span.clone(),
                 format!("{at} output block"),
             )
         };
         if !errors.is_empty() {
-            let mut d = head(Diagnostic::error(
-                E_BLOCK_MISMATCH,
-                format!("interface block `{name}` differs between the {at} and {bt} stages"),
-            ));
+            let mut d =
+                head(Diagnostic::error(E_BLOCK_MISMATCH, format!("interface block `{name}` differs between the {at} and {bt} stages")));
             for diff in errors {
                 d = self.add_diff(d, diff);
             }
@@ -853,16 +678,14 @@ impl Pair<'_> {
         if !warnings.is_empty() {
             let mut d = head(Diagnostic::warning(
                 W_INTERP,
-                format!(
-                    "interface block `{name}` has different qualifiers in the {at} and {bt} stages"
-                ),
+                format!("interface block `{name}` has different qualifiers in the {at} and {bt} stages"),
             ));
             for diff in warnings {
                 d = self.add_diff(d, diff);
             }
-            self.out.push(d.with_note(format!(
-                "since GLSL 4.30 interpolation and auxiliary qualifiers may differ and the {bt} stage's are used"
-            )));
+            self.out.push(
+                d.with_note(format!("since GLSL 4.30 interpolation and auxiliary qualifiers may differ and the {bt} stage's are used")),
+            );
         }
     }
 
@@ -875,30 +698,27 @@ impl Pair<'_> {
             }
             let g = &a.globals[ai];
             let name = a.original_name(&g.name);
-            let mut d = Diagnostic::warning(
-                W_UNREAD_OUTPUT,
-                format!("{at} output `{name}` is never read by the {bt} stage"),
-            )
-            .at(a.file, g.name_span.clone(), "written here, read nowhere");
+            let mut d = Diagnostic::warning(W_UNREAD_OUTPUT, format!("{at} output `{name}` is never read by the {bt} stage")).at(
+                a.file,
+                g.name_span.clone(),
+                "written here, read nowhere",
+            );
             let member = self.ins.blocks.iter().find_map(|&bi| {
                 let blk = b.globals[bi].block.as_ref()?;
-                let m = blk
-                    .members
-                    .iter()
-                    .find(|m| b.original_name(&m.name) == name)?;
+                let m = blk.members.iter().find(|m| b.original_name(&m.name) == name)?;
                 Some((b.original_name(&blk.block_name), m))
             });
             match member {
                 Some((block, m)) => {
                     d = d
                         .with_label(b.file, m.span.clone(), format!("a member of input block `{block}`"))
-                        .with_note(format!("the {bt} stage reads `{name}` as a member of input block `{block}`; a loose output only matches a loose input"))
+                        .with_note(format!(
+                            "the {bt} stage reads `{name}` as a member of input block `{block}`; a loose output only matches a loose input"
+                        ))
                         .with_help(format!("move the output into `out {block} {{ … }}` in the {at} stage"));
                 }
                 None => {
-                    d = d.with_note(format!(
-                        "the {bt} stage declares no input named `{name}`, so the value is discarded"
-                    ));
+                    d = d.with_note(format!("the {bt} stage declares no input named `{name}`, so the value is discarded"));
                 }
             }
             self.out.push(d);
@@ -912,14 +732,11 @@ impl Pair<'_> {
             };
             let name = a.original_name(&blk.block_name);
             self.out.push(
-                Diagnostic::warning(
-                    W_UNREAD_OUTPUT,
-                    format!("{at} output block `{name}` is never read by the {bt} stage"),
-                )
-                .at(a.file, blk.block_name_span.clone(), "written here, read nowhere")
-                .with_note(format!(
-                    "the {bt} stage declares no input block named `{name}` (blocks match by block name, not by instance name)"
-                )),
+                Diagnostic::warning(W_UNREAD_OUTPUT, format!("{at} output block `{name}` is never read by the {bt} stage"))
+                    .at(a.file, blk.block_name_span.clone(), "written here, read nowhere")
+                    .with_note(format!(
+                        "the {bt} stage declares no input block named `{name}` (blocks match by block name, not by instance name)"
+                    )),
             );
         }
     }

@@ -13,9 +13,8 @@ use std::ops::Range;
 use super::values::Shape;
 use super::{is_opaque, is_read, is_sampler_like, list, member_read, stage_title, type_text};
 use super::{
-    E_MANIFEST_PATH, E_MANIFEST_RANGE, E_MANIFEST_SEMANTIC, E_MANIFEST_UNKNOWN, E_MANIFEST_VALUE,
-    E_TEXTURE_KIND, E_TEXTURE_UNKNOWN, W_DEFAULT_UNREAD, W_NO_DEFAULT, W_NO_TEXTURE,
-    W_UNREAD_UNIFORM,
+    E_MANIFEST_PATH, E_MANIFEST_RANGE, E_MANIFEST_SEMANTIC, E_MANIFEST_UNKNOWN, E_MANIFEST_VALUE, E_TEXTURE_KIND, E_TEXTURE_UNKNOWN,
+    W_DEFAULT_UNREAD, W_NO_DEFAULT, W_NO_TEXTURE, W_UNREAD_UNIFORM,
 };
 use crate::diag::{Diagnostic, FileId, Files};
 use crate::front::syntax::{GlslType, StageSyntax, Storage};
@@ -66,11 +65,7 @@ struct Decls<'a> {
 
 impl<'a> Decls<'a> {
     fn collect(stages: &'a [StageSyntax]) -> Self {
-        let mut d = Decls {
-            list: Vec::new(),
-            named_blocks: Vec::new(),
-            unread_blocks: Vec::new(),
-        };
+        let mut d = Decls { list: Vec::new(), named_blocks: Vec::new(), unread_blocks: Vec::new() };
         let mut read_blocks: HashSet<String> = HashSet::new();
         let mut block_decls: Vec<(&StageSyntax, usize, String)> = Vec::new();
         for s in stages {
@@ -79,14 +74,7 @@ impl<'a> Decls<'a> {
                     continue;
                 }
                 match &g.block {
-                    None => d.add(
-                        s,
-                        s.original_name(&g.name),
-                        &g.ty,
-                        g.name_span.clone(),
-                        is_read(s, i),
-                        false,
-                    ),
+                    None => d.add(s, s.original_name(&g.name), &g.ty, g.name_span.clone(), is_read(s, i), false),
                     Some(b) => {
                         let bn = s.original_name(&b.block_name).to_string();
                         if is_read(s, i) {
@@ -99,14 +87,7 @@ impl<'a> Decls<'a> {
                         }
                         for m in &b.members {
                             let read = member_read(s, i, &m.name);
-                            d.add(
-                                s,
-                                s.original_name(&m.name),
-                                &m.ty,
-                                m.span.clone(),
-                                read,
-                                true,
-                            );
+                            d.add(s, s.original_name(&m.name), &m.ty, m.span.clone(), read, true);
                         }
                     }
                 }
@@ -121,28 +102,13 @@ impl<'a> Decls<'a> {
         d
     }
 
-    fn add(
-        &mut self,
-        s: &'a StageSyntax,
-        name: &str,
-        ty: &'a GlslType,
-        span: Range<usize>,
-        read: bool,
-        in_block: bool,
-    ) {
+    fn add(&mut self, s: &'a StageSyntax, name: &str, ty: &'a GlslType, span: Range<usize>, read: bool, in_block: bool) {
         if let Some(d) = self.list.iter_mut().find(|d| d.name == name) {
             d.read |= read;
             d.sites.push((s.file, span, s));
             return;
         }
-        self.list.push(Decl {
-            name: name.to_string(),
-            stage: s,
-            ty,
-            sites: vec![(s.file, span, s)],
-            read,
-            in_block,
-        });
+        self.list.push(Decl { name: name.to_string(), stage: s, ty, sites: vec![(s.file, span, s)], read, in_block });
     }
 
     fn get(&self, name: &str) -> Option<&Decl<'a>> {
@@ -152,13 +118,7 @@ impl<'a> Decls<'a> {
     /// Every sampler the manifest can bind: its path (`tex`, `material.diffuse`), the
     /// sampler type and the declaration it lives in.
     fn samplers(&self) -> Vec<(String, GlslType, &Decl<'a>)> {
-        fn walk<'d, 'a>(
-            decl: &'d Decl<'a>,
-            path: String,
-            ty: &GlslType,
-            depth: usize,
-            out: &mut Vec<(String, GlslType, &'d Decl<'a>)>,
-        ) {
+        fn walk<'d, 'a>(decl: &'d Decl<'a>, path: String, ty: &GlslType, depth: usize, out: &mut Vec<(String, GlslType, &'d Decl<'a>)>) {
             if is_sampler_like(ty) {
                 out.push((path, ty.clone(), decl));
             } else if let Some(def) = decl.stage.struct_def(&ty.base) {
@@ -188,11 +148,7 @@ enum Step {
 /// `lights[1].color` → (`lights`, [Index(1), Field(color)]); `None` if it is not a path.
 fn parse_path(s: &str) -> Option<(String, Vec<Step>)> {
     let ident = |s: &str| -> usize {
-        s.char_indices()
-            .take_while(|&(i, c)| {
-                c == '_' || c.is_ascii_alphabetic() || (i > 0 && c.is_ascii_digit())
-            })
-            .count()
+        s.char_indices().take_while(|&(i, c)| c == '_' || c.is_ascii_alphabetic() || (i > 0 && c.is_ascii_digit())).count()
     };
     let n = ident(s);
     if n == 0 {
@@ -284,25 +240,14 @@ pub fn check_with_bound(effect: &Effect, stages: &[StageSyntax], files: &Files, 
         default(effect, u, &decls, stages, files, &mut out);
     }
     textures(effect, &decls, &mut out);
-    let mut textured: HashSet<String> = effect
-        .textures
-        .iter()
-        .map(|t| texture_path(&t.name))
-        .collect();
+    let mut textured: HashSet<String> = effect.textures.iter().map(|t| texture_path(&t.name)).collect();
     textured.extend(bound.iter().cloned());
     missing(&decls, &covered, &textured, &mut out);
     out
 }
 
 /// Checks one `[uniforms]` entry.
-fn default(
-    effect: &Effect,
-    u: &UniformDefault,
-    decls: &Decls,
-    stages: &[StageSyntax],
-    files: &Files,
-    out: &mut Vec<Diagnostic>,
-) {
+fn default(effect: &Effect, u: &UniformDefault, decls: &Decls, stages: &[StageSyntax], files: &Files, out: &mut Vec<Diagnostic>) {
     let mf = effect.file;
     let (base, steps) = parse_path(&u.name).unwrap_or_else(|| (u.name.clone(), Vec::new()));
     let Some(decl) = decls.get(&base) else {
@@ -319,31 +264,16 @@ fn default(
                     out.push(
                         Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` is not an array"))
                             .at(mf, u.name_span.clone(), format!("indexes `{shown}`"))
-                            .with_label(
-                                decl.file(),
-                                decl.span(),
-                                format!("`{shown}` is a `{}`", type_text(decl.stage, &ty)),
-                            ),
+                            .with_label(decl.file(), decl.span(), format!("`{shown}` is a `{}`", type_text(decl.stage, &ty))),
                     );
                     return;
                 };
                 if let Some(k) = first {
                     if *i >= u64::from(k) {
                         out.push(
-                            Diagnostic::error(
-                                E_MANIFEST_PATH,
-                                format!("index {i} is out of bounds for `{shown}`"),
-                            )
-                            .at(
-                                mf,
-                                u.name_span.clone(),
-                                format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)),
-                            )
-                            .with_label(
-                                decl.file(),
-                                decl.span(),
-                                format!("declared as `{}`", type_text(decl.stage, &ty)),
-                            ),
+                            Diagnostic::error(E_MANIFEST_PATH, format!("index {i} is out of bounds for `{shown}`"))
+                                .at(mf, u.name_span.clone(), format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)))
+                                .with_label(decl.file(), decl.span(), format!("declared as `{}`", type_text(decl.stage, &ty))),
                         );
                         return;
                     }
@@ -352,51 +282,24 @@ fn default(
                 shown = format!("{shown}[{i}]");
             }
             Step::Field(f) => {
-                let def = (!ty.is_array())
-                    .then(|| decl.stage.struct_def(&ty.base))
-                    .flatten();
+                let def = (!ty.is_array()).then(|| decl.stage.struct_def(&ty.base)).flatten();
                 let Some(def) = def else {
                     out.push(
                         Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` has no field `{f}`"))
-                            .at(
-                                mf,
-                                u.name_span.clone(),
-                                format!(
-                                    "`{shown}` is a `{}`, not a struct",
-                                    type_text(decl.stage, &ty)
-                                ),
-                            )
+                            .at(mf, u.name_span.clone(), format!("`{shown}` is a `{}`, not a struct", type_text(decl.stage, &ty)))
                             .with_label(decl.file(), decl.span(), "declared here"),
                     );
                     return;
                 };
-                let Some(m) = def
-                    .members
-                    .iter()
-                    .find(|m| decl.stage.original_name(&m.name) == f)
-                else {
-                    let names: Vec<&str> = def
-                        .members
-                        .iter()
-                        .map(|m| decl.stage.original_name(&m.name))
-                        .collect();
+                let Some(m) = def.members.iter().find(|m| decl.stage.original_name(&m.name) == f) else {
+                    let names: Vec<&str> = def.members.iter().map(|m| decl.stage.original_name(&m.name)).collect();
                     let sname = decl.stage.original_name(&def.name);
-                    let mut d = Diagnostic::error(
-                        E_MANIFEST_PATH,
-                        format!("struct `{sname}` has no member `{f}`"),
-                    )
-                    .at(mf, u.name_span.clone(), format!("`{shown}` is a `{sname}`"))
-                    .with_label(
-                        decl.stage.file,
-                        def.name_span.clone(),
-                        format!("`{sname}` is defined here"),
-                    );
+                    let mut d = Diagnostic::error(E_MANIFEST_PATH, format!("struct `{sname}` has no member `{f}`"))
+                        .at(mf, u.name_span.clone(), format!("`{shown}` is a `{sname}`"))
+                        .with_label(decl.stage.file, def.name_span.clone(), format!("`{sname}` is defined here"));
                     d = match did_you_mean(f, &names) {
                         Some(c) => d.with_help(format!("did you mean `{shown}.{c}`?")),
-                        None => d.with_note(format!(
-                            "its members are {}",
-                            list(&names.iter().map(|n| n.to_string()).collect::<Vec<_>>())
-                        )),
+                        None => d.with_note(format!("its members are {}", list(&names.iter().map(|n| n.to_string()).collect::<Vec<_>>()))),
                     };
                     out.push(d);
                     return;
@@ -411,48 +314,32 @@ fn default(
     let decl_label = format!("`{}` is declared as `{}` here", decl.name, decl.type_text());
     match (&u.value, &shape) {
         _ if is_sampler_like(&ty) => out.push(
-            Diagnostic::error(
-                E_MANIFEST_VALUE,
-                format!("`{shown}` is a sampler (`{tt}`) and takes no value"),
-            )
-            .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
-            .with_label(decl.file(), decl.span(), decl_label.clone())
-            .with_help(format!(
-                "bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`"
-            )),
+            Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
+                .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
+                .with_label(decl.file(), decl.span(), decl_label.clone())
+                .with_help(format!("bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`")),
         ),
         (_, Shape::Struct(sname)) => {
             let sname = decl.stage.original_name(sname).to_string();
             let members: Vec<String> = decl
                 .stage
                 .struct_def(&ty.base)
-                .map(|def| {
-                    def.members
-                        .iter()
-                        .map(|m| format!("{shown}.{}", decl.stage.original_name(&m.name)))
-                        .collect()
-                })
+                .map(|def| def.members.iter().map(|m| format!("{shown}.{}", decl.stage.original_name(&m.name))).collect())
                 .unwrap_or_default();
             out.push(
-                Diagnostic::error(
-                    E_MANIFEST_VALUE,
-                    format!("`{shown}` is a struct (`{sname}`) and cannot take one value"),
-                )
-                .at(mf, u.value_span.clone(), "a value for a whole struct")
-                .with_label(decl.file(), decl.span(), decl_label.clone())
-                .with_help(format!("set the members one by one: {}", list(&members))),
+                Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a struct (`{sname}`) and cannot take one value"))
+                    .at(mf, u.value_span.clone(), "a value for a whole struct")
+                    .with_label(decl.file(), decl.span(), decl_label.clone())
+                    .with_help(format!("set the members one by one: {}", list(&members))),
             );
         }
         (Some(v), _) => {
             if let Err(why) = shape.fit(v) {
                 out.push(
-                    Diagnostic::error(
-                        E_MANIFEST_VALUE,
-                        format!("the default for `{shown}` does not fit its type `{tt}`"),
-                    )
-                    .at(mf, u.value_span.clone(), why)
-                    .with_label(decl.file(), decl.span(), decl_label.clone())
-                    .with_note(format!("a `{tt}` takes {}", shape.expected())),
+                    Diagnostic::error(E_MANIFEST_VALUE, format!("the default for `{shown}` does not fit its type `{tt}`"))
+                        .at(mf, u.value_span.clone(), why)
+                        .with_label(decl.file(), decl.span(), decl_label.clone())
+                        .with_note(format!("a `{tt}` takes {}", shape.expected())),
                 );
             }
         }
@@ -461,10 +348,7 @@ fn default(
     if let Some(sem) = u.semantic {
         let fits = !ty.is_array() && sem.glsl_types().contains(&tt.as_str());
         if !fits {
-            let span = u
-                .semantic_span
-                .clone()
-                .unwrap_or_else(|| u.value_span.clone());
+            let span = u.semantic_span.clone().unwrap_or_else(|| u.value_span.clone());
             let provides = sem.glsl_types().join("` or `");
             let others: Vec<String> = Semantic::ALL
                 .iter()
@@ -479,10 +363,7 @@ fn default(
             out.push(
                 Diagnostic::error(
                     E_MANIFEST_SEMANTIC,
-                    format!(
-                        "semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`",
-                        sem.name()
-                    ),
+                    format!("semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`", sem.name()),
                 )
                 .at(mf, span, format!("provides `{provides}`"))
                 .with_label(decl.file(), decl.span(), decl_label.clone())
@@ -493,51 +374,28 @@ fn default(
     if let Some(span) = &u.range_span {
         if !shape.takes_range() {
             out.push(
-                Diagnostic::error(
-                    E_MANIFEST_RANGE,
-                    format!("`range` needs a number or a vector of numbers, but `{shown}` is a `{tt}`"),
-                )
-                .at(mf, span.clone(), "a range on a uniform that is not a number or vector")
-                .with_label(decl.file(), decl.span(), decl_label.clone())
-                .with_note("`range` bounds a number (`float`, `int`, `uint`, `double`) or each component of a numeric vector")
-                .with_help("remove `range` from this entry"),
+                Diagnostic::error(E_MANIFEST_RANGE, format!("`range` needs a number or a vector of numbers, but `{shown}` is a `{tt}`"))
+                    .at(mf, span.clone(), "a range on a uniform that is not a number or vector")
+                    .with_label(decl.file(), decl.span(), decl_label.clone())
+                    .with_note("`range` bounds a number (`float`, `int`, `uint`, `double`) or each component of a numeric vector")
+                    .with_help("remove `range` from this entry"),
             );
         }
     }
     if !decl.read {
         out.push(
-            Diagnostic::warning(
-                W_DEFAULT_UNREAD,
-                format!("`{}` has a default, but no stage reads it", decl.name),
-            )
-            .at(mf, u.name_span.clone(), "default for an unread uniform")
-            .with_label(decl.file(), decl.span(), "declared here, never read")
-            .with_help("remove the entry, or use the uniform in a shader"),
+            Diagnostic::warning(W_DEFAULT_UNREAD, format!("`{}` has a default, but no stage reads it", decl.name))
+                .at(mf, u.name_span.clone(), "default for an unread uniform")
+                .with_label(decl.file(), decl.span(), "declared here, never read")
+                .with_help("remove the entry, or use the uniform in a shader"),
         );
     }
 }
 
 /// A `[uniforms]` entry whose base name no stage declares as a settable uniform.
-fn unknown(
-    effect: &Effect,
-    u: &UniformDefault,
-    base: &str,
-    decls: &Decls,
-    stages: &[StageSyntax],
-    files: &Files,
-) -> Diagnostic {
-    let mut d = Diagnostic::error(
-        E_MANIFEST_UNKNOWN,
-        format!(
-            "`[uniforms]` entry `{}` names no uniform declared by the shaders",
-            u.name
-        ),
-    )
-    .at(
-        effect.file,
-        u.name_span.clone(),
-        format!("no stage declares a uniform `{base}`"),
-    );
+fn unknown(effect: &Effect, u: &UniformDefault, base: &str, decls: &Decls, stages: &[StageSyntax], files: &Files) -> Diagnostic {
+    let mut d = Diagnostic::error(E_MANIFEST_UNKNOWN, format!("`[uniforms]` entry `{}` names no uniform declared by the shaders", u.name))
+        .at(effect.file, u.name_span.clone(), format!("no stage declares a uniform `{base}`"));
     // A member (or the instance / block name) of a named uniform block?
     for nb in &decls.named_blocks {
         let s = nb.stage;
@@ -557,11 +415,7 @@ fn unknown(
     }
     // Declared, but not as a uniform?
     for s in stages {
-        if let Some(g) = s
-            .globals
-            .iter()
-            .find(|g| !g.is_block() && s.original_name(&g.name) == base)
-        {
+        if let Some(g) = s.globals.iter().find(|g| !g.is_block() && s.original_name(&g.name) == base) {
             let what = match g.storage {
                 Storage::In | Storage::Attribute => "an input",
                 Storage::Out => "an output",
@@ -572,51 +426,25 @@ fn unknown(
             };
             let st = stage_title(s.stage);
             return d
-                .with_label(
-                    s.file,
-                    g.name_span.clone(),
-                    format!("{what} of the {st} stage, not a uniform"),
-                )
-                .with_help(format!(
-                    "only uniforms take defaults; declare `uniform {} {base};` to make it settable",
-                    type_text(s, &g.ty)
-                ));
+                .with_label(s.file, g.name_span.clone(), format!("{what} of the {st} stage, not a uniform"))
+                .with_help(format!("only uniforms take defaults; declare `uniform {} {base};` to make it settable", type_text(s, &g.ty)));
         }
     }
-    let names: Vec<&str> = decls
-        .list
-        .iter()
-        .filter(|d| !is_opaque(d.ty))
-        .map(|d| d.name.as_str())
-        .collect();
+    let names: Vec<&str> = decls.list.iter().filter(|d| !is_opaque(d.ty)).map(|d| d.name.as_str()).collect();
     if let Some(c) = did_you_mean(base, &names) {
         let decl = decls.get(c).expect("a candidate is declared");
-        return d
-            .with_label(decl.file(), decl.span(), format!("`{c}` is declared here"))
-            .with_help(format!("did you mean `{c}`?"));
+        return d.with_label(decl.file(), decl.span(), format!("`{c}` is declared here")).with_help(format!("did you mean `{c}`?"));
     }
     if names.is_empty() {
         return d.with_note("no stage declares a uniform that takes a default");
     }
     // Where the uniforms are declared, one label per stage.
     for s in stages {
-        let here: Vec<&Decl> = decls
-            .list
-            .iter()
-            .filter(|d| !is_opaque(d.ty) && std::ptr::eq(d.stage, s))
-            .collect();
+        let here: Vec<&Decl> = decls.list.iter().filter(|d| !is_opaque(d.ty) && std::ptr::eq(d.stage, s)).collect();
         if let Some(first) = here.first() {
             let names: Vec<String> = here.iter().map(|d| d.name.clone()).collect();
             let path = files.try_get(s.file).map_or("", |f| f.path.as_str());
-            d = d.with_label(
-                s.file,
-                first.span(),
-                format!(
-                    "the {} stage ({path}) declares {}",
-                    stage_title(s.stage),
-                    list(&names)
-                ),
-            );
+            d = d.with_label(s.file, first.span(), format!("the {} stage ({path}) declares {}", stage_title(s.stage), list(&names)));
         }
     }
     d
@@ -629,14 +457,10 @@ fn textures(effect: &Effect, decls: &Decls, out: &mut Vec<Diagnostic>) {
         let path = texture_path(&t.name);
         if let Some((_, ty, decl)) = samplers.iter().find(|(p, _, _)| *p == path) {
             let fits = match t.kind {
-                TextureKind::D2 => matches!(
-                    ty.base.as_str(),
-                    "sampler2D" | "sampler2DShadow" | "isampler2D" | "usampler2D" | "sampler2DRect"
-                ),
-                TextureKind::Cube => matches!(
-                    ty.base.as_str(),
-                    "samplerCube" | "samplerCubeShadow" | "isamplerCube" | "usamplerCube"
-                ),
+                TextureKind::D2 => {
+                    matches!(ty.base.as_str(), "sampler2D" | "sampler2DShadow" | "isampler2D" | "usampler2D" | "sampler2DRect")
+                }
+                TextureKind::Cube => matches!(ty.base.as_str(), "samplerCube" | "samplerCubeShadow" | "isamplerCube" | "usamplerCube"),
             };
             if !fits {
                 let tt = type_text(decl.stage, ty);
@@ -653,34 +477,21 @@ fn textures(effect: &Effect, decls: &Decls, out: &mut Vec<Diagnostic>) {
             }
             continue;
         }
-        let mut d = Diagnostic::error(
-            E_TEXTURE_UNKNOWN,
-            format!("`[textures]` entry `{}` names no sampler uniform", t.name),
-        )
-        .at(
+        let mut d = Diagnostic::error(E_TEXTURE_UNKNOWN, format!("`[textures]` entry `{}` names no sampler uniform", t.name)).at(
             effect.file,
             t.name_span.clone(),
             format!("no stage declares a sampler `{path}`"),
         );
         if let Some(decl) = decls.get(&path) {
             d = d
-                .with_label(
-                    decl.file(),
-                    decl.span(),
-                    format!("`{path}` is a `{}` uniform", decl.type_text()),
-                )
+                .with_label(decl.file(), decl.span(), format!("`{path}` is a `{}` uniform", decl.type_text()))
                 .with_note("textures bind to sampler uniforms (`sampler2D`, `samplerCube`)");
         } else {
             let names: Vec<&str> = samplers.iter().map(|(p, _, _)| p.as_str()).collect();
             match did_you_mean(&path, &names) {
                 Some(c) => {
-                    let (_, _, decl) = samplers
-                        .iter()
-                        .find(|(p, _, _)| p == c)
-                        .expect("a candidate");
-                    d = d
-                        .with_label(decl.file(), decl.span(), format!("`{c}` is declared here"))
-                        .with_help(format!("did you mean `{c}`?"));
+                    let (_, _, decl) = samplers.iter().find(|(p, _, _)| p == c).expect("a candidate");
+                    d = d.with_label(decl.file(), decl.span(), format!("`{c}` is declared here")).with_help(format!("did you mean `{c}`?"));
                 }
                 None if names.is_empty() => d = d.with_note("no stage declares a sampler uniform"),
                 None => {
@@ -694,12 +505,7 @@ fn textures(effect: &Effect, decls: &Decls, out: &mut Vec<Diagnostic>) {
 }
 
 /// Uniforms without a default, samplers without a texture, uniforms nothing reads.
-fn missing(
-    decls: &Decls,
-    covered: &HashSet<String>,
-    textured: &HashSet<String>,
-    out: &mut Vec<Diagnostic>,
-) {
+fn missing(decls: &Decls, covered: &HashSet<String>, textured: &HashSet<String>, out: &mut Vec<Diagnostic>) {
     let samplers = decls.samplers();
     for decl in &decls.list {
         let shape = decl.shape(decl.ty);
@@ -707,19 +513,16 @@ fn missing(
             if decl.in_block {
                 continue; // reported per block below
             }
-            let mut d = Diagnostic::warning(
-                W_UNREAD_UNIFORM,
-                format!("uniform `{}` is declared but never read", decl.name),
-            )
-            .at(decl.file(), decl.span(), "declared here");
+            let mut d = Diagnostic::warning(W_UNREAD_UNIFORM, format!("uniform `{}` is declared but never read", decl.name)).at(
+                decl.file(),
+                decl.span(),
+                "declared here",
+            );
             for (file, span, s) in decl.sites.iter().skip(1) {
                 d = d.with_label(
                     *file,
                     span.clone(),
-                    format!(
-                        "also declared in the {} stage, not read there either",
-                        stage_title(s.stage)
-                    ),
+                    format!("also declared in the {} stage, not read there either", stage_title(s.stage)),
                 );
             }
             out.push(d.with_help("remove the declaration, or use it"));
@@ -735,10 +538,7 @@ fn missing(
             Shape::Other(_) => {}
             _ if covered.contains(&decl.name) => {
                 // Struct members with samplers still need textures.
-                for (path, ty, d) in samplers
-                    .iter()
-                    .filter(|(p, _, d)| std::ptr::eq(*d, decl) && *p != decl.name)
-                {
+                for (path, ty, d) in samplers.iter().filter(|(p, _, d)| std::ptr::eq(*d, decl) && *p != decl.name) {
                     if !textured.contains(path) {
                         out.push(no_texture(d, path, ty));
                     }
@@ -751,14 +551,7 @@ fn missing(
                         def.members
                             .iter()
                             .filter(|m| !is_opaque(&m.ty))
-                            .map(|m| {
-                                format!(
-                                    "{}.{} = {}",
-                                    decl.name,
-                                    decl.stage.original_name(&m.name),
-                                    decl.shape(&m.ty).example()
-                                )
-                            })
+                            .map(|m| format!("{}.{} = {}", decl.name, decl.stage.original_name(&m.name), decl.shape(&m.ty).example()))
                             .collect()
                     })
                     .unwrap_or_default();
@@ -777,17 +570,9 @@ fn missing(
             }
             _ => {
                 let tt = decl.type_text();
-                let mut help = format!(
-                    "add `{} = {}` under [uniforms] in effect.toml",
-                    decl.name,
-                    shape.example()
-                );
+                let mut help = format!("add `{} = {}` under [uniforms] in effect.toml", decl.name, shape.example());
                 if let Some(sem) = semantic_hint(&decl.name, &tt) {
-                    help.push_str(&format!(
-                        " (or `{} = {{ semantic = \"{}\" }}` to have the runtime supply it)",
-                        decl.name,
-                        sem.name()
-                    ));
+                    help.push_str(&format!(" (or `{} = {{ semantic = \"{}\" }}` to have the runtime supply it)", decl.name, sem.name()));
                 }
                 out.push(no_default(decl, &tt, help));
             }
@@ -799,16 +584,9 @@ fn missing(
         };
         let bn = s.original_name(&b.block_name);
         out.push(
-            Diagnostic::warning(
-                W_UNREAD_UNIFORM,
-                format!("uniform block `{bn}` is declared but never read"),
-            )
-            .at(
-                s.file,
-                b.block_name_span.clone(),
-                "no stage reads any of its members",
-            )
-            .with_help("remove the block, or use it"),
+            Diagnostic::warning(W_UNREAD_UNIFORM, format!("uniform block `{bn}` is declared but never read"))
+                .at(s.file, b.block_name_span.clone(), "no stage reads any of its members")
+                .with_help("remove the block, or use it"),
         );
     }
 }
@@ -829,18 +607,12 @@ fn no_texture(decl: &Decl, path: &str, ty: &GlslType) -> Diagnostic {
     };
     Diagnostic::warning(W_NO_TEXTURE, format!("sampler `{path}` has no entry in [textures]"))
         .at(decl.file(), decl.span(), format!("a `{tt}` read without a texture"))
-        .with_help(format!(
-            "add `{path} = {example}` under [textures] in effect.toml (or `{{ generate = \"checker\" }}`)"
-        ))
+        .with_help(format!("add `{path} = {example}` under [textures] in effect.toml (or `{{ generate = \"checker\" }}`)"))
 }
 
 /// A semantic the uniform's name and type suggest (`timeVar: float` → `time`).
 fn semantic_hint(name: &str, ty: &str) -> Option<Semantic> {
-    let n: String = name
-        .to_ascii_lowercase()
-        .chars()
-        .filter(|c| *c != '_')
-        .collect();
+    let n: String = name.to_ascii_lowercase().chars().filter(|c| *c != '_').collect();
     const KEYS: &[(&str, Semantic)] = &[
         ("modelviewprojection", Semantic::ModelViewProjection),
         ("mvp", Semantic::ModelViewProjection),
@@ -860,7 +632,5 @@ fn semantic_hint(name: &str, ty: &str) -> Option<Semantic> {
         ("model", Semantic::Model),
         ("view", Semantic::View),
     ];
-    KEYS.iter()
-        .find(|(k, s)| n.contains(k) && s.glsl_types().contains(&ty))
-        .map(|(_, s)| *s)
+    KEYS.iter().find(|(k, s)| n.contains(k) && s.glsl_types().contains(&ty)).map(|(_, s)| *s)
 }

@@ -103,89 +103,41 @@ pub const W_DEFAULT_UNREAD: &str = "W0223";
 
 /// Every code this module emits, with a one-line description.
 pub const CODES: &[(&str, &str)] = &[
-    (
-        E_BLOCK_UNMATCHED,
-        "input block has no output block of the same block name",
-    ),
-    (
-        E_NO_PRODUCER,
-        "input read by the stage has no matching output",
-    ),
+    (E_BLOCK_UNMATCHED, "input block has no output block of the same block name"),
+    (E_NO_PRODUCER, "input read by the stage has no matching output"),
     (E_OTHER_STAGE_NAME, "name declared only in another stage"),
-    (
-        E_UNIFORM_TYPE,
-        "uniform declared with different types in two stages",
-    ),
-    (
-        E_UNIFORM_BLOCK,
-        "uniform block declared differently in two stages",
-    ),
-    (
-        E_UNIFORM_STRUCT,
-        "struct used by uniforms defined differently in two stages",
-    ),
+    (E_UNIFORM_TYPE, "uniform declared with different types in two stages"),
+    (E_UNIFORM_BLOCK, "uniform block declared differently in two stages"),
+    (E_UNIFORM_STRUCT, "struct used by uniforms defined differently in two stages"),
     (E_VARYING_TYPE, "output and input types differ"),
     (E_INTERP, "interpolation qualifiers differ"),
     (E_CENTROID, "centroid qualifiers differ"),
     (E_LOCATION, "explicit locations differ"),
     (E_BLOCK_MISMATCH, "interface blocks of the same name differ"),
     (E_NOT_ARRAYED, "geometry input is not an array"),
-    (
-        E_ES_OUTPUT_LOCATION,
-        "GLSL ES fragment output without a location beside others",
-    ),
-    (
-        E_MANIFEST_UNKNOWN,
-        "manifest uniform is not declared by any stage",
-    ),
-    (
-        E_MANIFEST_VALUE,
-        "manifest default does not fit the declared type",
-    ),
-    (
-        E_MANIFEST_SEMANTIC,
-        "semantic does not fit the declared type",
-    ),
-    (
-        E_MANIFEST_RANGE,
-        "range on a uniform that is not a scalar number",
-    ),
+    (E_ES_OUTPUT_LOCATION, "GLSL ES fragment output without a location beside others"),
+    (E_MANIFEST_UNKNOWN, "manifest uniform is not declared by any stage"),
+    (E_MANIFEST_VALUE, "manifest default does not fit the declared type"),
+    (E_MANIFEST_SEMANTIC, "semantic does not fit the declared type"),
+    (E_MANIFEST_RANGE, "range on a uniform that is not a scalar number"),
     (E_TEXTURE_UNKNOWN, "texture entry names no sampler uniform"),
-    (
-        E_MANIFEST_PATH,
-        "manifest uniform path does not fit the declaration",
-    ),
-    (
-        E_TEXTURE_KIND,
-        "texture kind does not match the sampler type",
-    ),
+    (E_MANIFEST_PATH, "manifest uniform path does not fit the declaration"),
+    (E_TEXTURE_KIND, "texture kind does not match the sampler type"),
     (W_UNREAD_OUTPUT, "output never read by the next stage"),
     (W_UNUSED_INPUT, "unread input with no producer"),
-    (
-        W_INTERP,
-        "interpolation qualifiers differ (allowed since GLSL 4.30)",
-    ),
-    (
-        W_CENTROID,
-        "centroid qualifiers differ (allowed since GLSL 4.30)",
-    ),
+    (W_INTERP, "interpolation qualifiers differ (allowed since GLSL 4.30)"),
+    (W_CENTROID, "centroid qualifiers differ (allowed since GLSL 4.30)"),
     (W_NO_DEFAULT, "uniform has no default in effect.toml"),
     (W_UNREAD_UNIFORM, "uniform declared but never read"),
     (W_NO_TEXTURE, "sampler has no [textures] entry"),
-    (
-        W_DEFAULT_UNREAD,
-        "manifest default for a uniform no stage reads",
-    ),
+    (W_DEFAULT_UNREAD, "manifest default for a uniform no stage reads"),
 ];
 
 /// OpenGL link rules between consecutive stages of one program, plus the program-wide
 /// uniform rules. `stages` are in pipeline order (vertex → tessellation → geometry →
 /// fragment, the middle ones optional); compute stages are checked on their own (uniforms only).
 pub fn check_interface(stages: &[StageSyntax]) -> Vec<Diagnostic> {
-    let graphics: Vec<&StageSyntax> = stages
-        .iter()
-        .filter(|s| s.stage != StageKind::Compute)
-        .collect();
+    let graphics: Vec<&StageSyntax> = stages.iter().filter(|s| s.stage != StageKind::Compute).collect();
     let mut out = Vec::new();
     for pair in graphics.windows(2) {
         interface::check_pair(pair[0], pair[1], &mut out);
@@ -204,11 +156,7 @@ fn es_fragment_output_locations(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
     if s.stage != StageKind::Fragment || !s.version.is_es() || s.version.number < 300 {
         return;
     }
-    let outputs: Vec<&Global> = s
-        .globals
-        .iter()
-        .filter(|g| g.storage == crate::front::syntax::Storage::Out && !is_builtin(s, g))
-        .collect();
+    let outputs: Vec<&Global> = s.globals.iter().filter(|g| g.storage == crate::front::syntax::Storage::Out && !is_builtin(s, g)).collect();
     if outputs.len() < 2 {
         return;
     }
@@ -223,8 +171,14 @@ fn es_fragment_output_locations(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
                 ),
             )
             .at(s.file, g.name_span.clone(), "declared without a location")
-            .with_note("in GLSL ES 3.00 and later, when a fragment stage has more than one output, every output needs `layout(location = N)`")
-            .with_help(format!("declare it as `layout(location = N) out {} {};`", type_text(s, &g.ty), s.original_name(&g.name))),
+            .with_note(
+                "in GLSL ES 3.00 and later, when a fragment stage has more than one output, every output needs `layout(location = N)`",
+            )
+            .with_help(format!(
+                "declare it as `layout(location = N) out {} {};`",
+                type_text(s, &g.ty),
+                s.original_name(&g.name)
+            )),
         );
     }
 }
@@ -232,11 +186,7 @@ fn es_fragment_output_locations(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
 /// `effect.toml` against the stages' declarations: every `[uniforms]` default names a
 /// declared uniform and fits its type, every read uniform has a default, every sampler a
 /// texture.
-pub fn check_manifest(
-    effect: &crate::manifest::Effect,
-    stages: &[StageSyntax],
-    files: &Files,
-) -> Vec<Diagnostic> {
+pub fn check_manifest(effect: &crate::manifest::Effect, stages: &[StageSyntax], files: &Files) -> Vec<Diagnostic> {
     let mut out = manifest::check(effect, stages, files);
     out.extend(attributes::check(effect, stages));
     out
@@ -269,19 +219,12 @@ pub(crate) fn stage_title(kind: StageKind) -> &'static str {
 
 /// Built-in variables and blocks (`gl_Position`, `gl_PerVertex`, `gl_in`).
 pub(crate) fn is_builtin(s: &StageSyntax, g: &Global) -> bool {
-    s.original_name(&g.name).starts_with("gl_")
-        || g.block
-            .as_ref()
-            .is_some_and(|b| s.original_name(&b.block_name).starts_with("gl_"))
+    s.original_name(&g.name).starts_with("gl_") || g.block.as_ref().is_some_and(|b| s.original_name(&b.block_name).starts_with("gl_"))
 }
 
 /// A global's type as the user wrote it (struct names through the renames).
 pub(crate) fn type_text(s: &StageSyntax, ty: &GlslType) -> String {
-    GlslType {
-        base: s.original_name(&ty.base).to_string(),
-        dims: ty.dims.clone(),
-    }
-    .to_string()
+    GlslType { base: s.original_name(&ty.base).to_string(), dims: ty.dims.clone() }.to_string()
 }
 
 /// Types of two stages' declarations equal (base names compared as written). An implicitly
@@ -306,11 +249,7 @@ pub(crate) fn interp_text(i: Interp) -> &'static str {
 /// value. Arrays of them too.
 pub(crate) fn is_opaque(ty: &GlslType) -> bool {
     let b = ty.base.as_str();
-    ty.is_sampler()
-        || b.contains("sampler")
-        || b.contains("texture")
-        || b.contains("image")
-        || b == "atomic_uint"
+    ty.is_sampler() || b.contains("sampler") || b.contains("texture") || b.contains("image") || b == "atomic_uint"
 }
 
 /// A sampler (combined or separate), the kind of uniform `[textures]` binds.
@@ -325,9 +264,7 @@ pub(crate) fn is_read(s: &StageSyntax, index: usize) -> bool {
 
 /// Some use reads member `member` of the anonymous block `index` (by its bare name).
 pub(crate) fn member_read(s: &StageSyntax, index: usize, member: &str) -> bool {
-    s.uses
-        .iter()
-        .any(|u| u.target == Target::Global(index) && u.name == member)
+    s.uses.iter().any(|u| u.target == Target::Global(index) && u.name == member)
 }
 
 /// `a`, `b` and `c` — names in backticks joined for prose; long lists are cut.

@@ -39,10 +39,7 @@ pub fn check(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
             if name.starts_with("gl_") {
                 continue;
             }
-            let field = u
-                .field
-                .as_ref()
-                .map(|(f, _)| s.original_name(f).to_string());
+            let field = u.field.as_ref().map(|(f, _)| s.original_name(f).to_string());
             uses.entry(name.clone())
                 .or_insert_with(|| {
                     order.push(name.clone());
@@ -52,17 +49,13 @@ pub fn check(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
         }
         for name in order {
             let sites = &uses[&name];
-            let diag =
-                own_block_name(s, &name, sites).or_else(|| other_stage(stages, si, &name, sites));
+            let diag = own_block_name(s, &name, sites).or_else(|| other_stage(stages, si, &name, sites));
             if let Some(mut d) = diag {
                 for (span, _) in sites.iter().skip(1).take(MAX_EXTRA_LABELS) {
                     d = d.with_label(s.file, span.clone(), "also used here");
                 }
                 if sites.len() > 1 + MAX_EXTRA_LABELS {
-                    d = d.with_note(format!(
-                        "`{name}` is used {} times in this stage",
-                        sites.len()
-                    ));
+                    d = d.with_note(format!("`{name}` is used {} times in this stage", sites.len()));
                 }
                 out.push(d);
             }
@@ -92,37 +85,23 @@ fn how_to_reach(s: &StageSyntax, blk: &BlockInfo, field: Option<&str>) -> String
         Some(inst) => {
             let inst = s.original_name(inst);
             match field {
-                Some(f) => format!(
-                    "in this stage the block instance is called `{inst}`: write `{inst}.{f}`"
-                ),
+                Some(f) => format!("in this stage the block instance is called `{inst}`: write `{inst}.{f}`"),
                 None => format!("in this stage the block instance is called `{inst}`"),
             }
         }
         None => {
             let bn = s.original_name(&blk.block_name);
             match field {
-                Some(f) => format!(
-                    "in this stage the block `{bn}` has no instance name: write `{f}` directly"
-                ),
-                None => format!(
-                    "in this stage the block `{bn}` has no instance name: use its members directly"
-                ),
+                Some(f) => format!("in this stage the block `{bn}` has no instance name: write `{f}` directly"),
+                None => format!("in this stage the block `{bn}` has no instance name: use its members directly"),
             }
         }
     }
 }
 
 /// `name` is the block name of a block this stage declares.
-fn own_block_name(
-    s: &StageSyntax,
-    name: &str,
-    sites: &[(Range<usize>, Option<String>)],
-) -> Option<Diagnostic> {
-    let g = s.globals.iter().find(|g| {
-        g.block
-            .as_ref()
-            .is_some_and(|b| s.original_name(&b.block_name) == name)
-    })?;
+fn own_block_name(s: &StageSyntax, name: &str, sites: &[(Range<usize>, Option<String>)]) -> Option<Diagnostic> {
+    let g = s.globals.iter().find(|g| g.block.as_ref().is_some_and(|b| s.original_name(&b.block_name) == name))?;
     let blk = g.block.as_ref()?;
     let kind = storage_word(g, s);
     let mut d = Diagnostic::error(
@@ -140,35 +119,20 @@ fn own_block_name(
 }
 
 /// `name` is declared in another stage.
-fn other_stage(
-    stages: &[&StageSyntax],
-    si: usize,
-    name: &str,
-    sites: &[(Range<usize>, Option<String>)],
-) -> Option<Diagnostic> {
+fn other_stage(stages: &[&StageSyntax], si: usize, name: &str, sites: &[(Range<usize>, Option<String>)]) -> Option<Diagnostic> {
     let s = stages[si];
     let st = stage_title(s.stage);
-    let others = || {
-        stages
-            .iter()
-            .enumerate()
-            .filter(move |(ti, _)| *ti != si)
-            .map(|(_, t)| *t)
-    };
+    let others = || stages.iter().enumerate().filter(move |(ti, _)| *ti != si).map(|(_, t)| *t);
     // A block's instance or block name in another stage.
     let block = others().find_map(|t| {
         t.globals
             .iter()
             .find(|g| {
                 g.block.as_ref().is_some_and(|b| {
-                    b.instance.as_deref().map(|i| t.original_name(i)) == Some(name)
-                        || t.original_name(&b.block_name) == name
+                    b.instance.as_deref().map(|i| t.original_name(i)) == Some(name) || t.original_name(&b.block_name) == name
                 })
             })
-            .map(|g| Found {
-                stage: t,
-                global: g,
-            })
+            .map(|g| Found { stage: t, global: g })
     });
     if let Some(f) = block {
         return Some(foreign_block(s, f, name, sites));
@@ -180,10 +144,7 @@ fn other_stage(
             if b.instance.is_some() {
                 return None;
             }
-            let m = b
-                .members
-                .iter()
-                .find(|m| t.original_name(&m.name) == name)?;
+            let m = b.members.iter().find(|m| t.original_name(&m.name) == name)?;
             Some((t, g, b, m))
         })
     });
@@ -191,39 +152,17 @@ fn other_stage(
         let tt = stage_title(t.stage);
         let bn = t.original_name(&b.block_name);
         let kind = storage_word(g, t);
-        let keyword = if g.storage == Storage::Uniform {
-            "uniform".to_string()
-        } else {
-            decl_keyword(s, t)
-        };
+        let keyword = if g.storage == Storage::Uniform { "uniform".to_string() } else { decl_keyword(s, t) };
         return Some(
-            Diagnostic::error(
-                E_OTHER_STAGE_NAME,
-                format!("`{name}` is not declared in the {st} stage"),
-            )
-            .at(
-                s.file,
-                sites[0].0.clone(),
-                format!("`{name}` is a member of the {tt} stage's {kind} block `{bn}`"),
-            )
-            .with_label(
-                t.file,
-                m.span.clone(),
-                format!("declared here in the {tt} stage"),
-            )
-            .with_note("each stage sees only its own declarations")
-            .with_help(format!(
-                "declare `{keyword} {bn} {{ … }};` in the {st} stage too"
-            )),
+            Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
+                .at(s.file, sites[0].0.clone(), format!("`{name}` is a member of the {tt} stage's {kind} block `{bn}`"))
+                .with_label(t.file, m.span.clone(), format!("declared here in the {tt} stage"))
+                .with_note("each stage sees only its own declarations")
+                .with_help(format!("declare `{keyword} {bn} {{ … }};` in the {st} stage too")),
         );
     }
     // A loose global of another stage.
-    let (t, g) = others().find_map(|t| {
-        t.globals
-            .iter()
-            .find(|g| !g.is_block() && t.original_name(&g.name) == name)
-            .map(|g| (t, g))
-    })?;
+    let (t, g) = others().find_map(|t| t.globals.iter().find(|g| !g.is_block() && t.original_name(&g.name) == name).map(|g| (t, g)))?;
     let tt = stage_title(t.stage);
     let ty = type_text(t, &g.ty);
     let decl = |kw: &str| {
@@ -231,41 +170,25 @@ fn other_stage(
         let dims = GlslDims(&g.ty.dims);
         format!("{kw} {base} {name}{dims};")
     };
-    let d = Diagnostic::error(
-        E_OTHER_STAGE_NAME,
-        format!("`{name}` is not declared in the {st} stage"),
-    )
-    .with_note("each stage sees only its own declarations");
+    let d = Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
+        .with_note("each stage sees only its own declarations");
     let (label, help) = match (g.storage, direction(t.stage, g)) {
         (Storage::Uniform, _) => (
             format!("`{name}` is a uniform of the {tt} stage"),
-            format!(
-                "declare `{}` in the {st} stage too (uniforms with the same name are shared by all stages)",
-                decl("uniform")
-            ),
+            format!("declare `{}` in the {st} stage too (uniforms with the same name are shared by all stages)", decl("uniform")),
         ),
-        (_, Some(Dir::Out)) if t.stage < s.stage => (
-            format!("`{name}` is an output of the {tt} stage"),
-            format!("declare `{}` to receive it", decl("in")),
-        ),
+        (_, Some(Dir::Out)) if t.stage < s.stage => {
+            (format!("`{name}` is an output of the {tt} stage"), format!("declare `{}` to receive it", decl("in")))
+        }
         (Storage::In | Storage::Attribute, None) => (
             format!("`{name}` is a vertex input (attribute)"),
-            format!(
-                "pass it on: declare `out {ty} v_{name};` in the vertex stage, assign it there, and read `in {ty} v_{name};` here"
-            ),
+            format!("pass it on: declare `out {ty} v_{name};` in the vertex stage, assign it there, and read `in {ty} v_{name};` here"),
         ),
-        _ => (
-            format!("`{name}` is declared in the {tt} stage"),
-            format!("declare `{name}` in the {st} stage too"),
-        ),
+        _ => (format!("`{name}` is declared in the {tt} stage"), format!("declare `{name}` in the {st} stage too")),
     };
     Some(
         d.at(s.file, sites[0].0.clone(), label)
-            .with_label(
-                t.file,
-                g.name_span.clone(),
-                format!("declared here in the {tt} stage"),
-            )
+            .with_label(t.file, g.name_span.clone(), format!("declared here in the {tt} stage"))
             .with_help(help),
     )
 }
@@ -290,12 +213,7 @@ impl std::fmt::Display for GlslDims<'_> {
 }
 
 /// `name` is the instance or block name of block `f` in another stage.
-fn foreign_block(
-    s: &StageSyntax,
-    f: Found,
-    name: &str,
-    sites: &[(Range<usize>, Option<String>)],
-) -> Diagnostic {
+fn foreign_block(s: &StageSyntax, f: Found, name: &str, sites: &[(Range<usize>, Option<String>)]) -> Diagnostic {
     let (t, g) = (f.stage, f.global);
     let blk = g.block.as_ref().expect("found a block");
     let st = stage_title(s.stage);
@@ -304,52 +222,28 @@ fn foreign_block(
     let kind = storage_word(g, t);
     let is_instance = blk.instance.as_deref().map(|i| t.original_name(i)) == Some(name);
     let (what, span) = match (&blk.instance_span, is_instance) {
-        (Some(span), true) => (
-            format!("the instance name of the {tt} stage's {kind} block `{bn}`"),
-            span.clone(),
-        ),
-        _ => (
-            format!("the block name of a {kind} block in the {tt} stage"),
-            blk.block_name_span.clone(),
-        ),
+        (Some(span), true) => (format!("the instance name of the {tt} stage's {kind} block `{bn}`"), span.clone()),
+        _ => (format!("the block name of a {kind} block in the {tt} stage"), blk.block_name_span.clone()),
     };
     let field = first_field(sites);
     let mut d = Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
         .at(s.file, sites[0].0.clone(), format!("`{name}` is {what}"))
         .with_label(t.file, span, format!("declared here in the {tt} stage"))
-        .with_note("each stage names its own block instances; blocks are matched between stages by block name, and instance names may differ");
+        .with_note(
+            "each stage names its own block instances; blocks are matched between stages by block name, and instance names may differ",
+        );
     match corresponding_block(s, t, g, field) {
         Some(c) => {
             let cb = c.block.as_ref().expect("a block");
-            let label_span = cb
-                .instance_span
-                .clone()
-                .unwrap_or_else(|| cb.block_name_span.clone());
+            let label_span = cb.instance_span.clone().unwrap_or_else(|| cb.block_name_span.clone());
             d = d
-                .with_label(
-                    s.file,
-                    label_span,
-                    format!(
-                        "the {st} stage's block `{}`",
-                        s.original_name(&cb.block_name)
-                    ),
-                )
+                .with_label(s.file, label_span, format!("the {st} stage's block `{}`", s.original_name(&cb.block_name)))
                 .with_help(how_to_reach(s, cb, field));
         }
         None => {
-            let inst = blk
-                .instance
-                .as_deref()
-                .map(|i| t.original_name(i))
-                .unwrap_or("");
-            let keyword = if g.storage == Storage::Uniform || g.storage == Storage::Buffer {
-                kind.to_string()
-            } else {
-                decl_keyword(s, t)
-            };
-            d = d.with_help(format!(
-                "declare `{keyword} {bn} {{ … }} {inst};` in the {st} stage with the same members"
-            ));
+            let inst = blk.instance.as_deref().map(|i| t.original_name(i)).unwrap_or("");
+            let keyword = if g.storage == Storage::Uniform || g.storage == Storage::Buffer { kind.to_string() } else { decl_keyword(s, t) };
+            d = d.with_help(format!("declare `{keyword} {bn} {{ … }} {inst};` in the {st} stage with the same members"));
         }
     }
     d
@@ -357,12 +251,7 @@ fn foreign_block(
 
 /// The block of stage `s` that plays the role of `g` (declared in stage `t`): the same block
 /// name, else the block of the same kind sharing the most member names (or holding `field`).
-fn corresponding_block<'a>(
-    s: &'a StageSyntax,
-    t: &StageSyntax,
-    g: &Global,
-    field: Option<&str>,
-) -> Option<&'a Global> {
+fn corresponding_block<'a>(s: &'a StageSyntax, t: &StageSyntax, g: &Global, field: Option<&str>) -> Option<&'a Global> {
     let blk = g.block.as_ref()?;
     let bn = t.original_name(&blk.block_name);
     let uniform_like = matches!(g.storage, Storage::Uniform | Storage::Buffer);
@@ -373,31 +262,14 @@ fn corresponding_block<'a>(
         .filter(|c| matches!(c.storage, Storage::Uniform | Storage::Buffer) == uniform_like)
         .filter(|c| uniform_like || direction(s.stage, c).is_some())
         .collect();
-    if let Some(c) = candidates.iter().find(|c| {
-        c.block
-            .as_ref()
-            .is_some_and(|cb| s.original_name(&cb.block_name) == bn)
-    }) {
+    if let Some(c) = candidates.iter().find(|c| c.block.as_ref().is_some_and(|cb| s.original_name(&cb.block_name) == bn)) {
         return Some(c);
     }
     let score = |c: &Global| -> usize {
         let cb = c.block.as_ref().expect("a block");
-        let shared = cb
-            .members
-            .iter()
-            .filter(|m| {
-                blk.members
-                    .iter()
-                    .any(|n| t.original_name(&n.name) == s.original_name(&m.name))
-            })
-            .count();
-        let has_field =
-            field.is_some_and(|f| cb.members.iter().any(|m| s.original_name(&m.name) == f));
+        let shared = cb.members.iter().filter(|m| blk.members.iter().any(|n| t.original_name(&n.name) == s.original_name(&m.name))).count();
+        let has_field = field.is_some_and(|f| cb.members.iter().any(|m| s.original_name(&m.name) == f));
         shared + usize::from(has_field) * 100
     };
-    candidates
-        .iter()
-        .copied()
-        .filter(|c| score(c) > 0)
-        .max_by_key(|c| score(c))
+    candidates.iter().copied().filter(|c| score(c) > 0).max_by_key(|c| score(c))
 }

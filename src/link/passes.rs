@@ -49,8 +49,11 @@ pub fn check(effect: &Effect, shaders: &[PassShaders<'_>]) -> Vec<Diagnostic> {
         if effect.target(&r.name).is_some() {
             return true;
         }
-        let mut d = Diagnostic::error(E_UNKNOWN_TARGET, format!("unknown target `{}`", r.name))
-            .at(file, r.span.clone(), "not declared in [targets]");
+        let mut d = Diagnostic::error(E_UNKNOWN_TARGET, format!("unknown target `{}`", r.name)).at(
+            file,
+            r.span.clone(),
+            "not declared in [targets]",
+        );
         d = match did_you_mean(&r.name, &names) {
             Some(s) => d.with_help(format!("did you mean `{s}`?")),
             None if names.is_empty() => d.with_help(format!("declare it: `[targets]` / `{} = {{ format = \"rgba8\" }}`", r.name)),
@@ -186,10 +189,12 @@ fn reads(effect: &Effect, i: usize, out: &mut Vec<Diagnostic>) {
             continue; // the feedback loop above
         }
         if let Some(path) = graph::cycle_through(effect, i, &r.name) {
-            let chain: Vec<String> =
-                path.iter().map(|(p, t)| format!("`{}` ← pass `{}`", t, effect.passes[*p].name)).collect();
-            let mut d = Diagnostic::error(E_CYCLE, format!("passes depend on each other in a cycle through `{}`", r.name))
-                .at(file, r.span.clone(), format!("pass `{}` reads `{}` here", pass.name, r.name));
+            let chain: Vec<String> = path.iter().map(|(p, t)| format!("`{}` ← pass `{}`", t, effect.passes[*p].name)).collect();
+            let mut d = Diagnostic::error(E_CYCLE, format!("passes depend on each other in a cycle through `{}`", r.name)).at(
+                file,
+                r.span.clone(),
+                format!("pass `{}` reads `{}` here", pass.name, r.name),
+            );
             for (p, t) in &path {
                 let later = &effect.passes[*p];
                 if let Some(w) = later.targets.iter().chain(&later.depth).find(|x| x.name == *t) {
@@ -203,22 +208,18 @@ fn reads(effect: &Effect, i: usize, out: &mut Vec<Diagnostic>) {
             continue;
         }
         let later = (i + 1..effect.passes.len()).find(|&j| effect.passes[j].writes(&r.name));
-        let mut d = Diagnostic::error(
-            E_READ_BEFORE_WRITE,
-            format!("pass `{}` reads `{}` before any pass writes it", pass.name, r.name),
-        )
-        .at(file, r.span.clone(), how);
+        let mut d = Diagnostic::error(E_READ_BEFORE_WRITE, format!("pass `{}` reads `{}` before any pass writes it", pass.name, r.name))
+            .at(file, r.span.clone(), how);
         d = match later {
             Some(j) => {
                 let w = &effect.passes[j];
-                let span = w.targets.iter().chain(&w.depth).find(|x| x.name == r.name).map(|x| x.span.clone()).unwrap_or(w.name_span.clone());
+                let span =
+                    w.targets.iter().chain(&w.depth).find(|x| x.name == r.name).map(|x| x.span.clone()).unwrap_or(w.name_span.clone());
                 d.with_label(file, span, format!("written only later, by pass `{}`", w.name))
                     .with_note("passes run in manifest order")
                     .with_help(format!("move pass `{}` before pass `{}`", w.name, pass.name))
             }
-            None if how.starts_with("kept") => {
-                d.with_help("remove `clear = false`, or draw into the target in an earlier pass")
-            }
+            None if how.starts_with("kept") => d.with_help("remove `clear = false`, or draw into the target in an earlier pass"),
             None => d.with_help(format!("no pass draws into `{}`: add it to an earlier pass's `targets`", r.name)),
         };
         out.push(d);
@@ -261,16 +262,29 @@ fn samplers(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut 
         if ty.base != kind.sampler() {
             let mut d = Diagnostic::error(
                 E_FORMAT,
-                format!("`{}` is {} `{}`, but target `{}` is {}", s.sampler, article(&ty.base), ty.base, s.target.name, target.format.name()),
+                format!(
+                    "`{}` is {} `{}`, but target `{}` is {}",
+                    s.sampler,
+                    article(&ty.base),
+                    ty.base,
+                    s.target.name,
+                    target.format.name()
+                ),
             )
             .at(effect.file, s.target.span.clone(), format!("{} {} target", article(target.format.name()), target.format.name()))
             .with_label(effect.file, target.name_span.clone(), format!("declared {} here", target.format.name()))
-            .with_help(format!("read {} {} target through `{}`", article(target.format.name()), target.format.name(), kind.sampler()));
+            .with_help(format!(
+                "read {} {} target through `{}`",
+                article(target.format.name()),
+                target.format.name(),
+                kind.sampler()
+            ));
             if let Some((f, span)) = decl {
                 d = d.with_label(f, span, format!("declared `{}` here", ty.base));
             }
             if ty.base.starts_with("sampler") && kind != SampleKind::Float || ty.base.starts_with('i') || ty.base.starts_with('u') {
-                d = d.with_note("float and normalised formats are read by `sampler2D`, `*i` formats by `isampler2D`, `*ui` by `usampler2D`");
+                d = d
+                    .with_note("float and normalised formats are read by `sampler2D`, `*i` formats by `isampler2D`, `*ui` by `usampler2D`");
             }
             out.push(d);
         }
@@ -279,10 +293,7 @@ fn samplers(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut 
 
 fn sampler_decl(stages: &[StageSyntax], name: &str) -> Option<(FileId, std::ops::Range<usize>)> {
     stages.iter().find_map(|s| {
-        s.globals
-            .iter()
-            .find(|g| g.storage == Storage::Uniform && s.original_name(&g.name) == name)
-            .map(|g| (s.file, g.name_span.clone()))
+        s.globals.iter().find(|g| g.storage == Storage::Uniform && s.original_name(&g.name) == name).map(|g| (s.file, g.name_span.clone()))
     })
 }
 
@@ -379,10 +390,7 @@ fn pruning(effect: &Effect, out: &mut Vec<Diagnostic>) {
             out.push(
                 Diagnostic::warning(W_PASS_UNUSED, format!("pass `{}` does not contribute to the output: it is skipped", pass.name))
                     .at(effect.file, pass.name_span.clone(), "skipped")
-                    .with_note(format!(
-                        "nothing it writes ({}) is read by a later pass or is the output",
-                        quoted(&graph::written(pass))
-                    ))
+                    .with_note(format!("nothing it writes ({}) is read by a later pass or is the output", quoted(&graph::written(pass))))
                     .with_help("remove the pass, or sample its target in a later pass"),
             );
             continue;
@@ -390,9 +398,12 @@ fn pruning(effect: &Effect, out: &mut Vec<Diagnostic>) {
         for (t, on) in pass.targets.iter().zip(&plan.attached[i]) {
             if !on {
                 out.push(
-                    Diagnostic::note(N_ATTACHMENT_DROPPED, format!("target `{}` of pass `{}` is never read: it is not attached", t.name, pass.name))
-                        .at(effect.file, t.span.clone(), "dropped")
-                        .with_note("the fragment output at this location is discarded"),
+                    Diagnostic::note(
+                        N_ATTACHMENT_DROPPED,
+                        format!("target `{}` of pass `{}` is never read: it is not attached", t.name, pass.name),
+                    )
+                    .at(effect.file, t.span.clone(), "dropped")
+                    .with_note("the fragment output at this location is discarded"),
                 );
             }
         }
@@ -419,12 +430,9 @@ pub fn unused_entries(
     }
     for t in effect.textures.iter().filter(|t| !used_textures.contains(&t.name)) {
         out.push(
-            Diagnostic::error(
-                super::E_TEXTURE_UNKNOWN,
-                format!("`[textures]` entry `{}` names no sampler declared by any pass", t.name),
-            )
-            .at(effect.file, t.name_span.clone(), "no pass's stages declare it")
-            .with_note("samplers that read a target are bound with the pass's `samples`"),
+            Diagnostic::error(super::E_TEXTURE_UNKNOWN, format!("`[textures]` entry `{}` names no sampler declared by any pass", t.name))
+                .at(effect.file, t.name_span.clone(), "no pass's stages declare it")
+                .with_note("samplers that read a target are bound with the pass's `samples`"),
         );
     }
     out

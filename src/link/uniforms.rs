@@ -72,27 +72,11 @@ fn blocks_by_name(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
-            let kind = if g.storage == Storage::Buffer {
-                "buffer"
-            } else {
-                "uniform"
-            };
-            let mut d = Diagnostic::error(
-                E_UNIFORM_BLOCK,
-                format!(
-                    "{kind} block `{name}` is declared differently in the {ft} and {st} stages"
-                ),
-            )
-            .at(
-                s.file,
-                blk.block_name_span.clone(),
-                format!("declared here in the {st} stage"),
-            )
-            .with_label(
-                f.file,
-                fb.block_name_span.clone(),
-                format!("declared here in the {ft} stage"),
-            );
+            let kind = if g.storage == Storage::Buffer { "buffer" } else { "uniform" };
+            let mut d =
+                Diagnostic::error(E_UNIFORM_BLOCK, format!("{kind} block `{name}` is declared differently in the {ft} and {st} stages"))
+                    .at(s.file, blk.block_name_span.clone(), format!("declared here in the {st} stage"))
+                    .with_label(f.file, fb.block_name_span.clone(), format!("declared here in the {ft} stage"));
             for diff in diffs {
                 if let Some((span, label)) = diff.a {
                     d = d.with_label(f.file, span, label);

@@ -45,13 +45,9 @@ impl Shape {
         if let Some(s) = scalar(base) {
             return Shape::Scalar(s);
         }
-        for (prefix, s) in [
-            ("vec", Scalar::Float),
-            ("dvec", Scalar::Float),
-            ("ivec", Scalar::Int),
-            ("uvec", Scalar::Uint),
-            ("bvec", Scalar::Bool),
-        ] {
+        for (prefix, s) in
+            [("vec", Scalar::Float), ("dvec", Scalar::Float), ("ivec", Scalar::Int), ("uvec", Scalar::Uint), ("bvec", Scalar::Bool)]
+        {
             if let Some(n) = base.strip_prefix(prefix).and_then(size) {
                 return Shape::Vector(s, n);
             }
@@ -94,10 +90,7 @@ impl Shape {
         match self {
             Shape::Scalar(s) => scalar_text(*s, false).to_string(),
             Shape::Vector(s, n) => format!("a list of {n} {}", scalar_text(*s, true)),
-            Shape::Matrix(c, r) => format!(
-                "{c} lists (columns) of {r} numbers, or a flat list of {}",
-                c * r
-            ),
+            Shape::Matrix(c, r) => format!("{c} lists (columns) of {r} numbers, or a flat list of {}", c * r),
             Shape::Array(elem, Some(k)) => {
                 format!("a list of {k} values, each {}", elem.expected())
             }
@@ -110,27 +103,17 @@ impl Shape {
 
     /// `Ok` if `v` fits; otherwise a short description of what is wrong.
     pub fn fit(&self, v: &UniformValue) -> Result<(), String> {
-        let wrong = || {
-            Err(format!(
-                "expected {}, found {}",
-                self.expected(),
-                describe(v)
-            ))
-        };
+        let wrong = || Err(format!("expected {}, found {}", self.expected(), describe(v)));
         match self {
             Shape::Scalar(s) => fit_scalar(*s, v),
             Shape::Vector(s, n) => match v {
-                UniformValue::List(items) if items.len() == *n => items
-                    .iter()
-                    .try_for_each(|i| fit_scalar(*s, i))
-                    .map_err(|e| format!("expected {}: {e}", self.expected())),
+                UniformValue::List(items) if items.len() == *n => {
+                    items.iter().try_for_each(|i| fit_scalar(*s, i)).map_err(|e| format!("expected {}: {e}", self.expected()))
+                }
                 _ => wrong(),
             },
             Shape::Matrix(c, r) => match v {
-                UniformValue::List(items)
-                    if items.len() == c * r
-                        && items.iter().all(|i| !matches!(i, UniformValue::List(_))) =>
-                {
+                UniformValue::List(items) if items.len() == c * r && items.iter().all(|i| !matches!(i, UniformValue::List(_))) => {
                     items.iter().try_for_each(|i| fit_scalar(Scalar::Float, i))
                 }
                 UniformValue::List(cols) if cols.len() == *c => {
@@ -147,9 +130,7 @@ impl Shape {
                 _ => wrong(),
             },
             Shape::Array(elem, len) => match v {
-                UniformValue::List(items)
-                    if len.is_none_or(|k| items.len() == k as usize) && !items.is_empty() =>
-                {
+                UniformValue::List(items) if len.is_none_or(|k| items.len() == k as usize) && !items.is_empty() => {
                     for (i, item) in items.iter().enumerate() {
                         elem.fit(item).map_err(|e| format!("element {i}: {e}"))?;
                     }
@@ -174,9 +155,7 @@ impl Shape {
             Shape::Matrix(c, r) => {
                 let cols: Vec<String> = (0..*c)
                     .map(|ci| {
-                        let rows: Vec<&str> = (0..*r)
-                            .map(|ri| if ri == ci { "1.0" } else { "0.0" })
-                            .collect();
+                        let rows: Vec<&str> = (0..*r).map(|ri| if ri == ci { "1.0" } else { "0.0" }).collect();
                         format!("[{}]", rows.join(", "))
                     })
                     .collect();
@@ -238,11 +217,7 @@ fn fit_scalar(s: Scalar, v: &UniformValue) -> Result<(), String> {
     if ok {
         Ok(())
     } else {
-        Err(format!(
-            "expected {}, found {}",
-            scalar_text(s, false),
-            describe(v)
-        ))
+        Err(format!("expected {}, found {}", scalar_text(s, false), describe(v)))
     }
 }
 

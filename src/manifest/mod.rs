@@ -77,10 +77,7 @@ pub const CODES: &[(&str, &str)] = &[
     (E_MISSING, "required manifest key missing"),
     (E_ASSET_NOT_FOUND, "texture or mesh file not found"),
     (E_CONFLICT, "conflicting manifest keys"),
-    (
-        W_STAGE_EXTENSION,
-        "stage file extension names another stage",
-    ),
+    (W_STAGE_EXTENSION, "stage file extension names another stage"),
     (W_OUT_OF_RANGE, "uniform default outside its declared range"),
     (W_UNUSED_PARAM, "texture generator parameter has no effect"),
 ];
@@ -381,12 +378,7 @@ pub enum Generator {
 }
 
 impl Generator {
-    pub const ALL: [Generator; 4] = [
-        Generator::Checker,
-        Generator::Gradient,
-        Generator::Noise,
-        Generator::Solid,
-    ];
+    pub const ALL: [Generator; 4] = [Generator::Checker, Generator::Gradient, Generator::Noise, Generator::Solid];
     pub fn name(self) -> &'static str {
         match self {
             Generator::Checker => "checker",
@@ -421,12 +413,7 @@ pub struct GeneratorParams {
 
 impl Default for GeneratorParams {
     fn default() -> Self {
-        GeneratorParams {
-            colors: [[1.0, 1.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]],
-            cells: 8,
-            seed: 0,
-            octaves: 4,
-        }
+        GeneratorParams { colors: [[1.0, 1.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]], cells: 8, seed: 0, octaves: 4 }
     }
 }
 
@@ -493,8 +480,7 @@ pub enum BuiltinMesh {
 }
 
 impl BuiltinMesh {
-    pub const NAMES: [&'static str; 6] =
-        ["fullscreen_quad", "fullscreen_triangle", "quad", "cube", "uv_sphere", "plane_grid"];
+    pub const NAMES: [&'static str; 6] = ["fullscreen_quad", "fullscreen_triangle", "quad", "cube", "uv_sphere", "plane_grid"];
     pub const DEFAULT_SEGMENTS: u32 = 32;
     pub const DEFAULT_RINGS: u32 = 16;
     pub const DEFAULT_DIVISIONS: u32 = 16;
@@ -729,11 +715,7 @@ pub fn load(path: &Path, files: &mut Files) -> Result<Effect, Vec<Diagnostic>> {
         Ok(bytes) => bytes,
         Err(err) => {
             let id = files.add(shown.clone(), String::new());
-            return Err(vec![Diagnostic::error(
-                E_IO,
-                format!("cannot read manifest `{shown}`: {err}"),
-            )
-            .in_file(id)]);
+            return Err(vec![Diagnostic::error(E_IO, format!("cannot read manifest `{shown}`: {err}")).in_file(id)]);
         }
     };
     let dir = match path.parent() {
@@ -776,11 +758,7 @@ pub fn did_you_mean<'a>(word: &str, candidates: &[&'a str]) -> Option<&'a str> {
         .copied()
         .map(|c| {
             let n = norm(c);
-            let score = if n == w {
-                2.0
-            } else {
-                strsim::jaro_winkler(&w, &n)
-            };
+            let score = if n == w { 2.0 } else { strsim::jaro_winkler(&w, &n) };
             (c, score)
         })
         .filter(|&(_, s)| s >= 0.8)

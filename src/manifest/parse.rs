@@ -38,18 +38,8 @@ const ROOT_KEYS: &[&str] = &[
     "knobs",
 ];
 const UNIFORM_KEYS: &[&str] = &["value", "range", "semantic"];
-const TEXTURE_KEYS: &[&str] = &[
-    "file", "cube", "generate", "kind", "size", "colors", "cells", "seed", "octaves", "filter",
-    "wrap",
-];
-const MESH_KEYS: &[&str] = &[
-    "builtin",
-    "obj",
-    "segments",
-    "rings",
-    "divisions",
-    "attributes",
-];
+const TEXTURE_KEYS: &[&str] = &["file", "cube", "generate", "kind", "size", "colors", "cells", "seed", "octaves", "filter", "wrap"];
+const MESH_KEYS: &[&str] = &["builtin", "obj", "segments", "rings", "divisions", "attributes"];
 /// Uniform default lists nest at most this deep (an array of arrays of mat4 columns is 3).
 const MAX_LIST_DEPTH: usize = 6;
 const MAX_CELLS: u32 = 4096;
@@ -61,19 +51,12 @@ const FACE_ORDER: &str = "+x, -x, +y, -y, +z, -z";
 pub(super) fn parse(text: &str, file: FileId, dir: &Path) -> Result<Effect, Vec<Diagnostic>> {
     let (root, errors) = DeTable::parse_recoverable(text);
     if !errors.is_empty() {
-        let mut diags: Vec<Diagnostic> = errors
-            .iter()
-            .map(|e| syntax_error(e, file, text.len()))
-            .collect();
+        let mut diags: Vec<Diagnostic> = errors.iter().map(|e| syntax_error(e, file, text.len())).collect();
         diags.dedup();
         sort(&mut diags);
         return Err(diags);
     }
-    let mut cx = Ctx {
-        file,
-        dir,
-        diags: Vec::new(),
-    };
+    let mut cx = Ctx { file, dir, diags: Vec::new() };
     let mut effect = cx.root(root.get_ref());
     let mut diags = cx.diags;
     sort(&mut diags);
@@ -96,9 +79,7 @@ fn syntax_error(e: &toml::de::Error, file: FileId, len: usize) -> Diagnostic {
         Some(span) => {
             let start = span.start.min(len);
             let end = span.end.clamp(start, len);
-            let label = message
-                .split_once(", expected ")
-                .map_or(String::new(), |(_, exp)| format!("expected {exp}"));
+            let label = message.split_once(", expected ").map_or(String::new(), |(_, exp)| format!("expected {exp}"));
             d.at(file, start..end, label)
         }
         None => d.in_file(file),
@@ -130,8 +111,7 @@ fn type_name(v: &DeValue<'_>) -> &'static str {
 
 fn is_ident(s: &str) -> bool {
     let mut chars = s.chars();
-    matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
-        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+    matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_') && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
 /// A name as `glGetUniformLocation` takes it: `ident ( "[" digits "]" | "." ident )*`.
@@ -168,11 +148,7 @@ fn parse_int(i: &toml::de::DeInteger<'_>) -> Option<i64> {
 }
 
 fn list(items: &[&str]) -> String {
-    items
-        .iter()
-        .map(|s| format!("`{s}`"))
-        .collect::<Vec<_>>()
-        .join(", ")
+    items.iter().map(|s| format!("`{s}`")).collect::<Vec<_>>().join(", ")
 }
 
 /// Generated-texture parameter keys (besides the source itself).
@@ -185,25 +161,13 @@ struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    fn error(
-        &mut self,
-        code: &'static str,
-        span: Range<usize>,
-        msg: String,
-        label: impl Into<String>,
-    ) -> &mut Diagnostic {
+    fn error(&mut self, code: &'static str, span: Range<usize>, msg: String, label: impl Into<String>) -> &mut Diagnostic {
         let d = Diagnostic::error(code, msg).at(self.file, span, label);
         self.diags.push(d);
         self.diags.last_mut().expect("just pushed")
     }
 
-    fn warning(
-        &mut self,
-        code: &'static str,
-        span: Range<usize>,
-        msg: String,
-        label: impl Into<String>,
-    ) -> &mut Diagnostic {
+    fn warning(&mut self, code: &'static str, span: Range<usize>, msg: String, label: impl Into<String>) -> &mut Diagnostic {
         let d = Diagnostic::warning(code, msg).at(self.file, span, label);
         self.diags.push(d);
         self.diags.last_mut().expect("just pushed")
@@ -211,12 +175,7 @@ impl Ctx<'_> {
 
     fn unknown_key(&mut self, name: &str, span: Range<usize>, place: &str, valid: &[&str]) {
         let suggestion = did_you_mean(name, valid);
-        let d = self.error(
-            E_UNKNOWN_KEY,
-            span,
-            format!("unknown key `{name}` {place}"),
-            "unknown key",
-        );
+        let d = self.error(E_UNKNOWN_KEY, span, format!("unknown key `{name}` {place}"), "unknown key");
         d.notes.push(format!("valid keys: {}", list(valid)));
         if let Some(s) = suggestion {
             d.help = Some(format!("did you mean `{s}`?"));
@@ -225,12 +184,7 @@ impl Ctx<'_> {
 
     fn wrong_type(&mut self, v: &Val<'_>, what: &str, expected: &str) {
         let found = type_name(v.get_ref());
-        self.error(
-            E_TYPE,
-            v.span(),
-            format!("{what} must be {expected}, found {found}"),
-            format!("expected {expected}"),
-        );
+        self.error(E_TYPE, v.span(), format!("{what} must be {expected}, found {found}"), format!("expected {expected}"));
     }
 
     fn string<'v>(&mut self, v: &'v Val<'_>, what: &str) -> Option<&'v str> {
@@ -254,13 +208,7 @@ impl Ctx<'_> {
     }
 
     /// A string naming one of `choices`; `noun` is what the names are ("semantic").
-    fn choice<T: Copy>(
-        &mut self,
-        v: &Val<'_>,
-        what: &str,
-        noun: &str,
-        choices: &[(&'static str, T)],
-    ) -> Option<T> {
+    fn choice<T: Copy>(&mut self, v: &Val<'_>, what: &str, noun: &str, choices: &[(&'static str, T)]) -> Option<T> {
         let names: Vec<&str> = choices.iter().map(|c| c.0).collect();
         let DeValue::String(s) = v.get_ref() else {
             self.wrong_type(v, what, &format!("a string naming a {noun}"));
@@ -272,12 +220,7 @@ impl Ctx<'_> {
             return Some(t);
         }
         let suggestion = did_you_mean(s, &names);
-        let d = self.error(
-            E_VALUE,
-            v.span(),
-            format!("unknown {noun} `{s}` in {what}"),
-            format!("unknown {noun}"),
-        );
+        let d = self.error(E_VALUE, v.span(), format!("unknown {noun} `{s}` in {what}"), format!("unknown {noun}"));
         d.notes.push(format!("expected one of: {}", list(&names)));
         if let Some(sug) = suggestion {
             d.help = Some(format!("did you mean `{sug}`?"));
@@ -294,12 +237,7 @@ impl Ctx<'_> {
         match parse_int(i).and_then(|n| u32::try_from(n).ok()) {
             Some(n) if (min..=max).contains(&n) => Some(n),
             _ => {
-                self.error(
-                    E_VALUE,
-                    v.span(),
-                    format!("{what} must be between {min} and {max}"),
-                    format!("not in {min}..={max}"),
-                );
+                self.error(E_VALUE, v.span(), format!("{what} must be between {min} and {max}"), format!("not in {min}..={max}"));
                 None
             }
         }
@@ -311,27 +249,15 @@ impl Ctx<'_> {
             DeValue::Integer(i) => match parse_int(i) {
                 Some(n) => Some(n as f64),
                 None => {
-                    self.error(
-                        E_VALUE,
-                        v.span(),
-                        format!("{what}: integer does not fit in 64 bits"),
-                        "too large",
-                    );
+                    self.error(E_VALUE, v.span(), format!("{what}: integer does not fit in 64 bits"), "too large");
                     None
                 }
             },
             DeValue::Float(f) => match f.as_str().parse::<f64>() {
                 Ok(x) if x.is_finite() => Some(x),
                 _ => {
-                    let d = self.error(
-                        E_VALUE,
-                        v.span(),
-                        format!("{what} must be a finite number"),
-                        "not a finite number",
-                    );
-                    d.notes.push(
-                        "`nan`, `inf` and numbers beyond the f64 range are not accepted".into(),
-                    );
+                    let d = self.error(E_VALUE, v.span(), format!("{what} must be a finite number"), "not a finite number");
+                    d.notes.push("`nan`, `inf` and numbers beyond the f64 range are not accepted".into());
                     None
                 }
             },
@@ -343,34 +269,17 @@ impl Ctx<'_> {
     }
 
     /// A path relative to the manifest directory that must name an existing file.
-    fn file_path(
-        &mut self,
-        v: &Val<'_>,
-        what: &str,
-        code: &'static str,
-        noun: &str,
-    ) -> Option<PathBuf> {
+    fn file_path(&mut self, v: &Val<'_>, what: &str, code: &'static str, noun: &str) -> Option<PathBuf> {
         let rel = self.string(v, what)?;
         if rel.trim().is_empty() {
-            self.error(
-                E_VALUE,
-                v.span(),
-                format!("{what} is an empty path"),
-                "empty path",
-            );
+            self.error(E_VALUE, v.span(), format!("{what} is an empty path"), "empty path");
             return None;
         }
         let path = self.dir.join(rel);
         if !path.is_file() {
-            let d = self.error(
-                code,
-                v.span(),
-                format!("{noun} not found: `{rel}`"),
-                "no file at this path",
-            );
+            let d = self.error(code, v.span(), format!("{noun} not found: `{rel}`"), "no file at this path");
             d.notes.push(format!("looked for `{}`", path.display()));
-            d.notes
-                .push("paths are relative to the directory holding effect.toml".into());
+            d.notes.push("paths are relative to the directory holding effect.toml".into());
             return None;
         }
         Some(path)
@@ -379,23 +288,12 @@ impl Ctx<'_> {
     /// Names in `[uniforms]` / `[textures]` must be GLSL uniform names.
     fn check_uniform_name(&mut self, name: &str, span: Range<usize>) -> bool {
         if name.starts_with("gl_") {
-            self.error(
-                E_VALUE,
-                span,
-                format!("`{name}` is a reserved GLSL name"),
-                "names starting with `gl_` are reserved",
-            );
+            self.error(E_VALUE, span, format!("`{name}` is a reserved GLSL name"), "names starting with `gl_` are reserved");
             return false;
         }
         if !is_uniform_name(name) {
-            let d = self.error(
-                E_VALUE,
-                span,
-                format!("`{name}` is not a valid GLSL uniform name"),
-                "not a uniform name",
-            );
-            d.help =
-                Some("use the name as the shader declares it: `tint`, `lights[0].color`".into());
+            let d = self.error(E_VALUE, span, format!("`{name}` is not a valid GLSL uniform name"), "not a uniform name");
+            d.help = Some("use the name as the shader declares it: `tint`, `lights[0].color`".into());
             return false;
         }
         true
@@ -437,12 +335,7 @@ impl Ctx<'_> {
                     stages_key = Some(k.span());
                     if let Some(t) = self.table(v, "`stages`") {
                         if t.is_empty() {
-                            let d = self.error(
-                                E_MISSING,
-                                k.span(),
-                                "`[stages]` lists no stage".into(),
-                                "no stage here",
-                            );
+                            let d = self.error(E_MISSING, k.span(), "`[stages]` lists no stage".into(), "no stage here");
                             d.help = Some("add e.g. `vertex = \"effect.vert\"` and `fragment = \"effect.frag\"`".into());
                         }
                         stages = self.stages(t);
@@ -499,17 +392,10 @@ impl Ctx<'_> {
                 let d = self.error(
                     E_CONFLICT,
                     t.name_span.clone(),
-                    format!(
-                        "`{}` is listed both in [uniforms] and in [textures]",
-                        t.name
-                    ),
+                    format!("`{}` is listed both in [uniforms] and in [textures]", t.name),
                     "bound to a texture here",
                 );
-                d.labels.push(crate::diag::Label {
-                    file,
-                    span: u.name_span.clone(),
-                    message: "given a value here".into(),
-                });
+                d.labels.push(crate::diag::Label { file, span: u.name_span.clone(), message: "given a value here".into() });
                 d.help = Some("samplers get a texture in [textures]; other uniforms get a value in [uniforms]".into());
             }
         }
@@ -559,10 +445,7 @@ impl Ctx<'_> {
             let Some(path) = self.file_path(v, &what, E_STAGE_NOT_FOUND, "stage file") else {
                 continue;
             };
-            let implied = path
-                .extension()
-                .and_then(|e| e.to_str())
-                .and_then(StageKind::from_extension);
+            let implied = path.extension().and_then(|e| e.to_str()).and_then(StageKind::from_extension);
             if let Some(other) = implied.filter(|&o| o != kind) {
                 let d = self.warning(
                     W_STAGE_EXTENSION,
@@ -572,35 +455,17 @@ impl Ctx<'_> {
                 );
                 d.help = Some(format!("list it under `{other}` if that is what it is"));
             }
-            stages.push(StageRef {
-                kind,
-                path,
-                span: v.span(),
-                key_span: k.span(),
-            });
+            stages.push(StageRef { kind, path, span: v.span(), key_span: k.span() });
         }
         stages.sort_by_key(|s| s.kind);
         if let Some(compute) = stages.iter().find(|s| s.kind == StageKind::Compute) {
-            let graphics: Vec<Range<usize>> = stages
-                .iter()
-                .filter(|s| s.kind != StageKind::Compute)
-                .map(|s| s.key_span.clone())
-                .collect();
+            let graphics: Vec<Range<usize>> = stages.iter().filter(|s| s.kind != StageKind::Compute).map(|s| s.key_span.clone()).collect();
             if !graphics.is_empty() {
                 let span = compute.key_span.clone();
                 let file = self.file;
-                let d = self.error(
-                    E_CONFLICT,
-                    span,
-                    "a compute stage cannot be combined with graphics stages".into(),
-                    "compute stage",
-                );
+                let d = self.error(E_CONFLICT, span, "a compute stage cannot be combined with graphics stages".into(), "compute stage");
                 for g in graphics {
-                    d.labels.push(crate::diag::Label {
-                        file,
-                        span: g,
-                        message: "graphics stage".into(),
-                    });
+                    d.labels.push(crate::diag::Label { file, span: g, message: "graphics stage".into() });
                 }
                 d.help = Some("put the compute shader in an effect of its own".into());
             }
@@ -634,13 +499,7 @@ impl Ctx<'_> {
         out
     }
 
-    fn uniform_spec(
-        &mut self,
-        name: &str,
-        k: &Key<'_>,
-        v: &Val<'_>,
-        spec: &DeTable<'_>,
-    ) -> Option<UniformDefault> {
+    fn uniform_spec(&mut self, name: &str, k: &Key<'_>, v: &Val<'_>, spec: &DeTable<'_>) -> Option<UniformDefault> {
         let mut ok = true;
         let mut value = None;
         let mut value_key = None;
@@ -662,8 +521,7 @@ impl Ctx<'_> {
                 },
                 "semantic" => {
                     semantic_key = Some(k2.span());
-                    let choices: Vec<(&'static str, Semantic)> =
-                        Semantic::ALL.iter().map(|s| (s.name(), *s)).collect();
+                    let choices: Vec<(&'static str, Semantic)> = Semantic::ALL.iter().map(|s| (s.name(), *s)).collect();
                     let alias = v2.get_ref().as_str().and_then(Semantic::from_name);
                     let what = format!("`uniforms.{name}.semantic`");
                     match alias.or_else(|| self.choice(v2, &what, "semantic", &choices)) {
@@ -672,12 +530,7 @@ impl Ctx<'_> {
                     }
                 }
                 other => {
-                    self.unknown_key(
-                        other,
-                        k2.span(),
-                        &format!("in uniform `{name}`"),
-                        UNIFORM_KEYS,
-                    );
+                    self.unknown_key(other, k2.span(), &format!("in uniform `{name}`"), UNIFORM_KEYS);
                     ok = false;
                 }
             }
@@ -691,15 +544,8 @@ impl Ctx<'_> {
                     format!("uniform `{name}` has both a `value` and a `semantic`"),
                     "semantic given here",
                 );
-                d.labels.push(crate::diag::Label {
-                    file,
-                    span: vk.clone(),
-                    message: "value given here".into(),
-                });
-                d.help = Some(
-                    "a semantic is set by the runtime every frame: remove `value` or `semantic`"
-                        .into(),
-                );
+                d.labels.push(crate::diag::Label { file, span: vk.clone(), message: "value given here".into() });
+                d.help = Some("a semantic is set by the runtime every frame: remove `value` or `semantic`".into());
                 ok = false;
             }
             (None, None) => {
@@ -717,12 +563,7 @@ impl Ctx<'_> {
             _ => {}
         }
         if let (Some((val, vspan)), Some(((lo, hi), rspan))) = (&value, &range) {
-            let outside: Vec<f64> = val
-                .scalars()
-                .iter()
-                .filter_map(|s| s.as_f64())
-                .filter(|x| x < lo || x > hi)
-                .collect();
+            let outside: Vec<f64> = val.scalars().iter().filter_map(|s| s.as_f64()).filter(|x| x < lo || x > hi).collect();
             if let Some(first) = outside.first() {
                 let file = self.file;
                 let d = self.warning(
@@ -731,11 +572,7 @@ impl Ctx<'_> {
                     format!("default of uniform `{name}` lies outside its range [{lo}, {hi}]"),
                     format!("{first} is outside the range"),
                 );
-                d.labels.push(crate::diag::Label {
-                    file,
-                    span: rspan.clone(),
-                    message: "range declared here".into(),
-                });
+                d.labels.push(crate::diag::Label { file, span: rspan.clone(), message: "range declared here".into() });
             }
         }
         if !ok {
@@ -764,12 +601,7 @@ impl Ctx<'_> {
             DeValue::Integer(i) => match parse_int(i) {
                 Some(n) => Some(UniformValue::Int(n)),
                 None => {
-                    self.error(
-                        E_VALUE,
-                        v.span(),
-                        format!("{what}: integer does not fit in 64 bits"),
-                        "too large",
-                    );
+                    self.error(E_VALUE, v.span(), format!("{what}: integer does not fit in 64 bits"), "too large");
                     None
                 }
             },
@@ -782,9 +614,7 @@ impl Ctx<'_> {
                     did_you_mean(&s, &names)
                 });
                 if let (Some(sem), Some(d)) = (sem, self.diags.last_mut()) {
-                    d.help = Some(format!(
-                        "to bind a value the runtime provides, write `{{ semantic = \"{sem}\" }}`"
-                    ));
+                    d.help = Some(format!("to bind a value the runtime provides, write `{{ semantic = \"{sem}\" }}`"));
                 }
                 None
             }
@@ -794,21 +624,11 @@ impl Ctx<'_> {
             }
             DeValue::Array(items) => {
                 if depth >= MAX_LIST_DEPTH {
-                    self.error(
-                        E_VALUE,
-                        v.span(),
-                        format!("{what}: arrays nest deeper than {MAX_LIST_DEPTH} levels"),
-                        "nested too deeply",
-                    );
+                    self.error(E_VALUE, v.span(), format!("{what}: arrays nest deeper than {MAX_LIST_DEPTH} levels"), "nested too deeply");
                     return None;
                 }
                 if items.is_empty() {
-                    self.error(
-                        E_VALUE,
-                        v.span(),
-                        format!("{what} is an empty array"),
-                        "empty array",
-                    );
+                    self.error(E_VALUE, v.span(), format!("{what} is an empty array"), "empty array");
                     return None;
                 }
                 let mut out = Vec::with_capacity(items.len());
@@ -823,12 +643,7 @@ impl Ctx<'_> {
                     return None;
                 }
                 // Every element must have the shape of the first (rectangular, one scalar kind).
-                let shape = |x: &UniformValue| {
-                    (
-                        x.dims(),
-                        matches!(x.scalars().first(), Some(UniformValue::Bool(_))),
-                    )
-                };
+                let shape = |x: &UniformValue| (x.dims(), matches!(x.scalars().first(), Some(UniformValue::Bool(_))));
                 let first = shape(&out[0]);
                 if let Some(i) = out.iter().position(|x| shape(x) != first) {
                     let describe = |(dims, is_bool): &(Vec<usize>, bool)| {
@@ -837,16 +652,9 @@ impl Ctx<'_> {
                             [] => scalar.to_owned(),
                             d => format!(
                                 "an array of {} {}{}",
-                                d.iter()
-                                    .map(|n| n.to_string())
-                                    .collect::<Vec<_>>()
-                                    .join("×"),
+                                d.iter().map(|n| n.to_string()).collect::<Vec<_>>().join("×"),
                                 if *is_bool { "boolean" } else { "number" },
-                                if d.iter().product::<usize>() == 1 {
-                                    ""
-                                } else {
-                                    "s"
-                                }
+                                if d.iter().product::<usize>() == 1 { "" } else { "s" }
                             ),
                         }
                     };
@@ -877,27 +685,15 @@ impl Ctx<'_> {
             return None;
         };
         if items.len() != 2 {
-            self.error(
-                E_VALUE,
-                v.span(),
-                format!(
-                    "{what} must be {EXPECTED}, found {} element(s)",
-                    items.len()
-                ),
-                "expected `[min, max]`",
-            );
+            self.error(E_VALUE, v.span(), format!("{what} must be {EXPECTED}, found {} element(s)", items.len()), "expected `[min, max]`");
             return None;
         }
         let lo = self.number(&items[0], &format!("{what} lower bound"));
         let hi = self.number(&items[1], &format!("{what} upper bound"));
         let (lo, hi) = (lo?, hi?);
         if lo > hi {
-            let d = self.error(
-                E_VALUE,
-                v.span(),
-                format!("{what} is empty: lower bound {lo} is greater than upper bound {hi}"),
-                "min > max",
-            );
+            let d =
+                self.error(E_VALUE, v.span(), format!("{what} is empty: lower bound {lo} is greater than upper bound {hi}"), "min > max");
             d.help = Some(format!("write the range as `[{hi}, {lo}]`"));
             return None;
         }
@@ -911,24 +707,20 @@ impl Ctx<'_> {
             let name_ok = self.check_uniform_name(name, k.span());
             let what = format!("texture `{name}`");
             let decl = match v.get_ref() {
-                DeValue::String(_) => self
-                    .file_path(v, &what, E_ASSET_NOT_FOUND, "texture file")
-                    .map(|path| TextureDecl {
-                        name: name.to_owned(),
-                        name_span: k.span(),
-                        kind: TextureKind::D2,
-                        source: TextureSource::File(path),
-                        span: v.span(),
-                        filter: Filter::default(),
-                        wrap: Wrap::default(),
-                    }),
+                DeValue::String(_) => self.file_path(v, &what, E_ASSET_NOT_FOUND, "texture file").map(|path| TextureDecl {
+                    name: name.to_owned(),
+                    name_span: k.span(),
+                    kind: TextureKind::D2,
+                    source: TextureSource::File(path),
+                    span: v.span(),
+                    filter: Filter::default(),
+                    wrap: Wrap::default(),
+                }),
                 DeValue::Table(tt) => self.texture_table(name, k, v, tt),
                 _ => {
                     self.wrong_type(v, &what, "an image path or a table");
                     let d = self.diags.last_mut().expect("just pushed");
-                    d.help = Some(
-                        "write `{ file = \"image.png\" }`, `{ cube = [six images] }` or `{ generate = \"checker\" }`".into(),
-                    );
+                    d.help = Some("write `{ file = \"image.png\" }`, `{ cube = [six images] }` or `{ generate = \"checker\" }`".into());
                     None
                 }
             };
@@ -939,13 +731,7 @@ impl Ctx<'_> {
         out
     }
 
-    fn texture_table(
-        &mut self,
-        name: &str,
-        k: &Key<'_>,
-        v: &Val<'_>,
-        t: &DeTable<'_>,
-    ) -> Option<TextureDecl> {
+    fn texture_table(&mut self, name: &str, k: &Key<'_>, v: &Val<'_>, t: &DeTable<'_>) -> Option<TextureDecl> {
         let mut ok = true;
         let mut sources: Vec<(&'static str, Range<usize>)> = Vec::new();
         let mut file = None;
@@ -985,20 +771,14 @@ impl Ctx<'_> {
                     }
                 }
                 p @ ("size" | "colors" | "cells" | "seed" | "octaves") => {
-                    let p = GEN_PARAMS
-                        .iter()
-                        .copied()
-                        .find(|g| *g == p)
-                        .unwrap_or("size");
+                    let p = GEN_PARAMS.iter().copied().find(|g| *g == p).unwrap_or("size");
                     params_given.push((p, k2.span()));
                     let parsed = match p {
                         "size" => self.uint(v2, what, 1, MAX_TEXTURE_SIZE).map(|n| size = n),
                         "colors" => self.colors(v2, what).map(|c| params.colors = c),
                         "cells" => self.uint(v2, what, 1, MAX_CELLS).map(|n| params.cells = n),
                         "seed" => self.uint(v2, what, 0, u32::MAX).map(|n| params.seed = n),
-                        _ => self
-                            .uint(v2, what, 1, MAX_OCTAVES)
-                            .map(|n| params.octaves = n),
+                        _ => self.uint(v2, what, 1, MAX_OCTAVES).map(|n| params.octaves = n),
                     };
                     ok &= parsed.is_some();
                 }
@@ -1010,66 +790,36 @@ impl Ctx<'_> {
                     }
                 }
                 "wrap" => {
-                    let choices = [
-                        ("repeat", Wrap::Repeat),
-                        ("clamp", Wrap::Clamp),
-                        ("mirror", Wrap::Mirror),
-                    ];
+                    let choices = [("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp), ("mirror", Wrap::Mirror)];
                     match self.choice(v2, what, "wrap mode", &choices) {
                         Some(w) => wrap = w,
                         None => ok = false,
                     }
                 }
                 other => {
-                    self.unknown_key(
-                        other,
-                        k2.span(),
-                        &format!("in texture `{name}`"),
-                        TEXTURE_KEYS,
-                    );
+                    self.unknown_key(other, k2.span(), &format!("in texture `{name}`"), TEXTURE_KEYS);
                     ok = false;
                 }
             }
         }
         let source_kind = match sources.as_slice() {
             [] => {
-                let d = self.error(
-                    E_MISSING,
-                    v.span(),
-                    format!("texture `{name}` has no source"),
-                    "no `file`, `cube` or `generate`",
-                );
-                d.help = Some(
-                    "add `file = \"image.png\"`, `cube = [six images]` or `generate = \"checker\"`"
-                        .into(),
-                );
+                let d = self.error(E_MISSING, v.span(), format!("texture `{name}` has no source"), "no `file`, `cube` or `generate`");
+                d.help = Some("add `file = \"image.png\"`, `cube = [six images]` or `generate = \"checker\"`".into());
                 return None;
             }
             [(s, _)] => *s,
             [(_, first), (_, second), ..] => {
                 let file_id = self.file;
                 let (first, second) = (first.clone(), second.clone());
-                let d = self.error(
-                    E_CONFLICT,
-                    second,
-                    format!("texture `{name}` has more than one source"),
-                    "second source",
-                );
-                d.labels.push(crate::diag::Label {
-                    file: file_id,
-                    span: first,
-                    message: "first source".into(),
-                });
+                let d = self.error(E_CONFLICT, second, format!("texture `{name}` has more than one source"), "second source");
+                d.labels.push(crate::diag::Label { file: file_id, span: first, message: "first source".into() });
                 d.help = Some("keep exactly one of `file`, `cube` and `generate`".into());
                 return None;
             }
         };
         // Kind: `cube = [...]` is a cube; `file` is 2D; `generate` is either (default 2D).
-        let natural = if source_kind == "cube" {
-            TextureKind::Cube
-        } else {
-            TextureKind::D2
-        };
+        let natural = if source_kind == "cube" { TextureKind::Cube } else { TextureKind::D2 };
         let tex_kind = match kind {
             Some((want, span)) if source_kind != "generate" && want != natural => {
                 let msg = match source_kind {
@@ -1079,9 +829,7 @@ impl Ctx<'_> {
                     _ => format!("texture `{name}` is a single image but says `kind = \"cube\"`"),
                 };
                 let d = self.error(E_CONFLICT, span, msg, "conflicts with the source");
-                d.help = Some(
-                    "a cube map comes from `cube = [six images]` or from `generate` with `kind = \"cube\"`".into(),
-                );
+                d.help = Some("a cube map comes from `cube = [six images]` or from `generate` with `kind = \"cube\"`".into());
                 ok = false;
                 natural
             }
@@ -1094,14 +842,7 @@ impl Ctx<'_> {
                     E_CONFLICT,
                     span.clone(),
                     format!("`{p}` only applies to generated textures"),
-                    format!(
-                        "texture `{name}` is loaded from {}",
-                        if source_kind == "cube" {
-                            "images"
-                        } else {
-                            "a file"
-                        }
-                    ),
+                    format!("texture `{name}` is loaded from {}", if source_kind == "cube" { "images" } else { "a file" }),
                 );
                 d.help = Some(format!("remove `{p}`"));
                 ok = false;
@@ -1115,11 +856,7 @@ impl Ctx<'_> {
                         format!("`{p}` has no effect on the `{}` generator", g.name()),
                         "ignored",
                     );
-                    d.notes.push(format!(
-                        "`{}` uses: size, {}",
-                        g.name(),
-                        g.params().join(", ")
-                    ));
+                    d.notes.push(format!("`{}` uses: size, {}", g.name(), g.params().join(", ")));
                 }
             }
         }
@@ -1129,46 +866,25 @@ impl Ctx<'_> {
         let source = match source_kind {
             "file" => TextureSource::File(file?),
             "cube" => TextureSource::Faces(faces?),
-            _ => TextureSource::Generated {
-                generator: generator?,
-                size,
-                params,
-            },
+            _ => TextureSource::Generated { generator: generator?, size, params },
         };
-        Some(TextureDecl {
-            name: name.to_owned(),
-            name_span: k.span(),
-            kind: tex_kind,
-            source,
-            span: v.span(),
-            filter,
-            wrap,
-        })
+        Some(TextureDecl { name: name.to_owned(), name_span: k.span(), kind: tex_kind, source, span: v.span(), filter, wrap })
     }
 
     fn faces(&mut self, v: &Val<'_>, what: &str) -> Option<[PathBuf; 6]> {
         let DeValue::Array(items) = v.get_ref() else {
             self.wrong_type(v, what, "an array of six image paths");
             let d = self.diags.last_mut().expect("just pushed");
-            d.notes
-                .push(format!("faces are listed in the order {FACE_ORDER}"));
+            d.notes.push(format!("faces are listed in the order {FACE_ORDER}"));
             return None;
         };
         if items.len() != 6 {
-            let d = self.error(
-                E_VALUE,
-                v.span(),
-                format!("{what} needs exactly six images, found {}", items.len()),
-                "expected six paths",
-            );
-            d.notes
-                .push(format!("faces are listed in the order {FACE_ORDER}"));
+            let d = self.error(E_VALUE, v.span(), format!("{what} needs exactly six images, found {}", items.len()), "expected six paths");
+            d.notes.push(format!("faces are listed in the order {FACE_ORDER}"));
             return None;
         }
-        let paths: Vec<Option<PathBuf>> = items
-            .iter()
-            .map(|item| self.file_path(item, what, E_ASSET_NOT_FOUND, "cube face image"))
-            .collect();
+        let paths: Vec<Option<PathBuf>> =
+            items.iter().map(|item| self.file_path(item, what, E_ASSET_NOT_FOUND, "cube face image")).collect();
         let paths: Option<Vec<PathBuf>> = paths.into_iter().collect();
         paths?.try_into().ok()
     }
@@ -1181,21 +897,10 @@ impl Ctx<'_> {
             return None;
         };
         let mut out = GeneratorParams::default().colors;
-        let single = items
-            .first()
-            .is_some_and(|i| !matches!(i.get_ref(), DeValue::Array(_)));
-        let colours: Vec<&Val<'_>> = if single {
-            vec![v]
-        } else {
-            items.iter().collect()
-        };
+        let single = items.first().is_some_and(|i| !matches!(i.get_ref(), DeValue::Array(_)));
+        let colours: Vec<&Val<'_>> = if single { vec![v] } else { items.iter().collect() };
         if colours.is_empty() || colours.len() > 2 {
-            self.error(
-                E_VALUE,
-                v.span(),
-                format!("{what} must be {EXPECTED}"),
-                format!("found {} colours", colours.len()),
-            );
+            self.error(E_VALUE, v.span(), format!("{what} must be {EXPECTED}"), format!("found {} colours", colours.len()));
             return None;
         }
         let mut ok = true;
@@ -1217,10 +922,7 @@ impl Ctx<'_> {
             self.error(
                 E_VALUE,
                 v.span(),
-                format!(
-                    "{what}: a colour has 3 or 4 components, found {}",
-                    items.len()
-                ),
+                format!("{what}: a colour has 3 or 4 components, found {}", items.len()),
                 "expected [r, g, b] or [r, g, b, a]",
             );
             return None;
@@ -1231,12 +933,7 @@ impl Ctx<'_> {
             match self.number(item, what) {
                 Some(x) if (x as f32).is_finite() => rgba[i] = x as f32,
                 Some(_) => {
-                    self.error(
-                        E_VALUE,
-                        item.span(),
-                        format!("{what}: component is too large"),
-                        "beyond f32 range",
-                    );
+                    self.error(E_VALUE, item.span(), format!("{what}: component is too large"), "beyond f32 range");
                     ok = false;
                 }
                 None => ok = false,
@@ -1246,18 +943,12 @@ impl Ctx<'_> {
     }
 
     fn mesh(&mut self, v: &Val<'_>) -> Option<MeshDecl> {
-        let builtin_choices: Vec<(&'static str, &'static str)> =
-            BuiltinMesh::NAMES.iter().map(|n| (*n, *n)).collect();
+        let builtin_choices: Vec<(&'static str, &'static str)> = BuiltinMesh::NAMES.iter().map(|n| (*n, *n)).collect();
         match v.get_ref() {
             DeValue::String(_) => {
                 let name = self.choice(v, "`mesh`", "builtin mesh", &builtin_choices)?;
                 let source = MeshSource::Builtin(builtin(name, None, None, None));
-                Some(MeshDecl {
-                    span: v.span(),
-                    source,
-                    attributes: Vec::new(),
-                    attribute_spans: Vec::new(),
-                })
+                Some(MeshDecl { span: v.span(), source, attributes: Vec::new(), attribute_spans: Vec::new() })
             }
             DeValue::Table(t) => self.mesh_table(v, t, &builtin_choices),
             _ => {
@@ -1267,12 +958,7 @@ impl Ctx<'_> {
         }
     }
 
-    fn mesh_table(
-        &mut self,
-        v: &Val<'_>,
-        t: &DeTable<'_>,
-        builtin_choices: &[(&'static str, &'static str)],
-    ) -> Option<MeshDecl> {
+    fn mesh_table(&mut self, v: &Val<'_>, t: &DeTable<'_>, builtin_choices: &[(&'static str, &'static str)]) -> Option<MeshDecl> {
         let mut ok = true;
         let mut sources: Vec<(&'static str, Range<usize>)> = Vec::new();
         let mut builtin_name = None;
@@ -1297,21 +983,15 @@ impl Ctx<'_> {
                     ok &= obj.is_some();
                 }
                 "segments" => {
-                    segments = self
-                        .uint(v2, what, 3, MAX_MESH_DIVISIONS)
-                        .map(|n| (n, k.span()));
+                    segments = self.uint(v2, what, 3, MAX_MESH_DIVISIONS).map(|n| (n, k.span()));
                     ok &= segments.is_some();
                 }
                 "rings" => {
-                    rings = self
-                        .uint(v2, what, 2, MAX_MESH_DIVISIONS)
-                        .map(|n| (n, k.span()));
+                    rings = self.uint(v2, what, 2, MAX_MESH_DIVISIONS).map(|n| (n, k.span()));
                     ok &= rings.is_some();
                 }
                 "divisions" => {
-                    divisions = self
-                        .uint(v2, what, 1, MAX_MESH_DIVISIONS)
-                        .map(|n| (n, k.span()));
+                    divisions = self.uint(v2, what, 1, MAX_MESH_DIVISIONS).map(|n| (n, k.span()));
                     ok &= divisions.is_some();
                 }
                 "attributes" => {
@@ -1319,26 +999,15 @@ impl Ctx<'_> {
                         ok = false;
                         continue;
                     };
-                    let choices: Vec<(&'static str, &'static str)> =
-                        MESH_ATTRIBUTES.iter().map(|n| (*n, *n)).collect();
+                    let choices: Vec<(&'static str, &'static str)> = MESH_ATTRIBUTES.iter().map(|n| (*n, *n)).collect();
                     for (ak, av) in entries(at) {
                         let input = key(ak);
                         if !is_ident(input) || input.starts_with("gl_") {
-                            self.error(
-                                E_VALUE,
-                                ak.span(),
-                                format!("`{input}` is not a vertex shader input name"),
-                                "not a GLSL identifier",
-                            );
+                            self.error(E_VALUE, ak.span(), format!("`{input}` is not a vertex shader input name"), "not a GLSL identifier");
                             ok = false;
                             continue;
                         }
-                        match self.choice(
-                            av,
-                            &format!("`mesh.attributes.{input}`"),
-                            "mesh attribute",
-                            &choices,
-                        ) {
+                        match self.choice(av, &format!("`mesh.attributes.{input}`"), "mesh attribute", &choices) {
                             Some(attr) => {
                                 attributes.push((input.to_owned(), attr.to_owned()));
                                 attribute_spans.push(ak.span());
@@ -1355,54 +1024,36 @@ impl Ctx<'_> {
         }
         match sources.as_slice() {
             [] => {
-                let d = self.error(
-                    E_MISSING,
-                    v.span(),
-                    "`[mesh]` needs `builtin` or `obj`".into(),
-                    "no mesh source",
-                );
-                d.help = Some(format!(
-                    "add e.g. `builtin = \"uv_sphere\"`; builtins: {}",
-                    list(&BuiltinMesh::NAMES)
-                ));
+                let d = self.error(E_MISSING, v.span(), "`[mesh]` needs `builtin` or `obj`".into(), "no mesh source");
+                d.help = Some(format!("add e.g. `builtin = \"uv_sphere\"`; builtins: {}", list(&BuiltinMesh::NAMES)));
                 return None;
             }
             [_] => {}
             [(_, first), (_, second), ..] => {
                 let file = self.file;
                 let (first, second) = (first.clone(), second.clone());
-                let d = self.error(
-                    E_CONFLICT,
-                    second,
-                    "`[mesh]` has both `builtin` and `obj`".into(),
-                    "second source",
-                );
-                d.labels.push(crate::diag::Label {
-                    file,
-                    span: first,
-                    message: "first source".into(),
-                });
+                let d = self.error(E_CONFLICT, second, "`[mesh]` has both `builtin` and `obj`".into(), "second source");
+                d.labels.push(crate::diag::Label { file, span: first, message: "first source".into() });
                 d.help = Some("keep one of `builtin` and `obj`".into());
                 return None;
             }
         }
         // Shape parameters must belong to the chosen builtin.
         let is = |n: &str| builtin_name == Some(n);
-        let mut misplaced =
-            |key: &str, span: &Option<(u32, Range<usize>)>, owner: &str, applies: bool| {
-                if let (Some((_, span)), false) = (span, applies) {
-                    let d = self.error(
-                        E_CONFLICT,
-                        span.clone(),
-                        format!("`{key}` only applies to `builtin = \"{owner}\"`"),
-                        "not used by this mesh",
-                    );
-                    d.help = Some(format!("remove `{key}`"));
-                    false
-                } else {
-                    true
-                }
-            };
+        let mut misplaced = |key: &str, span: &Option<(u32, Range<usize>)>, owner: &str, applies: bool| {
+            if let (Some((_, span)), false) = (span, applies) {
+                let d = self.error(
+                    E_CONFLICT,
+                    span.clone(),
+                    format!("`{key}` only applies to `builtin = \"{owner}\"`"),
+                    "not used by this mesh",
+                );
+                d.help = Some(format!("remove `{key}`"));
+                false
+            } else {
+                true
+            }
+        };
         let mut fine = misplaced("segments", &segments, "uv_sphere", is("uv_sphere"));
         fine &= misplaced("rings", &rings, "uv_sphere", is("uv_sphere"));
         fine &= misplaced("divisions", &divisions, "plane_grid", is("plane_grid"));
@@ -1410,30 +1061,15 @@ impl Ctx<'_> {
             return None;
         }
         let source = match (builtin_name, obj) {
-            (Some(n), _) => MeshSource::Builtin(builtin(
-                n,
-                segments.map(|s| s.0),
-                rings.map(|r| r.0),
-                divisions.map(|d| d.0),
-            )),
+            (Some(n), _) => MeshSource::Builtin(builtin(n, segments.map(|s| s.0), rings.map(|r| r.0), divisions.map(|d| d.0))),
             (None, Some(path)) => MeshSource::Obj(path),
             (None, None) => return None,
         };
-        Some(MeshDecl {
-            span: v.span(),
-            source,
-            attributes,
-            attribute_spans,
-        })
+        Some(MeshDecl { span: v.span(), source, attributes, attribute_spans })
     }
 }
 
-fn builtin(
-    name: &str,
-    segments: Option<u32>,
-    rings: Option<u32>,
-    divisions: Option<u32>,
-) -> BuiltinMesh {
+fn builtin(name: &str, segments: Option<u32>, rings: Option<u32>, divisions: Option<u32>) -> BuiltinMesh {
     match name {
         "fullscreen_quad" => BuiltinMesh::FullscreenQuad,
         "fullscreen_triangle" => BuiltinMesh::FullscreenTriangle,
@@ -1443,18 +1079,12 @@ fn builtin(
             segments: segments.unwrap_or(BuiltinMesh::DEFAULT_SEGMENTS),
             rings: rings.unwrap_or(BuiltinMesh::DEFAULT_RINGS),
         },
-        _ => BuiltinMesh::PlaneGrid {
-            divisions: divisions.unwrap_or(BuiltinMesh::DEFAULT_DIVISIONS),
-        },
+        _ => BuiltinMesh::PlaneGrid { divisions: divisions.unwrap_or(BuiltinMesh::DEFAULT_DIVISIONS) },
     }
 }
 
 /// The effect name when the manifest gives none: the directory's name.
 fn default_name(dir: &Path) -> String {
-    let name = dir
-        .file_name()
-        .map(|n| n.to_owned())
-        .or_else(|| dir.canonicalize().ok()?.file_name().map(|n| n.to_owned()));
-    name.map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "effect".to_owned())
+    let name = dir.file_name().map(|n| n.to_owned()).or_else(|| dir.canonicalize().ok()?.file_name().map(|n| n.to_owned()));
+    name.map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "effect".to_owned())
 }

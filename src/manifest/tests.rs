@@ -10,9 +10,7 @@ static COUNTER: AtomicUsize = AtomicUsize::new(0);
 /// A fresh directory `<tmp>/effectc-manifest-<pid>-<n>/<name>` holding empty `files`.
 fn fixture_dir(name: &str, files: &[&str]) -> PathBuf {
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let dir = std::env::temp_dir()
-        .join(format!("effectc-manifest-{}-{n}", std::process::id()))
-        .join(name);
+    let dir = std::env::temp_dir().join(format!("effectc-manifest-{}-{n}", std::process::id())).join(name);
     std::fs::create_dir_all(&dir).unwrap();
     for f in files {
         std::fs::write(dir.join(f), "").unwrap();
@@ -20,9 +18,7 @@ fn fixture_dir(name: &str, files: &[&str]) -> PathBuf {
     dir
 }
 
-const SUN_FILES: &[&str] = &[
-    "sun.vert", "sun.frag", "px.png", "nx.png", "py.png", "ny.png", "pz.png", "nz.png", "wood.png",
-];
+const SUN_FILES: &[&str] = &["sun.vert", "sun.frag", "px.png", "nx.png", "py.png", "ny.png", "pz.png", "nz.png", "wood.png"];
 
 const SUN: &str = r#"name = "sun"
 description = "Swirling sun with pulsing bloom"
@@ -90,10 +86,7 @@ fn full_example_parses() {
     let e = run(SUN, &dir).unwrap();
     assert_eq!(e.name, "sun");
     assert_eq!(&SUN[e.name_span.clone()], "\"sun\"");
-    assert_eq!(
-        e.description.as_deref(),
-        Some("Swirling sun with pulsing bloom")
-    );
+    assert_eq!(e.description.as_deref(), Some("Swirling sun with pulsing bloom"));
     assert_eq!(e.dir, dir);
     assert!(e.warnings.is_empty(), "{:#?}", e.warnings);
 
@@ -104,18 +97,7 @@ fn full_example_parses() {
     assert_eq!(&SUN[e.stages[1].key_span.clone()], "fragment");
 
     let names: Vec<&str> = e.uniforms.iter().map(|u| u.name.as_str()).collect();
-    assert_eq!(
-        names,
-        [
-            "minBI",
-            "maxBI",
-            "bFrequency",
-            "tint",
-            "weights",
-            "timeVar",
-            "model"
-        ]
-    );
+    assert_eq!(names, ["minBI", "maxBI", "bFrequency", "tint", "weights", "timeVar", "model"]);
     let min = e.uniform("minBI").unwrap();
     assert_eq!(min.value, Some(UniformValue::Float(0.2)));
     assert_eq!(&SUN[min.name_span.clone()], "minBI");
@@ -128,14 +110,7 @@ fn full_example_parses() {
     assert_eq!(&SUN[max.range_span.clone().unwrap()], "[0.0, 4.0]");
     assert_eq!(e.uniform("bFrequency").unwrap().range, Some((0.1, 10.0)));
     let tint = e.uniform("tint").unwrap();
-    assert_eq!(
-        tint.value,
-        Some(UniformValue::List(vec![
-            UniformValue::Float(1.0),
-            UniformValue::Float(0.8),
-            UniformValue::Float(0.3)
-        ]))
-    );
+    assert_eq!(tint.value, Some(UniformValue::List(vec![UniformValue::Float(1.0), UniformValue::Float(0.8), UniformValue::Float(0.3)])));
     assert_eq!(tint.value.as_ref().unwrap().dims(), [3]);
     let time = e.uniform("timeVar").unwrap();
     assert_eq!(time.value, None);
@@ -153,10 +128,7 @@ fn full_example_parses() {
         TextureSource::Generated {
             generator: Generator::Noise,
             size: 256,
-            params: GeneratorParams {
-                seed: 7,
-                ..GeneratorParams::default()
-            }
+            params: GeneratorParams { seed: 7, ..GeneratorParams::default() }
         }
     );
     assert_eq!(&SUN[noise.name_span.clone()], "textureSamplerVar");
@@ -171,21 +143,9 @@ fn full_example_parses() {
     assert_eq!(&SUN[albedo.span.clone()], "{ file = \"wood.png\" }");
 
     let mesh = e.mesh.unwrap();
-    assert_eq!(
-        mesh.source,
-        MeshSource::Builtin(BuiltinMesh::UvSphere {
-            segments: 64,
-            rings: 32
-        })
-    );
+    assert_eq!(mesh.source, MeshSource::Builtin(BuiltinMesh::UvSphere { segments: 64, rings: 32 }));
     assert_eq!(&SUN[mesh.span.clone()], "[mesh]");
-    assert_eq!(
-        mesh.attributes,
-        [
-            ("vertPosition".to_owned(), "position".to_owned()),
-            ("vertTexCoords".to_owned(), "uv".to_owned())
-        ]
-    );
+    assert_eq!(mesh.attributes, [("vertPosition".to_owned(), "position".to_owned()), ("vertTexCoords".to_owned(), "uv".to_owned())]);
     assert_eq!(&SUN[mesh.attribute_spans[1].clone()], "vertTexCoords");
 }
 
@@ -197,10 +157,7 @@ fn crlf_manifest_parses_with_byte_spans() {
     assert_eq!(e.uniforms.len(), 7);
     assert_eq!(&text[e.stages[1].span.clone()], "\"sun.frag\"");
     assert_eq!(&text[e.uniform("maxBI").unwrap().value_span.clone()], "1.4");
-    assert_eq!(
-        &text[e.mesh.as_ref().unwrap().attribute_spans[0].clone()],
-        "vertPosition"
-    );
+    assert_eq!(&text[e.mesh.as_ref().unwrap().attribute_spans[0].clone()], "vertPosition");
 
     // Errors in a CRLF file point at the right bytes and lines too.
     let bad = "[stages]\r\nvertex = \"a.vert\"\r\nfragmnet = \"a.frag\"\r\n";
@@ -249,37 +206,20 @@ fn unknown_key_suggests_the_closest() {
 
 #[test]
 fn wrong_types_are_reported_at_the_value() {
-    let text = "[stages]\nvertex = 3\nfragment = \"a.frag\"\n[uniforms]\nx = { value = 1.0, range = \"x\" }\ny = \"hello\"\nz = 2024-01-01\n";
+    let text =
+        "[stages]\nvertex = 3\nfragment = \"a.frag\"\n[uniforms]\nx = { value = 1.0, range = \"x\" }\ny = \"hello\"\nz = 2024-01-01\n";
     let diags = errors(text, &minimal_dir());
     let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(text, d))).collect();
-    assert_eq!(
-        spans,
-        [
-            (E_TYPE, "3"),
-            (E_TYPE, "\"x\""),
-            (E_TYPE, "\"hello\""),
-            (E_TYPE, "2024-01-01")
-        ]
-    );
-    assert_eq!(
-        diags[0].message,
-        "`stages.vertex` must be a string, found an integer"
-    );
-    assert!(
-        diags[1].message.contains("`[min, max]`"),
-        "{}",
-        diags[1].message
-    );
+    assert_eq!(spans, [(E_TYPE, "3"), (E_TYPE, "\"x\""), (E_TYPE, "\"hello\""), (E_TYPE, "2024-01-01")]);
+    assert_eq!(diags[0].message, "`stages.vertex` must be a string, found an integer");
+    assert!(diags[1].message.contains("`[min, max]`"), "{}", diags[1].message);
 }
 
 #[test]
 fn string_uniform_that_names_a_semantic_gets_help() {
     let text = minimal("[uniforms]\nt = \"time\"\n");
     let d = one(&errors(&text, &minimal_dir()), E_TYPE).clone();
-    assert_eq!(
-        d.help.as_deref(),
-        Some("to bind a value the runtime provides, write `{ semantic = \"time\" }`")
-    );
+    assert_eq!(d.help.as_deref(), Some("to bind a value the runtime provides, write `{ semantic = \"time\" }`"));
 }
 
 #[test]
@@ -288,18 +228,11 @@ fn range_low_above_high() {
     let diags = errors(&text, &minimal_dir());
     let d = one(&diags, E_VALUE);
     assert_eq!(span_text(&text, d), "[2.0, 1.0]");
-    assert!(
-        d.message
-            .contains("lower bound 2 is greater than upper bound 1"),
-        "{}",
-        d.message
-    );
+    assert!(d.message.contains("lower bound 2 is greater than upper bound 1"), "{}", d.message);
     assert_eq!(diags.len(), 1);
 
     // Wrong arity and non-finite bounds.
-    let text = minimal(
-        "[uniforms]\nx = { value = 1, range = [1] }\ny = { value = 1, range = [0, nan] }\n",
-    );
+    let text = minimal("[uniforms]\nx = { value = 1, range = [1] }\ny = { value = 1, range = [0, nan] }\n");
     let diags = errors(&text, &minimal_dir());
     let spans: Vec<&str> = diags.iter().map(|d| span_text(&text, d)).collect();
     assert_eq!(spans, ["[1]", "nan"]);
@@ -376,10 +309,7 @@ fn garbage_input_does_not_panic() {
         assert!(diags.iter().any(|d| d.is_error()), "{text:?}");
         for d in &diags {
             if let Some(span) = &d.span {
-                assert!(
-                    span.start <= span.end && span.end <= text.len(),
-                    "{text:?}: {d:#?}"
-                );
+                assert!(span.start <= span.end && span.end <= text.len(), "{text:?}: {d:#?}");
                 assert!(text.is_char_boundary(span.start) && text.is_char_boundary(span.end));
             }
         }
@@ -391,39 +321,21 @@ fn garbage_input_does_not_panic() {
     assert!(d.message.contains("duplicate key"), "{}", d.message);
     // Our own depth limit, when toml's is not hit first.
     let diags = errors(&inputs[4], &dir);
-    assert!(
-        diags
-            .iter()
-            .any(|d| d.code == E_VALUE && d.message.contains("nest deeper")),
-        "{diags:#?}"
-    );
+    assert!(diags.iter().any(|d| d.code == E_VALUE && d.message.contains("nest deeper")), "{diags:#?}");
 }
 
 #[test]
 fn non_finite_and_huge_numbers() {
     let text = minimal("[uniforms]\na = nan\nb = -inf\nc = 1e400\nd = 99999999999999999999\ne = [1.0, +nan]\nf = 0x7fffffffffffffff\n");
     let diags = errors(&text, &minimal_dir());
-    let spans: Vec<(&str, &str)> = diags
-        .iter()
-        .map(|d| (d.code, span_text(&text, d)))
-        .collect();
-    assert_eq!(
-        spans,
-        [
-            (E_VALUE, "nan"),
-            (E_VALUE, "-inf"),
-            (E_VALUE, "1e400"),
-            (E_VALUE, "99999999999999999999"),
-            (E_VALUE, "+nan")
-        ]
-    );
+    let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
+    assert_eq!(spans, [(E_VALUE, "nan"), (E_VALUE, "-inf"), (E_VALUE, "1e400"), (E_VALUE, "99999999999999999999"), (E_VALUE, "+nan")]);
 }
 
 #[test]
 fn value_and_semantic_rules() {
     let dir = minimal_dir();
-    let text =
-        minimal("[uniforms]\na = { range = [0, 1] }\nb = { value = 1.0, semantic = \"time\" }\n");
+    let text = minimal("[uniforms]\na = { range = [0, 1] }\nb = { value = 1.0, semantic = \"time\" }\n");
     let diags = errors(&text, &dir);
     let missing = one(&diags, E_MISSING);
     assert_eq!(span_text(&text, missing), "{ range = [0, 1] }");
@@ -431,7 +343,9 @@ fn value_and_semantic_rules() {
     assert_eq!(span_text(&text, conflict), "semantic");
     assert_eq!(&text[conflict.labels[0].span.clone()], "value");
 
-    let text = minimal("[uniforms]\na = { semantic = \"tme\" }\nb = { semantic = 3 }\nc = { semantic = \"model_view_projection\", range = [0, 1] }\n");
+    let text = minimal(
+        "[uniforms]\na = { semantic = \"tme\" }\nb = { semantic = 3 }\nc = { semantic = \"model_view_projection\", range = [0, 1] }\n",
+    );
     let diags = errors(&text, &dir);
     assert_eq!(diags.len(), 2, "{diags:#?}");
     assert_eq!(diags[0].code, E_VALUE);
@@ -442,9 +356,7 @@ fn value_and_semantic_rules() {
     assert_eq!(diags[1].code, E_TYPE);
     assert_eq!(span_text(&text, &diags[1]), "3");
 
-    let text = minimal(
-        "[uniforms]\nc = { semantic = \"model_view_projection\" }\nd = { semantic = \"mvp\" }\n",
-    );
+    let text = minimal("[uniforms]\nc = { semantic = \"model_view_projection\" }\nd = { semantic = \"mvp\" }\n");
     let e = run(&text, &dir).unwrap();
     assert_eq!(e.uniforms[0].semantic, Some(Semantic::ModelViewProjection));
     assert_eq!(e.uniforms[1].semantic, Some(Semantic::ModelViewProjection));
@@ -471,39 +383,22 @@ fn many_errors_in_one_pass() {
     );
     assert_eq!(diags[5].help.as_deref(), Some("did you mean `value`?"));
     assert_eq!(diags[6].help.as_deref(), Some("did you mean `noise`?"));
-    assert!(
-        diags[7].message.contains("between 1 and 8192"),
-        "{}",
-        diags[7].message
-    );
+    assert!(diags[7].message.contains("between 1 and 8192"), "{}", diags[7].message);
     assert_eq!(diags[8].help.as_deref(), Some("did you mean `uv_sphere`?"));
 }
 
 #[test]
 fn uniform_lists() {
-    let text = minimal(
-        "[uniforms]\nm = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]\nflat = [1, 0, 0, 0, 1, 0, 0, 0, 1]\nb = [true, false]\ni = 3\n",
-    );
+    let text = minimal("[uniforms]\nm = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]\nflat = [1, 0, 0, 0, 1, 0, 0, 0, 1]\nb = [true, false]\ni = 3\n");
     let e = run(&text, &minimal_dir()).unwrap();
     let m = e.uniform("m").unwrap().value.as_ref().unwrap();
     assert_eq!(m.dims(), [3, 3]);
     assert_eq!(m.scalars().len(), 9);
-    assert_eq!(
-        e.uniform("flat").unwrap().value.as_ref().unwrap().dims(),
-        [9]
-    );
-    assert_eq!(
-        e.uniform("b").unwrap().value,
-        Some(UniformValue::List(vec![
-            UniformValue::Bool(true),
-            UniformValue::Bool(false)
-        ]))
-    );
+    assert_eq!(e.uniform("flat").unwrap().value.as_ref().unwrap().dims(), [9]);
+    assert_eq!(e.uniform("b").unwrap().value, Some(UniformValue::List(vec![UniformValue::Bool(true), UniformValue::Bool(false)])));
     assert_eq!(e.uniform("i").unwrap().value, Some(UniformValue::Int(3)));
 
-    let text = minimal(
-        "[uniforms]\nr = [[1, 2], [1, 2, 3]]\nmix = [1, [2]]\nbn = [true, 1]\nempty = []\n",
-    );
+    let text = minimal("[uniforms]\nr = [[1, 2], [1, 2, 3]]\nmix = [1, [2]]\nbn = [true, 1]\nempty = []\n");
     let diags = errors(&text, &minimal_dir());
     let got: Vec<&str> = diags.iter().map(|d| span_text(&text, d)).collect();
     assert_eq!(got, ["[1, 2, 3]", "[2]", "1", "[]"]);
@@ -530,29 +425,14 @@ fn texture_rules() {
         "[textures]\na = \"img.png\"\nb = { generate = \"checker\", kind = \"cube\", cells = 4, colors = [[1, 0, 0], [0, 0, 1, 0.5]], filter = \"nearest\", wrap = \"clamp\" }\nc = { generate = \"solid\", colors = [0.5, 0.5, 0.5] }\n",
     );
     let e = run(&text, &dir).unwrap();
-    assert_eq!(
-        e.textures[0].source,
-        TextureSource::File(dir.join("img.png"))
-    );
+    assert_eq!(e.textures[0].source, TextureSource::File(dir.join("img.png")));
     let b = &e.textures[1];
     assert_eq!(b.kind, TextureKind::Cube);
     assert_eq!((b.filter, b.wrap), (Filter::Nearest, Wrap::Clamp));
-    let TextureSource::Generated {
-        generator,
-        size,
-        params,
-    } = &b.source
-    else {
-        panic!()
-    };
-    assert_eq!(
-        (*generator, *size, params.cells),
-        (Generator::Checker, DEFAULT_TEXTURE_SIZE, 4)
-    );
+    let TextureSource::Generated { generator, size, params } = &b.source else { panic!() };
+    assert_eq!((*generator, *size, params.cells), (Generator::Checker, DEFAULT_TEXTURE_SIZE, 4));
     assert_eq!(params.colors, [[1.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.5]]);
-    let TextureSource::Generated { params, .. } = &e.textures[2].source else {
-        panic!()
-    };
+    let TextureSource::Generated { params, .. } = &e.textures[2].source else { panic!() };
     assert_eq!(params.colors, [[0.5, 0.5, 0.5, 1.0], [0.0, 0.0, 0.0, 1.0]]);
 
     // Unused generator parameter: a warning, still Ok.
@@ -566,10 +446,7 @@ fn texture_rules() {
         "[textures]\nnone = { filter = \"linear\" }\ntwo = { file = \"img.png\", generate = \"noise\" }\nsz = { file = \"img.png\", size = 64 }\nk = { file = \"img.png\", kind = \"cube\" }\nfive = { cube = [\"img.png\", \"img.png\"] }\ngone = { file = \"gone.png\" }\ncol = { generate = \"solid\", colors = [[1, 2]] }\nnum = 4\n",
     );
     let diags = errors(&text, &dir);
-    let got: Vec<(&str, &str)> = diags
-        .iter()
-        .map(|d| (d.code, span_text(&text, d)))
-        .collect();
+    let got: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
     assert_eq!(
         got,
         [
@@ -591,10 +468,7 @@ fn texture_and_uniform_with_the_same_name() {
     let text = minimal("[uniforms]\ntex = 1\n[textures]\ntex = \"img.png\"\n");
     let diags = errors(&text, &minimal_dir());
     let d = one(&diags, E_CONFLICT);
-    assert_eq!(
-        d.span.clone().unwrap().start,
-        text.rfind("\ntex =").unwrap() + 1
-    );
+    assert_eq!(d.span.clone().unwrap().start, text.rfind("\ntex =").unwrap() + 1);
     assert_eq!(d.labels[0].span.start, text.find("\ntex =").unwrap() + 1);
 }
 
@@ -602,68 +476,29 @@ fn texture_and_uniform_with_the_same_name() {
 fn mesh_rules() {
     let dir = minimal_dir();
     let e = run(&minimal("mesh = \"cube\"\n"), &dir).unwrap();
-    assert_eq!(
-        e.mesh.unwrap().source,
-        MeshSource::Builtin(BuiltinMesh::Cube)
-    );
+    assert_eq!(e.mesh.unwrap().source, MeshSource::Builtin(BuiltinMesh::Cube));
     let e = run(&minimal("[mesh]\nbuiltin = \"uv_sphere\"\n"), &dir).unwrap();
-    assert_eq!(
-        e.mesh.unwrap().source,
-        MeshSource::Builtin(BuiltinMesh::UvSphere {
-            segments: 32,
-            rings: 16
-        })
-    );
-    let e = run(
-        &minimal("[mesh]\nbuiltin = \"plane_grid\"\ndivisions = 4\n"),
-        &dir,
-    )
-    .unwrap();
-    assert_eq!(
-        e.mesh.unwrap().source,
-        MeshSource::Builtin(BuiltinMesh::PlaneGrid { divisions: 4 })
-    );
+    assert_eq!(e.mesh.unwrap().source, MeshSource::Builtin(BuiltinMesh::UvSphere { segments: 32, rings: 16 }));
+    let e = run(&minimal("[mesh]\nbuiltin = \"plane_grid\"\ndivisions = 4\n"), &dir).unwrap();
+    assert_eq!(e.mesh.unwrap().source, MeshSource::Builtin(BuiltinMesh::PlaneGrid { divisions: 4 }));
     let e = run(&minimal("[mesh]\nobj = \"teapot.obj\"\n"), &dir).unwrap();
-    assert_eq!(
-        e.mesh.unwrap().source,
-        MeshSource::Obj(dir.join("teapot.obj"))
-    );
+    assert_eq!(e.mesh.unwrap().source, MeshSource::Obj(dir.join("teapot.obj")));
     assert_eq!(run(&minimal(""), &dir).unwrap().mesh, None);
 
     let cases: &[(&str, &str, &str)] = &[
-        (
-            "[mesh]\nbuiltin = \"cube\"\nsegments = 8\n",
-            E_CONFLICT,
-            "segments",
-        ),
-        (
-            "[mesh]\nbuiltin = \"cube\"\nobj = \"teapot.obj\"\n",
-            E_CONFLICT,
-            "obj",
-        ),
-        (
-            "[mesh]\nobj = \"nope.obj\"\n",
-            E_ASSET_NOT_FOUND,
-            "\"nope.obj\"",
-        ),
+        ("[mesh]\nbuiltin = \"cube\"\nsegments = 8\n", E_CONFLICT, "segments"),
+        ("[mesh]\nbuiltin = \"cube\"\nobj = \"teapot.obj\"\n", E_CONFLICT, "obj"),
+        ("[mesh]\nobj = \"nope.obj\"\n", E_ASSET_NOT_FOUND, "\"nope.obj\""),
         ("[mesh.attributes]\np = \"position\"\n", E_MISSING, "mesh"),
         ("[mesh]\nbuiltin = \"uv_sphere\"\nrings = 1\n", E_VALUE, "1"),
-        (
-            "[mesh]\nbuiltin = \"quad\"\n[mesh.attributes]\np = \"positoin\"\n",
-            E_VALUE,
-            "\"positoin\"",
-        ),
+        ("[mesh]\nbuiltin = \"quad\"\n[mesh.attributes]\np = \"positoin\"\n", E_VALUE, "\"positoin\""),
         ("mesh = 3\n", E_TYPE, "3"),
     ];
     for (extra, code, span) in cases {
         let text = minimal(extra);
         let diags = errors(&text, &dir);
         assert_eq!(diags.len(), 1, "{extra}: {diags:#?}");
-        assert_eq!(
-            (diags[0].code, span_text(&text, &diags[0])),
-            (*code, *span),
-            "{extra}"
-        );
+        assert_eq!((diags[0].code, span_text(&text, &diags[0])), (*code, *span), "{extra}");
     }
 }
 
@@ -673,10 +508,7 @@ fn stage_rules() {
     let text = "[stages]\nfragment = \"a.frag\"\ngeometry = \"b.geom\"\nvertex = \"a.vert\"\n";
     let e = run(text, &dir).unwrap();
     let kinds: Vec<StageKind> = e.stages.iter().map(|s| s.kind).collect();
-    assert_eq!(
-        kinds,
-        [StageKind::Vertex, StageKind::Geometry, StageKind::Fragment]
-    );
+    assert_eq!(kinds, [StageKind::Vertex, StageKind::Geometry, StageKind::Fragment]);
 
     let text = "[stages]\nvertex = \"a.frag\"\nfragment = \"a.frag\"\n";
     let e = run(text, &dir).unwrap();
@@ -694,10 +526,7 @@ fn stage_rules() {
 
     let abs = dir.join("a.vert");
     let text = format!("[stages]\nvertex = '{}'\n", abs.display());
-    assert_eq!(
-        run(&text, Path::new("/nonexistent")).unwrap().stages[0].path,
-        abs
-    );
+    assert_eq!(run(&text, Path::new("/nonexistent")).unwrap().stages[0].path, abs);
 }
 
 #[test]
@@ -716,11 +545,7 @@ fn load_reads_registers_and_reports_io_errors() {
     assert_eq!(diags.len(), 1);
     assert!(is_io_error(&diags[0]));
     assert_eq!(diags[0].code, E_IO);
-    assert!(
-        diags[0].message.contains("missing.toml"),
-        "{}",
-        diags[0].message
-    );
+    assert!(diags[0].message.contains("missing.toml"), "{}", diags[0].message);
 
     let bin = dir.join("binary.toml");
     std::fs::write(&bin, b"name = \"a\"\n\xff\xfe\x00garbage").unwrap();
@@ -737,39 +562,21 @@ fn semantic_names_and_types() {
         assert_eq!(Semantic::from_name(s.name()), Some(s));
         assert!(!s.glsl_types().is_empty());
     }
-    assert_eq!(
-        Semantic::from_name("model_view_projection"),
-        Some(Semantic::ModelViewProjection)
-    );
+    assert_eq!(Semantic::from_name("model_view_projection"), Some(Semantic::ModelViewProjection));
     assert_eq!(Semantic::ModelViewProjection.name(), "mvp");
     assert_eq!(Semantic::Time.glsl_types(), ["float"]);
     assert_eq!(Semantic::Resolution.glsl_types(), ["vec2", "vec3"]);
     assert_eq!(Semantic::NormalMatrix.glsl_types(), ["mat3", "mat4"]);
     assert_eq!(Semantic::Frame.glsl_types(), ["int", "uint", "float"]);
-    assert_eq!(
-        serde_json::to_string(&Semantic::ModelViewProjection).unwrap(),
-        "\"mvp\""
-    );
-    assert_eq!(
-        serde_json::to_string(&Semantic::DeltaTime).unwrap(),
-        "\"delta_time\""
-    );
+    assert_eq!(serde_json::to_string(&Semantic::ModelViewProjection).unwrap(), "\"mvp\"");
+    assert_eq!(serde_json::to_string(&Semantic::DeltaTime).unwrap(), "\"delta_time\"");
 }
 
 #[test]
 fn suggestions() {
-    assert_eq!(
-        did_you_mean("fragmnet", &["vertex", "fragment"]),
-        Some("fragment")
-    );
-    assert_eq!(
-        did_you_mean("Vertex", &["vertex", "fragment"]),
-        Some("vertex")
-    );
-    assert_eq!(
-        did_you_mean("tess-control", &["tess_control", "tess_eval"]),
-        Some("tess_control")
-    );
+    assert_eq!(did_you_mean("fragmnet", &["vertex", "fragment"]), Some("fragment"));
+    assert_eq!(did_you_mean("Vertex", &["vertex", "fragment"]), Some("vertex"));
+    assert_eq!(did_you_mean("tess-control", &["tess_control", "tess_eval"]), Some("tess_control"));
     assert_eq!(did_you_mean("xyz", &["vertex", "fragment"]), None);
     assert_eq!(did_you_mean("", &["vertex"]), None);
 }
@@ -785,9 +592,7 @@ fn mutated_manifests_never_panic() {
         seed ^= seed << 17;
         seed
     };
-    let alphabet: Vec<char> = "[]{}=,.\"'\n\r #-+_0123456789abcdefnaixyz\u{0}é\\"
-        .chars()
-        .collect();
+    let alphabet: Vec<char> = "[]{}=,.\"'\n\r #-+_0123456789abcdefnaixyz\u{0}é\\".chars().collect();
     for _ in 0..3000 {
         let mut chars: Vec<char> = SUN.chars().collect();
         for _ in 0..(rnd() % 6 + 1) {
@@ -808,9 +613,7 @@ fn mutated_manifests_never_panic() {
                 for d in &diags {
                     if let Some(span) = &d.span {
                         assert!(
-                            span.end <= text.len()
-                                && text.is_char_boundary(span.start)
-                                && text.is_char_boundary(span.end),
+                            span.end <= text.len() && text.is_char_boundary(span.start) && text.is_char_boundary(span.end),
                             "{text:?} {d:?}"
                         );
                     }
@@ -986,7 +789,13 @@ fn passes_targets_and_output_parse() {
     let formats: Vec<(&str, TargetFormat)> = e.targets.iter().map(|t| (t.name.as_str(), t.format)).collect();
     assert_eq!(
         formats,
-        [("scene", TargetFormat::Rgba16f), ("half", TargetFormat::R32f), ("fixed", TargetFormat::Rgba8), ("depth", TargetFormat::Depth32f), ("final", TargetFormat::Rgba8)]
+        [
+            ("scene", TargetFormat::Rgba16f),
+            ("half", TargetFormat::R32f),
+            ("fixed", TargetFormat::Rgba8),
+            ("depth", TargetFormat::Depth32f),
+            ("final", TargetFormat::Rgba8)
+        ]
     );
     assert_eq!(e.target("half").unwrap().size.resolve((512, 300)), (256, 150));
     assert_eq!(e.target("fixed").unwrap().size.resolve((512, 300)), (64, 32));
@@ -996,8 +805,7 @@ fn passes_targets_and_output_parse() {
     assert_eq!(post.draw, PassDraw::Fullscreen);
     assert_eq!(post.clear, PassClear::Keep);
     assert_eq!(post.blend, Some(Blend::Additive));
-    let samples: Vec<(&str, &str, Filter)> =
-        post.samples.iter().map(|s| (s.sampler.as_str(), s.target.name.as_str(), s.filter)).collect();
+    let samples: Vec<(&str, &str, Filter)> = post.samples.iter().map(|s| (s.sampler.as_str(), s.target.name.as_str(), s.filter)).collect();
     assert_eq!(samples, [("sceneTex", "scene", Filter::Linear), ("lut", "fixed", Filter::Nearest)]);
     // The pass view: the pass's stages, its uniform value over the shared one, the
     // fullscreen triangle, no depth test without a depth target.

@@ -114,11 +114,8 @@ pub fn packed_layout(inputs: impl Iterator<Item = (u32, wgpu::VertexFormat)>) ->
 /// instance, in the formats the shader declares. Returns `None` when the manifest feeds no
 /// input per instance.
 pub fn instance_buffer(inputs: &[InterfaceVar], decl: &crate::manifest::InstancesDecl) -> Option<Interleaved> {
-    let fed: Vec<(&InterfaceVar, &crate::manifest::InstanceAttribute)> = decl
-        .attributes
-        .iter()
-        .filter_map(|a| inputs.iter().find(|i| i.name == a.input).map(|i| (i, a)))
-        .collect();
+    let fed: Vec<(&InterfaceVar, &crate::manifest::InstanceAttribute)> =
+        decl.attributes.iter().filter_map(|a| inputs.iter().find(|i| i.name == a.input).map(|i| (i, a))).collect();
     if fed.is_empty() {
         return None;
     }
@@ -139,9 +136,7 @@ fn instance_value(source: &crate::manifest::InstanceSource, i: u32, components: 
     let mut v = match source {
         InstanceSource::Values(values) => values.get(i as usize).copied().unwrap_or([0.0; 4]),
         InstanceSource::Sequence { start, step } => std::array::from_fn(|c| start[c] + step[c] * i as f32),
-        InstanceSource::Random { lo, hi, seed } => {
-            std::array::from_fn(|c| lo[c] + (hi[c] - lo[c]) * unit_random(*seed, i, c as u32))
-        }
+        InstanceSource::Random { lo, hi, seed } => std::array::from_fn(|c| lo[c] + (hi[c] - lo[c]) * unit_random(*seed, i, c as u32)),
     };
     if components == 3 {
         v[3] = 1.0;

@@ -12,18 +12,18 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
+use crate::back::Translation;
 use crate::back::{Target as BackTarget, TranslateOptions};
 use crate::check::{self, Outcome};
 use crate::diag::{Diagnostic, FileId};
 use crate::front::program::FrontOptions;
+use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
 use crate::render::camera;
+use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::encode;
-use crate::back::Translation;
-use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels, Target};
-use crate::render::degenerate::Degenerate;
 use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
 use crate::render::scene::{ColorMode, Scene, SceneInput};
 use crate::render::semantics::FrameState;
@@ -530,11 +530,9 @@ fn draw_frames(
             r.non_finite = Some((nf.nan, nf.pos_inf, nf.neg_inf));
         }
         if nf.nan + nf.pos_inf + nf.neg_inf > 0 {
-            let mut d = Diagnostic::error(
-                E_NON_FINITE,
-                format!("frame {index}: {} NaN, {} +Inf, {} -Inf pixels", nf.nan, nf.pos_inf, nf.neg_inf),
-            )
-            .in_file(file);
+            let mut d =
+                Diagnostic::error(E_NON_FINITE, format!("frame {index}: {} NaN, {} +Inf, {} -Inf pixels", nf.nan, nf.pos_inf, nf.neg_inf))
+                    .in_file(file);
             if let Some(m) = mask {
                 d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));
             }

@@ -17,10 +17,7 @@ pub struct Tolerance {
 
 impl Tolerance {
     /// Every pixel must match exactly.
-    pub const EXACT: Tolerance = Tolerance {
-        channel: 0,
-        max_differing: 0.0,
-    };
+    pub const EXACT: Tolerance = Tolerance { channel: 0, max_differing: 0.0 };
 }
 
 /// The outcome of [`compare`].
@@ -83,21 +80,10 @@ pub fn compare(reference: &[u8], actual: &[u8], width: u32, height: u32, tol: To
         difference.extend_from_slice(&difference_colour(largest, tol.channel));
     }
     let channels = total * 4;
-    let mean_abs_diff = if channels == 0 {
-        0.0
-    } else {
-        diff_sum as f64 / channels as f64
-    };
+    let mean_abs_diff = if channels == 0 { 0.0 } else { diff_sum as f64 / channels as f64 };
     let sized = size_mismatch(reference, actual, width, height).is_none();
     let passed = sized && differing as f64 <= tol.max_differing * total as f64;
-    Comparison {
-        differing,
-        total,
-        max_channel_diff,
-        mean_abs_diff,
-        passed,
-        difference,
-    }
+    Comparison { differing, total, max_channel_diff, mean_abs_diff, passed, difference }
 }
 
 /// [`compare`] for images of possibly different sizes: `Err` describing the mismatch when the sizes
@@ -111,9 +97,7 @@ pub fn compare_sized(
 ) -> Result<Comparison, String> {
     let ((rw, rh), (aw, ah)) = (reference_size, actual_size);
     if reference_size != actual_size {
-        return Err(format!(
-            "image size differs: reference is {rw}×{rh}, actual is {aw}×{ah}"
-        ));
+        return Err(format!("image size differs: reference is {rw}×{rh}, actual is {aw}×{ah}"));
     }
     if let Some(problem) = size_mismatch(reference, actual, rw, rh) {
         return Err(problem);
@@ -126,9 +110,7 @@ pub fn size_mismatch(reference: &[u8], actual: &[u8], width: u32, height: u32) -
     let expected = (width as u64 * height as u64).checked_mul(4);
     let describe = |name: &str, len: usize| match expected {
         Some(expected) if expected == len as u64 => None,
-        Some(expected) => Some(format!(
-            "{name} has {len} bytes, a {width}×{height} RGBA8 image has {expected}"
-        )),
+        Some(expected) => Some(format!("{name} has {len} bytes, a {width}×{height} RGBA8 image has {expected}")),
         None => Some(format!("{width}×{height} is too large")),
     };
     describe("reference", reference.len()).or_else(|| describe("actual", actual.len()))
@@ -180,10 +162,7 @@ mod tests {
         [image[i], image[i + 1], image[i + 2], image[i + 3]]
     }
 
-    const LOOSE: Tolerance = Tolerance {
-        channel: 2,
-        max_differing: 0.0,
-    };
+    const LOOSE: Tolerance = Tolerance { channel: 2, max_differing: 0.0 };
 
     #[test]
     fn identical_images_pass() {
@@ -227,10 +206,7 @@ mod tests {
         let marked = result.difference.chunks_exact(4).filter(|p| *p != EQUAL_RGBA).count();
         assert_eq!(marked, 1);
         // One pixel of sixteen is 6.25 %: allowed by a 10 % budget, not by 5 %.
-        let budget = |max_differing| Tolerance {
-            channel: 2,
-            max_differing,
-        };
+        let budget = |max_differing| Tolerance { channel: 2, max_differing };
         assert!(compare(&reference, &actual, 4, 4, budget(0.1)).passed);
         assert!(!compare(&reference, &actual, 4, 4, budget(0.05)).passed);
         assert!(!compare(&reference, &actual, 4, 4, budget(f64::NAN)).passed);
@@ -238,10 +214,7 @@ mod tests {
 
     #[test]
     fn within_tolerance_red_scales_with_difference() {
-        let tol = Tolerance {
-            channel: 10,
-            max_differing: 0.0,
-        };
+        let tol = Tolerance { channel: 10, max_differing: 0.0 };
         assert_eq!(difference_colour(1, 10), [64, 0, 0, 255]);
         assert_eq!(difference_colour(10, 10), [255, 0, 0, 255]);
         assert!(difference_colour(5, 10)[0] > 64 && difference_colour(5, 10)[0] < 255);
@@ -255,16 +228,7 @@ mod tests {
     fn size_mismatch_is_detected_without_panicking() {
         let reference = image(4, 4);
         let short = image(4, 3);
-        let result = compare(
-            &reference,
-            &short,
-            4,
-            4,
-            Tolerance {
-                channel: 255,
-                max_differing: 1.0,
-            },
-        );
+        let result = compare(&reference, &short, 4, 4, Tolerance { channel: 255, max_differing: 1.0 });
         assert!(!result.passed);
         assert_eq!(result.differing, 0, "a 255 channel tolerance accepts anything present");
         assert_eq!(result.difference.len(), 64);
@@ -280,11 +244,7 @@ mod tests {
         let err = compare_sized(&reference, (4, 4), &image(2, 8), (2, 8), LOOSE).expect_err("sizes differ");
         assert!(err.contains("4×4") && err.contains("2×8"), "{err}");
         assert!(compare_sized(&reference, (4, 4), &short, (4, 4), LOOSE).is_err());
-        assert!(
-            compare_sized(&reference, (4, 4), &reference, (4, 4), LOOSE)
-                .expect("same size")
-                .passed
-        );
+        assert!(compare_sized(&reference, (4, 4), &reference, (4, 4), LOOSE).expect("same size").passed);
         assert!(compare(&[], &[], 0, 0, Tolerance::EXACT).passed);
     }
 

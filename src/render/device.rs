@@ -54,17 +54,14 @@ impl Gpu {
             (kind_rank(i.device_type), i.name.clone())
         });
         let wanted = std::env::var("EFFECTC_ADAPTER").ok();
-        let adapter = adapters
-            .into_iter()
-            .find(|a| wanted.as_deref().is_none_or(|w| a.get_info().name.contains(w)))
-            .ok_or_else(|| {
-                NoGpu(match wanted {
-                    Some(w) => format!("no Vulkan adapter's name contains `{w}` (EFFECTC_ADAPTER)"),
-                    None => "no Vulkan adapter found; on Debian/Ubuntu install Mesa's CPU driver: \
+        let adapter = adapters.into_iter().find(|a| wanted.as_deref().is_none_or(|w| a.get_info().name.contains(w))).ok_or_else(|| {
+            NoGpu(match wanted {
+                Some(w) => format!("no Vulkan adapter's name contains `{w}` (EFFECTC_ADAPTER)"),
+                None => "no Vulkan adapter found; on Debian/Ubuntu install Mesa's CPU driver: \
                              `apt-get install mesa-vulkan-drivers libvulkan1` (or run ./setup.sh)"
-                        .to_string(),
-                })
-            })?;
+                    .to_string(),
+            })
+        })?;
         let info = adapter.get_info();
         // Timestamps time frames on the GPU when the adapter has them (lavapipe does).
         // Blending into Rgba32Float (`--float`) where the adapter can.
@@ -120,7 +117,10 @@ impl Gpu {
 
     /// One line naming the adapter, for `--verbose`.
     pub fn describe(&self) -> String {
-        format!("{} ({:?}, {:?}, driver {} {})", self.info.name, self.info.device_type, self.info.backend, self.info.driver, self.info.driver_info)
+        format!(
+            "{} ({:?}, {:?}, driver {} {})",
+            self.info.name, self.info.device_type, self.info.backend, self.info.driver, self.info.driver_info
+        )
     }
 
     /// Builds a render pipeline from translated WGSL with one interleaved vertex buffer

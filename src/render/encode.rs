@@ -40,10 +40,7 @@ fn check_frame(rgba8: &[u8], width: u32, height: u32) -> Result<(), String> {
     }
     match rgba8_len(width, height) {
         Some(len) if len == rgba8.len() => Ok(()),
-        Some(len) => Err(format!(
-            "{width}×{height} RGBA8 image needs {len} bytes, got {}",
-            rgba8.len()
-        )),
+        Some(len) => Err(format!("{width}×{height} RGBA8 image needs {len} bytes, got {}", rgba8.len())),
         None => Err(format!("image of {width}×{height} is too large")),
     }
 }
@@ -93,22 +90,12 @@ impl SheetLayout {
             return None;
         }
         let count = u32::try_from(count).ok()?;
-        let columns = if columns == 0 {
-            square_columns(count)
-        } else {
-            columns.min(count)
-        };
+        let columns = if columns == 0 { square_columns(count) } else { columns.min(count) };
         let rows = count.div_ceil(columns);
         let width = sheet_extent(columns, tile_width)?;
         let height = sheet_extent(rows, tile_height)?;
         rgba8_len(width, height)?;
-        Some(SheetLayout {
-            columns,
-            tile_width,
-            tile_height,
-            width,
-            height,
-        })
+        Some(SheetLayout { columns, tile_width, tile_height, width, height })
     }
 
     /// Copies frame `index` into its tile.
@@ -155,9 +142,7 @@ pub fn gif_bytes(frames: &[&[u8]], width: u32, height: u32, delay_ms: u32) -> Re
         return Err("an animated GIF needs at least one frame".to_string());
     }
     if width > GIF_MAX_SIDE || height > GIF_MAX_SIDE {
-        return Err(format!(
-            "GIF frames are at most {GIF_MAX_SIDE} pixels on a side, not {width}×{height}"
-        ));
+        return Err(format!("GIF frames are at most {GIF_MAX_SIDE} pixels on a side, not {width}×{height}"));
     }
     for (index, frame) in frames.iter().enumerate() {
         check_frame(frame, width, height).map_err(|e| format!("GIF frame {index}: {e}"))?;
@@ -167,12 +152,10 @@ pub fn gif_bytes(frames: &[&[u8]], width: u32, height: u32, delay_ms: u32) -> Re
     {
         // The encoder writes the GIF trailer when dropped, at the end of this block.
         let mut encoder = GifEncoder::new_with_speed(&mut out, GIF_QUANTIZER_SPEED);
-        encoder
-            .set_repeat(Repeat::Infinite)
-            .map_err(|e| format!("GIF encoding failed: {e}"))?;
+        encoder.set_repeat(Repeat::Infinite).map_err(|e| format!("GIF encoding failed: {e}"))?;
         for (index, frame) in frames.iter().enumerate() {
-            let buffer = RgbaImage::from_raw(width, height, opaque(frame))
-                .ok_or_else(|| format!("GIF frame {index} has the wrong size"))?;
+            let buffer =
+                RgbaImage::from_raw(width, height, opaque(frame)).ok_or_else(|| format!("GIF frame {index} has the wrong size"))?;
             encoder
                 .encode_frame(Frame::from_parts(buffer, 0, 0, delay))
                 .map_err(|e| format!("GIF encoding of frame {index} failed: {e}"))?;
@@ -375,10 +358,7 @@ mod tests {
         assert_eq!(bytes, gif_bytes(&refs, 4, 4, 100).expect("encode"), "deterministic");
         assert!(bytes.windows(11).any(|w| w == b"NETSCAPE2.0"), "has a loop extension");
 
-        let decoded = GifDecoder::new(Cursor::new(&bytes))
-            .expect("decoder")
-            .into_frames()
-            .collect_frames();
+        let decoded = GifDecoder::new(Cursor::new(&bytes)).expect("decoder").into_frames().collect_frames();
         let decoded = decoded.expect("frames");
         assert_eq!(decoded.len(), 3);
         for (frame, colour) in decoded.iter().zip(colours) {
@@ -419,14 +399,7 @@ mod tests {
             2.0, -3.0, 0.0, 1.0,   // out of range but finite
         ];
         let (counts, mask) = non_finite(&pixels, 3, 2);
-        assert_eq!(
-            counts,
-            NonFinite {
-                nan: 2,
-                pos_inf: 2,
-                neg_inf: 1
-            }
-        );
+        assert_eq!(counts, NonFinite { nan: 2, pos_inf: 2, neg_inf: 1 });
         let mask = mask.expect("mask");
         assert_eq!(mask.len(), 3 * 2 * 4);
         let white_grey = (0.4f32 * 255.0).round() as u8;

@@ -140,9 +140,7 @@ impl Target {
                 Some(f) => Some(texture(*f, attach, "extra output").create_view(&Default::default())),
             });
         }
-        let depth = scene
-            .depth
-            .then(|| texture(wgpu::TextureFormat::Depth32Float, attach, "depth").create_view(&Default::default()));
+        let depth = scene.depth.then(|| texture(wgpu::TextureFormat::Depth32Float, attach, "depth").create_view(&Default::default()));
         let padded_row = padded_row(width, mode);
         let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
@@ -176,19 +174,13 @@ fn padded_row(width: u32, mode: ColorMode) -> u32 {
 /// Bytes per readback row of `format` (depth formats: their depth aspect): `width` texels
 /// rounded up to `COPY_BYTES_PER_ROW_ALIGNMENT`.
 pub fn padded_row_of(width: u32, format: wgpu::TextureFormat) -> u32 {
-    let bpp = format
-        .block_copy_size(None)
-        .or(format.block_copy_size(Some(wgpu::TextureAspect::DepthOnly)))
-        .unwrap_or(4);
+    let bpp = format.block_copy_size(None).or(format.block_copy_size(Some(wgpu::TextureAspect::DepthOnly))).unwrap_or(4);
     (width * bpp).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT
 }
 
 /// Colour attachments for `views` (None: not attached), cleared to `clear` or, without
 /// one, loaded with what earlier passes drew; always stored.
-pub fn color_attachments(
-    views: &[Option<wgpu::TextureView>],
-    clear: Option<[f32; 4]>,
-) -> Vec<Option<wgpu::RenderPassColorAttachment<'_>>> {
+pub fn color_attachments(views: &[Option<wgpu::TextureView>], clear: Option<[f32; 4]>) -> Vec<Option<wgpu::RenderPassColorAttachment<'_>>> {
     let load = match clear {
         Some(c) => wgpu::LoadOp::Clear(wgpu::Color { r: c[0].into(), g: c[1].into(), b: c[2].into(), a: c[3].into() }),
         None => wgpu::LoadOp::Load,
@@ -245,11 +237,7 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState,
         },
         wgpu::TexelCopyBufferInfo {
             buffer: &target.readback,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(target.padded_row),
-                rows_per_image: Some(target.height),
-            },
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(target.padded_row), rows_per_image: Some(target.height) },
         },
         wgpu::Extent3d { width: target.width, height: target.height, depth_or_array_layers: 1 },
     );
@@ -359,8 +347,6 @@ fn unpad(bytes: &[u8], target: &Target) -> Pixels {
     }
     match target.mode {
         ColorMode::Unorm8 => Pixels::Rgba8(out),
-        ColorMode::Float32 => {
-            Pixels::Rgba32F(out.chunks_exact(4).map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
-        }
+        ColorMode::Float32 => Pixels::Rgba32F(out.chunks_exact(4).map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()),
     }
 }

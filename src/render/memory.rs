@@ -86,12 +86,22 @@ pub fn render_in_memory(
 
 impl<'c> InMemory<'c> {
     /// Translates and builds the program with `overrides`. Problems go to `outcome`.
-    pub fn new(gpu: &Gpu, c: &'c check::Checked, outcome: &mut Outcome, overrides: &[(String, UniformValue)], m: MemoryRequest) -> Option<Self> {
+    pub fn new(
+        gpu: &Gpu,
+        c: &'c check::Checked,
+        outcome: &mut Outcome,
+        overrides: &[(String, UniformValue)],
+        m: MemoryRequest,
+    ) -> Option<Self> {
         let request = Request {
             inputs: Vec::new(),
             stage: None,
             front: FrontOptions::default(),
-            back: TranslateOptions { probe_nonfinite: m.probe, probe_vertex: gpu.vertex_storage(), ..TranslateOptions::for_rendering(true) },
+            back: TranslateOptions {
+                probe_nonfinite: m.probe,
+                probe_vertex: gpu.vertex_storage(),
+                ..TranslateOptions::for_rendering(true)
+            },
             frames: Some(m.frames),
             step: Step::Seconds(m.step),
             start: m.start,

@@ -83,12 +83,7 @@ impl Mesh {
             "normal" => self.normals.iter().map(|&[x, y, z]| [x, y, z, 0.0]).collect(),
             "uv" => self.uvs.iter().map(|&[u, v]| [u, v, 0.0, 0.0]).collect(),
             "tangent" => self.tangents.clone(),
-            "bitangent" => self
-                .normals
-                .iter()
-                .zip(&self.tangents)
-                .map(|(&n, &t)| bitangent(n, t))
-                .collect(),
+            "bitangent" => self.normals.iter().zip(&self.tangents).map(|(&n, &t)| bitangent(n, t)).collect(),
             "color" => self.colors.clone(),
             _ => return None,
         };
@@ -108,12 +103,9 @@ impl Mesh {
         let Some(&first) = self.positions.first() else {
             return ([0.0; 3], [0.0; 3]);
         };
-        self.positions.iter().fold((first, first), |(lo, hi), p| {
-            (
-                std::array::from_fn(|i| lo[i].min(p[i])),
-                std::array::from_fn(|i| hi[i].max(p[i])),
-            )
-        })
+        self.positions
+            .iter()
+            .fold((first, first), |(lo, hi), p| (std::array::from_fn(|i| lo[i].min(p[i])), std::array::from_fn(|i| hi[i].max(p[i]))))
     }
 }
 
@@ -167,10 +159,7 @@ impl Builder {
             let v = j as f32 / divisions as f32;
             for i in 0..row {
                 let u = i as f32 / divisions as f32;
-                let offset = add(
-                    scale(u_axis, half * (2.0 * u - 1.0)),
-                    scale(v_axis, half * (2.0 * v - 1.0)),
-                );
+                let offset = add(scale(u_axis, half * (2.0 * u - 1.0)), scale(v_axis, half * (2.0 * v - 1.0)));
                 self.vertex(add(center, offset), normal, [u, v], tangent);
             }
         }
@@ -268,12 +257,7 @@ fn uv_sphere(segments: u32, rings: u32) -> Mesh {
     let pole_u = |i: u32| (i as f32 + 0.5) / segments as f32;
     let south = b.next_index();
     for i in 0..segments {
-        b.vertex(
-            [0.0, -1.0, 0.0],
-            [0.0, -1.0, 0.0],
-            [pole_u(i), 0.0],
-            sphere_tangent(pole_u(i)),
-        );
+        b.vertex([0.0, -1.0, 0.0], [0.0, -1.0, 0.0], [pole_u(i), 0.0], sphere_tangent(pole_u(i)));
     }
     let first_ring = b.next_index();
     let row = segments + 1;
@@ -287,12 +271,7 @@ fn uv_sphere(segments: u32, rings: u32) -> Mesh {
     }
     let north = b.next_index();
     for i in 0..segments {
-        b.vertex(
-            [0.0, 1.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [pole_u(i), 1.0],
-            sphere_tangent(pole_u(i)),
-        );
+        b.vertex([0.0, 1.0, 0.0], [0.0, 1.0, 0.0], [pole_u(i), 1.0], sphere_tangent(pole_u(i)));
     }
 
     for i in 0..segments {
@@ -323,11 +302,7 @@ fn parse_obj(text: &str, name: &str) -> Result<Mesh, String> {
     let scan = scan_obj(text).map_err(|(line, problem)| format!("line {line} of {name}: {problem}"))?;
     scan.check_colors(name)?;
     // tobj turns `l` lines of three or more points into faces; polylines are not surfaces.
-    let text = if scan.polylines {
-        Cow::Owned(without_polylines(text))
-    } else {
-        Cow::Borrowed(text)
-    };
+    let text = if scan.polylines { Cow::Owned(without_polylines(text)) } else { Cow::Borrowed(text) };
     let no_materials = |_: &Path| Err(tobj::LoadError::OpenFileFailed);
     let (models, _) = tobj::load_obj_buf(&mut text.as_bytes(), &tobj::GPU_LOAD_OPTIONS, no_materials)
         .map_err(|e| format!("cannot read {name} as OBJ: {e}"))?;
@@ -367,16 +342,14 @@ fn scan_obj(text: &str) -> Result<ObjScan, (usize, String)> {
         let mut words = line.split_whitespace();
         let read = |kind: usize, words: &mut std::str::SplitWhitespace, n: usize| {
             let ok = words.by_ref().take(n).filter(|w| w.parse::<f32>().is_ok()).count() == n;
-            ok.then_some(())
-                .ok_or_else(|| (number, format!("cannot read the {} in `{}`", KINDS[kind], line.trim())))
+            ok.then_some(()).ok_or_else(|| (number, format!("cannot read the {} in `{}`", KINDS[kind], line.trim())))
         };
         match words.next() {
             Some("v") => {
                 read(0, &mut words, 3)?;
                 scan.counts[0] += 1;
                 let extra: Vec<&str> = words.collect();
-                scan.position_extras(&extra, line.trim())
-                    .map_err(|problem| (number, problem))?;
+                scan.position_extras(&extra, line.trim()).map_err(|problem| (number, problem))?;
             }
             Some("vt") => {
                 read(1, &mut words, 2)?;
@@ -414,11 +387,7 @@ impl ObjScan {
             (1, None) => return Err(format!("cannot read the w in `{line}`")),
             (3, Some(_)) => self.colored += 1,
             (3, None) => return Err(format!("cannot read the vertex color in `{line}`")),
-            _ => {
-                return Err(format!(
-                    "`{line}` should be x y z, optionally followed by w or by an r g b color"
-                ))
-            }
+            _ => return Err(format!("`{line}` should be x y z, optionally followed by w or by an r g b color")),
         }
         Ok(())
     }
@@ -440,15 +409,10 @@ impl ObjScan {
             let index: i64 = part.parse().map_err(|_| unreadable())?;
             let so_far = self.counts[kind];
             if index == 0 {
-                return Err(format!(
-                    "the face corner `{corner}` uses index 0; OBJ indices start at 1"
-                ));
+                return Err(format!("the face corner `{corner}` uses index 0; OBJ indices start at 1"));
             }
             if index < 0 && index.unsigned_abs() > so_far as u64 {
-                return Err(format!(
-                    "the face corner `{corner}` refers to {} {index}, but only {so_far} come before it",
-                    KINDS[kind]
-                ));
+                return Err(format!("the face corner `{corner}` refers to {} {index}, but only {so_far} come before it", KINDS[kind]));
             }
             let index = usize::try_from(index).unwrap_or(0);
             if index > self.largest[kind].0 {
@@ -463,10 +427,7 @@ impl ObjScan {
             let count = self.counts[kind];
             if index > count {
                 let what = KINDS[kind];
-                return Err((
-                    line,
-                    format!("a face refers to {what} {index}, but there are only {count}"),
-                ));
+                return Err((line, format!("a face refers to {what} {index}, but there are only {count}")));
             }
         }
         Ok(())
@@ -500,10 +461,7 @@ fn check_finite(models: &[tobj::Model], name: &str) -> Result<(), String> {
         for (what, values, width) in arrays {
             if let Some(bad) = values.chunks(width).find(|c| c.iter().any(|x| !x.is_finite())) {
                 let shown: Vec<String> = bad.iter().map(|x| x.to_string()).collect();
-                return Err(format!(
-                    "{name} has a {what} that is not a finite number: `{}`",
-                    shown.join(" ")
-                ));
+                return Err(format!("{name} has a {what} that is not a finite number: `{}`", shown.join(" ")));
             }
         }
     }
@@ -524,10 +482,7 @@ impl ObjVertices {
     fn merge(models: &[tobj::Model], name: &str) -> Result<ObjVertices, String> {
         let total: usize = models.iter().map(|m| m.mesh.positions.len() / 3).sum();
         if u32::try_from(total).is_err() {
-            return Err(format!(
-                "{name} has {total} vertices; at most {} fit in 32-bit indices",
-                u32::MAX
-            ));
+            return Err(format!("{name} has {total} vertices; at most {} fit in 32-bit indices", u32::MAX));
         }
         let mut merged = ObjVertices::default();
         for model in models {
@@ -541,23 +496,19 @@ impl ObjVertices {
     fn append(&mut self, mesh: &tobj::Mesh) {
         let count = mesh.positions.len() / 3;
         let base = self.positions.len() as u32;
-        self.positions
-            .extend(mesh.positions.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
+        self.positions.extend(mesh.positions.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
         if mesh.normals.len() == count * 3 {
-            self.normals
-                .extend(mesh.normals.chunks_exact(3).map(|n| normalize([n[0], n[1], n[2]])));
+            self.normals.extend(mesh.normals.chunks_exact(3).map(|n| normalize([n[0], n[1], n[2]])));
         } else {
             self.normals.extend(std::iter::repeat_n(None, count));
         }
         if mesh.texcoords.len() == count * 2 {
-            self.uvs
-                .extend(mesh.texcoords.chunks_exact(2).map(|t| Some([t[0], t[1]])));
+            self.uvs.extend(mesh.texcoords.chunks_exact(2).map(|t| Some([t[0], t[1]])));
         } else {
             self.uvs.extend(std::iter::repeat_n(None, count));
         }
         if mesh.vertex_color.len() == count * 3 {
-            self.colors
-                .extend(mesh.vertex_color.chunks_exact(3).map(|c| Some([c[0], c[1], c[2], 1.0])));
+            self.colors.extend(mesh.vertex_color.chunks_exact(3).map(|c| Some([c[0], c[1], c[2], 1.0])));
         } else {
             self.colors.extend(std::iter::repeat_n(None, count));
         }
@@ -597,17 +548,9 @@ impl ObjVertices {
 
 /// The file's normals where it has usable ones, else smooth normals, else +y.
 fn resolve_normals(positions: &[[f32; 3]], normals: &[Option<[f32; 3]>], indices: &[u32]) -> Vec<[f32; 3]> {
-    let smooth = if normals.iter().any(Option::is_none) {
-        smooth_normals(positions, indices)
-    } else {
-        Vec::new()
-    };
+    let smooth = if normals.iter().any(Option::is_none) { smooth_normals(positions, indices) } else { Vec::new() };
     let from_smooth = |i: usize| smooth.get(i).copied().flatten();
-    normals
-        .iter()
-        .enumerate()
-        .map(|(i, n)| n.or_else(|| from_smooth(i)).unwrap_or(Y))
-        .collect()
+    normals.iter().enumerate().map(|(i, n)| n.or_else(|| from_smooth(i)).unwrap_or(Y)).collect()
 }
 
 /// Area-weighted vertex normals, summed over every vertex at the same position so that uv seams
@@ -625,39 +568,21 @@ fn smooth_normals(positions: &[[f32; 3]], indices: &[u32]) -> Vec<Option<[f32; 3
             *sum = add(*sum, weighted);
         }
     }
-    positions
-        .iter()
-        .map(|&p| sums.get(&key(p)).and_then(|&sum| normalize(sum)))
-        .collect()
+    positions.iter().map(|&p| sums.get(&key(p)).and_then(|&sum| normalize(sum))).collect()
 }
 
 /// MikkTSpace tangents where there are uvs, made exactly orthonormal; any orthogonal unit vector
 /// where MikkTSpace has none.
-fn compute_tangents(
-    positions: &[[f32; 3]],
-    normals: &[[f32; 3]],
-    uvs: &[Option<[f32; 2]>],
-    indices: &[u32],
-) -> Vec<[f32; 4]> {
+fn compute_tangents(positions: &[[f32; 3]], normals: &[[f32; 3]], uvs: &[Option<[f32; 2]>], indices: &[u32]) -> Vec<[f32; 4]> {
     let mut found = vec![None; positions.len()];
     if uvs.iter().any(Option::is_some) {
         let uvs: Vec<[f32; 2]> = uvs.iter().map(|uv| uv.unwrap_or_default()).collect();
-        let mut geometry = MikkGeometry {
-            positions,
-            normals,
-            uvs: &uvs,
-            indices,
-            tangents: found,
-        };
+        let mut geometry = MikkGeometry { positions, normals, uvs: &uvs, indices, tangents: found };
         // It cannot fail today (the error type has no values); vertices it leaves out fall back below.
         let _ = bevy_mikktspace::generate_tangents(&mut geometry);
         found = geometry.tangents;
     }
-    normals
-        .iter()
-        .zip(found)
-        .map(|(&n, t)| orthonormal_tangent(n, t))
-        .collect()
+    normals.iter().zip(found).map(|(&n, t)| orthonormal_tangent(n, t)).collect()
 }
 
 /// `tangent` made unit and orthogonal to `normal`, or any such vector if it cannot be.
@@ -741,11 +666,7 @@ fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
 }
 
 fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
 /// `v` without its component along the unit vector `n`.
@@ -777,17 +698,10 @@ mod tests {
     const GRID: BuiltinMesh = BuiltinMesh::PlaneGrid { divisions: 3 };
 
     fn all_builtins() -> Vec<(BuiltinMesh, Mesh)> {
-        [
-            BuiltinMesh::FullscreenQuad,
-            BuiltinMesh::Quad,
-            BuiltinMesh::Cube,
-            SPHERE,
-            TINY_SPHERE,
-            GRID,
-        ]
-        .into_iter()
-        .map(|b| (b, Mesh::builtin(b)))
-        .collect()
+        [BuiltinMesh::FullscreenQuad, BuiltinMesh::Quad, BuiltinMesh::Cube, SPHERE, TINY_SPHERE, GRID]
+            .into_iter()
+            .map(|b| (b, Mesh::builtin(b)))
+            .collect()
     }
 
     fn obj(text: &str) -> Mesh {
@@ -821,9 +735,7 @@ mod tests {
     }
 
     fn triangles(mesh: &Mesh) -> impl Iterator<Item = [usize; 3]> + '_ {
-        mesh.indices
-            .chunks_exact(3)
-            .map(|t| [t[0] as usize, t[1] as usize, t[2] as usize])
+        mesh.indices.chunks_exact(3).map(|t| [t[0] as usize, t[1] as usize, t[2] as usize])
     }
 
     /// Everything any mesh must satisfy; `what` names it in failures.
@@ -834,30 +746,17 @@ mod tests {
         assert_eq!(mesh.tangents.len(), n, "{what}: tangents");
         assert_eq!(mesh.colors.len(), n, "{what}: colors");
         assert_eq!(mesh.indices.len() % 3, 0, "{what}: index count");
-        assert!(
-            mesh.indices.iter().all(|&i| (i as usize) < n),
-            "{what}: index out of range"
-        );
+        assert!(mesh.indices.iter().all(|&i| (i as usize) < n), "{what}: index out of range");
         for name in ATTRIBUTES {
             let data = mesh.attribute(name).unwrap_or_else(|| panic!("{what}: no {name}"));
             assert_eq!(data.len(), n, "{what}: {name}");
-            assert!(
-                data.iter().flatten().all(|c| c.is_finite()),
-                "{what}: {name} not finite"
-            );
+            assert!(data.iter().flatten().all(|c| c.is_finite()), "{what}: {name} not finite");
         }
         for (i, (&normal, &tangent)) in mesh.normals.iter().zip(&mesh.tangents).enumerate() {
             assert!(close(length(normal), 1.0), "{what}: normal {i} = {normal:?}");
             assert!(close(length(xyz(tangent)), 1.0), "{what}: tangent {i} = {tangent:?}");
-            assert!(
-                close(dot(normal, xyz(tangent)), 0.0),
-                "{what}: tangent {i} not ⟂ normal"
-            );
-            assert!(
-                tangent[3] == 1.0 || tangent[3] == -1.0,
-                "{what}: tangent sign {i} = {}",
-                tangent[3]
-            );
+            assert!(close(dot(normal, xyz(tangent)), 0.0), "{what}: tangent {i} not ⟂ normal");
+            assert!(tangent[3] == 1.0 || tangent[3] == -1.0, "{what}: tangent sign {i} = {}", tangent[3]);
         }
     }
 
@@ -875,10 +774,7 @@ mod tests {
     fn check_tangent_frame(mesh: &Mesh, what: &str) {
         let bitangents = mesh.attribute("bitangent").unwrap_or_default();
         for [a, b, c] in triangles(mesh) {
-            let (e1, e2) = (
-                sub(mesh.positions[b], mesh.positions[a]),
-                sub(mesh.positions[c], mesh.positions[a]),
-            );
+            let (e1, e2) = (sub(mesh.positions[b], mesh.positions[a]), sub(mesh.positions[c], mesh.positions[a]));
             let (uv0, uv1, uv2) = (mesh.uvs[a], mesh.uvs[b], mesh.uvs[c]);
             let (du1, dv1, du2, dv2) = (uv1[0] - uv0[0], uv1[1] - uv0[1], uv2[0] - uv0[0], uv2[1] - uv0[1]);
             let det = du1 * dv2 - du2 * dv1;
@@ -888,14 +784,8 @@ mod tests {
             let dp_du = scale(sub(scale(e1, dv2), scale(e2, dv1)), 1.0 / det);
             let dp_dv = scale(sub(scale(e2, du1), scale(e1, du2)), 1.0 / det);
             for v in [a, b, c] {
-                assert!(
-                    dot(xyz(mesh.tangents[v]), dp_du) > 0.0,
-                    "{what}: tangent {v} against ∂P/∂u"
-                );
-                assert!(
-                    dot(xyz(bitangents[v]), dp_dv) > 0.0,
-                    "{what}: bitangent {v} against ∂P/∂v"
-                );
+                assert!(dot(xyz(mesh.tangents[v]), dp_du) > 0.0, "{what}: tangent {v} against ∂P/∂u");
+                assert!(dot(xyz(bitangents[v]), dp_dv) > 0.0, "{what}: bitangent {v} against ∂P/∂v");
             }
         }
     }
@@ -918,10 +808,7 @@ mod tests {
 
     #[test]
     fn builtin_sizes_below_minimum_are_raised() {
-        assert_eq!(
-            Mesh::builtin(BuiltinMesh::UvSphere { segments: 0, rings: 0 }),
-            Mesh::builtin(TINY_SPHERE)
-        );
+        assert_eq!(Mesh::builtin(BuiltinMesh::UvSphere { segments: 0, rings: 0 }), Mesh::builtin(TINY_SPHERE));
         let flat = Mesh::builtin(BuiltinMesh::PlaneGrid { divisions: 0 });
         assert_eq!(flat, Mesh::builtin(BuiltinMesh::PlaneGrid { divisions: 1 }));
     }
@@ -933,10 +820,7 @@ mod tests {
             check_invariants(&mesh, &what);
             check_winding(&mesh, &what);
             check_tangent_frame(&mesh, &what);
-            assert!(
-                mesh.uvs.iter().flatten().all(|c| (0.0..=1.0).contains(c)),
-                "{what}: uv outside 0..1"
-            );
+            assert!(mesh.uvs.iter().flatten().all(|c| (0.0..=1.0).contains(c)), "{what}: uv outside 0..1");
             assert!(mesh.colors.iter().all(|&c| c == WHITE), "{what}: colors");
             assert_eq!(mesh.provided, ["position", "normal", "uv", "tangent"], "{what}");
             assert!(mesh.computed.is_empty(), "{what}");
@@ -949,11 +833,7 @@ mod tests {
             let mesh = Mesh::builtin(b);
             assert_eq!(mesh.bounds(), ([-half, -half, 0.0], [half, half, 0.0]));
             for (p, uv) in mesh.positions.iter().zip(&mesh.uvs) {
-                assert_eq!(
-                    *uv,
-                    [(p[0] / half + 1.0) / 2.0, (p[1] / half + 1.0) / 2.0],
-                    "{b:?}: v = 0 at the bottom"
-                );
+                assert_eq!(*uv, [(p[0] / half + 1.0) / 2.0, (p[1] / half + 1.0) / 2.0], "{b:?}: v = 0 at the bottom");
             }
             assert!(mesh.normals.iter().all(|&n| n == Z));
             assert!(mesh.tangents.iter().all(|&t| t == [1.0, 0.0, 0.0, 1.0]));
@@ -968,17 +848,13 @@ mod tests {
         for (v, bitangent) in bitangents.iter().enumerate() {
             let (face, normal) = (v / 4, mesh.normals[v]);
             assert_eq!(normal, mesh.normals[face * 4], "flat normals on face {face}");
-            assert!(
-                close(dot(mesh.positions[v], normal), 0.5),
-                "normal points outward on face {face}"
-            );
+            assert!(close(dot(mesh.positions[v], normal), 0.5), "normal points outward on face {face}");
             let up = xyz(*bitangent);
             if normal[1] == 0.0 {
                 assert!(close3(up, Y), "side face {face}: texture up is +y, got {up:?}");
             }
         }
-        let distinct: std::collections::HashSet<[i32; 3]> =
-            mesh.normals.iter().map(|n| n.map(|c| c.round() as i32)).collect();
+        let distinct: std::collections::HashSet<[i32; 3]> = mesh.normals.iter().map(|n| n.map(|c| c.round() as i32)).collect();
         assert_eq!(distinct.len(), 6);
     }
 
@@ -990,10 +866,7 @@ mod tests {
             assert!(close3(p, n), "normal = position at {v}");
             let [_, y, _] = p;
             let v_coord = mesh.uvs[v][1];
-            assert!(
-                close(v_coord, (y.clamp(-1.0, 1.0).asin() / PI) + 0.5),
-                "v follows latitude at {v}"
-            );
+            assert!(close(v_coord, (y.clamp(-1.0, 1.0).asin() / PI) + 0.5), "v follows latitude at {v}");
         }
         assert!(mesh.uvs.iter().any(|uv| uv[0] == 1.0), "seam duplicated so u reaches 1");
         let (lo, hi) = mesh.bounds();
@@ -1029,11 +902,7 @@ mod tests {
             let p = |i: usize| mesh.positions[i];
             assert!(cross(sub(p(b), p(a)), sub(p(c), p(a)))[1] > 0.0, "CCW seen from +y");
         }
-        let corner = mesh
-            .positions
-            .iter()
-            .position(|p| p == &[-0.5, 0.0, 0.5])
-            .unwrap_or(usize::MAX);
+        let corner = mesh.positions.iter().position(|p| p == &[-0.5, 0.0, 0.5]).unwrap_or(usize::MAX);
         assert_eq!(mesh.uvs.get(corner), Some(&[0.0, 0.0]), "uv (0, 0) at −x, +z");
     }
 
@@ -1044,10 +913,7 @@ mod tests {
             let uvs: Vec<Option<[f32; 2]>> = mesh.uvs.iter().map(|&uv| Some(uv)).collect();
             let computed = compute_tangents(&mesh.positions, &mesh.normals, &uvs, &mesh.indices);
             for (v, (c, t)) in computed.iter().zip(&mesh.tangents).enumerate() {
-                assert!(
-                    close3(xyz(*c), xyz(*t)) && c[3] == t[3],
-                    "{b:?} vertex {v}: {c:?} vs {t:?}"
-                );
+                assert!(close3(xyz(*c), xyz(*t)) && c[3] == t[3], "{b:?} vertex {v}: {c:?} vs {t:?}");
             }
         }
     }
@@ -1057,11 +923,7 @@ mod tests {
         let mesh = Mesh::builtin(BuiltinMesh::Quad);
         let positions = mesh.attribute("position").unwrap_or_default();
         assert!(positions.iter().all(|p| p[3] == 1.0));
-        assert!(mesh
-            .attribute("normal")
-            .unwrap_or_default()
-            .iter()
-            .all(|n| *n == [0.0, 0.0, 1.0, 0.0]));
+        assert!(mesh.attribute("normal").unwrap_or_default().iter().all(|n| *n == [0.0, 0.0, 1.0, 0.0]));
         assert_eq!(mesh.attribute("uv").unwrap_or_default()[2], [0.0, 1.0, 0.0, 0.0]);
         assert_eq!(mesh.attribute("color").unwrap_or_default()[0], WHITE);
         assert_eq!(mesh.attribute("bitangent").unwrap_or_default()[0], [0.0, 1.0, 0.0, 0.0]);
@@ -1093,16 +955,8 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
         assert_eq!((mesh.vertex_count(), mesh.triangle_count()), (4, 2));
         assert_eq!(mesh.provided, ["position", "normal", "uv"]);
         assert_eq!(mesh.computed, ["tangent"]);
-        assert_eq!(
-            mesh.uvs,
-            [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
-            "OBJ v = 0 is the bottom, as in GL"
-        );
-        assert!(
-            mesh.tangents.iter().all(|t| close3(xyz(*t), X) && t[3] == 1.0),
-            "{:?}",
-            mesh.tangents
-        );
+        assert_eq!(mesh.uvs, [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], "OBJ v = 0 is the bottom, as in GL");
+        assert!(mesh.tangents.iter().all(|t| close3(xyz(*t), X) && t[3] == 1.0), "{:?}", mesh.tangents);
         assert!(mesh.colors.iter().all(|&c| c == WHITE));
         assert_eq!(mesh.bounds(), ([-1.0, -1.0, 0.0], [1.0, 1.0, 0.0]));
     }
@@ -1113,15 +967,9 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
         let mesh = obj(&mirrored);
         check_invariants(&mesh, "mirrored quad");
         check_tangent_frame(&mesh, "mirrored quad");
-        assert!(mesh
-            .tangents
-            .iter()
-            .all(|t| close3(xyz(*t), [-1.0, 0.0, 0.0]) && t[3] == -1.0));
+        assert!(mesh.tangents.iter().all(|t| close3(xyz(*t), [-1.0, 0.0, 0.0]) && t[3] == -1.0));
         let bitangents = mesh.attribute("bitangent").unwrap_or_default();
-        assert!(
-            bitangents.iter().all(|b| close3(xyz(*b), Y) && b[3] == 0.0),
-            "{bitangents:?}"
-        );
+        assert!(bitangents.iter().all(|b| close3(xyz(*b), Y) && b[3] == 0.0), "{bitangents:?}");
     }
 
     #[test]
@@ -1144,17 +992,10 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
         let mesh = obj(text);
         check_invariants(&mesh, "roof");
         check_winding(&mesh, "roof");
-        let ridge: Vec<[f32; 3]> = (0..mesh.vertex_count())
-            .filter(|&v| mesh.positions[v][1] == 1.0)
-            .map(|v| mesh.normals[v])
-            .collect();
+        let ridge: Vec<[f32; 3]> = (0..mesh.vertex_count()).filter(|&v| mesh.positions[v][1] == 1.0).map(|v| mesh.normals[v]).collect();
         assert_eq!(ridge.len(), 4, "the seam duplicates the ridge vertices");
         assert!(ridge.iter().all(|n| close3(*n, ridge[0])), "{ridge:?}");
-        assert!(
-            ridge[0][0] > 0.0 && ridge[0][1] > 0.0,
-            "the bigger face weighs more: {:?}",
-            ridge[0]
-        );
+        assert!(ridge[0][0] > 0.0 && ridge[0][1] > 0.0, "the bigger face weighs more: {:?}", ridge[0]);
     }
 
     #[test]
@@ -1182,10 +1023,7 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
     #[test]
     fn obj_vertex_colors() {
         let mesh = obj("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 0.5\nf 1 2 3\n");
-        assert_eq!(
-            mesh.colors,
-            [[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 0.5, 1.0]]
-        );
+        assert_eq!(mesh.colors, [[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 0.5, 1.0]]);
         assert!(mesh.provided.contains(&"color"));
         let partial = obj_error("v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         assert!(partial.contains("only 1 of the 3 `v` lines"), "{partial}");
@@ -1199,13 +1037,7 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
         check_invariants(&mesh, "merged");
         check_winding(&mesh, "merged");
         assert_eq!(mesh.triangle_count(), 3);
-        assert_eq!(
-            mesh.indices[3..6]
-                .iter()
-                .map(|&i| mesh.positions[i as usize][2])
-                .sum::<f32>(),
-            15.0
-        );
+        assert_eq!(mesh.indices[3..6].iter().map(|&i| mesh.positions[i as usize][2]).sum::<f32>(), 15.0);
         assert_eq!(mesh.computed, ["normal", "tangent"], "one object had no normals");
         assert_eq!(mesh.bounds(), ([0.0; 3], [1.0, 1.0, 5.0]));
     }
@@ -1221,81 +1053,33 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
     fn obj_errors_name_the_problem() {
         let cases = [
             ("", "no triangles in the OBJ text: it has no `f` lines"),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\n",
-                "no triangles in the OBJ text: it has no `f` lines",
-            ),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\n", "no triangles in the OBJ text: it has no `f` lines"),
             ("v 0 0 0\nv 1 0 0\nf 1 2\nf 1\n", "its faces are all points or lines"),
             ("Lorem ipsum dolor sit amet\n\0\u{1}\u{7f}☃\n", "no triangles"),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n",
-                "line 4 of the OBJ text: a face refers to position 4, but there are only 3",
-            ),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "line 4 of the OBJ text: a face refers to position 4, but there are only 3"),
             ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "uses index 0"),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 -2 -1\n",
-                "refers to position -4, but only 3 come before it",
-            ),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/-3 2/-3 3/-3\n",
-                "texture coordinate -3",
-            ),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 -2 -1\n", "refers to position -4, but only 3 come before it"),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/-3 2/-3 3/-3\n", "texture coordinate -3"),
             ("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//-2 2//1 3//1\n", "normal -2"),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//9223372036854775807 2//1 3//1\n",
-                "normal 9223372036854775807",
-            ),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf a b c\n",
-                "line 4 of the OBJ text: cannot read the face corner `a`",
-            ),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n",
-                "cannot read the face corner `1/1/1/1`",
-            ),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//9223372036854775807 2//1 3//1\n", "normal 9223372036854775807"),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf a b c\n", "line 4 of the OBJ text: cannot read the face corner `a`"),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "cannot read the face corner `1/1/1/1`"),
             ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf //1 2 3\n", "has no position index"),
-            (
-                "v 0 0 zero\n",
-                "line 1 of the OBJ text: cannot read the position in `v 0 0 zero`",
-            ),
+            ("v 0 0 zero\n", "line 1 of the OBJ text: cannot read the position in `v 0 0 zero`"),
             ("vt 0\n", "cannot read the texture coordinate in `vt 0`"),
             ("v 0 0 0 1 0 x\n", "cannot read the vertex color"),
-            (
-                "v NaN 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                "has a position that is not a finite number: `NaN 0 0`",
-            ),
-            (
-                "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                "position that is not a finite number: `inf 0 0`",
-            ),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn inf 0 1\nf 1//1 2//1 3//1\n",
-                "normal that is not a finite",
-            ),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt nan 0\nf 1/1 2/1 3/1\n",
-                "texture coordinate that is not a finite",
-            ),
-            (
-                "v 0 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-                "line 1 of the OBJ text: `v 0 0 0 0` has w = 0",
-            ),
+            ("v NaN 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "has a position that is not a finite number: `NaN 0 0`"),
+            ("v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "position that is not a finite number: `inf 0 0`"),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn inf 0 1\nf 1//1 2//1 3//1\n", "normal that is not a finite"),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt nan 0\nf 1/1 2/1 3/1\n", "texture coordinate that is not a finite"),
+            ("v 0 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1 of the OBJ text: `v 0 0 0 0` has w = 0"),
             ("v 0 0 0 one\n", "cannot read the w in `v 0 0 0 one`"),
-            (
-                "v 0 0 0 1 1\n",
-                "`v 0 0 0 1 1` should be x y z, optionally followed by w or by an r g b color",
-            ),
-            (
-                "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl\nf 1 2 3\n",
-                "line 4 of the OBJ text: `usemtl` needs a material name",
-            ),
+            ("v 0 0 0 1 1\n", "`v 0 0 0 1 1` should be x y z, optionally followed by w or by an r g b color"),
+            ("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl\nf 1 2 3\n", "line 4 of the OBJ text: `usemtl` needs a material name"),
         ];
         for (text, expected) in cases {
             let error = obj_error(text);
-            assert!(
-                error.contains(expected),
-                "for {text:?}:\n  got      {error}\n  expected {expected}"
-            );
+            assert!(error.contains(expected), "for {text:?}:\n  got      {error}\n  expected {expected}");
         }
     }
 
@@ -1316,10 +1100,7 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
         let expected = format!("no triangles in `{}`: it has no `f` lines", empty.display());
         assert_eq!(no_triangles, Err(expected));
         let missing = missing.err().unwrap_or_default();
-        assert!(
-            missing.starts_with("cannot read `") && missing.contains("missing.obj`: "),
-            "{missing}"
-        );
+        assert!(missing.starts_with("cannot read `") && missing.contains("missing.obj`: "), "{missing}");
     }
 
     #[test]
@@ -1337,12 +1118,8 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
     /// well formed.
     #[test]
     fn obj_fuzz_never_panics() {
-        const NUMBERS: [&str; 12] = [
-            "0", "1", "-1", "0.5", "2", "1e38", "-1e-39", "3e-45", "0", "1", "0.25", "-2",
-        ];
-        const CORNERS: [&str; 14] = [
-            "1", "2", "3", "3", "-1", "-2", "1/1", "2/2/1", "3//1", "-1/-1/-1", "1/2", "2/1/2", "2", "1",
-        ];
+        const NUMBERS: [&str; 12] = ["0", "1", "-1", "0.5", "2", "1e38", "-1e-39", "3e-45", "0", "1", "0.25", "-2"];
+        const CORNERS: [&str; 14] = ["1", "2", "3", "3", "-1", "-2", "1/1", "2/2/1", "3//1", "-1/-1/-1", "1/2", "2/1/2", "2", "1"];
         let mut state: u64 = 0x9e37_79b9_7f4a_7c15;
         let mut next = |n: usize| {
             state ^= state << 13;

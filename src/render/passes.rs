@@ -117,9 +117,7 @@ impl PassGraph {
                     sample_count: 1,
                     dimension: wgpu::TextureDimension::D2,
                     format: effective_format(t.format, mode),
-                    usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                        | wgpu::TextureUsages::TEXTURE_BINDING
-                        | wgpu::TextureUsages::COPY_SRC,
+                    usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
                     view_formats: &[],
                 })
             })
@@ -130,11 +128,8 @@ impl PassGraph {
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         for p in programs {
             let decl = &effect.passes[p.index];
-            let sampled: BTreeMap<String, (wgpu::TextureView, Filter)> = decl
-                .samples
-                .iter()
-                .filter_map(|s| Some((s.sampler.clone(), (view_of(&s.target.name)?, s.filter))))
-                .collect();
+            let sampled: BTreeMap<String, (wgpu::TextureView, Filter)> =
+                decl.samples.iter().filter_map(|s| Some((s.sampler.clone(), (view_of(&s.target.name)?, s.filter)))).collect();
             let attached = &plan.attached[p.index];
             let colors: Vec<Option<wgpu::TextureFormat>> = decl
                 .targets
@@ -179,12 +174,7 @@ impl PassGraph {
                     warnings.push(w);
                 }
             }
-            let color_views = decl
-                .targets
-                .iter()
-                .zip(attached)
-                .map(|(t, on)| if *on { view_of(&t.name) } else { None })
-                .collect();
+            let color_views = decl.targets.iter().zip(attached).map(|(t, on)| if *on { view_of(&t.name) } else { None }).collect();
             passes.push(RunningPass {
                 index: p.index,
                 name: decl.name.clone(),
@@ -226,8 +216,9 @@ impl PassGraph {
             })
         };
         let Some(output) = readback(&output_name) else {
-            return Err(vec![Diagnostic::error(crate::render::scene::E_UNRENDERABLE, "no pass writes the output target")
-                .in_file(effect.file)]);
+            return Err(vec![
+                Diagnostic::error(crate::render::scene::E_UNRENDERABLE, "no pass writes the output target").in_file(effect.file)
+            ]);
         };
         let dumps = if dump {
             effect.targets.iter().filter(|t| t.name != output_name).filter_map(|t| readback(&t.name)).collect()
@@ -304,7 +295,9 @@ impl PassGraph {
             let users: Vec<String> = t
                 .targets
                 .iter()
-                .map(|(n, a, b)| format!("{n} (passes {}–{})", effect.passes[*a].name, effect.passes.get(*b).map_or("end", |p| p.name.as_str())))
+                .map(|(n, a, b)| {
+                    format!("{n} (passes {}–{})", effect.passes[*a].name, effect.passes.get(*b).map_or("end", |p| p.name.as_str()))
+                })
                 .collect();
             text.push_str(&format!("  texture {k}: {} {}x{}: {}\n", t.format.name(), t.size.0, t.size.1, users.join(", then ")));
         }
@@ -355,7 +348,8 @@ impl PassGraph {
             frames::record_draw(&mut pass, &p.scene);
         }
         for r in std::iter::once(&self.output).chain(&self.dumps) {
-            let aspect = if r.format == wgpu::TextureFormat::Depth32Float { wgpu::TextureAspect::DepthOnly } else { wgpu::TextureAspect::All };
+            let aspect =
+                if r.format == wgpu::TextureFormat::Depth32Float { wgpu::TextureAspect::DepthOnly } else { wgpu::TextureAspect::All };
             encoder.copy_texture_to_buffer(
                 wgpu::TexelCopyTextureInfo { texture: &self.textures[r.texture], mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect },
                 wgpu::TexelCopyBufferInfo {

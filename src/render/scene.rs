@@ -12,9 +12,7 @@ use crate::back::Translation;
 use crate::diag::{Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
-use crate::manifest::{
-    Blend, BuiltinMesh, CameraDecl, Cull, Effect, Filter, MeshSource, ModelDecl, TextureKind, TextureSource, Wrap,
-};
+use crate::manifest::{Blend, BuiltinMesh, CameraDecl, Cull, Effect, Filter, MeshSource, ModelDecl, TextureKind, TextureSource, Wrap};
 use crate::render::attributes;
 use crate::render::degenerate::Degenerate;
 use crate::render::device::{color_formats, Gpu, PipelineSpec};
@@ -60,7 +58,10 @@ impl ColorMode {
 
 /// How the mesh is drawn.
 pub enum Draw {
-    Indexed { buffer: wgpu::Buffer, count: u32 },
+    Indexed {
+        buffer: wgpu::Buffer,
+        count: u32,
+    },
     /// Vertices without an index buffer (a vertex stage that makes its own positions).
     Vertices(u32),
 }
@@ -133,8 +134,7 @@ impl Scene {
                 .in_file(first_file)
                 .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)")]);
         }
-        if let Some(first) =
-            r.fragment_outputs.first().filter(|o| input.pass.is_none() && o.location == 0 && !o.wgsl_type.contains("f32"))
+        if let Some(first) = r.fragment_outputs.first().filter(|o| input.pass.is_none() && o.location == 0 && !o.wgsl_type.contains("f32"))
         {
             return Err(vec![Diagnostic::error(
                 E_UNRENDERABLE,
@@ -197,25 +197,21 @@ impl Scene {
         };
         let pipeline = gpu.pipeline(&spec).map_err(|e| vec![pipeline_error(first_file, &e)])?;
 
-        let vertex_buffer = (!interleaved.attributes.is_empty()).then(|| {
-            buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX)
-        });
-        let instance_buffer =
-            instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
+        let vertex_buffer =
+            (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));
+        let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
         let draw = match mesh_note {
             MeshNote::OwnVertices => Draw::Vertices(3),
             _ => {
                 let bytes: Vec<u8> = mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
-                Draw::Indexed {
-                    buffer: buffer_init(gpu, "indices", &bytes, wgpu::BufferUsages::INDEX),
-                    count: mesh.indices.len() as u32,
-                }
+                Draw::Indexed { buffer: buffer_init(gpu, "indices", &bytes, wgpu::BufferUsages::INDEX), count: mesh.indices.len() as u32 }
             }
         };
         let (uniform_data, guessed) =
             uniforms::buffers(&t.module, input.effect).map_err(|e| vec![Diagnostic::error(E_PIPELINE, e).in_file(first_file)])?;
         for g in guessed {
-            let mut d = Diagnostic::warning(W_UNIFORM_GUESSED, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
+            let mut d =
+                Diagnostic::warning(W_UNIFORM_GUESSED, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
             d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
             let help = if g.aggregate {
                 format!("give its members values in [uniforms]: `\"{}.<member>\" = …` (arrays: `\"{}[0]\"`)", g.name, g.name)
@@ -236,8 +232,7 @@ impl Scene {
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }
-        let mut inputs: Vec<String> =
-            choices.iter().map(|c| format!("{} ← {}", c.input, c.attribute.unwrap_or("zeros"))).collect();
+        let mut inputs: Vec<String> = choices.iter().map(|c| format!("{} ← {}", c.input, c.attribute.unwrap_or("zeros"))).collect();
         if let Some(d) = instances {
             inputs.extend(d.attributes.iter().map(|a| format!("{} ← per instance", a.input)));
         }
@@ -365,10 +360,7 @@ fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result
                 vec![Diagnostic::error(E_ASSET, format!("cannot load the mesh: {e}")).at(file, decl.span.clone(), "this mesh")]
             })?,
         };
-        let note = if matches!(
-            decl.source,
-            MeshSource::Builtin(BuiltinMesh::FullscreenQuad | BuiltinMesh::FullscreenTriangle)
-        ) {
+        let note = if matches!(decl.source, MeshSource::Builtin(BuiltinMesh::FullscreenQuad | BuiltinMesh::FullscreenTriangle)) {
             MeshNote::Fullscreen
         } else {
             MeshNote::Manifest
@@ -380,11 +372,7 @@ fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result
     if r.vertex_inputs.is_empty() {
         return Ok((Mesh::builtin(BuiltinMesh::FullscreenQuad), MeshNote::OwnVertices));
     }
-    let uses_matrices = r
-        .uniform_block
-        .iter()
-        .flat_map(|b| &b.members)
-        .any(|m| m.glsl_type.starts_with("mat"))
+    let uses_matrices = r.uniform_block.iter().flat_map(|b| &b.members).any(|m| m.glsl_type.starts_with("mat"))
         || r.bindings.iter().any(|b| b.kind == "uniform_buffer" && b.glsl.is_some());
     let (mesh, note, what) = if uses_matrices {
         (BuiltinMesh::Cube, MeshNote::Cube, "a unit cube (the program uses matrices)")
@@ -401,19 +389,12 @@ fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result
     Ok((Mesh::builtin(mesh), note))
 }
 
-fn report_attributes(
-    program: &CompiledProgram,
-    choices: &[attributes::Choice],
-    fullscreen_pass: bool,
-    warnings: &mut Vec<Diagnostic>,
-) {
+fn report_attributes(program: &CompiledProgram, choices: &[attributes::Choice], fullscreen_pass: bool, warnings: &mut Vec<Diagnostic>) {
     for c in choices {
         let (code, message) = match (c.attribute, c.guessed) {
             (Some(_), None) => continue,
             (Some(_), Some(_)) if fullscreen_pass => continue,
-            (Some(a), Some(why)) => {
-                (W_ATTRIBUTE_GUESSED, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input))
-            }
+            (Some(a), Some(why)) => (W_ATTRIBUTE_GUESSED, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input)),
             (None, _) => (W_ATTRIBUTE_ZERO, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),
         };
         let d = at_declaration(Diagnostic::warning(code, message), program, &c.input, Storage::In, "this input");
@@ -480,8 +461,11 @@ impl Textures {
                         (Some(decl), _) => {
                             let image = load(decl).map_err(|e| {
                                 let file = input.effect.map(|e| e.file).unwrap_or(FileId(0));
-                                vec![Diagnostic::error(E_ASSET, format!("cannot load texture `{}`: {e}", decl.name))
-                                    .at(file, decl.span.clone(), "this texture")]
+                                vec![Diagnostic::error(E_ASSET, format!("cannot load texture `{}`: {e}", decl.name)).at(
+                                    file,
+                                    decl.span.clone(),
+                                    "this texture",
+                                )]
                             })?;
                             upload(gpu, &image, b)
                         }
@@ -490,14 +474,19 @@ impl Textures {
                             let name = user.clone().unwrap_or_else(|| b.name.clone());
                             let d = Diagnostic::warning(
                                 W_TEXTURE_PLACEHOLDER,
-                                format!("sampler `{name}` has no texture in the manifest: it reads a placeholder {}", match kind {
-                                    TextureKind::Cube => "sky-gradient cube map",
-                                    TextureKind::D2 => "magenta and black checker",
-                                }),
+                                format!(
+                                    "sampler `{name}` has no texture in the manifest: it reads a placeholder {}",
+                                    match kind {
+                                        TextureKind::Cube => "sky-gradient cube map",
+                                        TextureKind::D2 => "magenta and black checker",
+                                    }
+                                ),
                             );
                             let d = at_declaration(d, input.program, &name, Storage::Uniform, "this sampler");
                             let key = toml_key(&name);
-                            warnings.push(d.with_help(format!("bind it in [textures]: `{key} = \"image.png\"` or `{{ generate = \"noise\" }}`")));
+                            warnings.push(
+                                d.with_help(format!("bind it in [textures]: `{key} = \"image.png\"` or `{{ generate = \"noise\" }}`")),
+                            );
                             upload(gpu, &texture::placeholder(kind), b)
                         }
                     };
@@ -636,8 +625,7 @@ fn depth_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
 fn integer_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
     let dim = view_dimension(b);
     let layers = cube_layers(dim).unwrap_or(1);
-    let format =
-        if b.sample_type == Some("uint") { wgpu::TextureFormat::Rgba32Uint } else { wgpu::TextureFormat::Rgba32Sint };
+    let format = if b.sample_type == Some("uint") { wgpu::TextureFormat::Rgba32Uint } else { wgpu::TextureFormat::Rgba32Sint };
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(&b.name),
         size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: layers },
@@ -691,23 +679,25 @@ fn bind_groups(
     let mut storage = Vec::new();
     for b in by_group.values().flatten().filter(|b| b.kind == "storage_buffer") {
         let size = u64::from(b.size.unwrap_or(16)).max(16) + 65536;
-        storage.push((b.name.clone(), gpu.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some(&b.name),
-            size,
-            // The probe counts of `effectc stress` are zeroed before a run and read back.
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        })));
+        storage.push((
+            b.name.clone(),
+            gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(&b.name),
+                size,
+                // The probe counts of `effectc stress` are zeroed before a run and read back.
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            }),
+        ));
     }
     let mut groups = Vec::new();
     for (group, bindings) in by_group {
         let mut entries = Vec::new();
         for b in bindings {
             let resource = match b.kind {
-                "uniform_buffer" => uniforms
-                    .iter()
-                    .find(|(u, _)| u.group == b.group && u.binding == b.binding)
-                    .map(|(_, buf)| buf.as_entire_binding()),
+                "uniform_buffer" => {
+                    uniforms.iter().find(|(u, _)| u.group == b.group && u.binding == b.binding).map(|(_, buf)| buf.as_entire_binding())
+                }
                 "storage_buffer" => storage.iter().find(|(n, _)| *n == b.name).map(|(_, buf)| buf.as_entire_binding()),
                 "texture" => textures.views.get(&b.name).map(wgpu::BindingResource::TextureView),
                 "sampler" | "comparison_sampler" => textures.samplers.get(&b.name).map(wgpu::BindingResource::Sampler),

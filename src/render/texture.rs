@@ -132,9 +132,7 @@ pub fn generate(generator: Generator, size: u32, params: &GeneratorParams, kind:
     let size = size.clamp(1, MAX_IMAGE_SIDE);
     match kind {
         TextureKind::D2 => build(size, 1, |_, column, row| texel_2d(generator, size, params, column, row)),
-        TextureKind::Cube => build(size, 6, |face, column, row| {
-            texel_cube(generator, size, params, face, column, row)
-        }),
+        TextureKind::Cube => build(size, 6, |face, column, row| texel_cube(generator, size, params, face, column, row)),
     }
 }
 
@@ -147,18 +145,11 @@ pub fn generate(generator: Generator, size: u32, params: &GeneratorParams, kind:
 pub fn placeholder(kind: TextureKind) -> TexelImage {
     match kind {
         TextureKind::D2 => {
-            let params = GeneratorParams {
-                colors: [[1.0, 0.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]],
-                cells: 8,
-                ..Default::default()
-            };
+            let params = GeneratorParams { colors: [[1.0, 0.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]], cells: 8, ..Default::default() };
             generate(Generator::Checker, 64, &params, TextureKind::D2)
         }
         TextureKind::Cube => {
-            let params = GeneratorParams {
-                colors: [[0.12, 0.10, 0.08, 1.0], [0.25, 0.55, 0.95, 1.0]],
-                ..Default::default()
-            };
+            let params = GeneratorParams { colors: [[0.12, 0.10, 0.08, 1.0], [0.25, 0.55, 0.95, 1.0]], ..Default::default() };
             generate(Generator::Gradient, 32, &params, TextureKind::Cube)
         }
     }
@@ -174,12 +165,7 @@ fn build(size: u32, layers: u32, texel: impl Fn(u32, u32, u32) -> [u8; 4]) -> Te
             }
         }
     }
-    TexelImage {
-        width: size,
-        height: size,
-        layers,
-        rgba8,
-    }
+    TexelImage { width: size, height: size, layers, rgba8 }
 }
 
 fn texel_2d(generator: Generator, size: u32, params: &GeneratorParams, column: u32, row: u32) -> [u8; 4] {
@@ -367,11 +353,7 @@ fn value_noise_3d(point: [f64; 3], salt: u64) -> f64 {
 /// `f64::floor` needs no library call on baseline x86-64).
 fn split(x: f64) -> (i64, f64) {
     let truncated = x as i64;
-    let floor = if (truncated as f64) > x {
-        truncated - 1
-    } else {
-        truncated
-    };
+    let floor = if (truncated as f64) > x { truncated - 1 } else { truncated };
     (floor, x - floor as f64)
 }
 
@@ -425,12 +407,7 @@ fn mix64(mut z: u64) -> u64 {
 /// (byte values kept as stored) and flipped so row 0 is the image's bottom.
 pub fn load_file(path: &Path) -> Result<TexelImage, String> {
     let (rgba8, width, height) = decode_rgba8(path)?;
-    Ok(TexelImage {
-        width,
-        height,
-        layers: 1,
-        rgba8: flip_rows(&rgba8, width),
-    })
+    Ok(TexelImage { width, height, layers: 1, rgba8: flip_rows(&rgba8, width) })
 }
 
 /// Loads the six faces of a cube texture, in layer order +x −x +y −y +z −z. Faces must be square and
@@ -442,10 +419,7 @@ pub fn load_faces(paths: &[PathBuf; 6]) -> Result<TexelImage, String> {
     for (path, name) in paths.iter().zip(CUBE_FACE_NAMES) {
         let (face, width, height) = decode_rgba8(path).map_err(|e| format!("cube face {name}: {e}"))?;
         if width != height {
-            return Err(format!(
-                "cube face {name} ({}) is {width}×{height}; faces must be square",
-                path.display()
-            ));
+            return Err(format!("cube face {name} ({}) is {width}×{height}; faces must be square", path.display()));
         }
         match first_size {
             None => first_size = Some(width),
@@ -461,12 +435,7 @@ pub fn load_faces(paths: &[PathBuf; 6]) -> Result<TexelImage, String> {
         rgba8.extend_from_slice(&face);
     }
     let size = first_size.unwrap_or(1);
-    Ok(TexelImage {
-        width: size,
-        height: size,
-        layers: 6,
-        rgba8,
-    })
+    Ok(TexelImage { width: size, height: size, layers: 6, rgba8 })
 }
 
 /// Decodes an image file to RGBA8, rows top-down as stored, returning (bytes, width, height).
@@ -478,9 +447,7 @@ pub fn decode_rgba8(path: &Path) -> Result<(Vec<u8>, u32, u32), String> {
 }
 
 fn decode_bytes(bytes: &[u8], hint: Option<ImageFormat>) -> Result<(Vec<u8>, u32, u32), String> {
-    let (width, height) = image_reader(bytes, hint)?
-        .into_dimensions()
-        .map_err(|e| e.to_string())?;
+    let (width, height) = image_reader(bytes, hint)?.into_dimensions().map_err(|e| e.to_string())?;
     check_dimensions(width, height)?;
     let mut reader = image_reader(bytes, hint)?;
     reader.limits(decode_limits());
@@ -503,9 +470,7 @@ fn check_dimensions(width: u32, height: u32) -> Result<(), String> {
     if width == 0 || height == 0 {
         Err(format!("image is {width}×{height}, which is empty"))
     } else if width > MAX_IMAGE_SIDE || height > MAX_IMAGE_SIDE {
-        Err(format!(
-            "image is {width}×{height}, larger than the limit of {MAX_IMAGE_SIDE} on a side"
-        ))
+        Err(format!("image is {width}×{height}, larger than the limit of {MAX_IMAGE_SIDE} on a side"))
     } else {
         Ok(())
     }
@@ -539,12 +504,7 @@ mod tests {
     const WHITE: [f32; 4] = [1.0, 1.0, 1.0, 1.0];
 
     fn params(colors: [[f32; 4]; 2], cells: u32, octaves: u32, seed: u32) -> GeneratorParams {
-        GeneratorParams {
-            colors,
-            cells,
-            seed,
-            octaves,
-        }
+        GeneratorParams { colors, cells, seed, octaves }
     }
 
     fn texel(image: &TexelImage, layer: u32, column: u32, row: u32) -> [u8; 4] {
@@ -571,10 +531,7 @@ mod tests {
 
     /// Writes a top-down RGBA8 image as PNG.
     fn write_png(path: &Path, width: u32, height: u32, rgba8: Vec<u8>) {
-        image::RgbaImage::from_raw(width, height, rgba8)
-            .expect("buffer size")
-            .save_with_format(path, ImageFormat::Png)
-            .expect("write png");
+        image::RgbaImage::from_raw(width, height, rgba8).expect("buffer size").save_with_format(path, ImageFormat::Png).expect("write png");
     }
 
     fn solid_png(path: &Path, width: u32, height: u32, rgba: [u8; 4]) {
@@ -584,20 +541,14 @@ mod tests {
     #[test]
     fn colours_convert_by_clamp_and_round() {
         assert_eq!(to_rgba8([0.5, -1.0, 2.0, f32::NAN]), [128, 0, 255, 0]);
-        assert_eq!(
-            to_rgba8([0.2, 1.0 / 255.0, 0.499 / 255.0, f32::INFINITY]),
-            [51, 1, 0, 255]
-        );
+        assert_eq!(to_rgba8([0.2, 1.0 / 255.0, 0.499 / 255.0, f32::INFINITY]), [51, 1, 0, 255]);
     }
 
     #[test]
     fn checker_corners_and_cell_boundaries() {
         let image = generate(Generator::Checker, 16, &params([RED, BLUE], 4, 4, 0), TextureKind::D2);
         let (red, blue) = (to_rgba8(RED), to_rgba8(BLUE));
-        assert_eq!(
-            (image.width, image.height, image.layers, image.rgba8.len()),
-            (16, 16, 1, 16 * 16 * 4)
-        );
+        assert_eq!((image.width, image.height, image.layers, image.rgba8.len()), (16, 16, 1, 16 * 16 * 4));
         // Bottom-left (row 0 = v 0) is colour a; with 4 cells the opposite corner is a too.
         assert_eq!(texel(&image, 0, 0, 0), red);
         assert_eq!(texel(&image, 0, 15, 15), red);
@@ -615,28 +566,15 @@ mod tests {
 
     #[test]
     fn checker_with_more_cells_than_texels_or_zero_cells_does_not_panic() {
-        let fine = generate(
-            Generator::Checker,
-            4,
-            &params([WHITE, BLACK], 100, 1, 0),
-            TextureKind::D2,
-        );
+        let fine = generate(Generator::Checker, 4, &params([WHITE, BLACK], 100, 1, 0), TextureKind::D2);
         assert_eq!(fine.rgba8.len(), 4 * 4 * 4);
         let zero = generate(Generator::Checker, 4, &params([WHITE, BLACK], 0, 0, 0), TextureKind::D2);
-        assert!(
-            zero.rgba8.chunks_exact(4).all(|t| t == [255, 255, 255, 255]),
-            "0 cells acts as one square"
-        );
+        assert!(zero.rgba8.chunks_exact(4).all(|t| t == [255, 255, 255, 255]), "0 cells acts as one square");
     }
 
     #[test]
     fn gradient_endpoints_and_monotonic() {
-        let image = generate(
-            Generator::Gradient,
-            16,
-            &params([BLACK, WHITE], 8, 4, 0),
-            TextureKind::D2,
-        );
+        let image = generate(Generator::Gradient, 16, &params([BLACK, WHITE], 8, 4, 0), TextureKind::D2);
         for row in 0..16 {
             assert_eq!(texel(&image, 0, 0, row), [0, 0, 0, 255]);
             assert_eq!(texel(&image, 0, 15, row), [255, 255, 255, 255]);
@@ -664,10 +602,7 @@ mod tests {
         assert_eq!(first, generate(Generator::Noise, 32, &p, TextureKind::D2));
         let reds: Vec<u8> = first.rgba8.chunks_exact(4).map(|t| t[0]).collect();
         let (min, max) = (reds.iter().min().copied(), reds.iter().max().copied());
-        assert!(
-            max.unwrap_or(0) - min.unwrap_or(0) > 100,
-            "noise should vary: {min:?}..{max:?}"
-        );
+        assert!(max.unwrap_or(0) - min.unwrap_or(0) > 100, "noise should vary: {min:?}..{max:?}");
         for i in 0..=200 {
             for j in 0..=200 {
                 let n = tileable_noise_2d(i as f64 / 200.0, j as f64 / 200.0, 3, 5, 1);
@@ -686,14 +621,8 @@ mod tests {
         for cells in [1, 3, 8] {
             for i in 0..=64 {
                 let t = i as f64 / 64.0;
-                assert_eq!(
-                    tileable_noise_2d(0.0, t, cells, 4, 9),
-                    tileable_noise_2d(1.0, t, cells, 4, 9)
-                );
-                assert_eq!(
-                    tileable_noise_2d(t, 0.0, cells, 4, 9),
-                    tileable_noise_2d(t, 1.0, cells, 4, 9)
-                );
+                assert_eq!(tileable_noise_2d(0.0, t, cells, 4, 9), tileable_noise_2d(1.0, t, cells, 4, 9));
+                assert_eq!(tileable_noise_2d(t, 0.0, cells, 4, 9), tileable_noise_2d(t, 1.0, cells, 4, 9));
                 // And continuous across the wrap: just left of u = 1 is close to u = 0.
                 let left = tileable_noise_2d(1.0 - 1e-6, t, cells, 4, 9);
                 assert!((left - tileable_noise_2d(0.0, t, cells, 4, 9)).abs() < 1e-3);
@@ -753,14 +682,7 @@ mod tests {
 
     #[test]
     fn cube_direction_matches_the_face_selection_table() {
-        let axes = [
-            [1.0, 0.0, 0.0],
-            [-1.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [0.0, -1.0, 0.0],
-            [0.0, 0.0, 1.0],
-            [0.0, 0.0, -1.0],
-        ];
+        let axes = [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
         for face in 0..6 {
             assert_eq!(normalize(cube_direction(face, 0.0, 0.0)), axes[face as usize]);
             for (sc, tc) in [(-0.9, -0.9), (0.9, -0.9), (-0.5, 0.7), (0.3, 0.1)] {
@@ -834,31 +756,18 @@ mod tests {
 
     #[test]
     fn cube_noise_is_seamless() {
-        let image = generate(
-            Generator::Noise,
-            48,
-            &params([BLACK, WHITE], 3, 3, 5),
-            TextureKind::Cube,
-        );
+        let image = generate(Generator::Noise, 48, &params([BLACK, WHITE], 3, 3, 5), TextureKind::Cube);
         let seam = seam_difference(&image, false);
         let interior = interior_difference(&image);
         assert!(interior > 0);
         assert!(seam <= interior + 2, "seam {seam} vs interior {interior}");
         let wrong = seam_difference(&image, true);
-        assert!(
-            wrong > 3 * seam,
-            "the control pairing should be far off: {wrong} vs {seam}"
-        );
+        assert!(wrong > 3 * seam, "the control pairing should be far off: {wrong} vs {seam}");
     }
 
     #[test]
     fn cube_gradient_is_a_seamless_sky() {
-        let image = generate(
-            Generator::Gradient,
-            32,
-            &params([BLACK, WHITE], 8, 4, 0),
-            TextureKind::Cube,
-        );
+        let image = generate(Generator::Gradient, 32, &params([BLACK, WHITE], 8, 4, 0), TextureKind::Cube);
         let seam = seam_difference(&image, false);
         assert!(seam <= interior_difference(&image) + 1, "seam {seam}");
         // +y (layer 2) centre ≈ colour b, −y (layer 3) centre ≈ colour a.
@@ -899,12 +808,7 @@ mod tests {
         let dir = TempDir::new("bottom-up");
         let path = dir.0.join("two.png");
         // Top row: red, green. Bottom row: blue, white.
-        let pixels = [
-            [255, 0, 0, 255],
-            [0, 255, 0, 255],
-            [0, 0, 255, 255],
-            [255, 255, 255, 255],
-        ];
+        let pixels = [[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [255, 255, 255, 255]];
         write_png(&path, 2, 2, pixels.concat());
         let image = load_file(&path).expect("load");
         assert_eq!((image.width, image.height, image.layers), (2, 2, 1));
@@ -953,9 +857,7 @@ mod tests {
         let dir = TempDir::new("formats");
         for name in ["photo.jpg", "still.gif"] {
             let path = dir.0.join(name);
-            image::RgbImage::from_pixel(8, 4, image::Rgb([200, 100, 50]))
-                .save(&path)
-                .expect("write");
+            image::RgbImage::from_pixel(8, 4, image::Rgb([200, 100, 50])).save(&path).expect("write");
             let image = load_file(&path).expect("load");
             assert_eq!((image.width, image.height, image.layers), (8, 4, 1), "{name}");
             let t = texel(&image, 0, 3, 2);
@@ -976,11 +878,7 @@ mod tests {
         let cube = load_faces(&paths).expect("faces");
         assert_eq!((cube.width, cube.height, cube.layers), (2, 2, 6));
         for face in 0..6u32 {
-            assert_eq!(
-                texel(&cube, face, 1, 0),
-                [face as u8 * 10, 0, 0, 255],
-                "file top row is row 0"
-            );
+            assert_eq!(texel(&cube, face, 1, 0), [face as u8 * 10, 0, 0, 255], "file top row is row 0");
             assert_eq!(texel(&cube, face, 0, 1), [255; 4]);
         }
 

@@ -74,9 +74,7 @@ fn fill_block(
     buffer.bytes = vec![0u8; (size as usize).div_ceil(16) * 16];
     for m in &members {
         let name = m.name.clone().unwrap_or_default();
-        let entries: Vec<_> = effect
-            .map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect())
-            .unwrap_or_default();
+        let entries: Vec<_> = effect.map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect()).unwrap_or_default();
         if entries.is_empty() {
             guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
             continue;
@@ -84,9 +82,7 @@ fn fill_block(
         for u in entries {
             let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, ty, &u.name) else { continue };
             match (&u.value, u.semantic) {
-                (Some(v), _) => {
-                    write_slot(module, slot_ty, offset, v, &mut buffer.bytes).map_err(|e| format!("`{}`: {e}", u.name))?
-                }
+                (Some(v), _) => write_slot(module, slot_ty, offset, v, &mut buffer.bytes).map_err(|e| format!("`{}`: {e}", u.name))?,
                 (None, Some(s)) => {
                     let shape = shape_of(module, slot_ty).ok_or_else(|| format!("`{}` cannot hold a semantic", u.name))?;
                     buffer.per_frame.push(SemanticSlot { offset, ty: slot_ty, shape, semantic: s });
@@ -120,11 +116,7 @@ fn guess_member(
         let mut leaves = Vec::new();
         guess_leaves(module, ty, offset, name, &mut buffer.bytes, &mut leaves)?;
         leaves.dedup();
-        let what = if leaves.is_empty() {
-            "zero".to_string()
-        } else {
-            format!("{}; everything else zero", leaves.join(", "))
-        };
+        let what = if leaves.is_empty() { "zero".to_string() } else { format!("{}; everything else zero", leaves.join(", ")) };
         guessed.push(Guessed { name: name.into(), what, aggregate: true });
         return Ok(());
     };
@@ -146,14 +138,7 @@ fn guess_member(
 /// Guesses a constant for every scalar, vector and matrix inside a struct or array,
 /// by its path (`material.diffuse` → white, `light.position` → a light). Semantics are not
 /// bound inside structs. `notes` collects what the leaves that are not zero received.
-fn guess_leaves(
-    module: &Module,
-    ty: Handle<Type>,
-    offset: u32,
-    leaf: &str,
-    buf: &mut [u8],
-    notes: &mut Vec<String>,
-) -> Result<(), String> {
+fn guess_leaves(module: &Module, ty: Handle<Type>, offset: u32, leaf: &str, buf: &mut [u8], notes: &mut Vec<String>) -> Result<(), String> {
     match &module.types[ty].inner {
         TypeInner::Array { base, size: naga::ArraySize::Constant(n), stride } => {
             for i in 0..n.get() {
@@ -191,9 +176,7 @@ fn shape_of(module: &Module, ty: Handle<Type>) -> Option<Shape> {
 
 fn is_float(module: &Module, ty: Handle<Type>) -> bool {
     match module.types[ty].inner {
-        TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } | TypeInner::Matrix { scalar: s, .. } => {
-            s.kind == ScalarKind::Float
-        }
+        TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } | TypeInner::Matrix { scalar: s, .. } => s.kind == ScalarKind::Float,
         _ => false,
     }
 }
@@ -203,8 +186,7 @@ impl UniformBuffer {
     pub fn update(&mut self, module: &Module, frame: &FrameState) -> Result<(), String> {
         for s in &self.per_frame {
             let value = semantics::value(s.semantic, frame, s.shape);
-            write_slot(module, s.ty, s.offset, &value, &mut self.bytes)
-                .map_err(|e| format!("semantic `{}`: {e}", s.semantic.name()))?;
+            write_slot(module, s.ty, s.offset, &value, &mut self.bytes).map_err(|e| format!("semantic `{}`: {e}", s.semantic.name()))?;
         }
         Ok(())
     }

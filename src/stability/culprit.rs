@@ -16,8 +16,8 @@
 //! counting the invocations where every probe passed.
 
 use naga::{
-    BinaryOperator as B, Block, Expression, Function, Handle, Literal, MathFunction, Module, RelationalFunction, ScalarKind,
-    Span, Statement, TypeInner,
+    BinaryOperator as B, Block, Expression, Function, Handle, Literal, MathFunction, Module, RelationalFunction, ScalarKind, Span,
+    Statement, TypeInner,
 };
 
 use crate::stage::StageKind;
@@ -189,7 +189,8 @@ fn counts_buffer(module: &mut Module, slots: u32, (group, binding): (u32, u32)) 
 /// A binding no resource of `module` uses: the next binding of its last group (group 0
 /// when it has none), so no new bind group is needed.
 pub fn free_binding(module: &Module) -> (u32, u32) {
-    let used: Vec<(u32, u32)> = module.global_variables.iter().filter_map(|(_, g)| g.binding.as_ref().map(|b| (b.group, b.binding))).collect();
+    let used: Vec<(u32, u32)> =
+        module.global_variables.iter().filter_map(|(_, g)| g.binding.as_ref().map(|b| (b.group, b.binding))).collect();
     let group = used.iter().map(|b| b.0).max().unwrap_or(0);
     let binding = used.iter().filter(|b| b.0 == group).map(|b| b.1 + 1).max().unwrap_or(0);
     (group, binding)
@@ -240,7 +241,14 @@ struct Site<'a> {
     text: &'a str,
 }
 
-fn probe_function(fun: &mut Function, types: &[TypeInner], flag: Handle<naga::GlobalVariable>, stage: StageKind, text: &str, probes: &mut Vec<Probe>) {
+fn probe_function(
+    fun: &mut Function,
+    types: &[TypeInner],
+    flag: Handle<naga::GlobalVariable>,
+    stage: StageKind,
+    text: &str,
+    probes: &mut Vec<Probe>,
+) {
     let body = std::mem::take(&mut fun.body);
     let site = Site { types, flag, stage, text };
     fun.body = probe_block(fun, body, &site, probes);
@@ -251,11 +259,9 @@ fn probe_block(fun: &mut Function, block: Block, site: &Site<'_>, probes: &mut V
     for (stmt, span) in block.span_into_iter() {
         let stmt = match stmt {
             Statement::Block(b) => Statement::Block(probe_block(fun, b, site, probes)),
-            Statement::If { condition, accept, reject } => Statement::If {
-                condition,
-                accept: probe_block(fun, accept, site, probes),
-                reject: probe_block(fun, reject, site, probes),
-            },
+            Statement::If { condition, accept, reject } => {
+                Statement::If { condition, accept: probe_block(fun, accept, site, probes), reject: probe_block(fun, reject, site, probes) }
+            }
             Statement::Loop { body, continuing, break_if } => Statement::Loop {
                 body: probe_block(fun, body, site, probes),
                 continuing: probe_block(fun, continuing, site, probes),
@@ -301,7 +307,13 @@ fn candidate(e: &Expression, ty: Option<&TypeInner>) -> Option<String> {
 }
 
 /// `Emit` of the test, and `if (flag == 0u && bad(h)) { flag = id; }`.
-fn build_check(fun: &mut Function, h: Handle<Expression>, ty: Option<&TypeInner>, flag: Handle<naga::GlobalVariable>, id: u32) -> (Statement, Statement) {
+fn build_check(
+    fun: &mut Function,
+    h: Handle<Expression>,
+    ty: Option<&TypeInner>,
+    flag: Handle<naga::GlobalVariable>,
+    id: u32,
+) -> (Statement, Statement) {
     let size = match ty {
         Some(TypeInner::Vector { size, .. }) => Some(*size),
         _ => None,
@@ -378,7 +390,10 @@ fn count_at_exits(
             },
             Statement::Switch { selector, cases } => Statement::Switch {
                 selector,
-                cases: cases.into_iter().map(|c| naga::SwitchCase { body: count_at_exits(fun, c.body, exits, flag, counts, base), ..c }).collect(),
+                cases: cases
+                    .into_iter()
+                    .map(|c| naga::SwitchCase { body: count_at_exits(fun, c.body, exits, flag, counts, base), ..c })
+                    .collect(),
             },
             Statement::Kill => {
                 push_count(fun, &mut out, flag, counts, base);

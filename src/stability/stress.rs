@@ -25,11 +25,11 @@ use crate::diag::Diagnostic;
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command;
-use crate::render::memory::{InMemory, MemoryRequest, MemoryRun, ProbeRun};
 use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::Pixels;
+use crate::render::memory::{InMemory, MemoryRequest, MemoryRun, ProbeRun};
 use crate::stability::culprit::Probe;
 use crate::stage::StageKind;
 
@@ -131,7 +131,8 @@ pub fn cases(effect: Option<&Effect>, samples: u32, seed: u32) -> Vec<Case> {
                 .iter()
                 .enumerate()
                 .map(|(i, &(n, v, lo, hi))| {
-                    let pick = |c: u32| lo + (hi - lo) * f64::from(crate::render::attributes::unit_random(seed.wrapping_add(k), i as u32, c));
+                    let pick =
+                        |c: u32| lo + (hi - lo) * f64::from(crate::render::attributes::unit_random(seed.wrapping_add(k), i as u32, c));
                     (n.to_string(), fill(v, &pick))
                 })
                 .collect();
@@ -254,13 +255,17 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
             values.push(geometry.join("; "));
         }
         let inf = counts.pos_inf + counts.neg_inf;
-        let bad = |stage: StageKind| probed.probes.iter().flat_map(|p| &p.counts).filter(|s| s.stage == stage).map(|s| s.bad()).sum::<u64>();
+        let bad =
+            |stage: StageKind| probed.probes.iter().flat_map(|p| &p.counts).filter(|s| s.stage == stage).map(|s| s.bad()).sum::<u64>();
         let (bad_fragments, bad_vertices) = (bad(StageKind::Fragment), bad(StageKind::Vertex));
         if counts.nan + inf > 0 {
             let d = case_error(c, &case, &program, (counts.nan, inf), mask_path.as_deref(), &geometry);
             outcome.diagnostics.push(with_culprits(d, c, &culprits));
         } else if !culprits.is_empty() {
-            let d = Diagnostic::warning(W_HIDDEN_NON_FINITE, format!("{program}: case `{}` computes non-finite values, though its output is finite", case.name));
+            let d = Diagnostic::warning(
+                W_HIDDEN_NON_FINITE,
+                format!("{program}: case `{}` computes non-finite values, though its output is finite", case.name),
+            );
             let d = at_case(d, c, &case, &geometry);
             outcome.diagnostics.push(with_culprits(d, c, &culprits).with_help(
                 "a NaN hidden by max/clamp/step, or by a triangle that covers no pixel, is a NaN on another GPU or mesh: guard the expression where it starts",
@@ -293,11 +298,7 @@ fn render_case(gpu: &Gpu, program: &mut InMemory<'_>, case: &Case, outcome: &mut
 }
 
 fn max_delta(a: &[f32], b: &[f32]) -> f64 {
-    a.iter()
-        .zip(b)
-        .filter(|(x, y)| x.is_finite() && y.is_finite())
-        .map(|(x, y)| f64::from((x - y).abs()))
-        .fold(0.0, f64::max)
+    a.iter().zip(b).filter(|(x, y)| x.is_finite() && y.is_finite()).map(|(x, y)| f64::from((x - y).abs())).fold(0.0, f64::max)
 }
 
 fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut Outcome) -> Option<PathBuf> {
@@ -320,7 +321,14 @@ fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut
 }
 
 /// `E0701` at the manifest entry the case changed (the first), else at the manifest.
-fn case_error(c: &check::Checked, case: &Case, program: &str, (nan, inf): (u64, u64), mask: Option<&Path>, geometry: &[String]) -> Diagnostic {
+fn case_error(
+    c: &check::Checked,
+    case: &Case,
+    program: &str,
+    (nan, inf): (u64, u64),
+    mask: Option<&Path>,
+    geometry: &[String],
+) -> Diagnostic {
     let d = Diagnostic::error(E_NON_FINITE_CASE, format!("{program}: case `{}` renders {nan} NaN and {inf} Inf pixels", case.name));
     let mut d = at_case(d, c, case, geometry);
     if let Some(m) = mask {
@@ -429,8 +437,7 @@ fn with_culprits(mut d: Diagnostic, c: &check::Checked, culprits: &[Culprit]) ->
             _ => String::new(),
         };
         let lead = if k == 0 { "the first non-finite value" } else { "then non-finite" };
-        let label =
-            format!("{lead} ({}) in {} of {} {stage_name} invocations{pass}", f.probe.what, f.first_in, f.total);
+        let label = format!("{lead} ({}) in {} of {} {stage_name} invocations{pass}", f.probe.what, f.first_in, f.total);
         d = if d.span.is_none() { d.at(stage.syntax.file, span, label) } else { d.with_label(stage.syntax.file, span, label) };
         if f.others > 0 {
             let rest = f.bad - f.first_in;

@@ -47,10 +47,7 @@ fn json_parses_and_counts_errors() {
     let d = &v["diagnostics"][0];
     assert_eq!(d["code"], "E0201");
     assert!(d["file"].as_str().unwrap().ends_with("sun.frag"));
-    assert!(d["labels"][0]["file"]
-        .as_str()
-        .unwrap()
-        .ends_with("sun.vert"));
+    assert!(d["labels"][0]["file"].as_str().unwrap().ends_with("sun.vert"));
 }
 
 #[test]
@@ -96,11 +93,7 @@ fn strict_turns_legacy_warning_into_error() {
 fn stage_flag_for_glsl_extension() {
     let dir = scratch("stage-flag");
     let file = dir.join("effect.glsl");
-    std::fs::write(
-        &file,
-        GOOD_FRAG.replace("in vec2 uv;\n", "uniform vec2 uv;\n"),
-    )
-    .unwrap();
+    std::fs::write(&file, GOOD_FRAG.replace("in vec2 uv;\n", "uniform vec2 uv;\n")).unwrap();
     let path = file.to_str().unwrap();
     let out = effectc(&["check", path]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
@@ -119,22 +112,14 @@ fn directory_without_manifest_groups_by_stem() {
     }
     let out = effectc(&["check", dir.to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
-    assert!(
-        stdout(&out).contains("checked 2 programs: no problems"),
-        "{}",
-        stdout(&out)
-    );
+    assert!(stdout(&out).contains("checked 2 programs: no problems"), "{}", stdout(&out));
 }
 
 #[test]
 fn one_bad_program_does_not_stop_the_others() {
     let dir = scratch("good-and-bad");
     std::fs::write(dir.join("bad.vert"), GOOD_VERT).unwrap();
-    std::fs::write(
-        dir.join("bad.frag"),
-        GOOD_FRAG.replace("vec4(uv", "vec4(uvv"),
-    )
-    .unwrap();
+    std::fs::write(dir.join("bad.frag"), GOOD_FRAG.replace("vec4(uv", "vec4(uvv")).unwrap();
     std::fs::write(dir.join("good.vert"), GOOD_VERT).unwrap();
     std::fs::write(dir.join("good.frag"), GOOD_FRAG).unwrap();
     let out = effectc(&["check", "--format", "json", dir.to_str().unwrap()]);

@@ -38,11 +38,8 @@ pub fn render(outcome: &Outcome) -> String {
 
 /// Stage files (by extension effectc knows) directly under `dir`, sorted.
 pub fn stage_files(dir: &Path) -> Vec<PathBuf> {
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| effectc::inputs::stage_of(p, None).is_some())
-        .collect();
+    let mut files: Vec<PathBuf> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).filter(|p| effectc::inputs::stage_of(p, None).is_some()).collect();
     files.sort();
     files
 }
@@ -53,11 +50,7 @@ pub fn assert_crlf_kept(dir: &Path) {
     if name_of(dir).contains("crlf") {
         for file in stage_files(dir) {
             let bytes = std::fs::read(&file).unwrap();
-            assert!(
-                bytes.windows(2).any(|w| w == b"\r\n"),
-                "{}: lost its CRLF line ends",
-                file.display()
-            );
+            assert!(bytes.windows(2).any(|w| w == b"\r\n"), "{}: lost its CRLF line ends", file.display());
         }
     }
 }

@@ -13,11 +13,7 @@ use crate::common;
 #[test]
 fn fail_fixtures() {
     let dirs = common::subdirs("tests/fail");
-    assert!(
-        dirs.len() >= 18,
-        "expected at least 18 fixtures, found {}",
-        dirs.len()
-    );
+    assert!(dirs.len() >= 18, "expected at least 18 fixtures, found {}", dirs.len());
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("../../snapshots/fail");
     settings.set_prepend_module_to_snapshot(false);
@@ -25,8 +21,7 @@ fn fail_fixtures() {
     let mut problems = Vec::new();
     for dir in &dirs {
         let name = common::name_of(dir);
-        let expect = std::fs::read_to_string(dir.join("expect"))
-            .unwrap_or_else(|e| panic!("{name}: missing `expect` file: {e}"));
+        let expect = std::fs::read_to_string(dir.join("expect")).unwrap_or_else(|e| panic!("{name}: missing `expect` file: {e}"));
         common::assert_crlf_kept(dir);
         let (outcome, _) = common::check(dir);
         let diags = &outcome.diagnostics;

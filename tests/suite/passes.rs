@@ -59,7 +59,8 @@ fn dump_targets_writes_every_intermediate_target() {
         return;
     }
     let dir = scratch("passes", "dump");
-    let out = effectc(&["render", PLAIN, "--size", "32x32", "--frames", "2", "--dump-targets", "--explain", "--out", dir.to_str().unwrap()]);
+    let out =
+        effectc(&["render", PLAIN, "--size", "32x32", "--frames", "2", "--dump-targets", "--explain", "--out", dir.to_str().unwrap()]);
     let text = stdout(&out);
     assert_eq!(code(&out), 0, "{text}");
     // Nothing is dropped or shared when dumping: every target can be read back.

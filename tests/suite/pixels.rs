@@ -43,8 +43,7 @@ fn every_effect_matches_its_reference_frames() {
         let out_dir = scratch("pixels", &name);
         let manifest = effect.join("effect.toml");
         let frames = FRAMES.to_string();
-        let out =
-            effectc(&["render", manifest.to_str().unwrap(), "--frames", &frames, "--size", SIZE, "--out", out_dir.to_str().unwrap()]);
+        let out = effectc(&["render", manifest.to_str().unwrap(), "--frames", &frames, "--size", SIZE, "--out", out_dir.to_str().unwrap()]);
         if code(&out) != 0 {
             failures.push(format!("{name}: render failed\n{}", stdout(&out)));
             continue;

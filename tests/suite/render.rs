@@ -60,7 +60,16 @@ fn contact_sheet_and_gif_hold_every_frame() {
     }
     let dir = scratch("render", "sheet");
     let out = effectc(&[
-        "render", "effects/sun/effect.toml", "--frames", "5", "--size", "32x24", "--contact-sheet", "--gif", "--out", dir.to_str().unwrap(),
+        "render",
+        "effects/sun/effect.toml",
+        "--frames",
+        "5",
+        "--size",
+        "32x24",
+        "--contact-sheet",
+        "--gif",
+        "--out",
+        dir.to_str().unwrap(),
     ]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     let (_, w, h) = compare::read_png(&dir.join("sun_sheet.png")).unwrap();

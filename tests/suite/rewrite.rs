@@ -40,11 +40,7 @@ fn glslang_links(dir: &Path) -> Option<bool> {
 #[test]
 fn rewrite_corpus() {
     let dirs = common::subdirs("tests/rewrite");
-    assert!(
-        dirs.len() >= 20,
-        "expected at least 20 programs, found {}",
-        dirs.len()
-    );
+    assert!(dirs.len() >= 20, "expected at least 20 programs, found {}", dirs.len());
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("../../snapshots/rewrite");
     settings.set_prepend_module_to_snapshot(false);
@@ -64,34 +60,17 @@ fn rewrite_corpus() {
             continue;
         }
         let program = checked[0].program.as_ref().expect("a checked program");
-        assert_eq!(
-            program.stages.len(),
-            common::stage_files(dir).len(),
-            "{name}: every stage file compiled"
-        );
+        assert_eq!(program.stages.len(), common::stage_files(dir).len(), "{name}: every stage file compiled");
         for stage in &program.stages {
             let path = outcome.files.path(stage.syntax.file);
             let file = path.rsplit('/').next().unwrap();
-            let rewritten = stage
-                .rewritten
-                .as_ref()
-                .unwrap_or_else(|| panic!("{path}: no rewrite"));
-            assert!(
-                stage.naga.is_some(),
-                "{path}: naga did not validate the rewrite"
-            );
-            assert!(
-                rewritten.text.starts_with("#version 450"),
-                "{path}: rewrite is not 4.50"
-            );
+            let rewritten = stage.rewritten.as_ref().unwrap_or_else(|| panic!("{path}: no rewrite"));
+            assert!(stage.naga.is_some(), "{path}: naga did not validate the rewrite");
+            assert!(rewritten.text.starts_with("#version 450"), "{path}: rewrite is not 4.50");
             settings.bind(|| insta::assert_snapshot!(format!("{name}-{file}"), rewritten.text));
         }
     }
-    assert!(
-        problems.is_empty(),
-        "legal GLSL rejected:\n{}",
-        problems.join("\n")
-    );
+    assert!(problems.is_empty(), "legal GLSL rejected:\n{}", problems.join("\n"));
 }
 
 /// Every known failure still fails (check errors, a stage naga does not validate, or no

@@ -78,11 +78,7 @@ fn run(program: &Program, which: usize, text: &str) -> Result<bool, String> {
         let mut files = Files::new();
         let mut ids = Vec::new();
         for (i, (path, kind)) in program.stages.iter().enumerate() {
-            let t = if i == which {
-                text.to_string()
-            } else {
-                std::fs::read_to_string(path).unwrap()
-            };
+            let t = if i == which { text.to_string() } else { std::fs::read_to_string(path).unwrap() };
             ids.push((files.add(path.display().to_string(), t), *kind));
         }
         let mut diags = Vec::new();
@@ -91,10 +87,7 @@ fn run(program: &Program, which: usize, text: &str) -> Result<bool, String> {
         if let Some(p) = &compiled {
             // naga parses vertex, fragment and compute stages: each must have a module, or a
             // limitation (legal GLSL naga does not take) that check reports as a note.
-            rejected |= p
-                .stages
-                .iter()
-                .any(|s| s.syntax.stage.naga().is_some() && s.naga.is_none() && s.limitation.is_none());
+            rejected |= p.stages.iter().any(|s| s.syntax.stage.naga().is_some() && s.naga.is_none() && s.limitation.is_none());
             let syntaxes: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
             diags.extend(effectc::link::check_interface(&syntaxes));
         }
@@ -102,10 +95,7 @@ fn run(program: &Program, which: usize, text: &str) -> Result<bool, String> {
         (rejected, diags, files)
     }));
     let (rejected, diags, files) = result.map_err(|e| {
-        let msg = e
-            .downcast_ref::<String>()
-            .cloned()
-            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()));
+        let msg = e.downcast_ref::<String>().cloned().or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()));
         format!("panicked: {}", msg.unwrap_or_default())
     })?;
     if rejected && !diag::has_errors(&diags) {
@@ -118,11 +108,7 @@ fn run(program: &Program, which: usize, text: &str) -> Result<bool, String> {
 /// Every diagnostic points at a registered file, inside its text.
 fn spans_in_files(diags: &[Diagnostic], files: &Files) -> Result<(), String> {
     for d in diags {
-        let mut spans: Vec<_> = d
-            .labels
-            .iter()
-            .map(|l| (Some(l.file), Some(l.span.clone())))
-            .collect();
+        let mut spans: Vec<_> = d.labels.iter().map(|l| (Some(l.file), Some(l.span.clone()))).collect();
         spans.push((d.file, d.span.clone()));
         for (file, span) in spans {
             let Some(file) = file else { continue };
@@ -131,13 +117,7 @@ fn spans_in_files(diags: &[Diagnostic], files: &Files) -> Result<(), String> {
             };
             if let Some(s) = span {
                 if s.start > s.end || s.end > f.text.len() {
-                    return Err(format!(
-                        "{}: span {s:?} outside `{}` ({} bytes): {}",
-                        d.code,
-                        f.path,
-                        f.text.len(),
-                        d.message
-                    ));
+                    return Err(format!("{}: span {s:?} outside `{}` ({} bytes): {}", d.code, f.path, f.text.len(), d.message));
                 }
             }
         }
@@ -199,23 +179,15 @@ fn truncations_and_mutations_never_panic() {
                 for (which, (path, _)) in program.stages.iter().enumerate() {
                     let bytes = std::fs::read(path).unwrap();
                     let text = String::from_utf8(bytes.clone()).unwrap();
-                    let mut cuts: Vec<usize> = (0..text.len())
-                        .step_by(7)
-                        .map(|c| floor_boundary(&text, c))
-                        .collect();
+                    let mut cuts: Vec<usize> = (0..text.len()).step_by(7).map(|c| floor_boundary(&text, c)).collect();
                     cuts.extend(text.match_indices('\n').flat_map(|(i, _)| [i, i + 1]));
                     cuts.sort_unstable();
                     cuts.dedup();
-                    let mut rng = XorShift(
-                        0x9E37_79B9_7F4A_7C15 ^ ((pi as u64 + 1) * 0x1000_0001) ^ which as u64,
-                    );
+                    let mut rng = XorShift(0x9E37_79B9_7F4A_7C15 ^ ((pi as u64 + 1) * 0x1000_0001) ^ which as u64);
                     let cases = cuts
                         .into_iter()
                         .map(|c| (format!("prefix of {c} bytes"), text[..c].to_string()))
-                        .chain(
-                            (0..MUTATIONS)
-                                .map(|i| (format!("mutation {i}"), mutate(&mut rng, &bytes))),
-                        );
+                        .chain((0..MUTATIONS).map(|i| (format!("mutation {i}"), mutate(&mut rng, &bytes))));
                     for (what, input) in cases {
                         let result = run(program, which, &input);
                         match result {
@@ -230,11 +202,7 @@ fn truncations_and_mutations_never_panic() {
                                 path.file_name().unwrap().to_string_lossy()
                             ));
                             let _ = std::fs::write(&dump, &input);
-                            failures.lock().unwrap().push(format!(
-                                "{} ({what}, saved to {}): {e}",
-                                path.display(),
-                                dump.display()
-                            ));
+                            failures.lock().unwrap().push(format!("{} ({what}, saved to {}): {e}", path.display(), dump.display()));
                         }
                     }
                 }
@@ -243,20 +211,9 @@ fn truncations_and_mutations_never_panic() {
     });
     let failures = failures.into_inner().unwrap();
     let (accepted, rejected) = counts.into_inner().unwrap();
-    eprintln!(
-        "robust: {accepted} inputs accepted, {rejected} rejected with an error, {} failures",
-        failures.len()
-    );
-    assert!(
-        accepted > 100 && rejected > 1000,
-        "suspiciously few cases: {accepted} accepted, {rejected} rejected"
-    );
-    assert!(
-        failures.is_empty(),
-        "{} failures:\n{}",
-        failures.len(),
-        failures.join("\n")
-    );
+    eprintln!("robust: {accepted} inputs accepted, {rejected} rejected with an error, {} failures", failures.len());
+    assert!(accepted > 100 && rejected > 1000, "suspiciously few cases: {accepted} accepted, {rejected} rejected");
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
 
 #[test]
@@ -266,28 +223,16 @@ fn garbage_and_empty_files_are_errors() {
     std::fs::create_dir_all(&dir).unwrap();
     let mut rng = XorShift(42);
     let garbage: Vec<u8> = (0..4096).map(|_| rng.next() as u8).collect();
-    let printable: String = (0..4096)
-        .map(|_| (b' ' + rng.below(95) as u8) as char)
-        .collect();
-    let cases: [(&str, Vec<u8>); 4] = [
-        ("garbage.frag", garbage),
-        ("empty.frag", Vec::new()),
-        ("printable.frag", printable.into_bytes()),
-        ("nul.frag", vec![0; 64]),
-    ];
+    let printable: String = (0..4096).map(|_| (b' ' + rng.below(95) as u8) as char).collect();
+    let cases: [(&str, Vec<u8>); 4] =
+        [("garbage.frag", garbage), ("empty.frag", Vec::new()), ("printable.frag", printable.into_bytes()), ("nul.frag", vec![0; 64])];
     for (name, bytes) in cases {
         let path = dir.join(name);
         std::fs::write(&path, &bytes).unwrap();
-        let (outcome, _) = catch_unwind(|| {
-            check_inputs(std::slice::from_ref(&path), None, FrontOptions::default())
-        })
-        .unwrap_or_else(|_| panic!("{name}: panicked"));
+        let (outcome, _) = catch_unwind(|| check_inputs(std::slice::from_ref(&path), None, FrontOptions::default()))
+            .unwrap_or_else(|_| panic!("{name}: panicked"));
         let text = common::render(&outcome);
-        assert!(
-            diag::has_errors(&outcome.diagnostics),
-            "{name}: no error:\n{text}"
-        );
-        spans_in_files(&outcome.diagnostics, &outcome.files)
-            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(diag::has_errors(&outcome.diagnostics), "{name}: no error:\n{text}");
+        spans_in_files(&outcome.diagnostics, &outcome.files).unwrap_or_else(|e| panic!("{name}: {e}"));
     }
 }

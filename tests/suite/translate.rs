@@ -101,9 +101,8 @@ fn every_program_translates_validates_and_builds_a_pipeline() {
                 let words = back::spirv_words(&t, *stage).unwrap();
                 let file = format!("{name}.{}.spvasm", stage.short_name());
                 let asm = asm_files.iter().find(|o| o.file_name == file).expect("one disassembly per stage");
-                settings.bind(|| {
-                    insta::assert_snapshot!(format!("{name}-{}-spvasm", stage.short_name()), String::from_utf8_lossy(&asm.bytes))
-                });
+                settings
+                    .bind(|| insta::assert_snapshot!(format!("{name}-{}-spvasm", stage.short_name()), String::from_utf8_lossy(&asm.bytes)));
                 if validate_spirv {
                     if let Err(e) = spirv_val(&words, &scratch.join(format!("{name}.{}.spv", stage.short_name()))) {
                         problems.push(format!("{name}: spirv-val ({stage}): {e}"));
@@ -182,8 +181,7 @@ fn unused_varyings_uniforms_and_functions_are_left_out_and_explained() {
     assert!(wgsl.contains("fn vs_main(") && wgsl.contains("fn fs_main("));
     assert!(!wgsl.contains("debugPos") && !wgsl.contains("unusedScale") && !wgsl.contains("neverCalled"), "{wgsl}");
     let reflect: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(dir.join("out/p.reflect.json")).unwrap()).unwrap();
-    let members: Vec<&str> =
-        reflect["uniform_block"]["members"].as_array().unwrap().iter().map(|m| m["name"].as_str().unwrap()).collect();
+    let members: Vec<&str> = reflect["uniform_block"]["members"].as_array().unwrap().iter().map(|m| m["name"].as_str().unwrap()).collect();
     assert_eq!(members, ["mvp", "tint"]);
     let inputs: Vec<u64> = reflect["vertex_inputs"].as_array().unwrap().iter().map(|v| v["location"].as_u64().unwrap()).collect();
     assert_eq!(inputs, [0, 1]);

@@ -76,23 +76,14 @@ fn sun_block_name_mismatch_is_one_error_in_both_files() {
     assert_eq!(d.severity, Severity::Error);
     let (vert, frag) = (p.file(Vertex), p.file(Fragment));
     assert_eq!(primary(&p, d), (frag, "vert_vars"));
-    assert_eq!(
-        d.message,
-        "fragment input block `vert_vars` has no matching output block in the vertex stage"
-    );
+    assert_eq!(d.message, "fragment input block `vert_vars` has no matching output block in the vertex stage");
     // The secondary label is the vertex *block* name, not its (equal) instance name.
     let block_at = SUN_VERT.find("out vert_out").unwrap() + 4;
     let labels: Vec<_> = d.labels.iter().filter(|l| l.file == vert).collect();
     assert_eq!(labels.len(), 1, "{d:#?}");
     assert_eq!(labels[0].span, block_at..block_at + "vert_out".len());
-    assert!(d.notes.iter().any(|n| {
-        n
-        == "interface blocks match by block name (`vert_vars` vs `vert_out`), not by instance name"
-    }));
-    assert_eq!(
-        d.help.as_deref(),
-        Some("rename `in vert_vars` to `in vert_out` (the members match)")
-    );
+    assert!(d.notes.iter().any(|n| { n == "interface blocks match by block name (`vert_vars` vs `vert_out`), not by instance name" }));
+    assert_eq!(d.help.as_deref(), Some("rename `in vert_vars` to `in vert_out` (the members match)"));
 }
 
 #[test]
@@ -110,14 +101,8 @@ fn paired_blocks_with_different_members_list_the_differences() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0201"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(
-        d.help.as_deref(),
-        Some("rename `in FsIn` to `in VsOut` and make the members agree")
-    );
-    assert!(d
-        .notes
-        .iter()
-        .any(|n| n.contains("`vec3` in the vertex stage but `vec4`")));
+    assert_eq!(d.help.as_deref(), Some("rename `in FsIn` to `in VsOut` and make the members agree"));
+    assert!(d.notes.iter().any(|n| n.contains("`vec3` in the vertex stage but `vec4`")));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["VsOut", "normal"]);
     assert_eq!(label_texts(&p, d, p.file(Fragment)), ["normal"]);
 }
@@ -143,10 +128,7 @@ fn block_member_type_mismatch_labels_both_members() {
     assert_eq!(primary(&p, d), (ff, "VS_OUT"));
     assert_eq!(label_texts(&p, d, vf), ["VS_OUT", "n"]);
     assert_eq!(label_texts(&p, d, ff), ["n"]);
-    assert_eq!(
-        d.notes[0],
-        "member `n` is `vec3` in the vertex stage but `vec4` in the fragment stage"
-    );
+    assert_eq!(d.notes[0], "member `n` is `vec3` in the vertex stage but `vec4` in the fragment stage");
 }
 
 #[test]
@@ -157,18 +139,8 @@ fn block_member_order_and_count_differences_are_one_error() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0211"], "{diags:#?}");
     let notes = &diags[0].notes;
-    assert!(
-        notes
-            .iter()
-            .any(|n| n == "member `float extra` is declared only in the vertex stage"),
-        "{notes:#?}"
-    );
-    assert!(
-        notes
-            .iter()
-            .any(|n| n.starts_with("the members are in a different order: (a, b)")),
-        "{notes:#?}"
-    );
+    assert!(notes.iter().any(|n| n == "member `float extra` is declared only in the vertex stage"), "{notes:#?}");
+    assert!(notes.iter().any(|n| n.starts_with("the members are in a different order: (a, b)")), "{notes:#?}");
 }
 
 #[test]
@@ -179,10 +151,7 @@ fn interpolation_mismatch_is_an_error_before_430() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0208"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(
-        d.message,
-        "`color` is `flat` in the vertex stage but `smooth` in the fragment stage"
-    );
+    assert_eq!(d.message, "`color` is `flat` in the vertex stage but `smooth` in the fragment stage");
     assert_eq!(primary(&p, d), (p.file(Fragment), "color"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["color"]);
     assert_eq!(d.primary_label, "`smooth` (no qualifier) here");
@@ -191,7 +160,8 @@ fn interpolation_mismatch_is_an_error_before_430() {
 #[test]
 fn interpolation_mismatch_is_a_warning_from_430() {
     let vert = "#version 450\nlayout(location = 0) flat out vec3 color;\nvoid main() { color = vec3(1.0); }\n";
-    let frag = "#version 450\nlayout(location = 0) in vec3 color;\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(color, 1.0); }\n";
+    let frag =
+        "#version 450\nlayout(location = 0) in vec3 color;\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(color, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
     assert_eq!(codes(&diags), ["W0203"], "{diags:#?}");
@@ -206,10 +176,7 @@ fn centroid_and_location_mismatches() {
     assert_eq!(codes(&diags), ["E0209", "E0210"], "{diags:#?}");
     let loc = only(&diags, "E0210");
     assert_eq!(primary(&p, loc), (p.file(Fragment), "layout(location = 2)"));
-    assert_eq!(
-        label_texts(&p, loc, p.file(Vertex)),
-        ["layout(location = 1)"]
-    );
+    assert_eq!(label_texts(&p, loc, p.file(Vertex)), ["layout(location = 1)"]);
 }
 
 #[test]
@@ -220,23 +187,16 @@ fn loose_type_mismatch_labels_both_declarations() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0207"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(
-        d.message,
-        "`vNormal` is `vec3` in the vertex stage but `vec4` in the fragment stage"
-    );
+    assert_eq!(d.message, "`vNormal` is `vec3` in the vertex stage but `vec4` in the fragment stage");
     assert_eq!(primary(&p, d), (p.file(Fragment), "vNormal"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["vNormal"]);
-    assert_eq!(
-        d.help.as_deref(),
-        Some("declare the fragment input as `in vec3 vNormal;`")
-    );
+    assert_eq!(d.help.as_deref(), Some("declare the fragment input as `in vec3 vNormal;`"));
 }
 
 #[test]
 fn missing_producer_suggests_the_nearest_output() {
     let vert = "#version 330\nout vec3 vNormal;\nvoid main() { vNormal = vec3(0.0); }\n";
-    let frag =
-        "#version 330\nin vec3 vNormals;\nout vec4 c;\nvoid main() { c = vec4(vNormals, 1.0); }\n";
+    let frag = "#version 330\nin vec3 vNormals;\nout vec4 c;\nvoid main() { c = vec4(vNormals, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
     // The typo is one error; the misspelt output is not reported again as unread.
@@ -244,13 +204,7 @@ fn missing_producer_suggests_the_nearest_output() {
     let d = &diags[0];
     assert_eq!(primary(&p, d), (p.file(Fragment), "vNormals"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["vNormal"]);
-    assert!(
-        d.help
-            .as_deref()
-            .unwrap()
-            .starts_with("did you mean `vNormal`?"),
-        "{d:#?}"
-    );
+    assert!(d.help.as_deref().unwrap().starts_with("did you mean `vNormal`?"), "{d:#?}");
 }
 
 #[test]
@@ -283,10 +237,7 @@ fn unread_output_is_a_warning() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["W0201"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(
-        d.message,
-        "vertex output `extra` is never read by the fragment stage"
-    );
+    assert_eq!(d.message, "vertex output `extra` is never read by the fragment stage");
     assert_eq!(primary(&p, d), (p.file(Vertex), "extra"));
 }
 
@@ -297,20 +248,13 @@ fn loose_outputs_read_as_a_block_are_one_error() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0201"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(
-        label_texts(&p, d, p.file(Vertex)),
-        ["outputTexCoords", "swirlPosVector"]
-    );
-    assert!(
-        d.help.as_deref().unwrap().contains("as separate outputs"),
-        "{d:#?}"
-    );
+    assert_eq!(label_texts(&p, d, p.file(Vertex)), ["outputTexCoords", "swirlPosVector"]);
+    assert!(d.help.as_deref().unwrap().contains("as separate outputs"), "{d:#?}");
 }
 
 #[test]
 fn other_stage_instance_name_is_explained() {
-    let vert =
-        "#version 330\nout VS { vec2 uv; } vs_out;\nvoid main() { vs_out.uv = vec2(0.0); }\n";
+    let vert = "#version 330\nout VS { vec2 uv; } vs_out;\nvoid main() { vs_out.uv = vec2(0.0); }\n";
     let frag = "#version 330\nin VS { vec2 uv; } fs_in;\nout vec4 c;\nvoid main() { c = vec4(vs_out.uv, fs_in.uv); c += vec4(vs_out.uv, 0.0, 0.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
@@ -321,10 +265,7 @@ fn other_stage_instance_name_is_explained() {
     assert_eq!(d.span.as_ref().unwrap().start, frag.find("vs_out").unwrap());
     assert_eq!(label_texts(&p, d, vf), ["vs_out"]);
     assert_eq!(label_texts(&p, d, ff), ["fs_in", "vs_out"]);
-    assert_eq!(
-        d.help.as_deref(),
-        Some("in this stage the block instance is called `fs_in`: write `fs_in.uv`")
-    );
+    assert_eq!(d.help.as_deref(), Some("in this stage the block instance is called `fs_in`: write `fs_in.uv`"));
 }
 
 #[test]
@@ -335,18 +276,12 @@ fn seed_style_use_of_the_vertex_instance_in_the_fragment() {
     // The block-name mismatch (unread now, so a warning) and the foreign instance name.
     assert_eq!(codes(&diags), ["E0203", "W0202"], "{diags:#?}");
     let d = only(&diags, "E0203");
-    assert_eq!(
-        d.help.as_deref(),
-        Some(
-            "in this stage the block instance is called `frag_in`: write `frag_in.outputTexCoords`"
-        )
-    );
+    assert_eq!(d.help.as_deref(), Some("in this stage the block instance is called `frag_in`: write `frag_in.outputTexCoords`"));
 }
 
 #[test]
 fn block_name_used_as_a_variable() {
-    let vert =
-        "#version 330\nout VS { vec2 uv; } vs_out;\nvoid main() { vs_out.uv = vec2(0.0); }\n";
+    let vert = "#version 330\nout VS { vec2 uv; } vs_out;\nvoid main() { vs_out.uv = vec2(0.0); }\n";
     let frag = "#version 330\nin VS { vec2 uv; } fs_in;\nout vec4 c;\nvoid main() { c = vec4(VS.uv, fs_in.uv); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let d = only(&p.interface(), "E0203").clone();
@@ -356,29 +291,21 @@ fn block_name_used_as_a_variable() {
 
 #[test]
 fn uniform_declared_only_in_another_stage() {
-    let vert =
-        "#version 330\nuniform float timeVar;\nvoid main() { gl_Position = vec4(timeVar); }\n";
+    let vert = "#version 330\nuniform float timeVar;\nvoid main() { gl_Position = vec4(timeVar); }\n";
     let frag = "#version 330\nout vec4 c;\nvoid main() { c = vec4(timeVar); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
     let d = only(&diags, "E0203");
     assert_eq!(primary(&p, d), (p.file(Fragment), "timeVar"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["timeVar"]);
-    assert!(
-        d.help
-            .as_deref()
-            .unwrap()
-            .starts_with("declare `uniform float timeVar;`"),
-        "{d:#?}"
-    );
+    assert!(d.help.as_deref().unwrap().starts_with("declare `uniform float timeVar;`"), "{d:#?}");
 }
 
 #[test]
 fn geometry_inputs_are_arrays_of_vertex_outputs() {
     let vert = "#version 330\nout vec3 normal;\nout VS_OUT { vec2 uv; } vs_out;\nvoid main() { normal = vec3(0.0); vs_out.uv = vec2(0.0); gl_Position = vec4(0.0); }\n";
     let geom = "#version 330\nlayout(triangles) in;\nlayout(triangle_strip, max_vertices = 3) out;\nin vec3 normal[];\nin VS_OUT { vec2 uv; } gs_in[];\nout vec3 gNormal;\nvoid main() { for (int i = 0; i < 3; i++) { gNormal = normal[i] * gs_in[i].uv.x; gl_Position = gl_in[i].gl_Position; EmitVertex(); } EndPrimitive(); }\n";
-    let frag =
-        "#version 330\nin vec3 gNormal;\nout vec4 c;\nvoid main() { c = vec4(gNormal, 1.0); }\n";
+    let frag = "#version 330\nin vec3 gNormal;\nout vec4 c;\nvoid main() { c = vec4(gNormal, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Geometry, geom), (Fragment, frag)]);
     let diags = p.interface();
     assert!(diags.is_empty(), "{diags:#?}");
@@ -392,10 +319,7 @@ fn geometry_input_type_mismatch_and_missing_array() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0207", "E0212"], "{diags:#?}");
     let ty = only(&diags, "E0207");
-    assert_eq!(
-        ty.help.as_deref(),
-        Some("declare the geometry input as `in vec3 normal[];`")
-    );
+    assert_eq!(ty.help.as_deref(), Some("declare the geometry input as `in vec3 normal[];`"));
     assert_eq!(primary(&p, only(&diags, "E0212")), (p.file(Geometry), "uv"));
 }
 
@@ -406,12 +330,7 @@ fn tessellation_stages_match_per_vertex_arrays() {
     let tesc = "#version 410\nlayout(vertices = 3) out;\nin vec3 vPos[];\nout vec3 tcPos[];\nvoid main() { tcPos[gl_InvocationID] = vPos[gl_InvocationID]; }\n";
     let tese = "#version 410\nlayout(triangles) in;\nin vec3 tcPos[];\nout vec3 tePos;\nvoid main() { tePos = tcPos[0]; gl_Position = vec4(tePos, 1.0); }\n";
     let frag = "#version 410\nin vec3 tePos;\nout vec4 c;\nvoid main() { c = vec4(tePos, 1.0); }\n";
-    let p = Program::new(&[
-        (Vertex, vert),
-        (TessControl, tesc),
-        (TessEval, tese),
-        (Fragment, frag),
-    ]);
+    let p = Program::new(&[(Vertex, vert), (TessControl, tesc), (TessEval, tese), (Fragment, frag)]);
     let diags = p.interface();
     assert!(diags.is_empty(), "{diags:#?}");
 }
@@ -426,8 +345,5 @@ fn loose_output_read_as_a_member_of_a_matched_block() {
     let w = only(&diags, "W0201");
     assert_eq!(primary(&p, w), (p.file(Vertex), "normal"));
     assert_eq!(label_texts(&p, w, p.file(Fragment)), ["normal"]);
-    assert_eq!(
-        w.help.as_deref(),
-        Some("move the output into `out VS { … }` in the vertex stage")
-    );
+    assert_eq!(w.help.as_deref(), Some("move the output into `out VS { … }` in the vertex stage"));
 }

@@ -21,8 +21,7 @@ impl Setup {
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("shader.vert"), vert).unwrap();
         std::fs::write(dir.join("shader.frag"), frag).unwrap();
-        let text =
-            format!("[stages]\nvertex = \"shader.vert\"\nfragment = \"shader.frag\"\n\n{extra}");
+        let text = format!("[stages]\nvertex = \"shader.vert\"\nfragment = \"shader.frag\"\n\n{extra}");
         let mut p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
         let id = p.files.add("effect.toml", text.clone());
         let effect = crate::manifest::parse(&text, id, &dir).expect("the manifest parses");
@@ -44,10 +43,7 @@ fn frag(decls: &str, body: &str) -> String {
 
 #[test]
 fn unknown_uniform_suggests_the_nearest_name() {
-    let f = frag(
-        "uniform float minBI;\nuniform float maxBI;",
-        "fragColor = vec4(mix(minBI, maxBI, uv.x));",
-    );
+    let f = frag("uniform float minBI;\nuniform float maxBI;", "fragColor = vec4(mix(minBI, maxBI, uv.x));");
     let s = Setup::new(VERT, &f, "[uniforms]\nminBI = 0.2\nmaxBl = 1.4\n");
     let diags = s.check();
     // The typo, and `maxBI` consequently has no default.
@@ -78,15 +74,9 @@ fn value_type_mismatch_points_at_value_and_declaration() {
     let diags = s.check();
     assert_eq!(codes(&diags), ["E0221"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(
-        d.message,
-        "the default for `tint` does not fit its type `vec3`"
-    );
+    assert_eq!(d.message, "the default for `tint` does not fit its type `vec3`");
     assert_eq!(primary(&s.p, d), (s.manifest(), "[1.0, 0.5]"));
-    assert_eq!(
-        d.primary_label,
-        "expected a list of 3 numbers, found a list of 2 numbers"
-    );
+    assert_eq!(d.primary_label, "expected a list of 3 numbers, found a list of 2 numbers");
     assert_eq!(label_texts(&s.p, d, s.p.file(Fragment)), ["tint"]);
 }
 
@@ -103,18 +93,12 @@ fn values_of_every_shape() {
     let diags = s.check();
     assert_eq!(codes(&diags), ["E0221"; 9], "{diags:#?}");
     let c = diags.iter().find(|d| d.message.contains("`c`")).unwrap();
-    assert_eq!(
-        c.primary_label,
-        "expected a non-negative integer, found the negative integer `-1`"
-    );
+    assert_eq!(c.primary_label, "expected a non-negative integer, found the negative integer `-1`");
 }
 
 #[test]
 fn semantic_and_range_must_fit_the_type() {
-    let f = frag(
-        "uniform vec2 t;\nuniform bvec3 tint;\nuniform float time;",
-        "fragColor = vec4(t, float(tint.x), time);",
-    );
+    let f = frag("uniform vec2 t;\nuniform bvec3 tint;\nuniform float time;", "fragColor = vec4(t, float(tint.x), time);");
     let s = Setup::new(
         VERT,
         &f,
@@ -125,49 +109,26 @@ fn semantic_and_range_must_fit_the_type() {
     let sem = only(&diags, "E0222");
     assert_eq!(primary(&s.p, sem), (s.manifest(), "\"time\""));
     assert_eq!(label_texts(&s.p, sem, s.p.file(Fragment)), ["t"]);
-    assert!(
-        sem.help.as_deref().unwrap().contains("`resolution`"),
-        "{sem:#?}"
-    );
+    assert!(sem.help.as_deref().unwrap().contains("`resolution`"), "{sem:#?}");
     let range = only(&diags, "E0223");
     assert_eq!(primary(&s.p, range), (s.manifest(), "[0.0, 1.0]"));
 }
 
 #[test]
 fn read_uniform_without_default_warns_with_an_example() {
-    let f = frag(
-        "uniform float bFrequency;\nuniform float timeVarFrag;",
-        "fragColor = vec4(sin(timeVarFrag * bFrequency));",
-    );
+    let f = frag("uniform float bFrequency;\nuniform float timeVarFrag;", "fragColor = vec4(sin(timeVarFrag * bFrequency));");
     let s = Setup::new(VERT, &f, "");
     let diags = s.check();
     assert_eq!(codes(&diags), ["W0220", "W0220"], "{diags:#?}");
-    assert_eq!(
-        diags[0].message,
-        "uniform `bFrequency` has no default in effect.toml"
-    );
+    assert_eq!(diags[0].message, "uniform `bFrequency` has no default in effect.toml");
     assert_eq!(primary(&s.p, &diags[0]), (s.p.file(Fragment), "bFrequency"));
-    assert_eq!(
-        diags[0].help.as_deref(),
-        Some("add `bFrequency = 0.0` under [uniforms] in effect.toml")
-    );
-    assert!(
-        diags[1]
-            .help
-            .as_deref()
-            .unwrap()
-            .contains("{ semantic = \"time\" }"),
-        "{:#?}",
-        diags[1]
-    );
+    assert_eq!(diags[0].help.as_deref(), Some("add `bFrequency = 0.0` under [uniforms] in effect.toml"));
+    assert!(diags[1].help.as_deref().unwrap().contains("{ semantic = \"time\" }"), "{:#?}", diags[1]);
 }
 
 #[test]
 fn unread_uniform_and_its_default_warn() {
-    let f = frag(
-        "uniform float used;\nuniform float unused;",
-        "fragColor = vec4(used);",
-    );
+    let f = frag("uniform float used;\nuniform float unused;", "fragColor = vec4(used);");
     let s = Setup::new(VERT, &f, "[uniforms]\nused = 1.0\nunused = 2.0\n");
     let diags = s.check();
     assert_eq!(codes(&diags), ["W0221", "W0223"], "{diags:#?}");
@@ -189,10 +150,7 @@ fn a_uniform_read_in_any_stage_counts_as_read() {
 
 #[test]
 fn anonymous_block_members_take_defaults() {
-    let f = frag(
-        "layout(std140) uniform Params { float gain; vec3 tint; };",
-        "fragColor = vec4(tint * gain, 1.0);",
-    );
+    let f = frag("layout(std140) uniform Params { float gain; vec3 tint; };", "fragColor = vec4(tint * gain, 1.0);");
     let s = Setup::new(VERT, &f, "[uniforms]\ngain = 2.0\ntint = [1.0, 0.5]\n");
     let diags = s.check();
     assert_eq!(codes(&diags), ["E0221"], "{diags:#?}");
@@ -200,26 +158,12 @@ fn anonymous_block_members_take_defaults() {
 
 #[test]
 fn struct_paths_and_whole_structs() {
-    let f = frag(
-        "struct Light { vec3 color; float power; };\nuniform Light light;",
-        "fragColor = vec4(light.color * light.power, 1.0);",
-    );
-    let s = Setup::new(
-        VERT,
-        &f,
-        "[uniforms]\nlight = 1.0\n\"light.color\" = [1.0, 1.0, 1.0]\n\"light.powr\" = 2.0\n",
-    );
+    let f = frag("struct Light { vec3 color; float power; };\nuniform Light light;", "fragColor = vec4(light.color * light.power, 1.0);");
+    let s = Setup::new(VERT, &f, "[uniforms]\nlight = 1.0\n\"light.color\" = [1.0, 1.0, 1.0]\n\"light.powr\" = 2.0\n");
     let diags = s.check();
     assert_eq!(codes(&diags), ["E0221", "E0225"], "{diags:#?}");
-    assert_eq!(
-        only(&diags, "E0225").help.as_deref(),
-        Some("did you mean `light.power`?")
-    );
-    assert!(only(&diags, "E0221")
-        .help
-        .as_deref()
-        .unwrap()
-        .contains("`light.color`"));
+    assert_eq!(only(&diags, "E0225").help.as_deref(), Some("did you mean `light.power`?"));
+    assert!(only(&diags, "E0221").help.as_deref().unwrap().contains("`light.color`"));
 }
 
 #[test]
@@ -228,19 +172,11 @@ fn textures_against_samplers() {
         "uniform sampler2D textureSamplerVar;\nuniform samplerCube sky;\nuniform sampler2D noTexture;",
         "fragColor = texture(textureSamplerVar, uv) + texture(sky, vec3(uv, 1.0)) + texture(noTexture, uv);",
     );
-    let s = Setup::new(
-        VERT,
-        &f,
-        "[textures]\ntextureSampler = { generate = \"noise\" }\nsky = { generate = \"checker\" }\n",
-    );
+    let s = Setup::new(VERT, &f, "[textures]\ntextureSampler = { generate = \"noise\" }\nsky = { generate = \"checker\" }\n");
     let diags = s.check();
     // `textureSampler` is a typo (and so `textureSamplerVar` has no texture), `sky` is
     // bound to a 2d texture, `noTexture` has none.
-    assert_eq!(
-        codes(&diags),
-        ["E0224", "E0226", "W0222", "W0222"],
-        "{diags:#?}"
-    );
+    assert_eq!(codes(&diags), ["E0224", "E0226", "W0222", "W0222"], "{diags:#?}");
     let d = only(&diags, "E0224");
     assert_eq!(primary(&s.p, d), (s.manifest(), "textureSampler"));
     assert_eq!(d.help.as_deref(), Some("did you mean `textureSamplerVar`?"));
@@ -256,10 +192,7 @@ fn sampler_under_uniforms_is_rejected() {
     assert_eq!(codes(&diags), ["E0221", "W0222"], "{diags:#?}");
     let d = only(&diags, "E0221");
     assert_eq!(primary(&s.p, d), (s.manifest(), "tex"));
-    assert_eq!(
-        d.help.as_deref(),
-        Some("bind a texture under [textures] instead: `tex = { file = \"…\" }`")
-    );
+    assert_eq!(d.help.as_deref(), Some("bind a texture under [textures] instead: `tex = { file = \"…\" }`"));
 }
 
 #[test]
@@ -282,31 +215,18 @@ fn sampler_arrays_and_struct_samplers_need_textures_not_values() {
         "struct Material { sampler2D diffuse; float shininess; };\nuniform Material material;\nuniform sampler2D maps[2];",
         "fragColor = texture(material.diffuse, uv) * material.shininess + texture(maps[1], uv);",
     );
-    let s = Setup::new(
-        VERT,
-        &f,
-        "[textures]\n\"maps[0]\" = { generate = \"checker\" }\n",
-    );
+    let s = Setup::new(VERT, &f, "[textures]\n\"maps[0]\" = { generate = \"checker\" }\n");
     let diags = s.check();
     assert_eq!(codes(&diags), ["W0220", "W0222"], "{diags:#?}");
     let w = only(&diags, "W0220");
-    assert_eq!(
-        w.help.as_deref(),
-        Some("add its members under [uniforms] in effect.toml: `material.shininess = 0.0`")
-    );
+    assert_eq!(w.help.as_deref(), Some("add its members under [uniforms] in effect.toml: `material.shininess = 0.0`"));
     let t = only(&diags, "W0222");
-    assert_eq!(
-        t.message,
-        "sampler `material.diffuse` has no entry in [textures]"
-    );
+    assert_eq!(t.message, "sampler `material.diffuse` has no entry in [textures]");
 }
 
 #[test]
 fn range_applies_to_numbers_and_numeric_vectors_only() {
-    let f = frag(
-        "uniform vec3 tint;\nuniform mat2 warp;\nuniform bvec2 flags;",
-        "fragColor = vec4(tint * (warp * uv).x, float(flags.x));",
-    );
+    let f = frag("uniform vec3 tint;\nuniform mat2 warp;\nuniform bvec2 flags;", "fragColor = vec4(tint * (warp * uv).x, float(flags.x));");
     let s = Setup::new(
         VERT,
         &f,

@@ -32,11 +32,7 @@ impl Program {
     }
 
     pub fn file(&self, kind: StageKind) -> FileId {
-        self.stages
-            .iter()
-            .find(|s| s.stage == kind)
-            .expect("stage")
-            .file
+        self.stages.iter().find(|s| s.stage == kind).expect("stage").file
     }
 
     /// The text a span covers.
@@ -71,9 +67,5 @@ pub(super) fn primary<'a>(p: &'a Program, d: &Diagnostic) -> (FileId, &'a str) {
 
 /// Texts covered by the labels in `file`.
 pub(super) fn label_texts<'a>(p: &'a Program, d: &Diagnostic, file: FileId) -> Vec<&'a str> {
-    d.labels
-        .iter()
-        .filter(|l| l.file == file)
-        .map(|l| p.text(file, &l.span))
-        .collect()
+    d.labels.iter().filter(|l| l.file == file).map(|l| p.text(file, &l.span)).collect()
 }

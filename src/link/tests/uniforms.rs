@@ -11,10 +11,7 @@ fn uniform_type_conflict_labels_both_stages() {
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0204"], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(
-        d.message,
-        "uniform `tint` is `vec3` in the vertex stage but `vec4` in the fragment stage"
-    );
+    assert_eq!(d.message, "uniform `tint` is `vec3` in the vertex stage but `vec4` in the fragment stage");
     assert_eq!(primary(&p, d), (p.file(Fragment), "tint"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["tint"]);
 }
@@ -50,7 +47,8 @@ fn uniform_block_member_conflict() {
 #[test]
 fn struct_used_by_uniforms_defined_differently() {
     let vert = "#version 330\nstruct Light { vec3 pos; vec3 color; };\nuniform Light light;\nvoid main() { gl_Position = vec4(light.pos, 1.0); }\n";
-    let frag = "#version 330\nstruct Light { vec3 pos; vec4 color; };\nuniform Light light;\nout vec4 c;\nvoid main() { c = light.color; }\n";
+    let frag =
+        "#version 330\nstruct Light { vec3 pos; vec4 color; };\nuniform Light light;\nout vec4 c;\nvoid main() { c = light.color; }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
     assert_eq!(codes(&diags), ["E0206"], "{diags:#?}");

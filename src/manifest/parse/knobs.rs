@@ -52,7 +52,8 @@ impl Ctx<'_> {
             };
             let reference = match reference {
                 Some((r, span)) if !values.contains(&r) => {
-                    let d = self.error(E_VALUE, span, format!("the reference of knob `{name}` is not one of its values"), "not in `values`");
+                    let d =
+                        self.error(E_VALUE, span, format!("the reference of knob `{name}` is not one of its values"), "not in `values`");
                     d.help = Some("the reference is the most accurate of the swept values".into());
                     continue;
                 }

@@ -11,8 +11,8 @@ use toml::de::{DeTable, DeValue};
 use super::scene::{BLEND_CHOICES, CULL_CHOICES};
 use super::{entries, key, list, Ctx, Val};
 use crate::manifest::{
-    Filter, PassClear, PassDecl, PassDraw, SampleDecl, TargetDecl, TargetFormat, TargetRef, TargetSize, E_ASSET_NOT_FOUND,
-    E_CONFLICT, E_MISSING, E_VALUE, MAX_FRAME_SIDE,
+    Filter, PassClear, PassDecl, PassDraw, SampleDecl, TargetDecl, TargetFormat, TargetRef, TargetSize, E_ASSET_NOT_FOUND, E_CONFLICT,
+    E_MISSING, E_VALUE, MAX_FRAME_SIDE,
 };
 
 const TARGET_KEYS: &[&str] = &["format", "scale", "size"];
@@ -121,7 +121,12 @@ impl Ctx<'_> {
             let Some(pass) = self.pass(item, t, i) else { continue };
             if let Some(first) = out.iter().find(|p| p.name == pass.name) {
                 let file = self.file;
-                let d = self.error(E_VALUE, pass.name_span.clone(), format!("two passes are named `{}`", pass.name), "second pass of this name");
+                let d = self.error(
+                    E_VALUE,
+                    pass.name_span.clone(),
+                    format!("two passes are named `{}`", pass.name),
+                    "second pass of this name",
+                );
                 d.labels.push(crate::diag::Label { file, span: first.name_span.clone(), message: "first one".into() });
                 continue;
             }
@@ -223,9 +228,7 @@ impl Ctx<'_> {
                 "blend" => pass.blend = self.choice(v2, what, "blend mode", BLEND_CHOICES),
                 "cull" => pass.cull = self.choice(v2, what, "cull mode", CULL_CHOICES),
                 "depth_write" => pass.depth_write = self.boolean(v2, what),
-                "depth_compare" => {
-                    pass.depth_compare = self.choice(v2, what, "depth comparison", crate::manifest::DepthCompare::CHOICES)
-                }
+                "depth_compare" => pass.depth_compare = self.choice(v2, what, "depth comparison", crate::manifest::DepthCompare::CHOICES),
                 "clear" => match v2.get_ref() {
                     DeValue::Boolean(false) => pass.clear = PassClear::Keep,
                     DeValue::Boolean(true) => pass.clear = PassClear::Default,
@@ -339,7 +342,14 @@ impl Ctx<'_> {
     }
 
     /// Rules between the multi-pass keys and the rest of the top level.
-    pub(super) fn check_pass_keys(&mut self, passes: &[PassDecl], has_stages: Option<Range<usize>>, output: &Option<TargetRef>, targets_key: Option<Range<usize>>, passes_key: Option<Range<usize>>) {
+    pub(super) fn check_pass_keys(
+        &mut self,
+        passes: &[PassDecl],
+        has_stages: Option<Range<usize>>,
+        output: &Option<TargetRef>,
+        targets_key: Option<Range<usize>>,
+        passes_key: Option<Range<usize>>,
+    ) {
         match (passes_key, has_stages) {
             (Some(p), Some(s)) => {
                 let file = self.file;

@@ -10,23 +10,18 @@ use toml::de::{DeTable, DeValue};
 
 use super::{entries, key, Ctx, Val};
 use crate::manifest::{
-    Blend, CameraDecl, DepthCompare, CameraKey, Cull, Ease, InstanceAttribute, InstanceSource, InstancesDecl, ModelDecl, RenderDecl,
+    Blend, CameraDecl, CameraKey, Cull, DepthCompare, Ease, InstanceAttribute, InstanceSource, InstancesDecl, ModelDecl, RenderDecl,
     E_CONFLICT, E_MISSING, E_VALUE, MAX_FRAMES, MAX_FRAME_SIDE, MAX_INSTANCES,
 };
 
 const CAMERA_KEYS: &[&str] = &["eye", "target", "up", "fov", "near", "far", "keys", "ease"];
 const CAMERA_KEY_KEYS: &[&str] = &["time", "eye", "target"];
 const MODEL_KEYS: &[&str] = &["translate", "rotate", "scale", "spin"];
-const RENDER_KEYS: &[&str] =
-    &["size", "frames", "fps", "clear", "cull", "depth_test", "depth_write", "depth_compare", "blend"];
+const RENDER_KEYS: &[&str] = &["size", "frames", "fps", "clear", "cull", "depth_test", "depth_write", "depth_compare", "blend"];
 const INSTANCES_KEYS: &[&str] = &["count", "attributes"];
 pub(super) const CULL_CHOICES: &[(&str, Cull)] = &[("none", Cull::None), ("back", Cull::Back), ("front", Cull::Front)];
-pub(super) const BLEND_CHOICES: &[(&str, Blend)] = &[
-    ("none", Blend::None),
-    ("alpha", Blend::Alpha),
-    ("additive", Blend::Additive),
-    ("premultiplied", Blend::Premultiplied),
-];
+pub(super) const BLEND_CHOICES: &[(&str, Blend)] =
+    &[("none", Blend::None), ("alpha", Blend::Alpha), ("additive", Blend::Additive), ("premultiplied", Blend::Premultiplied)];
 const INSTANCE_ATTRIBUTE_KEYS: &[&str] = &["values", "random", "seed", "sequence"];
 
 impl Ctx<'_> {
@@ -38,12 +33,7 @@ impl Ctx<'_> {
             return None;
         };
         if items.len() != N {
-            self.error(
-                E_VALUE,
-                v.span(),
-                format!("{what} must be {expected}, found {}", items.len()),
-                format!("expected {N} numbers"),
-            );
+            self.error(E_VALUE, v.span(), format!("{what} must be {expected}, found {}", items.len()), format!("expected {N} numbers"));
             return None;
         }
         let mut out = [0.0f32; N];
@@ -74,12 +64,7 @@ impl Ctx<'_> {
         if x > lo && x < hi {
             Some(x)
         } else {
-            self.error(
-                E_VALUE,
-                v.span(),
-                format!("{what} must be greater than {lo} and less than {hi}"),
-                format!("not in ({lo}, {hi})"),
-            );
+            self.error(E_VALUE, v.span(), format!("{what} must be greater than {lo} and less than {hi}"), format!("not in ({lo}, {hi})"));
             None
         }
     }
@@ -320,9 +305,7 @@ impl Ctx<'_> {
                 "cull" => self.choice(v2, what, "cull mode", CULL_CHOICES).map(|c| r.cull = c).is_some(),
                 "depth_test" => self.boolean(v2, what).map(|b| r.depth_test = b).is_some(),
                 "depth_write" => self.boolean(v2, what).map(|b| r.depth_write = b).is_some(),
-                "depth_compare" => {
-                    self.choice(v2, what, "depth comparison", DepthCompare::CHOICES).map(|c| r.depth_compare = c).is_some()
-                }
+                "depth_compare" => self.choice(v2, what, "depth comparison", DepthCompare::CHOICES).map(|c| r.depth_compare = c).is_some(),
                 "blend" => self.choice(v2, what, "blend mode", BLEND_CHOICES).map(|b| r.blend = b).is_some(),
                 other => {
                     self.unknown_key(other, k.span(), "in `[render]`", RENDER_KEYS);
@@ -424,9 +407,7 @@ impl Ctx<'_> {
                 "random" | "sequence" => {
                     sources += 1;
                     let pair = match v2.get_ref() {
-                        DeValue::Array(items) if items.len() == 2 => {
-                            self.vector(&items[0], &w).zip(self.vector(&items[1], &w))
-                        }
+                        DeValue::Array(items) if items.len() == 2 => self.vector(&items[0], &w).zip(self.vector(&items[1], &w)),
                         _ => {
                             self.wrong_type(v2, &w, "`[a, b]` (numbers or vectors of up to 4 numbers)");
                             None

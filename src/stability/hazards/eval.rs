@@ -102,9 +102,7 @@ impl Analyzer<'_> {
             Expression::Swizzle { vector, pattern, size } => {
                 sub(c, *vector).map(|k| Self::hash_key(("sw", k, format!("{pattern:?}{size:?}"))))
             }
-            Expression::As { expr, kind, convert } => {
-                sub(c, *expr).map(|k| Self::hash_key(("as", k, format!("{kind:?}{convert:?}"))))
-            }
+            Expression::As { expr, kind, convert } => sub(c, *expr).map(|k| Self::hash_key(("as", k, format!("{kind:?}{convert:?}")))),
             _ => None,
         };
         k
@@ -217,7 +215,15 @@ impl Analyzer<'_> {
         }
     }
 
-    fn binary(&mut self, c: &mut Call<'_>, state: &State, h: Handle<Expression>, op: B, left: Handle<Expression>, right: Handle<Expression>) -> Val {
+    fn binary(
+        &mut self,
+        c: &mut Call<'_>,
+        state: &State,
+        h: Handle<Expression>,
+        op: B,
+        left: Handle<Expression>,
+        right: Handle<Expression>,
+    ) -> Val {
         let a = self.num(c, state, left);
         let b = self.num(c, state, right);
         if op == B::Subtract {
@@ -237,7 +243,13 @@ impl Analyzer<'_> {
     fn glsl_mod(&mut self, c: &mut Call<'_>, state: &State, left: Handle<Expression>, right: Handle<Expression>, x: &Num) -> Option<Num> {
         let Expression::Binary { op: B::Multiply, left: m0, right: m1 } = c.fun.expressions[right] else { return None };
         let is_floor = |h: Handle<Expression>| matches!(c.fun.expressions[h], Expression::Math { fun: naga::MathFunction::Floor, .. });
-        let (y, fl) = if is_floor(m1) { (m0, m1) } else if is_floor(m0) { (m1, m0) } else { return None };
+        let (y, fl) = if is_floor(m1) {
+            (m0, m1)
+        } else if is_floor(m0) {
+            (m1, m0)
+        } else {
+            return None;
+        };
         let Expression::Math { arg: div, .. } = c.fun.expressions[fl] else { return None };
         let Expression::Binary { op: B::Divide, left: x2, right: y2 } = c.fun.expressions[div] else { return None };
         if x2 != left || y2 != y {
@@ -420,9 +432,8 @@ pub fn expression_span(fun: &naga::Function, h: Handle<Expression>, text: &str) 
     if span != naga::Span::UNDEFINED {
         return span;
     }
-    let union = |spans: Vec<naga::Span>| {
-        spans.into_iter().filter(|s| *s != naga::Span::UNDEFINED).reduce(|a, b| a.until(&b)).unwrap_or_default()
-    };
+    let union =
+        |spans: Vec<naga::Span>| spans.into_iter().filter(|s| *s != naga::Span::UNDEFINED).reduce(|a, b| a.until(&b)).unwrap_or_default();
     let sub = |x: Handle<Expression>| expression_span(fun, x, text);
     match fun.expressions[h] {
         Expression::Math { arg, arg1, arg2, arg3, .. } => {
@@ -627,9 +638,7 @@ pub fn update(v: &Val, path: &[Step], new: Val) -> Val {
             }
             Val::Agg(items)
         }
-        (Val::Agg(items), Step::Dynamic) => {
-            Val::Agg(items.iter().map(|it| it.join(&update(it, rest, new.clone()))).collect())
-        }
+        (Val::Agg(items), Step::Dynamic) => Val::Agg(items.iter().map(|it| it.join(&update(it, rest, new.clone()))).collect()),
         (Val::Num(n), step) => match new.num() {
             Some(x) => Val::Num(ops::set_component(n, *step, x)),
             None => v.forget(),

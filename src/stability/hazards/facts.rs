@@ -67,11 +67,8 @@ impl Facts {
                 if per_instance {
                     continue;
                 }
-                let attr = explicit
-                    .iter()
-                    .find(|(n, _)| n == name)
-                    .map(|(_, a)| a.as_str())
-                    .or_else(|| crate::render::attributes::by_name(name));
+                let attr =
+                    explicit.iter().find(|(n, _)| n == name).map(|(_, a)| a.as_str()).or_else(|| crate::render::attributes::by_name(name));
                 if let Some(data) = attr.and_then(|a| mesh.attribute(a).map(|d| (a, d))) {
                     f.attributes.insert(*location, attribute_fact(&mesh, data.0, &data.1));
                 }
@@ -205,7 +202,13 @@ fn uniform_fact(u: &UniformDefault, motion: &Motion, time_limit: f64) -> Option<
                 })
                 .collect();
             let dims = v.dims();
-            let cols = if dims.len() == 2 { dims[0] } else if comps.len() == 9 || comps.len() == 16 { (comps.len() as f64).sqrt() as usize } else { 1 };
+            let cols = if dims.len() == 2 {
+                dims[0]
+            } else if comps.len() == 9 || comps.len() == 16 {
+                (comps.len() as f64).sqrt() as usize
+            } else {
+                1
+            };
             Num::from_comps(comps, cols, kind, true)
         }
         (None, None) => return None,
@@ -220,7 +223,9 @@ fn semantic_fact(s: Semantic, motion: &Motion, time_limit: f64, range: Option<(f
         Semantic::Time => scalar(Iv::new(0.0, time_limit)),
         Semantic::DeltaTime => scalar(Iv::new(0.0, 1.0)),
         Semantic::Frame => Num::scalar(Iv::new(0.0, f64::from(i32::MAX)), ScalarKind::Sint, true),
-        Semantic::Resolution => Num::from_comps(vec![Iv::new(1.0, MAX_SIZE), Iv::new(1.0, MAX_SIZE), Iv::point(1.0)], 1, ScalarKind::Float, true),
+        Semantic::Resolution => {
+            Num::from_comps(vec![Iv::new(1.0, MAX_SIZE), Iv::new(1.0, MAX_SIZE), Iv::point(1.0)], 1, ScalarKind::Float, true)
+        }
         Semantic::Mouse => Num::from_comps(vec![Iv::new(0.0, MAX_SIZE); 4], 1, ScalarKind::Float, true),
         Semantic::CameraPosition => {
             let mut c = vec![Iv { lo: f64::INFINITY, hi: f64::NEG_INFINITY }; 3];
@@ -272,9 +277,9 @@ pub fn uniform_value(module: &Module, ty: &TypeInner, path: &str, facts: &Facts)
                 })
                 .collect(),
         ),
-        TypeInner::Array { base, size: naga::ArraySize::Constant(n), .. } => Val::Agg(
-            (0..n.get()).map(|i| uniform_value(module, &module.types[*base].inner, &format!("{path}[{i}]"), facts)).collect(),
-        ),
+        TypeInner::Array { base, size: naga::ArraySize::Constant(n), .. } => {
+            Val::Agg((0..n.get()).map(|i| uniform_value(module, &module.types[*base].inner, &format!("{path}[{i}]"), facts)).collect())
+        }
         _ => {
             let unknown = Val::unknown(module, ty);
             match (facts.uniforms.get(path), unknown) {

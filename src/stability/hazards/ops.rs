@@ -159,7 +159,11 @@ pub fn binary(op: B, a: &Num, b: &Num, same: bool) -> Out {
             } else {
                 zip(a, b, |x, y| {
                     let m = y.mag();
-                    if x.lo >= 0.0 { Iv::new(0.0, m.min(x.hi.max(0.0))) } else { Iv::new(-m, m) }
+                    if x.lo >= 0.0 {
+                        Iv::new(0.0, m.min(x.hi.max(0.0)))
+                    } else {
+                        Iv::new(-m, m)
+                    }
                 })
             };
             if hazard.is_some() {
@@ -178,7 +182,13 @@ pub fn binary(op: B, a: &Num, b: &Num, same: bool) -> Out {
             r
         }
         B::LogicalAnd | B::LogicalOr => {
-            let mut r = zip(a, b, |x, y| if op == B::LogicalAnd { Iv::new(x.lo.min(y.lo), x.hi.min(y.hi)) } else { Iv::new(x.lo.max(y.lo), x.hi.max(y.hi)) });
+            let mut r = zip(a, b, |x, y| {
+                if op == B::LogicalAnd {
+                    Iv::new(x.lo.min(y.lo), x.hi.min(y.hi))
+                } else {
+                    Iv::new(x.lo.max(y.lo), x.hi.max(y.hi))
+                }
+            });
             r.kind = ScalarKind::Bool;
             r
         }
@@ -280,9 +290,7 @@ fn multiply(a: &Num, b: &Num, same: bool) -> Num {
 
 fn mat_vec(m: &Num, v: &Num) -> Num {
     let rows = m.rows();
-    let comps = (0..rows)
-        .map(|r| (0..m.cols).fold(Iv::point(0.0), |acc, col| acc.add(m.c[col * rows + r].mul(v.c[col]))))
-        .collect();
+    let comps = (0..rows).map(|r| (0..m.cols).fold(Iv::point(0.0), |acc, col| acc.add(m.c[col * rows + r].mul(v.c[col])))).collect();
     let mut out = Num::from_comps(comps, 1, m.kind, m.known && v.known);
     out.per_draw = m.per_draw && v.per_draw;
     let gain = Iv::new(m.gain.lo, m.gain.hi);
@@ -300,9 +308,7 @@ fn mat_vec(m: &Num, v: &Num) -> Num {
 
 fn vec_mat(v: &Num, m: &Num) -> Num {
     let rows = m.rows();
-    let comps = (0..m.cols)
-        .map(|col| (0..rows).fold(Iv::point(0.0), |acc, r| acc.add(v.c[r].mul(m.c[col * rows + r]))))
-        .collect();
+    let comps = (0..m.cols).map(|col| (0..rows).fold(Iv::point(0.0), |acc, r| acc.add(v.c[r].mul(m.c[col * rows + r])))).collect();
     let mut out = Num::from_comps(comps, 1, m.kind, m.known && v.known);
     out.per_draw = m.per_draw && v.per_draw;
     if rows == 3 && m.cols == 3 {
@@ -338,7 +344,15 @@ pub fn cast(n: &Num, kind: ScalarKind, convert: Option<u8>) -> Num {
     }
     let mut r = match kind {
         ScalarKind::Sint | ScalarKind::Uint => wrap(Num { kind, ..map(n, Iv::floor_toward_zero) }),
-        ScalarKind::Bool => map(n, |x| if x == Iv::point(0.0) { Iv::point(0.0) } else if !x.contains(0.0) { Iv::point(1.0) } else { Iv::UNIT }),
+        ScalarKind::Bool => map(n, |x| {
+            if x == Iv::point(0.0) {
+                Iv::point(0.0)
+            } else if !x.contains(0.0) {
+                Iv::point(1.0)
+            } else {
+                Iv::UNIT
+            }
+        }),
         _ => map(n, |x| x),
     };
     r.kind = kind;
@@ -402,7 +416,9 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
         }
         M::Atan => map(a, |x| x.monotone(f64::atan)),
         M::Atan2 => map(a, |_| Iv::new(-PI, PI)),
-        M::Sinh | M::Cosh | M::Asinh | M::Acosh | M::Atanh | M::Tanh => map(a, |x| if fun == M::Tanh { x.monotone(f64::tanh) } else { Iv::TOP }),
+        M::Sinh | M::Cosh | M::Asinh | M::Acosh | M::Atanh | M::Tanh => {
+            map(a, |x| if fun == M::Tanh { x.monotone(f64::tanh) } else { Iv::TOP })
+        }
         M::Radians => map(a, |x| x.mul(Iv::point(PI / 180.0))),
         M::Degrees => map(a, |x| x.mul(Iv::point(180.0 / PI))),
         M::Ceil => map(a, Iv::ceil),
@@ -421,8 +437,8 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
         M::Pow => {
             let e = b0();
             let negative = a.c.iter().any(|x| x.lo < 0.0);
-            let zero_to_nonpositive = a.c.iter().zip(e.c.iter().cycle()).any(|(x, y)| x.contains(0.0) && y.lo <= 0.0)
-                && !(a.c.len() == 1 && a.gap > 0.0);
+            let zero_to_nonpositive =
+                a.c.iter().zip(e.c.iter().cycle()).any(|(x, y)| x.contains(0.0) && y.lo <= 0.0) && !(a.c.len() == 1 && a.gap > 0.0);
             let r = zip(a, &e, |x, y| x.pow(y));
             let bad = negative || zero_to_nonpositive;
             return Out { value: r, hazard: (bad && a.known && e.known).then_some(Kind::Pow) };
@@ -456,11 +472,7 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
         M::Cross => {
             let o = b0();
             let (x, y) = (&a.c, &o.c);
-            let comps = vec![
-                x[1].mul(y[2]).sub(x[2].mul(y[1])),
-                x[2].mul(y[0]).sub(x[0].mul(y[2])),
-                x[0].mul(y[1]).sub(x[1].mul(y[0])),
-            ];
+            let comps = vec![x[1].mul(y[2]).sub(x[2].mul(y[1])), x[2].mul(y[0]).sub(x[0].mul(y[2])), x[0].mul(y[1]).sub(x[1].mul(y[0]))];
             let mut n = Num::from_comps(comps, 1, a.kind, a.known && o.known);
             n.len = n.len.meet(Iv::new(0.0, a.len.hi * o.len.hi).rounded());
             n.per_draw = a.per_draw && o.per_draw;

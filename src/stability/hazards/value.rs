@@ -179,18 +179,14 @@ impl Val {
     pub fn join(&self, o: &Val) -> Val {
         match (self, o) {
             (Val::Num(a), Val::Num(b)) => Val::Num(a.join(b)),
-            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => {
-                Val::Agg(a.iter().zip(b).map(|(x, y)| x.join(y)).collect())
-            }
+            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => Val::Agg(a.iter().zip(b).map(|(x, y)| x.join(y)).collect()),
             _ => self.forget(),
         }
     }
     pub fn widen(&self, old: &Val) -> Val {
         match (self, old) {
             (Val::Num(a), Val::Num(b)) if a.c.len() == b.c.len() => Val::Num(a.widen(b)),
-            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => {
-                Val::Agg(a.iter().zip(b).map(|(x, y)| x.widen(y)).collect())
-            }
+            (Val::Agg(a), Val::Agg(b)) if a.len() == b.len() => Val::Agg(a.iter().zip(b).map(|(x, y)| x.widen(y)).collect()),
             _ => self.forget(),
         }
     }

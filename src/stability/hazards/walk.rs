@@ -323,8 +323,7 @@ impl<'a> Analyzer<'a> {
                 state
             }
             Statement::Call { function, arguments, result } => {
-                let args: Vec<(Ev, Option<u64>)> =
-                    arguments.iter().map(|&a| (self.eval(c, &state, a), c.keys[a.index()])).collect();
+                let args: Vec<(Ev, Option<u64>)> = arguments.iter().map(|&a| (self.eval(c, &state, a), c.keys[a.index()])).collect();
                 let callee = &self.module.functions[*function];
                 let info = &self.info[*function];
                 let (after, v) = self.call(callee, info, args, c.depth + 1, state);
@@ -341,7 +340,14 @@ impl<'a> Analyzer<'a> {
         }
     }
 
-    fn run_loop(&mut self, c: &mut Call<'_>, body: &Block, continuing: &Block, break_if: Option<Handle<Expression>>, entry: State) -> State {
+    fn run_loop(
+        &mut self,
+        c: &mut Call<'_>,
+        body: &Block,
+        continuing: &Block,
+        break_if: Option<Handle<Expression>>,
+        entry: State,
+    ) -> State {
         let mut head = entry.clone();
         self.quiet += 1;
         for round in 0..MAX_ROUNDS {
@@ -361,7 +367,14 @@ impl<'a> Analyzer<'a> {
     }
 
     /// One iteration from `head`: the state back at the head, and the state after the loop.
-    fn loop_round(&mut self, c: &mut Call<'_>, body: &Block, continuing: &Block, break_if: Option<Handle<Expression>>, head: State) -> (State, State) {
+    fn loop_round(
+        &mut self,
+        c: &mut Call<'_>,
+        body: &Block,
+        continuing: &Block,
+        break_if: Option<Handle<Expression>>,
+        head: State,
+    ) -> (State, State) {
         let mut exits = Exits::default();
         let end = self.block(c, body, head, &mut exits);
         let mut cont = end;
@@ -464,9 +477,7 @@ impl<'a> Analyzer<'a> {
         let var = &self.module.global_variables[g];
         let inner = &self.module.types[var.ty].inner;
         match var.space {
-            naga::AddressSpace::Uniform => {
-                super::facts::uniform_value(self.module, inner, "", self.facts)
-            }
+            naga::AddressSpace::Uniform => super::facts::uniform_value(self.module, inner, "", self.facts),
             naga::AddressSpace::Private | naga::AddressSpace::WorkGroup => match var.init {
                 Some(init) => super::eval::constant(self.module, init),
                 None => Val::zero(self.module, inner),
