@@ -22,6 +22,7 @@
 //! Every finding is a [`diag::Diagnostic`], rendered by one emitter (human, JSON, GitHub
 //! annotations, SARIF).
 
+pub mod assets;
 pub mod back;
 pub mod bench;
 pub mod check;

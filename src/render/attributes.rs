@@ -6,9 +6,9 @@
 //! Every choice not written in the manifest is reported as a guess; an input nothing fits
 //! reads zeros.
 
+use crate::assets::attribute_names::by_name;
+use crate::assets::mesh::Mesh;
 use crate::back::reflect::InterfaceVar;
-use crate::render::device::vertex_format;
-use crate::render::mesh::Mesh;
 
 /// Where one vertex input's data comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -46,33 +46,7 @@ pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, String)], mesh: &Mes
 }
 
 fn known(name: &str) -> Option<&'static str> {
-    crate::render::mesh::ATTRIBUTES.iter().copied().find(|a| *a == name)
-}
-
-/// The attribute an input's name suggests.
-pub fn by_name(name: &str) -> Option<&'static str> {
-    let n = name.to_ascii_lowercase();
-    let has = |parts: &[&str]| parts.iter().any(|p| n.contains(p));
-    // "vertex" contains "tex": look for uv words in what remains without it.
-    let rest = n.replace("vertex", "");
-    let rest_has = |parts: &[&str]| parts.iter().any(|p| rest.contains(p));
-    if has(&["bitangent", "binormal", "bitan"]) {
-        Some("bitangent")
-    } else if has(&["tangent", "tang"]) {
-        Some("tangent")
-    } else if has(&["normal", "norm"]) {
-        Some("normal")
-    } else if has(&["pos"]) {
-        Some("position")
-    } else if rest_has(&["uv", "tex", "coord", "st0"]) || n == "st" || n.ends_with("_st") {
-        Some("uv")
-    } else if has(&["color", "colour", "col"]) {
-        Some("color")
-    } else if has(&["vertex", "vert", "point"]) || ["p", "a_p", "in_p", "v"].contains(&n.as_str()) {
-        Some("position")
-    } else {
-        None
-    }
+    crate::assets::mesh::ATTRIBUTES.iter().copied().find(|a| *a == name)
 }
 
 fn by_location(location: u32, format: wgpu::VertexFormat) -> Option<&'static str> {
@@ -83,6 +57,29 @@ fn by_location(location: u32, format: wgpu::VertexFormat) -> Option<&'static str
         (_, F::Float32x3) => Some("normal"),
         (_, F::Float32x4) => Some("color"),
         _ => None,
+    }
+}
+
+/// wgpu's vertex format for a reflection format name (`float32x3`).
+pub fn vertex_format(name: &str) -> wgpu::VertexFormat {
+    use wgpu::VertexFormat as F;
+    match name {
+        "float32" => F::Float32,
+        "float32x2" => F::Float32x2,
+        "float32x3" => F::Float32x3,
+        "sint32" => F::Sint32,
+        "sint32x2" => F::Sint32x2,
+        "sint32x3" => F::Sint32x3,
+        "sint32x4" => F::Sint32x4,
+        "uint32" => F::Uint32,
+        "uint32x2" => F::Uint32x2,
+        "uint32x3" => F::Uint32x3,
+        "uint32x4" => F::Uint32x4,
+        "float64" => F::Float64,
+        "float64x2" => F::Float64x2,
+        "float64x3" => F::Float64x3,
+        "float64x4" => F::Float64x4,
+        _ => F::Float32x4,
     }
 }
 
@@ -208,28 +205,6 @@ fn push_vertex_value(out: &mut Vec<u8>, format: wgpu::VertexFormat, value: [f32;
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn tutorial_names_map_to_attributes() {
-        for (name, attr) in [
-            ("aPos", "position"),
-            ("vertPosition", "position"),
-            ("vertexPosition_modelspace", "position"),
-            ("in_Position", "position"),
-            ("aNormal", "normal"),
-            ("vertexNormal", "normal"),
-            ("aTexCoords", "uv"),
-            ("vertTexCoords", "uv"),
-            ("a_uv", "uv"),
-            ("aTangent", "tangent"),
-            ("aBitangent", "bitangent"),
-            ("aColor", "color"),
-            ("vertexColour", "color"),
-        ] {
-            assert_eq!(by_name(name), Some(attr), "{name}");
-        }
-        assert_eq!(by_name("instanceMatrix"), None);
-    }
 
     /// A vertex input as the reflection describes it.
     fn input(location: u32, name: &str, format: &str) -> InterfaceVar {

@@ -12,6 +12,8 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
+use crate::assets::camera;
+use crate::assets::degenerate::Degenerate;
 use crate::back::Translation;
 use crate::back::{Target as BackTarget, TranslateOptions};
 use crate::check::{self, Outcome};
@@ -19,8 +21,6 @@ use crate::diag::{Diagnostic, FileId};
 use crate::front::program::FrontOptions;
 use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
-use crate::render::camera;
-use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels, Target};

@@ -146,7 +146,7 @@ fn difference_colour(largest: u8, channel_tolerance: u8) -> [u8; 4] {
 /// Reads an image file (PNG or any other format the `image` crate was built with) as top-down
 /// RGBA8: (bytes, width, height). Errors name the path.
 pub fn read_png(path: &Path) -> Result<(Vec<u8>, u32, u32), String> {
-    super::texture::decode_rgba8(path)
+    crate::assets::texture::decode_rgba8(path)
 }
 
 #[cfg(test)]

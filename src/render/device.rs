@@ -260,26 +260,3 @@ pub fn color_formats(reflection: &Reflection, float: wgpu::TextureFormat) -> Vec
     }
     targets
 }
-
-/// wgpu's vertex format for a reflection format name (`float32x3`).
-pub fn vertex_format(name: &str) -> wgpu::VertexFormat {
-    use wgpu::VertexFormat as F;
-    match name {
-        "float32" => F::Float32,
-        "float32x2" => F::Float32x2,
-        "float32x3" => F::Float32x3,
-        "sint32" => F::Sint32,
-        "sint32x2" => F::Sint32x2,
-        "sint32x3" => F::Sint32x3,
-        "sint32x4" => F::Sint32x4,
-        "uint32" => F::Uint32,
-        "uint32x2" => F::Uint32x2,
-        "uint32x3" => F::Uint32x3,
-        "uint32x4" => F::Uint32x4,
-        "float64" => F::Float64,
-        "float64x2" => F::Float64x2,
-        "float64x3" => F::Float64x3,
-        "float64x4" => F::Float64x4,
-        _ => F::Float32x4,
-    }
-}

@@ -8,13 +8,13 @@
 
 use std::time::{Duration, Instant};
 
+use crate::assets::degenerate::Degenerate;
 use crate::back::TranslateOptions;
 use crate::check::{self, Outcome};
 use crate::diag::{Diagnostic, FileId};
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command::{build, frame_state, prepare, Drawer, Prepared, Request, Step, Variant, E_FRAME, E_TIMEOUT};
-use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels};
 use crate::render::scene::ColorMode;

@@ -3,11 +3,10 @@
 //! # Steps
 //! - [`device`]: the adapter (picked deterministically), device and queue, created once;
 //!   render pipelines built from translated WGSL.
-//! - [`mesh`], [`texture`]: CPU-side meshes (builtins, OBJ) and textures (files, cube maps,
-//!   generators).
-//! - [`degenerate`]: the stress variants of a mesh (zero normals, zero-area triangles).
+//!   Meshes, textures, the camera and the stress variants of a mesh are CPU data in
+//!   [`crate::assets`].
 //! - [`attributes`]: which mesh attribute feeds each vertex input; the vertex buffer.
-//! - [`camera`], [`semantics`], [`uniforms`]: camera and model over time, per-frame values,
+//! - [`semantics`], [`uniforms`]: per-frame values,
 //!   the bytes of every uniform buffer (manifest values, semantics, reported guesses).
 //! - [`scene`]: everything one effect needs on the GPU.
 //! - [`frames`]: drawing one frame into an offscreen target and reading it back, with a
@@ -21,17 +20,13 @@
 //!   (`effectc bench`, `effectc stress`).
 
 pub mod attributes;
-pub mod camera;
 pub mod command;
 pub mod compare;
-pub mod degenerate;
 pub mod device;
 pub mod encode;
 pub mod frames;
 pub mod memory;
-pub mod mesh;
 pub mod passes;
 pub mod scene;
 pub mod semantics;
-pub mod texture;
 pub mod uniforms;

@@ -6,12 +6,12 @@
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
+use crate::assets::camera;
 use crate::back::Translation;
 use crate::diag::Diagnostic;
 use crate::front::program::CompiledProgram;
 use crate::graph::{self, PassPlan};
 use crate::manifest::{Effect, Filter, PassClear, PassDraw, TargetFormat};
-use crate::render::camera;
 use crate::render::device::Gpu;
 use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels};
 use crate::render::scene::{ColorMode, PassBinding, Scene, SceneInput};
@@ -39,7 +39,7 @@ pub struct GraphOptions {
     /// The size of the output target at scale 1.
     pub output_size: (u32, u32),
     /// `effectc stress`: passes that draw a mesh draw this variant of it.
-    pub degenerate: Option<crate::render::degenerate::Degenerate>,
+    pub degenerate: Option<crate::assets::degenerate::Degenerate>,
 }
 
 /// A pass as it runs every frame.

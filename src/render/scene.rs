@@ -7,6 +7,9 @@
 
 use std::collections::BTreeMap;
 
+use crate::assets::degenerate::Degenerate;
+use crate::assets::mesh::Mesh;
+use crate::assets::texture::{self, TexelImage};
 use crate::back::reflect::{BindingInfo, Reflection};
 use crate::back::Translation;
 use crate::diag::{Diagnostic, FileId};
@@ -14,10 +17,7 @@ use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
 use crate::manifest::{Blend, BuiltinMesh, CameraDecl, Cull, Effect, Filter, MeshSource, ModelDecl, TextureKind, TextureSource, Wrap};
 use crate::render::attributes;
-use crate::render::degenerate::Degenerate;
 use crate::render::device::{color_formats, Gpu, PipelineSpec};
-use crate::render::mesh::Mesh;
-use crate::render::texture::{self, TexelImage};
 use crate::render::uniforms::{self, UniformBuffer};
 use crate::stage::StageKind;
 

@@ -10,8 +10,8 @@
 
 use glam::{Mat3, Mat4, Vec3};
 
+use crate::assets::camera::View;
 use crate::manifest::{Semantic, UniformValue};
-use crate::render::camera::View;
 
 /// Everything a semantic can depend on, for one frame.
 #[derive(Debug, Clone, Copy)]
@@ -203,7 +203,7 @@ mod tests {
 
     #[test]
     fn semantic_values_follow_the_slot_shape() {
-        let view = crate::render::camera::view_at(&Default::default(), 0.0, 2.0);
+        let view = crate::assets::camera::view_at(&Default::default(), 0.0, 2.0);
         let f = FrameState { index: 3, time: 1.5, delta: 0.5, size: (200, 100), view, model: Mat4::IDENTITY };
         assert_eq!(value(Semantic::Time, &f, (1, 1)), UniformValue::Float(1.5));
         assert_eq!(value(Semantic::Frame, &f, (1, 1)), UniformValue::Int(3));

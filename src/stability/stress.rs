@@ -20,12 +20,12 @@
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
+use crate::assets::degenerate::Degenerate;
 use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
 use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command;
-use crate::render::degenerate::Degenerate;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::Pixels;

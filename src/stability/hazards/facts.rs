@@ -13,8 +13,8 @@ use naga::{Module, ScalarKind, TypeInner};
 
 use super::interval::Iv;
 use super::value::{singular_bounds, Num, Val};
+use crate::assets::mesh::Mesh;
 use crate::manifest::{Effect, MeshSource, Semantic, TextureSource, UniformDefault, UniformValue};
-use crate::render::mesh::Mesh;
 
 /// How long an effect is assumed to run when its time uniform has no `range`: a day.
 pub const DEFAULT_TIME_LIMIT: f64 = 86_400.0;
@@ -67,8 +67,11 @@ impl Facts {
                 if per_instance {
                     continue;
                 }
-                let attr =
-                    explicit.iter().find(|(n, _)| n == name).map(|(_, a)| a.as_str()).or_else(|| crate::render::attributes::by_name(name));
+                let attr = explicit
+                    .iter()
+                    .find(|(n, _)| n == name)
+                    .map(|(_, a)| a.as_str())
+                    .or_else(|| crate::assets::attribute_names::by_name(name));
                 if let Some(data) = attr.and_then(|a| mesh.attribute(a).map(|d| (a, d))) {
                     f.attributes.insert(*location, attribute_fact(&mesh, data.0, &data.1));
                 }
@@ -125,7 +128,7 @@ fn cone_holds(mesh: &Mesh, data: &[[f32; 4]]) -> bool {
 /// Channel ranges over every texel of a manifest texture (mipmaps average texels, so they
 /// stay inside); `None` when it cannot be read (the renderer reports that).
 fn texture_channels(source: &TextureSource) -> Option<[Iv; 4]> {
-    use crate::render::texture;
+    use crate::assets::texture;
     let image = match source {
         TextureSource::File(p) => texture::load_file(p).ok()?,
         TextureSource::Faces(paths) => texture::load_faces(paths).ok()?,
@@ -147,7 +150,7 @@ fn texture_channels(source: &TextureSource) -> Option<[Iv; 4]> {
 /// Semantic values sampled over the effect's animation.
 struct Motion {
     models: Vec<Mat4>,
-    views: Vec<crate::render::camera::View>,
+    views: Vec<crate::assets::camera::View>,
 }
 
 impl Motion {
@@ -162,8 +165,8 @@ impl Motion {
         }
         let times: Vec<f64> = (0..=256).map(|i| span * f64::from(i) / 256.0).collect();
         Motion {
-            models: times.iter().map(|&t| crate::render::camera::model_at(&e.model, t)).collect(),
-            views: times.iter().map(|&t| crate::render::camera::view_at(&camera, t, aspect)).collect(),
+            models: times.iter().map(|&t| crate::assets::camera::model_at(&e.model, t)).collect(),
+            views: times.iter().map(|&t| crate::assets::camera::view_at(&camera, t, aspect)).collect(),
         }
     }
 

@@ -8,9 +8,9 @@
 //!   edges stay non-zero, the area and `cross(b - a, c - a)` are zero). Its vertices carry
 //!   what an exporter or a face-normal computation gives such a triangle: a zero normal
 //!   and a zero tangent. These triangles cover no pixel, so what they break shows in the
-//!   vertex stage only (see [`crate::stability::culprit`]); the other half draws as usual.
+//!   vertex stage only (what `stress` instruments there); the other half draws as usual.
 
-use crate::render::mesh::Mesh;
+use crate::assets::mesh::Mesh;
 
 /// A stress variant of the mesh.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
