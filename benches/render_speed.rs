@@ -89,7 +89,8 @@ fn effectc_steady_ms(manifest: &Path, size: u32, frames: u32) -> f64 {
 fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
     let (outcome, checked) = check_inputs(&[manifest.to_path_buf()], None, FrontOptions::default());
     let c = &checked[0];
-    let t = effectc::translate::translate_checked(c, &outcome, TranslateOptions::for_rendering(true)).expect("checks").expect("translates");
+    let t =
+        effectc::back::units::translate_checked(c, &outcome, TranslateOptions::for_rendering(true)).expect("checks").expect("translates");
     let wgsl = String::from_utf8(effectc::back::emit(&t, BackTarget::Wgsl).unwrap().remove(0).bytes).unwrap();
     let input = SceneInput {
         translation: &t,
@@ -134,7 +135,7 @@ fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
         mapped_at_creation: false,
     });
-    let view_at = effectc::render::camera::view_at(&scene.camera, 0.0, 1.0);
+    let view_at = effectc::assets::camera::view_at(&scene.camera, 0.0, 1.0);
     let mut draw_one = |i: u32| {
         let state = FrameState {
             index: i,

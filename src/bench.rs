@@ -185,7 +185,7 @@ fn sweep(
         step: request.step,
         float: false,
         timeout: request.timeout,
-        probe: false,
+        read_back: None,
         degenerate: None,
     };
     // Warm-up: the first pipelines and the first frames are slower (caches, page faults).

@@ -114,7 +114,7 @@ fn bench(args: BenchArgs) -> ExitCode {
     if let Some(path) = &args.plot {
         if let Err(e) = effectc::bench::plot::write_svg(path, &result.reports) {
             result.outcome.io_error |= !result.reports.is_empty();
-            result.outcome.diagnostics.push(effectc::diag::Diagnostic::error(effectc::translate::E_OUTPUT_IO, e));
+            result.outcome.diagnostics.push(effectc::diag::Diagnostic::error(effectc::output::E_OUTPUT_IO, e));
         }
     }
     let text = match c.format {
@@ -147,7 +147,7 @@ fn stress(args: StressArgs) -> ExitCode {
         eprintln!("error: --size must be 1..=8192 per side, --samples at most 10000, --timeout positive");
         return ExitCode::from(2);
     }
-    let request = effectc::stability::stress::Request {
+    let request = effectc::stress::Request {
         inputs: c.inputs.clone(),
         stage: c.stage.map(Into::into),
         front: FrontOptions { strict: c.strict },
@@ -157,13 +157,13 @@ fn stress(args: StressArgs) -> ExitCode {
         timeout: std::time::Duration::from_secs_f64(args.timeout),
         out: Some(args.out.clone().unwrap_or_else(|| std::path::PathBuf::from("out/stress"))),
     };
-    let result = effectc::stability::stress::run(&request);
+    let result = effectc::stress::run(&request);
     let text = match c.format {
         Format::Json => report_json("programs", &result.reports, &result.adapter, &result.outcome),
         _ => {
             let mut text = String::new();
             for r in &result.reports {
-                text.push_str(&effectc::stability::stress::table(r));
+                text.push_str(&effectc::stress::table(r));
             }
             text + &diagnostics_text(c, &result.outcome)
         }

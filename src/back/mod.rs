@@ -23,6 +23,7 @@ mod msl;
 pub mod prune;
 pub mod reflect;
 mod spirv;
+pub mod units;
 mod wgsl;
 
 pub use wgsl::verify as verify_wgsl;
@@ -77,24 +78,18 @@ pub struct TranslateOptions {
     /// Negate clip y so the framebuffer runs bottom-up like GL's (`gl_FragCoord.y`, `dFdy`
     /// as in GL); the renderer flips rows back and treats clockwise faces as front faces.
     pub flip_y: bool,
-    /// Instrument the fragment stage to count, per invocation, the first expression that
-    /// computes a non-finite value (`effectc stress`; see [`crate::stability::culprit`]).
-    pub probe_nonfinite: bool,
-    /// With `probe_nonfinite`, instrument the vertex stage too (the device must allow
-    /// storage writes in vertex shaders).
-    pub probe_vertex: bool,
 }
 
 impl Default for TranslateOptions {
     fn default() -> Self {
-        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false, probe_nonfinite: false, probe_vertex: false }
+        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false }
     }
 }
 
 impl TranslateOptions {
     /// What `effectc render` translates with: the render-only adaptations on.
     pub fn for_rendering(gl_depth: bool) -> Self {
-        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, probe_nonfinite: false, probe_vertex: false }
+        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true }
     }
 }
 
@@ -109,8 +104,6 @@ pub struct Translation {
     pub reflection: reflect::Reflection,
     /// The program's first stage file (where program-wide diagnostics point).
     pub file: crate::diag::FileId,
-    /// With [`TranslateOptions::probe_nonfinite`]: the probes and their counts buffer.
-    pub probes: Option<crate::stability::culprit::Instrumented>,
 }
 
 impl Translation {
@@ -211,17 +204,12 @@ pub fn translate(
     // Compaction assumes a valid module; prove it first.
     crate::front::naga_run::validator()
         .validate(&module)
-        .map_err(|e| vec![internal(file, format!("the merged module does not validate: {}", e.as_inner()))])?;
+        .map_err(|e| vec![internal_error(file, format!("the merged module does not validate: {}", e.as_inner()))])?;
     let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
     fixes::read_only_unwritten_storage(&mut module);
-    let mut probes = None;
-    if options.probe_nonfinite {
-        let stages: &[StageKind] = if options.probe_vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };
-        probes = Some(probe(&mut module, program, stages).map_err(|m| vec![internal(file, m)])?);
-    }
     let info = crate::front::naga_run::validator()
         .validate(&module)
-        .map_err(|e| vec![internal(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
+        .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
     let reflection = reflect::reflect(name, &module, &program.plan, effect, left_out);
     Ok(Translation {
         name: name.to_string(),
@@ -230,17 +218,7 @@ pub fn translate(
         stages: modules.iter().map(|(k, _)| *k).collect(),
         reflection,
         file: program.stages[0].syntax.file,
-        probes,
     })
-}
-
-/// Instruments the entry points of `stages` (see [`crate::stability::culprit`]).
-fn probe(module: &mut Module, program: &CompiledProgram, stages: &[StageKind]) -> Result<crate::stability::culprit::Instrumented, String> {
-    let info = crate::front::naga_run::validator().validate(module).map_err(|e| e.as_inner().to_string())?;
-    let texts: Vec<(StageKind, &str)> =
-        program.stages.iter().filter_map(|s| Some((s.syntax.stage, s.rewritten.as_ref()?.text.as_str()))).collect();
-    let binding = crate::stability::culprit::free_binding(module);
-    crate::stability::culprit::instrument(module, &info, &texts, stages, binding)
 }
 
 /// What the GLSL construct behind each naga capability is.
@@ -267,7 +245,8 @@ fn capability_help(needs: &[String]) -> String {
     format!("the construct: {}", what.join("; "))
 }
 
-fn internal(file: crate::diag::FileId, message: String) -> Diagnostic {
+/// An internal error of the translation (E0305): a bug, not the user's input.
+pub fn internal_error(file: crate::diag::FileId, message: String) -> Diagnostic {
     Diagnostic::error("E0305", message)
         .in_file(file)
         .with_note("this is a bug in effectc's translation; please report it with the input files")

@@ -12,23 +12,19 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use crate::assets::camera;
-use crate::assets::degenerate::Degenerate;
-use crate::back::Translation;
-use crate::back::{Target as BackTarget, TranslateOptions};
+use crate::back::TranslateOptions;
 use crate::check::{self, Outcome};
 use crate::diag::{Diagnostic, FileId};
 use crate::front::program::FrontOptions;
-use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
+use crate::output::{self, write_atomic, E_OUTPUT_IO};
 use crate::render::device::Gpu;
+pub use crate::render::drawer::DEFAULT_SIZE;
+use crate::render::drawer::{build, frame_state, prepare, BuildSettings, Drawer, Variant};
 use crate::render::encode;
-use crate::render::frames::{self, Dump, Frame, FrameError, GpuClock, Pixels, Target};
-use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
-use crate::render::scene::{ColorMode, Scene, SceneInput};
-use crate::render::semantics::FrameState;
+use crate::render::frames::{Dump, Frame, FrameError, GpuClock, Pixels, Target};
+use crate::render::scene::ColorMode;
 use crate::stage::StageKind;
-use crate::translate::{self, write_atomic};
 
 /// No usable adapter (exit 2: the machine, not the input).
 pub const E_NO_ADAPTER: &str = "E0401";
@@ -43,8 +39,6 @@ pub const E_FRAME: &str = "E0407";
 
 /// Frames kept in memory for `--contact-sheet` / `--gif` may use at most this much.
 pub const MAX_KEPT_BYTES: u64 = 2 << 30;
-/// Default frame size.
-pub const DEFAULT_SIZE: (u32, u32) = (512, 512);
 /// Default frame rate when neither the manifest nor the flags give one.
 pub const DEFAULT_FPS: f64 = 30.0;
 
@@ -82,6 +76,13 @@ pub struct Request {
     pub started: Instant,
     /// Multi-pass effects: write every intermediate target too (nothing pruned or shared).
     pub dump_targets: bool,
+}
+
+impl Request {
+    /// What building each program takes from these flags.
+    pub fn build_settings(&self) -> BuildSettings {
+        BuildSettings { back: self.back, size: self.size, dump_targets: self.dump_targets }
+    }
 }
 
 /// One frame's numbers.
@@ -132,10 +133,10 @@ pub fn run(request: &Request) -> RunResult {
         result.outcome = outcome;
         return result;
     }
-    let inputs = translate::input_paths(&outcome, &request.inputs);
+    let inputs = output::input_paths(&outcome, &request.inputs);
     let mut gpu: Option<Gpu> = None;
     for c in &checked {
-        let Some(prepared) = prepare(c, &mut outcome, request) else { continue };
+        let Some(prepared) = prepare(c, &mut outcome, &request.build_settings(), None) else { continue };
         let Some(gpu) = open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
         let effect = c.effect.as_ref();
         let render = effect.map(|e| e.render.clone()).unwrap_or_default();
@@ -147,7 +148,7 @@ pub fn run(request: &Request) -> RunResult {
             continue;
         }
         let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        let (mut drawer, file) = match build(gpu, &prepared, c, (size, mode), request, Variant::default()) {
+        let (mut drawer, file) = match build(gpu, &prepared, c, (size, mode), &request.build_settings(), Variant::default()) {
             Ok(d) => d,
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
@@ -186,194 +187,6 @@ pub fn run(request: &Request) -> RunResult {
     crate::diag::sort(&mut outcome.diagnostics);
     result.outcome = outcome;
     result
-}
-
-/// A checked program translated to WGSL: one unit for a single-pass program, one per
-/// running pass for a multi-pass effect.
-pub(crate) struct Prepared {
-    /// (pass index, translation, WGSL); the index is 0 for a single-pass program.
-    pub(crate) units: Vec<(usize, Translation, String)>,
-    /// The pass plan of a multi-pass effect.
-    pub(crate) plan: Option<crate::graph::PassPlan>,
-}
-
-/// Translates what `c` renders; diagnostics go to `outcome`. `None` when there is nothing
-/// to render (check or translation errors).
-pub(crate) fn prepare(c: &check::Checked, outcome: &mut Outcome, request: &Request) -> Option<Prepared> {
-    let multi = c.effect.as_ref().filter(|e| e.is_multi_pass());
-    let (indices, results): (Vec<usize>, Vec<Result<Translation, Vec<Diagnostic>>>) = match multi {
-        Some(effect) => {
-            if c.failed {
-                return None;
-            }
-            let size = request.size.or(effect.render.size).unwrap_or(DEFAULT_SIZE);
-            let plan = crate::graph::plan(effect, size, request.dump_targets);
-            let mut units = Vec::new();
-            for i in plan.running() {
-                let pass = &c.passes[i];
-                let program = pass.program.as_ref()?;
-                let t = translate::translate_program(&pass.view.name, program, Some(&pass.view), request.back);
-                units.push((i, t));
-            }
-            let (indices, results) = units.into_iter().unzip();
-            let prepared = wgsl_units(indices, results, outcome)?;
-            return Some(Prepared { units: prepared, plan: Some(plan) });
-        }
-        None => (vec![0], vec![translate::translate_checked(c, outcome, request.back)?]),
-    };
-    Some(Prepared { units: wgsl_units(indices, results, outcome)?, plan: None })
-}
-
-fn wgsl_units(
-    indices: Vec<usize>,
-    results: Vec<Result<Translation, Vec<Diagnostic>>>,
-    outcome: &mut Outcome,
-) -> Option<Vec<(usize, Translation, String)>> {
-    let mut units = Vec::new();
-    for (i, r) in indices.into_iter().zip(results) {
-        let translation = match r {
-            Ok(t) => t,
-            Err(diags) => {
-                outcome.diagnostics.extend(diags);
-                return None;
-            }
-        };
-        let wgsl = match translate::emit_contained(&translation, BackTarget::Wgsl) {
-            Ok(o) => String::from_utf8_lossy(&o[0].bytes).into_owned(),
-            Err(e) => {
-                outcome.diagnostics.push(translate::target_error(translation.file, BackTarget::Wgsl, &e));
-                return None;
-            }
-        };
-        units.push((i, translation, wgsl));
-    }
-    Some(units)
-}
-
-/// What draws the frames of one program.
-pub(crate) enum Drawer {
-    Single { scene: Box<Scene>, target: Box<Target> },
-    Graph(Box<PassGraph>),
-}
-
-impl Drawer {
-    fn name(&self) -> &str {
-        match self {
-            Drawer::Single { scene, .. } => &scene.name,
-            Drawer::Graph(g) => &g.name,
-        }
-    }
-    fn warnings(&mut self) -> &mut Vec<Diagnostic> {
-        match self {
-            Drawer::Single { scene, .. } => &mut scene.warnings,
-            Drawer::Graph(g) => &mut g.warnings,
-        }
-    }
-    fn camera(&self) -> &CameraDecl {
-        match self {
-            Drawer::Single { scene, .. } => &scene.camera,
-            Drawer::Graph(g) => &g.camera,
-        }
-    }
-    fn model(&self) -> &ModelDecl {
-        match self {
-            Drawer::Single { scene, .. } => &scene.model,
-            Drawer::Graph(g) => &g.model,
-        }
-    }
-    pub(crate) fn clock(&self) -> GpuClock {
-        match self {
-            Drawer::Single { target, .. } => target.clock(),
-            Drawer::Graph(g) => g.clock(),
-        }
-    }
-    fn describe(&self) -> String {
-        match self {
-            Drawer::Single { scene, .. } => scene.describe.clone(),
-            Drawer::Graph(g) => format!("{} passes run", g.plan.running().count()),
-        }
-    }
-    /// Every scene drawn, with its index into `Effect::passes` (0 for a single pass).
-    pub(crate) fn scenes(&self) -> Box<dyn Iterator<Item = (usize, &Scene)> + '_> {
-        match self {
-            Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &**scene))),
-            Drawer::Graph(g) => Box::new(g.scenes()),
-        }
-    }
-    pub(crate) fn scenes_mut(&mut self) -> Box<dyn Iterator<Item = (usize, &mut Scene)> + '_> {
-        match self {
-            Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &mut **scene))),
-            Drawer::Graph(g) => Box::new(g.scenes_mut()),
-        }
-    }
-    pub(crate) fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
-        match self {
-            Drawer::Single { scene, target } => frames::render(gpu, scene, target, state, timeout),
-            Drawer::Graph(g) => g.render(gpu, state, timeout),
-        }
-    }
-}
-
-/// What a build changes from the manifest (`effectc bench`, `effectc stress`).
-#[derive(Default, Clone, Copy)]
-pub(crate) struct Variant<'a> {
-    /// Uniform values in place of the manifest's.
-    pub overrides: &'a [(String, UniformValue)],
-    /// A degenerate variant of the mesh.
-    pub degenerate: Option<Degenerate>,
-}
-
-/// Builds the scene (or the pass graph) of a prepared program; also returns the file
-/// program-wide diagnostics point at.
-pub(crate) fn build(
-    gpu: &Gpu,
-    prepared: &Prepared,
-    c: &check::Checked,
-    (size, mode): ((u32, u32), ColorMode),
-    request: &Request,
-    variant: Variant<'_>,
-) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
-    let Variant { overrides, degenerate } = variant;
-    let flipped_y = request.back.flip_y;
-    let with_overrides = |e: &Effect| crate::render::memory::with_overrides(e, overrides);
-    match (&prepared.plan, c.effect.as_ref()) {
-        (Some(plan), Some(effect)) => {
-            let views: Vec<Effect> = c.passes.iter().map(|p| with_overrides(&p.view)).collect();
-            let programs: Vec<PassProgram<'_>> = prepared
-                .units
-                .iter()
-                .filter_map(|(i, t, wgsl)| {
-                    let pass = &c.passes[*i];
-                    Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &views[*i] })
-                })
-                .collect();
-            let options = GraphOptions { mode, flipped_y, dump: request.dump_targets, output_size: size, degenerate };
-            let graph = PassGraph::new(gpu, effect, plan.clone(), &programs, options)?;
-            Ok((Drawer::Graph(Box::new(graph)), effect.file))
-        }
-        _ => {
-            let (_, translation, wgsl) = &prepared.units[0];
-            let program = c.program.as_ref().expect("translated programs have a program");
-            let effect = c.effect.as_ref().map(with_overrides);
-            let input = SceneInput { translation, wgsl, program, effect: effect.as_ref(), mode, flipped_y, pass: None, degenerate };
-            let scene = Scene::new(gpu, &input)?;
-            let target = Target::new(gpu, &scene, size.0, size.1, mode);
-            Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))
-        }
-    }
-}
-
-/// The per-frame values of frame `index` at effect time `time`.
-pub(crate) fn frame_state(drawer: &Drawer, index: u32, time: f64, step: f64, (w, h): (u32, u32)) -> FrameState {
-    let aspect = w as f32 / h as f32;
-    FrameState {
-        index,
-        time,
-        delta: step,
-        size: (w, h),
-        view: camera::view_at(drawer.camera(), time, aspect),
-        model: camera::model_at(drawer.model(), time),
-    }
 }
 
 /// The device of a run, opened on first use (the adapter's description goes to `adapter`).
@@ -550,7 +363,7 @@ fn draw_frames(
         let path = plan.dir.join(format!("{name}.gif"));
         match encode::gif_bytes(&frames_rgba, w, h, delay) {
             Ok(bytes) => write_file(&path, &bytes, inputs, &mut files, &mut diags),
-            Err(e) => diags.push(Diagnostic::error(translate::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
+            Err(e) => diags.push(Diagnostic::error(E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
         }
     }
     let rendered = Rendered {
@@ -610,14 +423,14 @@ fn encode_frames(
 fn write_png(path: &Path, rgba: &[u8], w: u32, h: u32, inputs: &BTreeSet<PathBuf>, files: &mut Vec<PathBuf>, diags: &mut Vec<Diagnostic>) {
     match encode::png_bytes(rgba, w, h) {
         Ok(bytes) => write_file(path, &bytes, inputs, files, diags),
-        Err(e) => diags.push(Diagnostic::error(translate::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
+        Err(e) => diags.push(Diagnostic::error(E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
     }
 }
 
 fn write_file(path: &Path, bytes: &[u8], inputs: &BTreeSet<PathBuf>, files: &mut Vec<PathBuf>, diags: &mut Vec<Diagnostic>) {
     match write_atomic(path, bytes, inputs) {
         Ok(()) => files.push(path.to_path_buf()),
-        Err(e) => diags.push(Diagnostic::error(translate::E_OUTPUT_IO, e)),
+        Err(e) => diags.push(Diagnostic::error(E_OUTPUT_IO, e)),
     }
 }
 

@@ -6,20 +6,19 @@
 //! caller that only changes uniform values between runs keeps one [`InMemory`] and calls
 //! [`InMemory::set_overrides`]; a changed mesh needs a new one.
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use crate::assets::degenerate::Degenerate;
 use crate::back::TranslateOptions;
 use crate::check::{self, Outcome};
 use crate::diag::{Diagnostic, FileId};
-use crate::front::program::FrontOptions;
-use crate::manifest::{Effect, UniformValue};
-use crate::render::command::{build, frame_state, prepare, Drawer, Prepared, Request, Step, Variant, E_FRAME, E_TIMEOUT};
+use crate::manifest::UniformValue;
+use crate::render::command::{E_FRAME, E_TIMEOUT};
 use crate::render::device::Gpu;
+use crate::render::drawer::{build, frame_state, prepare, with_overrides, BuildSettings, Drawer, Instrument, Variant};
 use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels};
 use crate::render::scene::ColorMode;
 use crate::render::uniforms;
-use crate::stability::culprit::{Instrumented, StageCounts};
 
 /// Frames rendered in memory by [`InMemory::render`].
 pub struct MemoryRun {
@@ -27,20 +26,12 @@ pub struct MemoryRun {
     pub frames: Vec<Pixels>,
     pub gpu_ms: Vec<f64>,
     pub clock: GpuClock,
-    /// Instrumented runs: per instrumented program (one per pass of a multi-pass effect),
-    /// its probes and what they counted over all frames of this run.
-    pub probes: Vec<ProbeRun>,
+    /// With [`MemoryRequest::read_back`]: per scene that has that storage buffer (index into
+    /// `Effect::passes`, 0 for a single pass), its words after the run's frames.
+    pub read_back: Vec<(usize, Vec<u32>)>,
     /// What the degenerate mesh changed, per scene that draws one (index into
     /// `Effect::passes`, 0 for a single pass; empty when none did).
     pub degenerate: Vec<(usize, String)>,
-}
-
-/// The probes of one instrumented program and their counts.
-pub struct ProbeRun {
-    /// Index into `Effect::passes` (0 for a single-pass program).
-    pub pass: usize,
-    pub instrumented: Instrumented,
-    pub counts: Vec<StageCounts>,
 }
 
 /// What an [`InMemory`] draws: `frames` frames at times `start + i × step`.
@@ -53,10 +44,9 @@ pub struct MemoryRequest {
     /// Render into Rgba32Float (NaN and Inf survive).
     pub float: bool,
     pub timeout: Duration,
-    /// Instrument the fragment stage (and the vertex stage where the device allows storage
-    /// writes there) to count the first non-finite value of every invocation
-    /// ([`crate::stability::culprit`]).
-    pub probe: bool,
+    /// A storage buffer of the program (by name) zeroed before each run and read back
+    /// after it (the counts an instrumented program writes).
+    pub read_back: Option<&'static str>,
     /// Draw a degenerate variant of the mesh.
     pub degenerate: Option<Degenerate>,
 }
@@ -65,7 +55,6 @@ pub struct MemoryRequest {
 pub struct InMemory<'c> {
     c: &'c check::Checked,
     m: MemoryRequest,
-    prepared: Prepared,
     /// `None` after a frame timed out: the device may still be busy with it.
     drawer: Option<Drawer>,
     file: FileId,
@@ -81,44 +70,25 @@ pub fn render_in_memory(
     overrides: &[(String, UniformValue)],
     m: MemoryRequest,
 ) -> Option<MemoryRun> {
-    InMemory::new(gpu, c, outcome, overrides, m)?.render(gpu, outcome, m.start)
+    InMemory::new(gpu, c, outcome, overrides, m, None)?.render(gpu, outcome, m.start)
 }
 
 impl<'c> InMemory<'c> {
-    /// Translates and builds the program with `overrides`. Problems go to `outcome`.
+    /// Translates and builds the program with `overrides`, the translations changed by
+    /// `instrument` first. Problems go to `outcome`.
     pub fn new(
         gpu: &Gpu,
         c: &'c check::Checked,
         outcome: &mut Outcome,
         overrides: &[(String, UniformValue)],
         m: MemoryRequest,
+        instrument: Option<Instrument<'_>>,
     ) -> Option<Self> {
-        let request = Request {
-            inputs: Vec::new(),
-            stage: None,
-            front: FrontOptions::default(),
-            back: TranslateOptions {
-                probe_nonfinite: m.probe,
-                probe_vertex: gpu.vertex_storage(),
-                ..TranslateOptions::for_rendering(true)
-            },
-            frames: Some(m.frames),
-            step: Step::Seconds(m.step),
-            start: m.start,
-            size: Some(m.size),
-            out: None,
-            contact_sheet: false,
-            gif: false,
-            float: m.float,
-            timeout: m.timeout,
-            progress: false,
-            started: Instant::now(),
-            dump_targets: false,
-        };
-        let prepared = prepare(c, outcome, &request)?;
+        let settings = BuildSettings { back: TranslateOptions::for_rendering(true), size: Some(m.size), dump_targets: false };
+        let prepared = prepare(c, outcome, &settings, instrument)?;
         let mode = if m.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        match build(gpu, &prepared, c, (m.size, mode), &request, Variant { overrides, degenerate: m.degenerate }) {
-            Ok((drawer, file)) => Some(InMemory { c, m, prepared, drawer: Some(drawer), file }),
+        match build(gpu, &prepared, c, (m.size, mode), &settings, Variant { overrides, degenerate: m.degenerate }) {
+            Ok((drawer, file)) => Some(InMemory { c, m, drawer: Some(drawer), file }),
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
                 None
@@ -146,13 +116,14 @@ impl<'c> InMemory<'c> {
     pub fn render(&mut self, gpu: &Gpu, outcome: &mut Outcome, start: f64) -> Option<MemoryRun> {
         let MemoryRequest { size, frames, step, timeout, .. } = self.m;
         let drawer = self.drawer.as_mut()?;
+        let read_back = self.m.read_back;
         for (_, scene) in drawer.scenes() {
-            if let Some(counts) = &scene.probe_counts {
-                gpu.queue.write_buffer(counts, 0, &vec![0u8; counts.size() as usize]);
+            if let Some(buffer) = read_back.and_then(|name| scene.storage_buffer(name)) {
+                gpu.queue.write_buffer(buffer, 0, &vec![0u8; buffer.size() as usize]);
             }
         }
         let degenerate = drawer.scenes().filter_map(|(i, s)| Some((i, s.degenerate.clone()?))).collect();
-        let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock(), probes: Vec::new(), degenerate };
+        let mut run = MemoryRun { frames: Vec::new(), gpu_ms: Vec::new(), clock: drawer.clock(), read_back: Vec::new(), degenerate };
         for i in 0..frames {
             let state = frame_state(drawer, i, start + f64::from(i) * step, step, size);
             match drawer.draw(gpu, &state, timeout) {
@@ -176,18 +147,13 @@ impl<'c> InMemory<'c> {
             }
         }
         for (pass, scene) in drawer.scenes() {
-            let Some(buffer) = &scene.probe_counts else { continue };
-            let unit = self.prepared.units.iter().find(|u| u.0 == pass);
-            let Some(instrumented) = unit.and_then(|u| u.1.probes.clone()) else { continue };
+            let Some(buffer) = read_back.and_then(|name| scene.storage_buffer(name)) else { continue };
             match frames::read_u32s(gpu, buffer) {
-                Ok(counts) => {
-                    let counts = instrumented.read(&counts);
-                    run.probes.push(ProbeRun { pass, instrumented, counts });
-                }
+                Ok(words) => run.read_back.push((pass, words)),
                 Err(e) => {
                     let message = match e {
-                        FrameError::Timeout(t) => format!("the probe counts were not ready within {:.1} s", t.as_secs_f64()),
-                        FrameError::Device(d) => format!("the probe counts could not be read: {d}"),
+                        FrameError::Timeout(t) => format!("the storage buffer was not ready within {:.1} s", t.as_secs_f64()),
+                        FrameError::Device(d) => format!("the storage buffer could not be read: {d}"),
                     };
                     outcome.diagnostics.push(Diagnostic::error(E_FRAME, message).in_file(self.file));
                     return None;
@@ -196,15 +162,4 @@ impl<'c> InMemory<'c> {
         }
         Some(run)
     }
-}
-
-/// `effect` with the values of `overrides` in place of the manifest's.
-pub fn with_overrides(effect: &Effect, overrides: &[(String, UniformValue)]) -> Effect {
-    let mut e = effect.clone();
-    for (name, value) in overrides {
-        if let Some(u) = e.uniforms.iter_mut().find(|u| u.name == *name) {
-            u.value = Some(value.clone());
-        }
-    }
-    e
 }

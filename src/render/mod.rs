@@ -23,6 +23,7 @@ pub mod attributes;
 pub mod command;
 pub mod compare;
 pub mod device;
+pub mod drawer;
 pub mod encode;
 pub mod frames;
 pub mod memory;

@@ -91,8 +91,9 @@ pub struct Scene {
     pub describe: String,
     /// Framebuffer rows run bottom-up (clip y negated): readback flips them.
     pub flipped_y: bool,
-    /// The counts of an instrumented translation ([`crate::stability::culprit`]).
-    pub probe_counts: Option<wgpu::Buffer>,
+    /// The storage buffers the program binds, by name (zeroed and read back by callers
+    /// that count with them, like `stress`'s instrumented programs).
+    pub storage: Vec<(String, wgpu::Buffer)>,
     /// What the stress variant of the mesh changed; `None` without one, or when the scene
     /// draws no mesh it could change (a full-screen pass, vertices made by the shader).
     pub degenerate: Option<String>,
@@ -124,6 +125,11 @@ pub struct PassBinding<'a> {
 }
 
 impl Scene {
+    /// The storage buffer the program binds under `name`.
+    pub fn storage_buffer(&self, name: &str) -> Option<&wgpu::Buffer> {
+        self.storage.iter().find(|(n, _)| n == name).map(|(_, b)| b)
+    }
+
     pub fn new(gpu: &Gpu, input: &SceneInput<'_>) -> Result<Scene, Vec<Diagnostic>> {
         let t = input.translation;
         let r = &t.reflection;
@@ -228,7 +234,7 @@ impl Scene {
             })
             .collect();
         let textures = Textures::create(gpu, input, &mut warnings)?;
-        let (bind_groups, probe_counts) = bind_groups(gpu, &pipeline, r, &uniforms, &textures);
+        let (bind_groups, storage) = bind_groups(gpu, &pipeline, r, &uniforms, &textures);
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }
@@ -262,7 +268,7 @@ impl Scene {
             warnings,
             describe,
             flipped_y: input.flipped_y,
-            probe_counts,
+            storage,
             degenerate,
         })
     }
@@ -671,7 +677,7 @@ fn bind_groups(
     r: &Reflection,
     uniforms: &[(UniformBuffer, wgpu::Buffer)],
     textures: &Textures,
-) -> (Vec<(u32, wgpu::BindGroup)>, Option<wgpu::Buffer>) {
+) -> (Vec<(u32, wgpu::BindGroup)>, Vec<(String, wgpu::Buffer)>) {
     let mut by_group: BTreeMap<u32, Vec<&BindingInfo>> = BTreeMap::new();
     for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
         by_group.entry(b.group).or_default().push(b);
@@ -684,7 +690,7 @@ fn bind_groups(
             gpu.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(&b.name),
                 size,
-                // The probe counts of `effectc stress` are zeroed before a run and read back.
+                // Callers may zero a storage buffer before a run and read it back (stress's counts).
                 usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             }),
@@ -711,6 +717,5 @@ fn bind_groups(
         let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: None, layout: &layout, entries: &entries });
         groups.push((group, bg));
     }
-    let probe_counts = storage.into_iter().find(|(n, _)| n == crate::stability::culprit::COUNTS_BUFFER).map(|(_, b)| b);
-    (groups, probe_counts)
+    (groups, storage)
 }

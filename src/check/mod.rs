@@ -3,6 +3,8 @@
 //! One bad program never stops the others. The outcome says whether any input could not
 //! be read (exit 2) and holds every diagnostic for the emitters.
 
+pub mod hazards;
+
 use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
@@ -10,7 +12,6 @@ use crate::diag::{Diagnostic, FileId, Files};
 use crate::front::program::{self, CompiledProgram, FrontOptions};
 use crate::inputs::{self, ProgramInput};
 use crate::manifest::{self, Effect};
-use crate::stability::hazards;
 use crate::stage::StageKind;
 
 /// Code for a stage file that is not UTF-8 text.

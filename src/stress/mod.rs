@@ -11,11 +11,13 @@
 //!   collapsed to zero area (only where the program draws a mesh whose data it reads).
 //!
 //! Every case renders twice: plain, for the pixels, and instrumented
-//! ([`crate::stability::culprit`]), where each vertex and fragment invocation counts the
+//! ([`crate::stress::culprit`]), where each vertex and fragment invocation counts the
 //! first expression that computed a non-finite value. A case with NaN or Inf pixels is an error (`E0701`)
 //! at the manifest entry it changed, labelled with those expressions in the GLSL, and its
 //! mask is written next to the frames (NaN red, +Inf yellow, −Inf cyan). A case whose
 //! pixels are finite but whose intermediate values are not is a warning (`W0702`).
+
+pub mod culprit;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -29,9 +31,9 @@ use crate::render::command;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::Pixels;
-use crate::render::memory::{InMemory, MemoryRequest, MemoryRun, ProbeRun};
-use crate::stability::culprit::Probe;
+use crate::render::memory::{InMemory, MemoryRequest, MemoryRun};
 use crate::stage::StageKind;
+use crate::stress::culprit::{Instrumented, Probe, StageCounts, COUNTS_BUFFER};
 
 /// A case rendered NaN or Inf pixels.
 pub const E_NON_FINITE_CASE: &str = "E0701";
@@ -207,30 +209,35 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
         step: 0.0,
         float: true,
         timeout: request.timeout,
-        probe: false,
+        read_back: None,
         degenerate: None,
     };
     // Built once for every case that only changes uniform values or time. The pixels come
     // from the plain program: the instrumented one computes the same values, but the
     // driver compiles it differently and may fold a NaN another way.
-    let mut plain = InMemory::new(gpu, c, outcome, &[], plain_request)?;
-    let mut instrumented = InMemory::new(gpu, c, outcome, &[], MemoryRequest { probe: true, ..plain_request })?;
+    let mut plain = InMemory::new(gpu, c, outcome, &[], plain_request, None)?;
+    let (mut instrumented, probes) = Probed::build(gpu, c, outcome, &[], plain_request)?;
     for case in cases(effect, request.samples, request.seed) {
         // A case that cannot render (a timeout, a device error) is reported by the render path.
         let (run, probed) = match case.degenerate {
             Some(d) => {
                 let m = MemoryRequest { degenerate: Some(d), ..plain_request };
-                let run = InMemory::new(gpu, c, outcome, &case.overrides, m)?.render(gpu, outcome, case.time)?;
+                let run = InMemory::new(gpu, c, outcome, &case.overrides, m, None)?.render(gpu, outcome, case.time)?;
                 if run.degenerate.is_empty() {
                     // No mesh the program reads is changed by this variant: nothing to learn.
                     continue;
                 }
-                let m = MemoryRequest { probe: true, ..m };
-                (run, InMemory::new(gpu, c, outcome, &case.overrides, m)?.render(gpu, outcome, case.time)?)
+                let (mut program, probes) = Probed::build(gpu, c, outcome, &case.overrides, m)?;
+                let probed = program.render(gpu, outcome, case.time)?;
+                (run, probes.runs(&probed))
             }
-            None => (render_case(gpu, &mut plain, &case, outcome)?, render_case(gpu, &mut instrumented, &case, outcome)?),
+            None => {
+                let run = render_case(gpu, &mut plain, &case, outcome)?;
+                let probed = render_case(gpu, &mut instrumented, &case, outcome)?;
+                (run, probes.runs(&probed))
+            }
         };
-        let culprits = Culprit::all(&probed.probes);
+        let culprits = Culprit::all(&probed);
         let Some(Pixels::Rgba32F(frame)) = run.frames.into_iter().next() else { return None };
         let (counts, mask) = encode::non_finite(&frame, w, h);
         let max_delta = nominal.as_ref().map_or(0.0, |n| max_delta(n, &frame));
@@ -255,8 +262,7 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
             values.push(geometry.join("; "));
         }
         let inf = counts.pos_inf + counts.neg_inf;
-        let bad =
-            |stage: StageKind| probed.probes.iter().flat_map(|p| &p.counts).filter(|s| s.stage == stage).map(|s| s.bad()).sum::<u64>();
+        let bad = |stage: StageKind| probed.iter().flat_map(|p| &p.counts).filter(|s| s.stage == stage).map(|s| s.bad()).sum::<u64>();
         let (bad_fragments, bad_vertices) = (bad(StageKind::Fragment), bad(StageKind::Vertex));
         if counts.nan + inf > 0 {
             let d = case_error(c, &case, &program, (counts.nan, inf), mask_path.as_deref(), &geometry);
@@ -306,15 +312,15 @@ fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut
     let bytes = match encode::png_bytes(rgba, w, h) {
         Ok(b) => b,
         Err(e) => {
-            outcome.diagnostics.push(Diagnostic::error(crate::translate::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display())));
+            outcome.diagnostics.push(Diagnostic::error(crate::output::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display())));
             return None;
         }
     };
-    match crate::translate::write_atomic(&path, &bytes, &Default::default()) {
+    match crate::output::write_atomic(&path, &bytes, &Default::default()) {
         Ok(()) => Some(path),
         Err(e) => {
             outcome.io_error = true;
-            outcome.diagnostics.push(Diagnostic::error(crate::translate::E_OUTPUT_IO, e));
+            outcome.diagnostics.push(Diagnostic::error(crate::output::E_OUTPUT_IO, e));
             None
         }
     }
@@ -374,6 +380,50 @@ fn at_case(mut d: Diagnostic, c: &check::Checked, case: &Case, geometry: &[Strin
         d = d.with_note(format!("degenerate geometry: {g}"));
     }
     d
+}
+
+/// The probes of one instrumented program and what they counted over one run.
+struct ProbeRun {
+    /// Index into `Effect::passes` (0 for a single-pass program).
+    pass: usize,
+    instrumented: Instrumented,
+    counts: Vec<StageCounts>,
+}
+
+/// The probes of every program an instrumented build translated, by pass.
+struct Probed(Vec<(usize, Instrumented)>);
+
+impl Probed {
+    /// Builds `c` with every translation instrumented (the vertex stage too where the device
+    /// allows storage writes there), its counts buffer read back after each run.
+    fn build<'c>(
+        gpu: &Gpu,
+        c: &'c check::Checked,
+        outcome: &mut Outcome,
+        overrides: &[(String, UniformValue)],
+        m: MemoryRequest,
+    ) -> Option<(InMemory<'c>, Probed)> {
+        let probes = std::cell::RefCell::new(Vec::new());
+        let vertex = gpu.vertex_storage();
+        let instrument = |pass: usize, t: &mut crate::back::Translation, p: &crate::front::program::CompiledProgram, e: Option<&Effect>| {
+            probes.borrow_mut().push((pass, culprit::instrument_translation(t, p, e, vertex)?));
+            Ok(())
+        };
+        let m = MemoryRequest { read_back: Some(COUNTS_BUFFER), ..m };
+        let program = InMemory::new(gpu, c, outcome, overrides, m, Some(&instrument))?;
+        Some((program, Probed(probes.into_inner())))
+    }
+
+    /// What each instrumented program counted in `run`.
+    fn runs(&self, run: &MemoryRun) -> Vec<ProbeRun> {
+        run.read_back
+            .iter()
+            .filter_map(|(pass, words)| {
+                let (_, instrumented) = self.0.iter().find(|(p, _)| p == pass)?;
+                Some(ProbeRun { pass: *pass, instrumented: instrumented.clone(), counts: instrumented.read(words) })
+            })
+            .collect()
+    }
 }
 
 /// Where non-finite values begin in one instrumented stage of one pass.

@@ -20,6 +20,9 @@ use naga::{
     Statement, TypeInner,
 };
 
+use crate::back::{reflect, Translation};
+use crate::front::program::CompiledProgram;
+use crate::manifest::Effect;
 use crate::stage::StageKind;
 
 /// The name of the storage buffer the counts are written to.
@@ -83,6 +86,28 @@ impl Instrumented {
     pub fn probe(&self, id: u32) -> Option<&Probe> {
         self.probes.iter().find(|p| p.id == id)
     }
+}
+
+/// Instruments a translation: its fragment stage, and its vertex stage too with `vertex`
+/// (the device must allow storage writes in vertex shaders). `program` and `effect` are
+/// what `t` was translated from; the module is validated and reflected again, so the
+/// renderer binds the counts buffer like any other storage buffer.
+pub fn instrument_translation(
+    t: &mut Translation,
+    program: &CompiledProgram,
+    effect: Option<&Effect>,
+    vertex: bool,
+) -> Result<Instrumented, String> {
+    let stages: &[StageKind] = if vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };
+    let texts: Vec<(StageKind, &str)> =
+        program.stages.iter().filter_map(|s| Some((s.syntax.stage, s.rewritten.as_ref()?.text.as_str()))).collect();
+    let binding = free_binding(&t.module);
+    let instrumented = instrument(&mut t.module, &t.info, &texts, stages, binding)?;
+    t.info = crate::front::naga_run::validator()
+        .validate(&t.module)
+        .map_err(|e| format!("the translated module does not validate: {}", e.as_inner()))?;
+    t.reflection = reflect::reflect(&t.name, &t.module, &program.plan, effect, t.reflection.left_out.clone());
+    Ok(instrumented)
 }
 
 /// Instruments the entry points of `stages` in `module` (validated, `info` its analysis)
@@ -279,7 +304,7 @@ fn probe_block(fun: &mut Function, block: Block, site: &Site<'_>, probes: &mut V
             let ty = site.types.get(h.index());
             let Some(what) = candidate(&fun.expressions[h], ty) else { continue };
             let id = probes.len() as u32 + 1;
-            let span = crate::stability::hazards::eval::expression_span(fun, h, site.text);
+            let span = crate::check::hazards::eval::expression_span(fun, h, site.text);
             probes.push(Probe { id, span, stage: site.stage, what });
             let (emit, check) = build_check(fun, h, ty, site.flag, id);
             out.push(emit, Span::UNDEFINED);

@@ -1,0 +1,60 @@
+//! Files written by the commands: atomically (a temporary file and a rename), into
+//! directories created as needed, never over one of the run's inputs.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use crate::check::Outcome;
+
+/// Code for an output that cannot be written (IO: exit 2).
+pub const E_OUTPUT_IO: &str = "E0014";
+
+/// Canonical paths of every file the run read.
+pub fn input_paths(outcome: &Outcome, inputs: &[PathBuf]) -> BTreeSet<PathBuf> {
+    let mut set: BTreeSet<PathBuf> =
+        outcome.files.iter().filter_map(|(id, _)| std::fs::canonicalize(outcome.files.path(id)).ok()).collect();
+    set.extend(inputs.iter().filter_map(|p| std::fs::canonicalize(p).ok()));
+    set
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same directory and a rename,
+/// so readers never see a half-written file. Refuses to replace an input.
+pub fn write_atomic(path: &Path, bytes: &[u8], inputs: &BTreeSet<PathBuf>) -> Result<(), String> {
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create `{}`: {e}", dir.display()))?;
+    if let Ok(canonical) = std::fs::canonicalize(path) {
+        if inputs.contains(&canonical) {
+            return Err(format!("refusing to write `{}`: it is one of the inputs", path.display()));
+        }
+    }
+    let file_name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = dir.join(format!(".{file_name}.{}.tmp", std::process::id()));
+    let result = std::fs::write(&tmp, bytes).and_then(|_| std::fs::rename(&tmp, path));
+    if let Err(e) = result {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(format!("cannot write `{}`: {e}", path.display()));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn atomic_write_creates_directories_and_never_replaces_an_input() {
+        let dir = std::env::temp_dir().join(format!("effectc-write-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let out = dir.join("a/b/out.wgsl");
+        write_atomic(&out, b"first", &BTreeSet::new()).unwrap();
+        write_atomic(&out, b"second", &BTreeSet::new()).unwrap();
+        assert_eq!(std::fs::read(&out).unwrap(), b"second");
+        let inputs: BTreeSet<PathBuf> = [std::fs::canonicalize(&out).unwrap()].into();
+        let err = write_atomic(&out, b"third", &inputs).unwrap_err();
+        assert!(err.contains("one of the inputs"), "{err}");
+        assert_eq!(std::fs::read(&out).unwrap(), b"second");
+        let leftovers: Vec<_> = std::fs::read_dir(out.parent().unwrap()).unwrap().collect();
+        assert_eq!(leftovers.len(), 1, "no temporary files left behind");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,255 @@
+//! One program made drawable: a checked program translated to WGSL ([`prepare`]), then its
+//! scene or pass graph built on the device ([`build`]) as a [`Drawer`] that draws frames.
+//! `effectc render` writes what it draws to files; `bench` and `stress` draw in memory
+//! ([`crate::render::memory`]) with other uniform values or a degenerate mesh.
+
+use std::time::Duration;
+
+use crate::assets::camera;
+use crate::assets::degenerate::Degenerate;
+use crate::back::units;
+use crate::back::{Target as BackTarget, TranslateOptions, Translation};
+use crate::check::{self, Outcome};
+use crate::diag::{Diagnostic, FileId};
+use crate::front::program::CompiledProgram;
+use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
+use crate::render::device::Gpu;
+use crate::render::frames::{self, Frame, FrameError, GpuClock, Target};
+use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
+use crate::render::scene::{ColorMode, Scene, SceneInput};
+use crate::render::semantics::FrameState;
+
+/// Default frame size.
+pub const DEFAULT_SIZE: (u32, u32) = (512, 512);
+
+/// What building a program needs from the command's settings.
+#[derive(Debug, Clone, Copy)]
+pub struct BuildSettings {
+    pub back: TranslateOptions,
+    /// `None`: the manifest's `[render] size`, else [`DEFAULT_SIZE`].
+    pub size: Option<(u32, u32)>,
+    /// Multi-pass effects: every pass and target kept (nothing pruned or shared).
+    pub dump_targets: bool,
+}
+
+/// Changes a translation before it is built (`stress` instruments it): called with the
+/// pass index (0 for a single-pass program), the translation, the program it was
+/// translated from and the effect (or pass view) it was translated with.
+pub type Instrument<'a> = &'a dyn Fn(usize, &mut Translation, &CompiledProgram, Option<&Effect>) -> Result<(), String>;
+
+/// A checked program translated to WGSL: one unit for a single-pass program, one per
+/// running pass for a multi-pass effect.
+pub(crate) struct Prepared {
+    /// (pass index, translation, WGSL); the index is 0 for a single-pass program.
+    pub(crate) units: Vec<(usize, Translation, String)>,
+    /// The pass plan of a multi-pass effect.
+    pub(crate) plan: Option<crate::graph::PassPlan>,
+}
+
+/// Translates what `c` renders; diagnostics go to `outcome`. `None` when there is nothing
+/// to render (check or translation errors).
+pub(crate) fn prepare(
+    c: &check::Checked,
+    outcome: &mut Outcome,
+    settings: &BuildSettings,
+    instrument: Option<Instrument<'_>>,
+) -> Option<Prepared> {
+    let multi = c.effect.as_ref().filter(|e| e.is_multi_pass());
+    let (indices, results): (Vec<usize>, Vec<Result<Translation, Vec<Diagnostic>>>) = match multi {
+        Some(effect) => {
+            if c.failed {
+                return None;
+            }
+            let size = settings.size.or(effect.render.size).unwrap_or(DEFAULT_SIZE);
+            let plan = crate::graph::plan(effect, size, settings.dump_targets);
+            let mut units = Vec::new();
+            for i in plan.running() {
+                let pass = &c.passes[i];
+                let program = pass.program.as_ref()?;
+                let t = units::translate_program(&pass.view.name, program, Some(&pass.view), settings.back);
+                units.push((i, t));
+            }
+            let (indices, results) = units.into_iter().unzip();
+            let prepared = wgsl_units(indices, results, outcome, c, instrument)?;
+            return Some(Prepared { units: prepared, plan: Some(plan) });
+        }
+        None => (vec![0], vec![units::translate_checked(c, outcome, settings.back)?]),
+    };
+    Some(Prepared { units: wgsl_units(indices, results, outcome, c, instrument)?, plan: None })
+}
+
+/// The WGSL of every translated unit, after `instrument` changed it.
+fn wgsl_units(
+    indices: Vec<usize>,
+    results: Vec<Result<Translation, Vec<Diagnostic>>>,
+    outcome: &mut Outcome,
+    c: &check::Checked,
+    instrument: Option<Instrument<'_>>,
+) -> Option<Vec<(usize, Translation, String)>> {
+    let mut units = Vec::new();
+    for (i, r) in indices.into_iter().zip(results) {
+        let mut translation = match r {
+            Ok(t) => t,
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                return None;
+            }
+        };
+        if let Some(instrument) = instrument {
+            let (program, effect) = match c.passes.get(i) {
+                Some(pass) => (pass.program.as_ref()?, Some(&pass.view)),
+                None => (c.program.as_ref()?, c.effect.as_ref()),
+            };
+            if let Err(message) = instrument(i, &mut translation, program, effect) {
+                outcome.diagnostics.push(crate::back::internal_error(translation.file, message));
+                return None;
+            }
+        }
+        let wgsl = match units::emit_contained(&translation, BackTarget::Wgsl) {
+            Ok(o) => String::from_utf8_lossy(&o[0].bytes).into_owned(),
+            Err(e) => {
+                outcome.diagnostics.push(units::target_error(translation.file, BackTarget::Wgsl, &e));
+                return None;
+            }
+        };
+        units.push((i, translation, wgsl));
+    }
+    Some(units)
+}
+
+/// What draws the frames of one program.
+pub(crate) enum Drawer {
+    Single { scene: Box<Scene>, target: Box<Target> },
+    Graph(Box<PassGraph>),
+}
+
+impl Drawer {
+    pub(crate) fn name(&self) -> &str {
+        match self {
+            Drawer::Single { scene, .. } => &scene.name,
+            Drawer::Graph(g) => &g.name,
+        }
+    }
+    pub(crate) fn warnings(&mut self) -> &mut Vec<Diagnostic> {
+        match self {
+            Drawer::Single { scene, .. } => &mut scene.warnings,
+            Drawer::Graph(g) => &mut g.warnings,
+        }
+    }
+    pub(crate) fn camera(&self) -> &CameraDecl {
+        match self {
+            Drawer::Single { scene, .. } => &scene.camera,
+            Drawer::Graph(g) => &g.camera,
+        }
+    }
+    pub(crate) fn model(&self) -> &ModelDecl {
+        match self {
+            Drawer::Single { scene, .. } => &scene.model,
+            Drawer::Graph(g) => &g.model,
+        }
+    }
+    pub(crate) fn clock(&self) -> GpuClock {
+        match self {
+            Drawer::Single { target, .. } => target.clock(),
+            Drawer::Graph(g) => g.clock(),
+        }
+    }
+    pub(crate) fn describe(&self) -> String {
+        match self {
+            Drawer::Single { scene, .. } => scene.describe.clone(),
+            Drawer::Graph(g) => format!("{} passes run", g.plan.running().count()),
+        }
+    }
+    /// Every scene drawn, with its index into `Effect::passes` (0 for a single pass).
+    pub(crate) fn scenes(&self) -> Box<dyn Iterator<Item = (usize, &Scene)> + '_> {
+        match self {
+            Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &**scene))),
+            Drawer::Graph(g) => Box::new(g.scenes()),
+        }
+    }
+    pub(crate) fn scenes_mut(&mut self) -> Box<dyn Iterator<Item = (usize, &mut Scene)> + '_> {
+        match self {
+            Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &mut **scene))),
+            Drawer::Graph(g) => Box::new(g.scenes_mut()),
+        }
+    }
+    pub(crate) fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
+        match self {
+            Drawer::Single { scene, target } => frames::render(gpu, scene, target, state, timeout),
+            Drawer::Graph(g) => g.render(gpu, state, timeout),
+        }
+    }
+}
+
+/// What a build changes from the manifest (`effectc bench`, `effectc stress`).
+#[derive(Default, Clone, Copy)]
+pub(crate) struct Variant<'a> {
+    /// Uniform values in place of the manifest's.
+    pub overrides: &'a [(String, UniformValue)],
+    /// A degenerate variant of the mesh.
+    pub degenerate: Option<Degenerate>,
+}
+
+/// Builds the scene (or the pass graph) of a prepared program; also returns the file
+/// program-wide diagnostics point at.
+pub(crate) fn build(
+    gpu: &Gpu,
+    prepared: &Prepared,
+    c: &check::Checked,
+    (size, mode): ((u32, u32), ColorMode),
+    settings: &BuildSettings,
+    variant: Variant<'_>,
+) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
+    let Variant { overrides, degenerate } = variant;
+    let flipped_y = settings.back.flip_y;
+    let with_overrides = |e: &Effect| with_overrides(e, overrides);
+    match (&prepared.plan, c.effect.as_ref()) {
+        (Some(plan), Some(effect)) => {
+            let views: Vec<Effect> = c.passes.iter().map(|p| with_overrides(&p.view)).collect();
+            let programs: Vec<PassProgram<'_>> = prepared
+                .units
+                .iter()
+                .filter_map(|(i, t, wgsl)| {
+                    let pass = &c.passes[*i];
+                    Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &views[*i] })
+                })
+                .collect();
+            let options = GraphOptions { mode, flipped_y, dump: settings.dump_targets, output_size: size, degenerate };
+            let graph = PassGraph::new(gpu, effect, plan.clone(), &programs, options)?;
+            Ok((Drawer::Graph(Box::new(graph)), effect.file))
+        }
+        _ => {
+            let (_, translation, wgsl) = &prepared.units[0];
+            let program = c.program.as_ref().expect("translated programs have a program");
+            let effect = c.effect.as_ref().map(with_overrides);
+            let input = SceneInput { translation, wgsl, program, effect: effect.as_ref(), mode, flipped_y, pass: None, degenerate };
+            let scene = Scene::new(gpu, &input)?;
+            let target = Target::new(gpu, &scene, size.0, size.1, mode);
+            Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))
+        }
+    }
+}
+
+/// The per-frame values of frame `index` at effect time `time`.
+pub(crate) fn frame_state(drawer: &Drawer, index: u32, time: f64, step: f64, (w, h): (u32, u32)) -> FrameState {
+    let aspect = w as f32 / h as f32;
+    FrameState {
+        index,
+        time,
+        delta: step,
+        size: (w, h),
+        view: camera::view_at(drawer.camera(), time, aspect),
+        model: camera::model_at(drawer.model(), time),
+    }
+}
+
+/// `effect` with the values of `overrides` in place of the manifest's.
+pub fn with_overrides(effect: &Effect, overrides: &[(String, UniformValue)]) -> Effect {
+    let mut e = effect.clone();
+    for (name, value) in overrides {
+        if let Some(u) = e.uniforms.iter_mut().find(|u| u.name == *name) {
+            u.value = Some(value.clone());
+        }
+    }
+    e
+}
