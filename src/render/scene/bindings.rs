@@ -1,0 +1,74 @@
+//! A scene's buffers and bind groups: uniform buffers, storage buffers (by name, so a
+//! caller can zero and read them back), textures and samplers bound by reflection.
+
+use std::collections::BTreeMap;
+
+use crate::back::reflect::{BindingInfo, Reflection};
+use crate::render::device::Gpu;
+use crate::render::uniforms::UniformBuffer;
+
+use super::textures::Textures;
+
+pub(super) fn bind_groups(
+    gpu: &Gpu,
+    pipeline: &wgpu::RenderPipeline,
+    r: &Reflection,
+    uniforms: &[(UniformBuffer, wgpu::Buffer)],
+    textures: &Textures,
+) -> (Vec<(u32, wgpu::BindGroup)>, Vec<(String, wgpu::Buffer)>) {
+    let mut by_group: BTreeMap<u32, Vec<&BindingInfo>> = BTreeMap::new();
+    for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
+        by_group.entry(b.group).or_default().push(b);
+    }
+    let mut storage = Vec::new();
+    for b in by_group.values().flatten().filter(|b| b.kind == "storage_buffer") {
+        let size = u64::from(b.size.unwrap_or(16)).max(16) + 65536;
+        storage.push((
+            b.name.clone(),
+            gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(&b.name),
+                size,
+                // Callers may zero a storage buffer before a run and read it back (stress's counts).
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            }),
+        ));
+    }
+    let mut groups = Vec::new();
+    for (group, bindings) in by_group {
+        let mut entries = Vec::new();
+        for b in bindings {
+            let resource = match b.kind {
+                "uniform_buffer" => {
+                    uniforms.iter().find(|(u, _)| u.group == b.group && u.binding == b.binding).map(|(_, buf)| buf.as_entire_binding())
+                }
+                "storage_buffer" => storage.iter().find(|(n, _)| *n == b.name).map(|(_, buf)| buf.as_entire_binding()),
+                "texture" => textures.views.get(&b.name).map(wgpu::BindingResource::TextureView),
+                "sampler" | "comparison_sampler" => textures.samplers.get(&b.name).map(wgpu::BindingResource::Sampler),
+                _ => None,
+            };
+            if let Some(resource) = resource {
+                entries.push(wgpu::BindGroupEntry { binding: b.binding, resource });
+            }
+        }
+        let layout = pipeline.get_bind_group_layout(group);
+        let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: None, layout: &layout, entries: &entries });
+        groups.push((group, bg));
+    }
+    (groups, storage)
+}
+
+pub(super) fn buffer_init(gpu: &Gpu, label: &str, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
+    use wgpu::util::DeviceExt;
+    // Zero-sized buffers are invalid; a vertex stage without inputs still gets none.
+    let padded;
+    let contents = if !bytes.len().is_multiple_of(4) || bytes.is_empty() {
+        let mut p = bytes.to_vec();
+        p.resize(bytes.len().div_ceil(4).max(1) * 4, 0);
+        padded = p;
+        &padded[..]
+    } else {
+        bytes
+    };
+    gpu.device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage })
+}

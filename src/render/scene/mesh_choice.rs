@@ -1,0 +1,126 @@
+//! Which mesh a scene draws (the manifest's, else a guess from what the vertex stage
+//! reads), and the warnings that point a guess at its declaration in the user's GLSL.
+
+use crate::assets::mesh::Mesh;
+use crate::diag::{Diagnostic, FileId};
+use crate::front::program::CompiledProgram;
+use crate::front::syntax::Storage;
+use crate::manifest::{BuiltinMesh, Effect, MeshSource};
+use crate::render::attributes;
+use crate::stage::StageKind;
+
+use super::{SceneInput, E_ASSET, W_ATTRIBUTE_GUESSED, W_ATTRIBUTE_ZERO, W_MESH_GUESSED};
+
+/// How the mesh was chosen.
+pub(super) enum MeshNote {
+    Manifest,
+    /// No `[mesh]` and matrices in use: a cube.
+    Cube,
+    /// No `[mesh]`, no matrices: a full-screen quad.
+    Fullscreen,
+    /// No `[mesh]` and no vertex inputs: three vertices, positions made by the shader.
+    OwnVertices,
+}
+
+impl MeshNote {
+    pub(super) fn describe(&self, effect: Option<&Effect>) -> String {
+        match self {
+            MeshNote::Manifest => match effect.and_then(|e| e.mesh.as_ref()).map(|m| &m.source) {
+                Some(MeshSource::Builtin(b)) => format!("mesh {}", b.name()),
+                Some(MeshSource::Obj(p)) => format!("mesh {}", p.display()),
+                None => "mesh".into(),
+            },
+            MeshNote::Cube => "mesh cube (guessed)".into(),
+            MeshNote::Fullscreen => "mesh fullscreen_quad (guessed)".into(),
+            MeshNote::OwnVertices => "3 vertices without attributes".into(),
+        }
+    }
+}
+
+pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result<(Mesh, MeshNote), Vec<Diagnostic>> {
+    if let Some(decl) = input.effect.and_then(|e| e.mesh.as_ref()) {
+        let mesh = match &decl.source {
+            MeshSource::Builtin(b) => Mesh::builtin(*b),
+            MeshSource::Obj(path) => Mesh::load_obj(path).map_err(|e| {
+                let file = input.effect.map(|e| e.file).unwrap_or(FileId(0));
+                vec![Diagnostic::error(E_ASSET, format!("cannot load the mesh: {e}")).at(file, decl.span.clone(), "this mesh")]
+            })?,
+        };
+        let note = if matches!(decl.source, MeshSource::Builtin(BuiltinMesh::FullscreenQuad | BuiltinMesh::FullscreenTriangle)) {
+            MeshNote::Fullscreen
+        } else {
+            MeshNote::Manifest
+        };
+        return Ok((mesh, note));
+    }
+    let r = &input.translation.reflection;
+    let file = input.program.stages[0].syntax.file;
+    if r.vertex_inputs.is_empty() {
+        return Ok((Mesh::builtin(BuiltinMesh::FullscreenQuad), MeshNote::OwnVertices));
+    }
+    let uses_matrices = r.uniform_block.iter().flat_map(|b| &b.members).any(|m| m.glsl_type.starts_with("mat"))
+        || r.bindings.iter().any(|b| b.kind == "uniform_buffer" && b.glsl.is_some());
+    let (mesh, note, what) = if uses_matrices {
+        (BuiltinMesh::Cube, MeshNote::Cube, "a unit cube (the program uses matrices)")
+    } else {
+        (BuiltinMesh::FullscreenQuad, MeshNote::Fullscreen, "a full-screen quad (the program uses no matrices)")
+    };
+    if input.effect.is_some() {
+        warnings.push(
+            Diagnostic::warning(W_MESH_GUESSED, format!("the manifest has no [mesh]: drawing {what}"))
+                .in_file(input.effect.map(|e| e.file).unwrap_or(file))
+                .with_help("add e.g. `mesh = \"uv_sphere\"`"),
+        );
+    }
+    Ok((Mesh::builtin(mesh), note))
+}
+
+pub(super) fn report_attributes(
+    program: &CompiledProgram,
+    choices: &[attributes::Choice],
+    fullscreen_pass: bool,
+    warnings: &mut Vec<Diagnostic>,
+) {
+    for c in choices {
+        let (code, message) = match (c.attribute, c.guessed) {
+            (Some(_), None) => continue,
+            (Some(_), Some(_)) if fullscreen_pass => continue,
+            (Some(a), Some(why)) => (W_ATTRIBUTE_GUESSED, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input)),
+            (None, _) => (W_ATTRIBUTE_ZERO, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),
+        };
+        let d = at_declaration(Diagnostic::warning(code, message), program, &c.input, Storage::In, "this input");
+        let example = c.attribute.unwrap_or("position");
+        warnings.push(d.with_help(format!(
+            "map it in the manifest: [mesh.attributes] `{} = \"{example}\"` (attributes: position, normal, uv, tangent, bitangent, color)",
+            c.input
+        )));
+    }
+}
+
+/// Points `d` at the declaration of `name` (a global with `storage`), in the vertex stage
+/// for inputs, in any stage for uniforms.
+pub(super) fn at_declaration(d: Diagnostic, program: &CompiledProgram, name: &str, storage: Storage, label: &str) -> Diagnostic {
+    let input = storage == Storage::In;
+    let matches = |s: Storage| s == storage || (input && s == Storage::Attribute);
+    for stage in &program.stages {
+        if input && stage.syntax.stage != StageKind::Vertex {
+            continue;
+        }
+        if let Some(g) = stage.syntax.globals.iter().find(|g| g.name == name && matches(g.storage)) {
+            return d.at(stage.syntax.file, g.name_span.clone(), label);
+        }
+        // Members of uniform blocks without an instance name are reached by plain name.
+        if let Some(m) = stage
+            .syntax
+            .globals
+            .iter()
+            .filter(|g| matches(g.storage))
+            .filter_map(|g| g.block.as_ref())
+            .flat_map(|b| &b.members)
+            .find(|m| m.name == name)
+        {
+            return d.at(stage.syntax.file, m.span.clone(), label);
+        }
+    }
+    d.in_file(program.stages[0].syntax.file)
+}

@@ -1,0 +1,338 @@
+//! Everything one effect needs on the GPU, created once per run: the pipeline, the vertex
+//! and index buffers, textures and samplers, uniform buffers and bind groups.
+//!
+//! The manifest drives it; what the manifest leaves open is guessed and reported as a
+//! warning at the declaration in the user's GLSL (attributes by name, uniforms by name,
+//! samplers get a placeholder texture, the mesh follows what the vertex stage reads).
+
+mod bindings;
+mod mesh_choice;
+mod textures;
+
+use bindings::{bind_groups, buffer_init};
+use mesh_choice::{at_declaration, choose_mesh, report_attributes, MeshNote};
+use textures::Textures;
+
+use std::collections::BTreeMap;
+
+use crate::assets::degenerate::Degenerate;
+use crate::assets::mesh::Mesh;
+use crate::back::Translation;
+use crate::diag::{Diagnostic, FileId};
+use crate::front::program::CompiledProgram;
+use crate::front::syntax::Storage;
+use crate::manifest::{Blend, CameraDecl, Cull, Effect, Filter, ModelDecl};
+use crate::render::attributes;
+use crate::render::device::{color_formats, Gpu, PipelineSpec};
+use crate::render::uniforms::{self, UniformBuffer};
+
+/// A vertex input was matched to a mesh attribute by a guess.
+pub const W_ATTRIBUTE_GUESSED: &str = "W0401";
+/// A vertex input no mesh attribute fits: it reads zeros.
+pub const W_ATTRIBUTE_ZERO: &str = "W0402";
+/// A uniform the manifest does not give a value: it got a guessed one.
+pub const W_UNIFORM_GUESSED: &str = "W0403";
+/// A sampler the manifest binds no texture to: it reads a placeholder.
+pub const W_TEXTURE_PLACEHOLDER: &str = "W0404";
+/// The mesh was chosen by effectc (no `[mesh]`).
+pub const W_MESH_GUESSED: &str = "W0405";
+/// wgpu refused the pipeline or a resource (a validation error).
+pub const E_PIPELINE: &str = "E0402";
+/// A texture image or mesh file could not be loaded.
+pub const E_ASSET: &str = "E0406";
+/// The program cannot be rendered (no vertex stage, a stage WebGPU lacks, …).
+pub const E_UNRENDERABLE: &str = "E0408";
+
+/// The colour format frames are rendered into.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ColorMode {
+    /// Rgba8Unorm, written as PNG.
+    Unorm8,
+    /// Rgba32Float, scanned for NaN and Inf.
+    Float32,
+}
+
+impl ColorMode {
+    pub fn format(self) -> wgpu::TextureFormat {
+        match self {
+            ColorMode::Unorm8 => wgpu::TextureFormat::Rgba8Unorm,
+            ColorMode::Float32 => wgpu::TextureFormat::Rgba32Float,
+        }
+    }
+}
+
+/// How the mesh is drawn.
+pub enum Draw {
+    Indexed {
+        buffer: wgpu::Buffer,
+        count: u32,
+    },
+    /// Vertices without an index buffer (a vertex stage that makes its own positions).
+    Vertices(u32),
+}
+
+/// One effect's GPU state.
+pub struct Scene {
+    pub name: String,
+    pub module: naga::Module,
+    pub pipeline: wgpu::RenderPipeline,
+    pub vertex_buffer: Option<wgpu::Buffer>,
+    /// Per-instance attributes (vertex buffer slot after the mesh's, or 0 without one).
+    pub instance_buffer: Option<wgpu::Buffer>,
+    pub draw: Draw,
+    /// Instances per draw (1 without `[instances]`).
+    pub instances: u32,
+    pub bind_groups: Vec<(u32, wgpu::BindGroup)>,
+    pub uniforms: Vec<(UniformBuffer, wgpu::Buffer)>,
+    /// Colour formats by output location (location 0 is the frame).
+    pub colors: Vec<Option<wgpu::TextureFormat>>,
+    pub depth: bool,
+    pub clear: [f32; 4],
+    pub camera: CameraDecl,
+    pub model: ModelDecl,
+    /// What was guessed, as warnings.
+    pub warnings: Vec<Diagnostic>,
+    /// A one-line description of the mesh and its attributes, for `--verbose`.
+    pub describe: String,
+    /// Framebuffer rows run bottom-up (clip y negated): readback flips them.
+    pub flipped_y: bool,
+    /// The storage buffers the program binds, by name (zeroed and read back by callers
+    /// that count with them, like `stress`'s instrumented programs).
+    pub storage: Vec<(String, wgpu::Buffer)>,
+    /// What the stress variant of the mesh changed; `None` without one, or when the scene
+    /// draws no mesh it could change (a full-screen pass, vertices made by the shader).
+    pub degenerate: Option<String>,
+}
+
+/// What a scene is built from.
+pub struct SceneInput<'a> {
+    pub translation: &'a Translation,
+    pub wgsl: &'a str,
+    pub program: &'a CompiledProgram,
+    pub effect: Option<&'a Effect>,
+    pub mode: ColorMode,
+    /// The translation negated clip y (`TranslateOptions::flip_y`).
+    pub flipped_y: bool,
+    /// Set for one pass of a multi-pass effect: its attachments and sampled targets.
+    pub pass: Option<PassBinding<'a>>,
+    /// `effectc stress`: draw a degenerate variant of the mesh.
+    pub degenerate: Option<Degenerate>,
+}
+
+/// What the pass graph decides for one pass's scene.
+pub struct PassBinding<'a> {
+    /// Colour formats by output location; `None` where nothing is attached.
+    pub colors: Vec<Option<wgpu::TextureFormat>>,
+    /// The depth attachment's format, when the pass has one.
+    pub depth: Option<wgpu::TextureFormat>,
+    /// Sampler uniforms bound to earlier targets: the target's view and the filter.
+    pub sampled: &'a BTreeMap<String, (wgpu::TextureView, Filter)>,
+}
+
+impl Scene {
+    /// The storage buffer the program binds under `name`.
+    pub fn storage_buffer(&self, name: &str) -> Option<&wgpu::Buffer> {
+        self.storage.iter().find(|(n, _)| n == name).map(|(_, b)| b)
+    }
+
+    pub fn new(gpu: &Gpu, input: &SceneInput<'_>) -> Result<Scene, Vec<Diagnostic>> {
+        let t = input.translation;
+        let r = &t.reflection;
+        let first_file = input.program.stages[0].syntax.file;
+        let mut warnings = Vec::new();
+        if !r.entry_points.iter().any(|e| e.name == "vs_main") {
+            return Err(vec![Diagnostic::error(E_UNRENDERABLE, "the program has no vertex stage to draw with")
+                .in_file(first_file)
+                .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)")]);
+        }
+        if let Some(first) = r.fragment_outputs.first().filter(|o| input.pass.is_none() && o.location == 0 && !o.wgsl_type.contains("f32"))
+        {
+            return Err(vec![Diagnostic::error(
+                E_UNRENDERABLE,
+                format!("fragment output `{}` is an integer; frames can only show float colours", first.name),
+            )
+            .in_file(first_file)]);
+        }
+        let (mesh, mesh_note) = choose_mesh(input, &mut warnings)?;
+        let explicit = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.attributes.clone()).unwrap_or_default();
+        let instances = input.effect.and_then(|e| e.instances.as_ref());
+        let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
+        let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
+        let choices = attributes::choose(&per_vertex, &explicit, &mesh);
+        let read: Vec<&str> = choices.iter().filter_map(|c| c.attribute).collect();
+        let (mesh, degenerate) = match input.degenerate {
+            Some(d) if matches!(mesh_note, MeshNote::Manifest | MeshNote::Cube) && d.affects(&read) => {
+                let (changed, what) = d.apply(&mesh);
+                (changed, Some(what))
+            }
+            _ => (mesh, None),
+        };
+        // A full-screen pass draws effectc's triangle, whose attributes (position, uv) are
+        // documented: matching them by name is the contract, not a guess worth a warning.
+        let fullscreen_pass = input.pass.is_some() && matches!(mesh_note, MeshNote::Fullscreen);
+        report_attributes(input.program, &choices, fullscreen_pass, &mut warnings);
+        let interleaved = attributes::interleave(&choices, &mesh);
+        let instanced = instances.and_then(|d| attributes::instance_buffer(&r.vertex_inputs, d));
+
+        let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let render = input.effect.map(|e| e.render.clone()).unwrap_or_default();
+        let (depth_format, colors) = match &input.pass {
+            Some(p) => (p.depth, p.colors.clone()),
+            None => {
+                let depth = render.depth_test && !matches!(mesh_note, MeshNote::Fullscreen);
+                (depth.then_some(wgpu::TextureFormat::Depth32Float), color_formats(r, input.mode.format()))
+            }
+        };
+        let depth = depth_format.is_some();
+        let spec = PipelineSpec {
+            label: &t.name,
+            wgsl: input.wgsl,
+            vertex_stride: interleaved.stride,
+            attributes: &interleaved.attributes,
+            instance_stride: instanced.as_ref().map_or(0, |i| i.stride),
+            instance_attributes: instanced.as_ref().map_or(&[], |i| &i.attributes),
+            colors: colors.clone(),
+            blend: blend_state(render.blend),
+            depth: depth_format,
+            depth_write: render.depth_write,
+            depth_compare: depth_compare(render.depth_compare),
+            cull: match render.cull {
+                Cull::None => None,
+                Cull::Back => Some(wgpu::Face::Back),
+                Cull::Front => Some(wgpu::Face::Front),
+            },
+            // Translated with clip y negated: GL's counter-clockwise front faces arrive
+            // clockwise in the framebuffer.
+            front_face: if input.flipped_y { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
+            fragment: r.entry_points.iter().any(|e| e.name == "fs_main"),
+        };
+        let pipeline = gpu.pipeline(&spec).map_err(|e| vec![pipeline_error(first_file, &e)])?;
+
+        let vertex_buffer =
+            (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));
+        let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
+        let draw = match mesh_note {
+            MeshNote::OwnVertices => Draw::Vertices(3),
+            _ => {
+                let bytes: Vec<u8> = mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
+                Draw::Indexed { buffer: buffer_init(gpu, "indices", &bytes, wgpu::BufferUsages::INDEX), count: mesh.indices.len() as u32 }
+            }
+        };
+        let uniforms = uniform_buffers(gpu, input, first_file, &mut warnings)?;
+        let textures = Textures::create(gpu, input, &mut warnings)?;
+        let (bind_groups, storage) = bind_groups(gpu, &pipeline, r, &uniforms, &textures);
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(vec![pipeline_error(first_file, &e.to_string())]);
+        }
+        let describe = describe(&mesh_note, &mesh, &choices, input.effect);
+        Ok(Scene {
+            name: t.name.clone(),
+            module: t.module.clone(),
+            pipeline,
+            vertex_buffer,
+            instance_buffer,
+            draw,
+            instances: instances.map_or(1, |d| d.count),
+            bind_groups,
+            uniforms,
+            colors,
+            depth,
+            clear: render.clear,
+            camera: input.effect.and_then(|e| e.camera.clone()).unwrap_or_default(),
+            model: input.effect.map(|e| e.model.clone()).unwrap_or_default(),
+            warnings,
+            describe,
+            flipped_y: input.flipped_y,
+            storage,
+            degenerate,
+        })
+    }
+}
+
+/// A manifest key for a GLSL name: quoted when it has `.` or `[`.
+pub(super) fn toml_key(name: &str) -> String {
+    if name.contains(['.', '[']) {
+        format!("\"{name}\"")
+    } else {
+        name.to_string()
+    }
+}
+
+fn depth_compare(c: crate::manifest::DepthCompare) -> wgpu::CompareFunction {
+    use crate::manifest::DepthCompare as D;
+    use wgpu::CompareFunction as C;
+    match c {
+        D::Never => C::Never,
+        D::Less => C::Less,
+        D::Equal => C::Equal,
+        D::LessEqual => C::LessEqual,
+        D::Greater => C::Greater,
+        D::NotEqual => C::NotEqual,
+        D::GreaterEqual => C::GreaterEqual,
+        D::Always => C::Always,
+    }
+}
+
+fn blend_state(blend: Blend) -> Option<wgpu::BlendState> {
+    use wgpu::{BlendComponent, BlendFactor as F, BlendOperation, BlendState};
+    let colour = |src, dst| BlendComponent { src_factor: src, dst_factor: dst, operation: BlendOperation::Add };
+    match blend {
+        Blend::None => None,
+        Blend::Alpha => Some(BlendState::ALPHA_BLENDING),
+        Blend::Additive => Some(BlendState { color: colour(F::SrcAlpha, F::One), alpha: colour(F::One, F::One) }),
+        Blend::Premultiplied => Some(BlendState::PREMULTIPLIED_ALPHA_BLENDING),
+    }
+}
+
+fn pipeline_error(file: FileId, message: &str) -> Diagnostic {
+    Diagnostic::error(E_PIPELINE, "wgpu rejected the translated program")
+        .in_file(file)
+        .with_note(message.trim().to_string())
+        .with_note("the WGSL effectc renders is what `effectc translate --to wgsl` writes")
+}
+
+/// The uniform buffers of a scene: the manifest's values, semantics and guesses (each
+/// guess reported at its declaration).
+fn uniform_buffers(
+    gpu: &Gpu,
+    input: &SceneInput<'_>,
+    first_file: FileId,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
+    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect)
+        .map_err(|e| vec![Diagnostic::error(E_PIPELINE, e).in_file(first_file)])?;
+    for g in guessed {
+        let mut d = Diagnostic::warning(W_UNIFORM_GUESSED, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
+        d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
+        let help = if g.aggregate {
+            format!("give its members values in [uniforms]: `\"{}.<member>\" = …` (arrays: `\"{}[0]\"`)", g.name, g.name)
+        } else {
+            format!("give it a value in [uniforms]: `{} = …` or `{{ semantic = \"…\" }}`", toml_key(&g.name))
+        };
+        warnings.push(d.with_help(help));
+    }
+    Ok(uniform_data
+        .into_iter()
+        .map(|u| {
+            let b = buffer_init(gpu, "uniforms", &u.bytes, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
+            (u, b)
+        })
+        .collect())
+}
+
+/// A one-line description of the mesh and its attributes, for `--verbose`.
+fn describe(mesh_note: &MeshNote, mesh: &Mesh, choices: &[attributes::Choice], effect: Option<&Effect>) -> String {
+    let instances = effect.and_then(|e| e.instances.as_ref());
+    let mut inputs: Vec<String> = choices.iter().map(|c| format!("{} ← {}", c.input, c.attribute.unwrap_or("zeros"))).collect();
+    if let Some(d) = instances {
+        inputs.extend(d.attributes.iter().map(|a| format!("{} ← per instance", a.input)));
+    }
+    format!(
+        "{}; {} vertices, {} triangles{}; inputs: {}",
+        mesh_note.describe(effect),
+        mesh.vertex_count(),
+        mesh.triangle_count(),
+        instances.map(|d| format!(", {} instances", d.count)).unwrap_or_default(),
+        inputs.join(", ")
+    )
+}

@@ -1,0 +1,246 @@
+//! A scene's textures and samplers: the manifest's images and generators uploaded with
+//! mipmaps, cube maps, targets of earlier passes, and placeholders (reported) for samplers
+//! the manifest leaves open.
+
+use std::collections::BTreeMap;
+
+use crate::assets::texture::{self, TexelImage};
+use crate::back::reflect::BindingInfo;
+use crate::diag::{Diagnostic, FileId};
+use crate::front::syntax::Storage;
+use crate::manifest::{Filter, TextureKind, TextureSource, Wrap};
+use crate::render::device::Gpu;
+
+use super::mesh_choice::at_declaration;
+use super::{toml_key, SceneInput, E_ASSET, W_TEXTURE_PLACEHOLDER};
+
+/// Textures and samplers by binding name.
+pub(super) struct Textures {
+    pub(super) views: BTreeMap<String, wgpu::TextureView>,
+    pub(super) samplers: BTreeMap<String, wgpu::Sampler>,
+}
+
+impl Textures {
+    pub(super) fn create(gpu: &Gpu, input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result<Textures, Vec<Diagnostic>> {
+        let r = &input.translation.reflection;
+        let plan = &input.program.plan;
+        let mut views = BTreeMap::new();
+        let mut samplers = BTreeMap::new();
+        for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
+            match b.kind {
+                "texture" => {
+                    let user = plan.textures.iter().find(|t| t.name == b.name).map(|t| t.user_path.clone());
+                    let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
+                    if let Some((view, _)) = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u)) {
+                        views.insert(b.name.clone(), view.clone());
+                        continue;
+                    }
+                    let view = match (decl, b.sample_type) {
+                        (_, Some("depth")) => depth_placeholder(gpu, b),
+                        (_, Some("sint" | "uint")) => integer_placeholder(gpu, b),
+                        (Some(decl), _) => {
+                            let image = load(decl).map_err(|e| {
+                                let file = input.effect.map(|e| e.file).unwrap_or(FileId(0));
+                                vec![Diagnostic::error(E_ASSET, format!("cannot load texture `{}`: {e}", decl.name)).at(
+                                    file,
+                                    decl.span.clone(),
+                                    "this texture",
+                                )]
+                            })?;
+                            upload(gpu, &image, b)
+                        }
+                        (None, _) => {
+                            let kind = if b.dimension == Some("cube") { TextureKind::Cube } else { TextureKind::D2 };
+                            let name = user.clone().unwrap_or_else(|| b.name.clone());
+                            let d = Diagnostic::warning(
+                                W_TEXTURE_PLACEHOLDER,
+                                format!(
+                                    "sampler `{name}` has no texture in the manifest: it reads a placeholder {}",
+                                    match kind {
+                                        TextureKind::Cube => "sky-gradient cube map",
+                                        TextureKind::D2 => "magenta and black checker",
+                                    }
+                                ),
+                            );
+                            let d = at_declaration(d, input.program, &name, Storage::Uniform, "this sampler");
+                            let key = toml_key(&name);
+                            warnings.push(
+                                d.with_help(format!("bind it in [textures]: `{key} = \"image.png\"` or `{{ generate = \"noise\" }}`")),
+                            );
+                            upload(gpu, &texture::placeholder(kind), b)
+                        }
+                    };
+                    views.insert(b.name.clone(), view);
+                }
+                "sampler" | "comparison_sampler" => {
+                    let user = plan.textures.iter().find(|t| t.sampler_name == b.name).map(|t| t.user_path.clone());
+                    let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
+                    let target = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u));
+                    let (filter, wrap) = match target {
+                        // Targets are read like GL render textures: clamped at the edges.
+                        Some((_, filter)) => (*filter, Wrap::Clamp),
+                        None => decl.map(|d| (d.filter, d.wrap)).unwrap_or_default(),
+                    };
+                    samplers.insert(b.name.clone(), sampler(gpu, filter, wrap, b.kind == "comparison_sampler"));
+                }
+                _ => {}
+            }
+        }
+        Ok(Textures { views, samplers })
+    }
+}
+
+fn load(decl: &crate::manifest::TextureDecl) -> Result<TexelImage, String> {
+    match &decl.source {
+        TextureSource::File(p) => texture::load_file(p),
+        TextureSource::Faces(faces) => texture::load_faces(faces),
+        TextureSource::Generated { generator, size, params } => Ok(texture::generate(*generator, *size, params, decl.kind)),
+    }
+}
+
+fn view_dimension(b: &BindingInfo) -> wgpu::TextureViewDimension {
+    match b.dimension {
+        Some("1d") => wgpu::TextureViewDimension::D1,
+        Some("2d_array") => wgpu::TextureViewDimension::D2Array,
+        Some("3d") => wgpu::TextureViewDimension::D3,
+        Some("cube") => wgpu::TextureViewDimension::Cube,
+        Some("cube_array") => wgpu::TextureViewDimension::CubeArray,
+        _ => wgpu::TextureViewDimension::D2,
+    }
+}
+
+/// Six layers for cube (array) views, `None` for the other dimensions.
+fn cube_layers(dim: wgpu::TextureViewDimension) -> Option<u32> {
+    matches!(dim, wgpu::TextureViewDimension::Cube | wgpu::TextureViewDimension::CubeArray).then_some(6)
+}
+
+/// Uploads `image` as the binding's kind of texture, with a full mipmap chain for 2D and
+/// cube textures (as `glGenerateMipmap` would make; sampled with trilinear filtering).
+/// A 2D image fills every layer a 2D array or cube needs; a 3D texture gets one slice.
+fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
+    let dim = view_dimension(b);
+    let layers = cube_layers(dim).unwrap_or(image.layers.max(1));
+    let (dimension, depth) = match dim {
+        wgpu::TextureViewDimension::D1 => (wgpu::TextureDimension::D1, 1),
+        wgpu::TextureViewDimension::D3 => (wgpu::TextureDimension::D3, 1),
+        _ => (wgpu::TextureDimension::D2, layers),
+    };
+    let mipmapped = dimension == wgpu::TextureDimension::D2;
+    let mut levels = vec![image.clone()];
+    if mipmapped {
+        levels.extend(image.mip_chain());
+    }
+    let height = if dimension == wgpu::TextureDimension::D1 { 1 } else { image.height };
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(&b.name),
+        size: wgpu::Extent3d { width: image.width, height, depth_or_array_layers: depth },
+        mip_level_count: levels.len() as u32,
+        sample_count: 1,
+        dimension,
+        format: wgpu::TextureFormat::Rgba8Unorm,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    for (mip, level) in levels.iter().enumerate() {
+        let level_height = if dimension == wgpu::TextureDimension::D1 { 1 } else { level.height };
+        for layer in 0..depth {
+            let Some(data) = level.layer(layer % level.layers.max(1)) else { continue };
+            let rows = &data[..(level.width * level_height * 4) as usize];
+            gpu.queue.write_texture(
+                wgpu::TexelCopyTextureInfo {
+                    texture: &texture,
+                    mip_level: mip as u32,
+                    origin: wgpu::Origin3d { x: 0, y: 0, z: layer },
+                    aspect: wgpu::TextureAspect::All,
+                },
+                rows,
+                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(level.width * 4), rows_per_image: Some(level_height) },
+                wgpu::Extent3d { width: level.width, height: level_height, depth_or_array_layers: 1 },
+            );
+        }
+    }
+    texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
+}
+
+/// A 1×1 depth texture cleared to 1.0 (everything lit, for shadow lookups).
+fn depth_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
+    let dim = view_dimension(b);
+    let layers = cube_layers(dim).unwrap_or(1);
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(&b.name),
+        size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: layers },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Depth32Float,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::RENDER_ATTACHMENT,
+        view_formats: &[],
+    });
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    for layer in 0..layers {
+        let view = texture.create_view(&wgpu::TextureViewDescriptor {
+            dimension: Some(wgpu::TextureViewDimension::D2),
+            base_array_layer: layer,
+            array_layer_count: Some(1),
+            ..Default::default()
+        });
+        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("clear depth placeholder"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+    }
+    gpu.queue.submit([encoder.finish()]);
+    texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
+}
+
+/// A 1×1 integer texture of zeros.
+fn integer_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
+    let dim = view_dimension(b);
+    let layers = cube_layers(dim).unwrap_or(1);
+    let format = if b.sample_type == Some("uint") { wgpu::TextureFormat::Rgba32Uint } else { wgpu::TextureFormat::Rgba32Sint };
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(&b.name),
+        size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: layers },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: if dim == wgpu::TextureViewDimension::D3 { wgpu::TextureDimension::D3 } else { wgpu::TextureDimension::D2 },
+        format,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING,
+        view_formats: &[],
+    });
+    texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
+}
+
+fn sampler(gpu: &Gpu, filter: Filter, wrap: Wrap, comparison: bool) -> wgpu::Sampler {
+    let mode = match filter {
+        Filter::Linear => wgpu::FilterMode::Linear,
+        Filter::Nearest => wgpu::FilterMode::Nearest,
+    };
+    let address = match wrap {
+        Wrap::Repeat => wgpu::AddressMode::Repeat,
+        Wrap::Clamp => wgpu::AddressMode::ClampToEdge,
+        Wrap::Mirror => wgpu::AddressMode::MirrorRepeat,
+    };
+    gpu.device.create_sampler(&wgpu::SamplerDescriptor {
+        label: None,
+        address_mode_u: address,
+        address_mode_v: address,
+        address_mode_w: address,
+        mag_filter: mode,
+        min_filter: mode,
+        mipmap_filter: match filter {
+            Filter::Linear => wgpu::MipmapFilterMode::Linear,
+            Filter::Nearest => wgpu::MipmapFilterMode::Nearest,
+        },
+        compare: comparison.then_some(wgpu::CompareFunction::LessEqual),
+        ..Default::default()
+    })
+}
