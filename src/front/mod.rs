@@ -3,6 +3,7 @@
 //! - [`version`]: the `#version` line and identifiers that are keywords in 4.50 only.
 //! - [`conditionals`]: `#if`/`#ifdef` resolved for the user's `#version`, with GL's predefined
 //!   macros (inactive groups blanked).
+//! - [`includes`]: `#include`d files inlined into a stage, with the map back to each file.
 //! - [`lexical`]: same-length masks for legal GLSL glsl-lang cannot lex (wide hex literals,
 //!   `debugPrintfEXT`, explicit arithmetic types, buffer references).
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
@@ -14,6 +15,7 @@
 pub mod builtins;
 pub mod conditionals;
 pub mod edits;
+pub mod includes;
 pub mod lexical;
 pub mod naga_run;
 pub mod plan;
