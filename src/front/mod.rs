@@ -9,6 +9,7 @@
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
 //! - [`edits`]: text edits with an offset map back to the user's file.
 //! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
+//! - [`limitation`]: a legal construct naga cannot take (the stage is checked, not translated).
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
 //!   errors with [`builtins`]; [`program`]: all of it per program.
 
@@ -17,6 +18,7 @@ pub mod conditionals;
 pub mod edits;
 pub mod includes;
 pub mod lexical;
+pub mod limitation;
 pub mod naga_run;
 pub mod plan;
 pub mod program;

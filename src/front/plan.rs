@@ -10,7 +10,7 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use crate::front::syntax::{sampler_parts, GlslType, StageSyntax, Storage};
+use crate::front::syntax::{dims_text, sampler_parts, GlslType, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 /// Name of the generated uniform block (its WGSL struct keeps this name).
@@ -152,6 +152,15 @@ fn fresh(base: String, stages: &[StageSyntax], taken: &[String]) -> String {
     name
 }
 
+/// Opaque uniforms that stay declarations of their own (with a binding): images, atomic
+/// counters, and Vulkan GLSL's separate textures, samplers and subpass inputs.
+pub fn is_unblocked_opaque(base: &str) -> bool {
+    let kinds = ["image", "texture", "subpassInput"];
+    let of_kind = |b: &str| kinds.iter().any(|k| b.starts_with(k));
+    let integer = base.strip_prefix('i').or_else(|| base.strip_prefix('u')).is_some_and(of_kind);
+    base == "atomic_uint" || base == "sampler" || base == "samplerShadow" || of_kind(base) || integer
+}
+
 /// Builds the plan for a program (stages in pipeline order).
 pub fn plan(stages: &[StageSyntax]) -> Plan {
     let mut plan = Plan::default();
@@ -178,7 +187,7 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             if plan.member(&g.name).is_some() || plan.textures.iter().any(|t| t.user_path == g.name) {
                 continue;
             }
-            if crate::front::rewrite::is_unblocked_opaque(&g.ty.base) {
+            if is_unblocked_opaque(&g.ty.base) {
                 if !g.layout.iter().any(|(k, _)| k == "binding") {
                     plan.opaque.insert(g.name.clone(), 0);
                 }
@@ -331,7 +340,7 @@ pub fn struct_text(def: &crate::front::syntax::StructDef, padded: bool) -> Strin
     let mut any = false;
     for m in def.members.iter().filter(|m| !m.ty.is_sampler()) {
         any = true;
-        text.push_str(&format!(" {} {}{};", m.ty.base, m.name, crate::front::rewrite::dims_text(&m.ty)));
+        text.push_str(&format!(" {} {}{};", m.ty.base, m.name, dims_text(&m.ty)));
     }
     if !any {
         text.push_str(" int effectc_unused;");

@@ -13,7 +13,10 @@ use std::ops::Range;
 
 use crate::diag::Diagnostic;
 use crate::front::edits::{Edits, OffsetMap};
+use crate::front::limitation::Limitation;
+pub use crate::front::plan::is_unblocked_opaque;
 use crate::front::plan::{block_size_align, location_slots, struct_text, Plan, Repr, UNIFORM_BLOCK};
+pub use crate::front::syntax::dims_text;
 use crate::front::syntax::{GlslType, StageSyntax, Storage, Target};
 use crate::stage::StageKind;
 
@@ -24,7 +27,7 @@ pub struct Rewritten {
     pub map: OffsetMap,
     /// A legal construct the rewrite cannot express for naga (the stage is then checked for
     /// syntax and interface only).
-    pub limitation: Option<crate::front::naga_run::Limitation>,
+    pub limitation: Option<Limitation>,
 }
 
 /// Sets that user-numbered bindings (`layout(binding = N)` without a set) move to. GL
@@ -71,7 +74,7 @@ struct Ctx<'a> {
     prologue: String,
     /// Statements run before `main` returns (matrix outputs split into columns).
     epilogue: String,
-    limitation: Option<crate::front::naga_run::Limitation>,
+    limitation: Option<Limitation>,
 }
 
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
@@ -83,10 +86,7 @@ pub fn rewrite(s: &StageSyntax, plan: &Plan, strict: bool) -> (Rewritten, Vec<Di
 /// [`rewrite`], with the swizzles (indices into `s.swizzles`) naga found applied to a
 /// scalar written as constructors: `x.rrr` → `vec3(x)`, `x.r` → `(x)`.
 pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles: &[usize]) -> (Rewritten, Vec<Diagnostic>) {
-    let limitation = s
-        .unsupported
-        .as_ref()
-        .map(|(construct, span)| crate::front::naga_run::Limitation { construct: construct.clone(), span: Some(span.clone()) });
+    let limitation = s.unsupported.as_ref().map(|(construct, span)| Limitation { construct: construct.clone(), span: Some(span.clone()) });
     let mut c = Ctx {
         s,
         plan,
@@ -441,10 +441,7 @@ impl Ctx<'_> {
                     if self.limitation.is_none() && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version) {
                         // naga reports these unevenly ("unknown variable", or a field
                         // lookup failing on `gl_BaryCoordEXT.x`): decide before asking it.
-                        self.limitation = Some(crate::front::naga_run::Limitation {
-                            construct: format!("the built-in `{}`", u.name),
-                            span: Some(u.span.clone()),
-                        });
+                        self.limitation = Some(Limitation { construct: format!("the built-in `{}`", u.name), span: Some(u.span.clone()) });
                     }
                     self.builtin_use(u)
                 }
@@ -513,7 +510,7 @@ impl Ctx<'_> {
             // Legal since GLSL 4.00 (dynamically uniform indices); WGSL has no arrays of
             // combined samplers, which is a translation limit, not an error.
             if self.limitation.is_none() {
-                self.limitation = Some(crate::front::naga_run::Limitation {
+                self.limitation = Some(Limitation {
                     construct: format!(
                         "`{}` indexed with a non-constant expression (an array of samplers; WGSL and naga have none)",
                         self.s.original_name(name)
@@ -795,7 +792,7 @@ impl Ctx<'_> {
             // naga's GLSL front gives every member of an interface block one location, so
             // an array member collides with the member after it; and it takes no matrix
             // varyings.
-            self.limitation = Some(crate::front::naga_run::Limitation {
+            self.limitation = Some(Limitation {
                 construct: format!(
                     "an array or matrix member of the interface block `{}` (naga gives each member one location and no matrix varyings)",
                     s.original_name(&block)
@@ -1047,8 +1044,6 @@ impl Ctx<'_> {
     }
 }
 
-/// Opaque uniform types that stay their own declarations (not in the uniform block, not
-/// split like combined samplers).
 /// Whether `text` has a `#define name` (a uniform of another stage by that name would be
 /// macro-expanded in this stage's copy of the shared block).
 fn defines_macro(text: &str, name: &str) -> bool {
@@ -1060,15 +1055,6 @@ enum FirstArg<'a> {
     /// A parameter of the enclosing function, by its type.
     Param(String),
     Global(&'a crate::front::syntax::Global),
-}
-
-/// Opaque uniforms that stay declarations of their own (with a binding): images, atomic
-/// counters, and Vulkan GLSL's separate textures, samplers and subpass inputs.
-pub fn is_unblocked_opaque(base: &str) -> bool {
-    let kinds = ["image", "texture", "subpassInput"];
-    let of_kind = |b: &str| kinds.iter().any(|k| b.starts_with(k));
-    let integer = base.strip_prefix('i').or_else(|| base.strip_prefix('u')).is_some_and(of_kind);
-    base == "atomic_uint" || base == "sampler" || base == "samplerShadow" || of_kind(base) || integer
 }
 
 /// (columns, rows) of a matrix type name.
@@ -1117,11 +1103,6 @@ fn interp_word(i: crate::front::syntax::Interp) -> &'static str {
         crate::front::syntax::Interp::Flat => "flat",
         crate::front::syntax::Interp::NoPerspective => "noperspective",
     }
-}
-
-/// `[4][2]` for a type's dimensions.
-pub fn dims_text(ty: &GlslType) -> String {
-    ty.dims.iter().map(|d| d.map_or("[]".to_string(), |n| format!("[{n}]"))).collect()
 }
 
 /// Hands out locations, skipping ones taken explicitly.

@@ -83,6 +83,11 @@ impl std::fmt::Display for GlslType {
     }
 }
 
+/// `[4][2]` for a type's dimensions.
+pub fn dims_text(ty: &GlslType) -> String {
+    ty.dims.iter().map(|d| d.map_or("[]".to_string(), |n| format!("[{n}]"))).collect()
+}
+
 /// For a combined sampler type, the separate texture type and sampler type naga wants.
 pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
     Some(match base {
