@@ -26,7 +26,7 @@ impl Collector<'_> {
         }
     }
 
-    pub(super) fn resolve(&self, name: &str) -> Target {
+    fn resolve(&self, name: &str) -> Target {
         for scope in self.scopes.iter().rev() {
             if scope.contains_key(name) {
                 // Locals and parameters: only opaque parameters matter to the rewrite.
@@ -63,7 +63,7 @@ impl Collector<'_> {
         Target::Unresolved
     }
 
-    pub(super) fn record(
+    fn record(
         &mut self,
         id: &ast::Identifier,
         index: Option<(Range<usize>, Range<usize>, Option<i64>)>,

@@ -12,7 +12,7 @@ use crate::front::syntax::nodes::span_of;
 use crate::front::syntax::types::{GlslType, Interp, Storage};
 
 impl Collector<'_> {
-    pub(super) fn type_name(&self, t: &ast::TypeSpecifierNonArray) -> String {
+    fn type_name(&self, t: &ast::TypeSpecifierNonArray) -> String {
         if let ast::TypeSpecifierNonArrayData::Struct(st) = &t.content {
             return st.name.as_ref().map(|n| n.0.to_string()).unwrap_or_else(|| "<anonymous struct>".into());
         }

@@ -17,13 +17,13 @@ impl Collector<'_> {
         self.scopes.pop();
     }
 
-    pub(super) fn declare_local(&mut self, name: &str) {
+    fn declare_local(&mut self, name: &str) {
         if let Some(scope) = self.scopes.last_mut() {
             scope.insert(name.to_string(), None);
         }
     }
 
-    pub(super) fn local_declaration(&mut self, d: &ast::Declaration) {
+    fn local_declaration(&mut self, d: &ast::Declaration) {
         match &d.content {
             ast::DeclarationData::InitDeclaratorList(list) => {
                 if let ast::TypeSpecifierNonArrayData::Struct(st) = &list.head.ty.ty.ty.content {
@@ -74,7 +74,7 @@ impl Collector<'_> {
 
     /// A local array sized by a local `const int` (`float k[TAPS + 1];`): naga resolves
     /// array sizes among globals only, so the rewrite writes the value.
-    pub(super) fn local_constant_sizes(&mut self, a: &ast::ArraySpecifier) {
+    fn local_constant_sizes(&mut self, a: &ast::ArraySpecifier) {
         for d in &a.dimensions {
             if let ast::ArraySpecifierDimensionData::ExplicitlySized(e) = &d.content {
                 self.fold_local_constant(e);
@@ -83,14 +83,14 @@ impl Collector<'_> {
     }
 
     /// Records `e` for the rewrite to write as its value when it reads a local constant.
-    pub(super) fn fold_local_constant(&mut self, e: &ast::Expr) {
+    fn fold_local_constant(&mut self, e: &ast::Expr) {
         let uses_local = expr_text(e).split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| self.local_consts.contains_key(w));
         if let (true, Some(Ok(v))) = (uses_local, self.const_int(e).map(u32::try_from)) {
             self.s.constant_sizes.push((span_of(e), v));
         }
     }
 
-    pub(super) fn statement(&mut self, st: &ast::Statement) {
+    fn statement(&mut self, st: &ast::Statement) {
         match &st.content {
             ast::StatementData::Declaration(d) => self.local_declaration(d),
             ast::StatementData::Expression(e) => {
@@ -165,13 +165,13 @@ impl Collector<'_> {
         }
     }
 
-    pub(super) fn scoped_statement(&mut self, st: &ast::Statement) {
+    fn scoped_statement(&mut self, st: &ast::Statement) {
         self.scopes.push(HashMap::new());
         self.statement(st);
         self.scopes.pop();
     }
 
-    pub(super) fn condition(&mut self, c: &ast::Condition) {
+    fn condition(&mut self, c: &ast::Condition) {
         match &c.content {
             ast::ConditionData::Expr(e) => self.expr(e),
             ast::ConditionData::Assignment(_, name, init) => {
