@@ -165,7 +165,6 @@ pub fn is_unblocked_opaque(base: &str) -> bool {
 pub fn plan(stages: &[StageSyntax]) -> Plan {
     let mut plan = Plan::default();
     let mut taken: Vec<String> = Vec::new();
-    let mut next_binding = 1u32;
     // Uniforms, in stage order then declaration order.
     for s in stages {
         for g in &s.globals {
@@ -246,6 +245,16 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             plan.members.push(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
         }
     }
+    number_bindings(&mut plan, stages);
+    plan.varyings = varying_locations(stages);
+    describe_block_structs(&mut plan, stages);
+    plan
+}
+
+/// Numbers the texture + sampler pairs, user blocks and opaque uniforms in set 0, from 1 (0
+/// is the shared block).
+fn number_bindings(plan: &mut Plan, stages: &[StageSyntax]) {
+    let mut next_binding = 1u32;
     // Declarations that name `set = 0` and a binding keep both (Vulkan GLSL): the bindings
     // handed out here skip theirs.
     let reserved: std::collections::BTreeSet<u32> = stages
@@ -272,7 +281,11 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
     for b in plan.opaque.values_mut() {
         *b = next();
     }
-    plan.varyings = varying_locations(stages);
+}
+
+/// For each struct the block needs: its non-opaque member types, a filler member when naga
+/// would align it below 16 bytes where std140 does not, and its text for stages that lack it.
+fn describe_block_structs(plan: &mut Plan, stages: &[StageSyntax]) {
     for name in plan.block_structs.clone() {
         let Some(def) = stages.iter().find_map(|s| s.struct_def(&name)) else { continue };
         plan.struct_members.insert(name.clone(), def.members.iter().filter(|m| !m.ty.is_sampler()).map(|m| m.ty.clone()).collect());
@@ -292,7 +305,6 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
         let padded = plan.padded_structs.contains(&name);
         plan.struct_texts.insert(name.clone(), struct_text(def, padded));
     }
-    plan
 }
 
 /// (size, alignment) of a type as naga lays it out in a uniform block; structs are looked up in the plan's struct texts'
