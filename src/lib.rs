@@ -2,7 +2,7 @@
 //!
 //! # Steps
 //! 1. [`inputs`]: command-line paths → programs (manifests, directories, stage files);
-//!    [`includes`] inlines `#include`d files into a stage, with the map back to each file.
+//!    [`front::includes`] inlines `#include`d files into a stage, with the map back to each file.
 //! 2. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures, mesh).
 //! 3. [`front`]: each GLSL stage → syntax facts (glsl-lang, spans) → GLSL 4.50 rewrite with an
 //!    offset map → naga parse + validate.
@@ -30,7 +30,6 @@ pub mod cli;
 pub mod diag;
 pub mod front;
 pub mod graph;
-pub mod includes;
 pub mod inputs;
 pub mod link;
 pub mod manifest;

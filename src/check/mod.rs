@@ -69,7 +69,7 @@ fn read_stage(path: &Path, files: &mut Files, diags: &mut Vec<Diagnostic>, io_er
         Ok(bytes) => match String::from_utf8(bytes) {
             Ok(text) => {
                 let id = files.add(path.display().to_string(), text);
-                crate::includes::expand(path, id, files, diags)
+                crate::front::includes::expand(path, id, files, diags)
             }
             Err(e) => {
                 let valid = e.utf8_error().valid_up_to();

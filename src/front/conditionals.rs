@@ -21,7 +21,7 @@ use std::collections::HashMap;
 
 use crate::front::version::{Profile, Version};
 
-/// An `#include` that cannot be resolved (see [`crate::includes`]).
+/// An `#include` that cannot be resolved (see `front::includes`).
 pub const E_INCLUDE: &str = "E0104";
 
 /// `(line range incl. its end, file name, name span)` of every `#include` line outside comments.

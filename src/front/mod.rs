@@ -3,18 +3,22 @@
 //! - [`version`]: the `#version` line and identifiers that are keywords in 4.50 only.
 //! - [`conditionals`]: `#if`/`#ifdef` resolved for the user's `#version`, with GL's predefined
 //!   macros (inactive groups blanked).
+//! - [`includes`]: `#include`d files inlined into a stage, with the map back to each file.
 //! - [`lexical`]: same-length masks for legal GLSL glsl-lang cannot lex (wide hex literals,
 //!   `debugPrintfEXT`, explicit arithmetic types, buffer references).
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
 //! - [`edits`]: text edits with an offset map back to the user's file.
 //! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
+//! - [`limitation`]: a legal construct naga cannot take (the stage is checked, not translated).
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
 //!   errors with [`builtins`]; [`program`]: all of it per program.
 
 pub mod builtins;
 pub mod conditionals;
 pub mod edits;
+pub mod includes;
 pub mod lexical;
+pub mod limitation;
 pub mod naga_run;
 pub mod plan;
 pub mod program;

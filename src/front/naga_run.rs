@@ -10,7 +10,6 @@
 //! built-in naga does not know, a qualifier its parser does not take) is a
 //! [`Limitation`], not an error in the user's program.
 
-use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use naga::front::glsl::ErrorKind;
@@ -18,6 +17,7 @@ use naga::valid::Capabilities;
 
 use crate::diag::{Diagnostic, FileId};
 use crate::front::builtins;
+pub use crate::front::limitation::Limitation;
 use crate::front::rewrite::Rewritten;
 use crate::front::version::Version;
 
@@ -29,15 +29,6 @@ pub struct Validated {
     /// Capabilities beyond WebGPU's defaults the module needs (e.g. `PRIMITIVE_INDEX` for
     /// `gl_PrimitiveID`), by name; empty when WebGPU can run it as is.
     pub needs: Vec<String>,
-}
-
-/// A legal construct naga cannot take: the stage is checked for syntax and interface only.
-#[derive(Debug, Clone)]
-pub struct Limitation {
-    /// What naga could not take, in words (`textureQueryLod`, `layout(row_major)` …).
-    pub construct: String,
-    /// Where, in the user's file.
-    pub span: Option<Range<usize>>,
 }
 
 /// What naga made of one stage.

@@ -10,7 +10,7 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use crate::front::syntax::{sampler_parts, GlslType, StageSyntax, Storage};
+use crate::front::syntax::{dims_text, sampler_parts, GlslType, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 /// Name of the generated uniform block (its WGSL struct keeps this name).
@@ -152,11 +152,19 @@ fn fresh(base: String, stages: &[StageSyntax], taken: &[String]) -> String {
     name
 }
 
+/// Opaque uniforms that stay declarations of their own (with a binding): images, atomic
+/// counters, and Vulkan GLSL's separate textures, samplers and subpass inputs.
+pub fn is_unblocked_opaque(base: &str) -> bool {
+    let kinds = ["image", "texture", "subpassInput"];
+    let of_kind = |b: &str| kinds.iter().any(|k| b.starts_with(k));
+    let integer = base.strip_prefix('i').or_else(|| base.strip_prefix('u')).is_some_and(of_kind);
+    base == "atomic_uint" || base == "sampler" || base == "samplerShadow" || of_kind(base) || integer
+}
+
 /// Builds the plan for a program (stages in pipeline order).
 pub fn plan(stages: &[StageSyntax]) -> Plan {
     let mut plan = Plan::default();
     let mut taken: Vec<String> = Vec::new();
-    let mut next_binding = 1u32;
     // Uniforms, in stage order then declaration order.
     for s in stages {
         for g in &s.globals {
@@ -178,7 +186,7 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             if plan.member(&g.name).is_some() || plan.textures.iter().any(|t| t.user_path == g.name) {
                 continue;
             }
-            if crate::front::rewrite::is_unblocked_opaque(&g.ty.base) {
+            if is_unblocked_opaque(&g.ty.base) {
                 if !g.layout.iter().any(|(k, _)| k == "binding") {
                     plan.opaque.insert(g.name.clone(), 0);
                 }
@@ -237,6 +245,16 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             plan.members.push(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
         }
     }
+    number_bindings(&mut plan, stages);
+    plan.varyings = varying_locations(stages);
+    describe_block_structs(&mut plan, stages);
+    plan
+}
+
+/// Numbers the texture + sampler pairs, user blocks and opaque uniforms in set 0, from 1 (0
+/// is the shared block).
+fn number_bindings(plan: &mut Plan, stages: &[StageSyntax]) {
+    let mut next_binding = 1u32;
     // Declarations that name `set = 0` and a binding keep both (Vulkan GLSL): the bindings
     // handed out here skip theirs.
     let reserved: std::collections::BTreeSet<u32> = stages
@@ -263,7 +281,11 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
     for b in plan.opaque.values_mut() {
         *b = next();
     }
-    plan.varyings = varying_locations(stages);
+}
+
+/// For each struct the block needs: its non-opaque member types, a filler member when naga
+/// would align it below 16 bytes where std140 does not, and its text for stages that lack it.
+fn describe_block_structs(plan: &mut Plan, stages: &[StageSyntax]) {
     for name in plan.block_structs.clone() {
         let Some(def) = stages.iter().find_map(|s| s.struct_def(&name)) else { continue };
         plan.struct_members.insert(name.clone(), def.members.iter().filter(|m| !m.ty.is_sampler()).map(|m| m.ty.clone()).collect());
@@ -283,7 +305,6 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
         let padded = plan.padded_structs.contains(&name);
         plan.struct_texts.insert(name.clone(), struct_text(def, padded));
     }
-    plan
 }
 
 /// (size, alignment) of a type as naga lays it out in a uniform block; structs are looked up in the plan's struct texts'
@@ -331,7 +352,7 @@ pub fn struct_text(def: &crate::front::syntax::StructDef, padded: bool) -> Strin
     let mut any = false;
     for m in def.members.iter().filter(|m| !m.ty.is_sampler()) {
         any = true;
-        text.push_str(&format!(" {} {}{};", m.ty.base, m.name, crate::front::rewrite::dims_text(&m.ty)));
+        text.push_str(&format!(" {} {}{};", m.ty.base, m.name, dims_text(&m.ty)));
     }
     if !any {
         text.push_str(" int effectc_unused;");

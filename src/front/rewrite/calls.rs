@@ -1,0 +1,167 @@
+//! Functions and calls: sampler parameters split into texture + sampler, legacy texture
+//! functions renamed, vertex-stage lookups given their level, integer-texture lookups
+//! fetched, shadow-lookup biases dropped.
+
+use super::uses::combined_ctor;
+use super::Ctx;
+use crate::diag::Diagnostic;
+use crate::front::syntax::Storage;
+use crate::stage::StageKind;
+
+/// Legacy built-in functions and their 4.50 names; `true` when the result must be widened
+/// to `vec4` (the 1xx shadow functions returned vec4).
+const LEGACY_FUNCTIONS: &[(&str, &str, bool)] = &[
+    ("texture1D", "texture", false),
+    ("texture2D", "texture", false),
+    ("texture3D", "texture", false),
+    ("textureCube", "texture", false),
+    ("texture2DRect", "texture", false),
+    ("texture1DLod", "textureLod", false),
+    ("texture2DLod", "textureLod", false),
+    ("texture3DLod", "textureLod", false),
+    ("textureCubeLod", "textureLod", false),
+    ("texture2DProj", "textureProj", false),
+    ("texture2DProjLod", "textureProjLod", false),
+    ("texture2DGrad", "textureGrad", false),
+    ("texture2DLodEXT", "textureLod", false),
+    ("textureCubeLodEXT", "textureLod", false),
+    ("texture2DGradEXT", "textureGrad", false),
+    ("shadow2D", "texture", true),
+    ("shadow2DProj", "textureProj", true),
+];
+
+impl Ctx<'_> {
+    pub(super) fn functions(&mut self) {
+        let s = self.s;
+        for f in &s.functions {
+            for p in f.params.iter().filter(|p| p.ty.is_sampler()) {
+                let (tex, samp) = crate::front::syntax::sampler_parts(&p.ty.base).expect("sampler");
+                let text = match &p.name {
+                    Some(n) => format!("{tex} {n}, {samp} {n}_sampler"),
+                    None => format!("{tex}, {samp}"),
+                };
+                self.edits.replace(p.span.clone(), text);
+            }
+        }
+    }
+
+    pub(super) fn calls(&mut self) {
+        let s = self.s;
+        for c in &s.calls {
+            if s.functions.iter().any(|f| f.name == c.name) {
+                continue;
+            }
+            if c.from_macro {
+                // Only the name is known (in the `#define` body): rename legacy built-ins.
+                if let Some((old, new, false)) = LEGACY_FUNCTIONS.iter().find(|(o, _, _)| *o == c.name) {
+                    self.legacy(c.name_span.clone(), old, new);
+                    self.edits.replace(c.name_span.clone(), *new);
+                }
+                continue;
+            }
+            let implicit_lod = matches!(c.name.as_str(), "texture" | "texture2D" | "textureCube" | "texture3D" | "texture1D");
+            if s.stage == StageKind::Vertex && c.name == "textureOffset" && c.args.len() == 3 {
+                // textureOffset(s, P, offset) in a vertex stage: the base level, explicitly.
+                self.edits.replace(c.name_span.clone(), "textureLodOffset");
+                self.edits.insert(c.args[1].end, ", 0.0");
+                continue;
+            }
+            if s.stage == StageKind::Vertex && implicit_lod {
+                // Vertex shaders have no derivatives: GL samples the base level; naga wants it explicit.
+                if c.name != "texture" {
+                    self.legacy(c.name_span.clone(), &c.name, "textureLod");
+                }
+                self.edits.replace(c.name_span.clone(), "textureLod");
+                let close = s.text[..c.span.end].rfind(')').unwrap_or(c.span.end);
+                self.edits.insert(close, ", 0.0");
+                continue;
+            }
+            self.shadow_bias(c);
+            if c.name == "texture" && c.args.len() == 2 {
+                if let Some(sampler) = self.integer_sampler_text(c) {
+                    // GL samples integer textures with NEAREST filtering (they are incomplete
+                    // otherwise); naga and WebGPU only fetch them: fetch the texel under `P`.
+                    self.edits.replace(c.name_span.clone(), "texelFetch");
+                    self.edits.insert(c.args[1].start, format!("ivec2(vec2(textureSize({sampler}, 0)) * ("));
+                    self.edits.insert(c.args[1].end, ")), 0");
+                    continue;
+                }
+            }
+            if let Some((old, new, widen)) = LEGACY_FUNCTIONS.iter().find(|(o, _, _)| *o == c.name) {
+                self.legacy(c.name_span.clone(), old, new);
+                if *widen {
+                    self.edits.insert(c.span.start, "vec4(");
+                    self.edits.replace(c.name_span.clone(), *new);
+                    self.edits.insert(c.span.end, ")");
+                } else {
+                    self.edits.replace(c.name_span.clone(), *new);
+                }
+            }
+        }
+    }
+
+    /// For `texture(s, P)` on a 2D integer sampler `s` (a global or a parameter), the
+    /// rewritten sampler expression.
+    fn integer_sampler_text(&self, c: &crate::front::syntax::Call) -> Option<String> {
+        let name = c.first_arg_name.as_deref()?;
+        let integer = |ty: &str| matches!(ty, "isampler2D" | "usampler2D" | "isampler2DRect" | "usampler2DRect");
+        match self.first_arg_sampler(c)? {
+            FirstArg::Param(ty) => integer(&ty).then(|| format!("{}({name}, {name}_sampler)", combined_ctor(&ty))),
+            FirstArg::Global(g) if integer(&g.ty.base) && !g.ty.is_array() => {
+                let t = self.plan.texture(&g.name)?;
+                Some(format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name))
+            }
+            FirstArg::Global(_) => None,
+        }
+    }
+
+    /// The declaration the call's first argument (a bare identifier) names: a parameter of
+    /// the enclosing function, else a uniform.
+    fn first_arg_sampler(&self, c: &crate::front::syntax::Call) -> Option<FirstArg<'_>> {
+        let s = self.s;
+        let name = c.first_arg_name.as_deref()?;
+        if let Some(f) = c.in_function.as_ref().and_then(|f| s.functions.iter().find(|x| &x.name == f && x.is_definition)) {
+            if let Some(p) = f.params.iter().find(|p| p.name.as_deref() == Some(name)) {
+                return Some(FirstArg::Param(p.ty.base.clone()));
+            }
+        }
+        s.global(name).filter(|g| g.storage == Storage::Uniform).map(FirstArg::Global)
+    }
+
+    /// `texture(shadowSampler, P, bias)`: naga's depth-compare sampling takes no bias (nor
+    /// does WGSL's `textureSampleCompare`). The bias only moves the level of detail, which a
+    /// comparison of a depth texture without mipmaps (the usual shadow map) never uses:
+    /// the bias is dropped, with a note.
+    fn shadow_bias(&mut self, c: &crate::front::syntax::Call) {
+        let base_args = match c.name.as_str() {
+            "texture" | "textureProj" | "shadow2D" | "shadow2DProj" | "shadow1D" | "shadow1DProj" => 2,
+            "textureOffset" | "textureProjOffset" => 3,
+            _ => return,
+        };
+        if c.args.len() != base_args + 1 {
+            return;
+        }
+        let shadow = match self.first_arg_sampler(c) {
+            Some(FirstArg::Param(ty)) => ty.ends_with("Shadow"),
+            Some(FirstArg::Global(g)) => g.ty.base.ends_with("Shadow"),
+            None => false,
+        };
+        if !shadow {
+            return;
+        }
+        let bias = c.args[base_args].clone();
+        self.edits.delete(c.args[base_args - 1].end..bias.end);
+        self.diags.push(
+            Diagnostic::note("N0103", "the bias of this shadow lookup is dropped")
+                .at(self.s.file, bias, "level-of-detail bias on a depth comparison")
+                .with_note("naga and WGSL compare depth without a bias; it changes nothing unless the depth texture has mipmaps"),
+        );
+    }
+}
+
+/// What the first argument of a built-in call names.
+enum FirstArg<'a> {
+    /// A parameter of the enclosing function, by its type.
+    Param(String),
+    Global(&'a crate::front::syntax::Global),
+}

@@ -1,0 +1,127 @@
+//! Uniform declarations: blocks and opaque uniforms get their bindings (the plan's in set 0,
+//! or the user's own moved to a set per kind); loose uniforms leave for the shared block,
+//! combined samplers become texture + sampler pairs. Every declaration is dispatched here.
+
+use std::collections::BTreeMap;
+use std::fmt::Write;
+use std::ops::Range;
+
+use super::varyings::{is_fragment_output, is_vertex_input, LocationAllocator};
+use super::{Ctx, USER_BUFFER_SET, USER_COUNTER_SET, USER_IMAGE_SET, USER_UNIFORM_SET};
+use crate::diag::Diagnostic;
+use crate::front::plan::{is_unblocked_opaque, location_slots, struct_text};
+use crate::front::syntax::{Storage, Target};
+use crate::stage::StageKind;
+
+impl Ctx<'_> {
+    /// Every global declaration (declarators grouped, `uniform float a, b;`), by storage.
+    pub(super) fn declarations(&mut self) {
+        let s = self.s;
+        // Group declarators by declaration span (`uniform float a, b;`).
+        let mut by_decl: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+        for (i, g) in s.globals.iter().enumerate() {
+            by_decl.entry(g.decl_span.start).or_default().push(i);
+        }
+        let mut vertex_inputs = LocationAllocator::new(
+            s.globals.iter().filter(|g| is_vertex_input(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))),
+        );
+        let mut fragment_outputs = LocationAllocator::new(
+            s.globals.iter().filter(|g| is_fragment_output(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))),
+        );
+        if s.stage == StageKind::Fragment && s.uses.iter().any(|u| u.name == "gl_FragColor" && u.target == Target::Unresolved) {
+            fragment_outputs.reserve(0, 1);
+        }
+        for (_, idxs) in by_decl {
+            let first = &s.globals[idxs[0]];
+            let decl = first.decl_span.clone();
+            match first.storage {
+                Storage::Uniform | Storage::Buffer if first.block.is_some() => self.block_binding(first),
+                Storage::Uniform if is_unblocked_opaque(&first.ty.base) => self.opaque_binding(first),
+                Storage::Uniform => self.loose_uniforms(decl, idxs),
+                Storage::In | Storage::Out | Storage::Attribute | Storage::Varying => {
+                    self.varying_declaration(idxs, &mut vertex_inputs, &mut fragment_outputs)
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// A uniform or buffer block: a binding in set 0 from the plan, or the user's binding
+    /// moved to a set of its own.
+    fn block_binding(&mut self, first: &crate::front::syntax::Global) {
+        let b = first.block.as_ref().expect("block");
+        if first.layout.iter().any(|(k, _)| k == "push_constant") {
+            // Push constants have no binding.
+        } else if first.layout.iter().any(|(k, _)| k == "binding") {
+            // The user's own binding numbers live in set 1, clear of ours.
+            let set = if first.storage == Storage::Buffer { USER_BUFFER_SET } else { USER_UNIFORM_SET };
+            self.add_layout(first, &format!("set = {set}"), "set");
+        } else {
+            let binding = self.plan.user_blocks.get(&b.block_name).copied().unwrap_or(0);
+            self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
+        }
+    }
+
+    /// An image, atomic counter or separate texture/sampler: the same, for opaque uniforms.
+    fn opaque_binding(&mut self, first: &crate::front::syntax::Global) {
+        // Images and atomic counters stay declarations of their own.
+        if first.layout.iter().any(|(k, _)| k == "binding") {
+            let base = first.ty.base.as_str();
+            let set = if base == "atomic_uint" {
+                USER_COUNTER_SET
+            } else if ["image", "iimage", "uimage"].iter().any(|p| base.starts_with(p)) {
+                USER_IMAGE_SET
+            } else {
+                USER_UNIFORM_SET
+            };
+            self.add_layout(first, &format!("set = {set}"), "set");
+        } else {
+            let binding = self.plan.opaque.get(&first.name).copied().unwrap_or(0);
+            self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
+        }
+    }
+
+    /// Loose uniforms leave their declaration (they are members of the shared block);
+    /// combined samplers become texture + sampler declarations in its place.
+    fn loose_uniforms(&mut self, decl: Range<usize>, idxs: Vec<usize>) {
+        let s = self.s;
+        let mut text = String::new();
+        // `uniform struct S { … } s;` keeps the struct type declared.
+        for def in s.structs.iter().filter(|d| decl.start <= d.span.start && d.span.end <= decl.end) {
+            text.push_str(&struct_text(def, self.plan.padded_structs.contains(&def.name)));
+            text.push(' ');
+        }
+        for &i in &idxs {
+            let g = &s.globals[i];
+            for t in self.plan.textures.iter().filter(|t| t.user_path == g.name || t.user_path.starts_with(&format!("{}[", g.name))) {
+                let _ = write!(
+                    text,
+                    "layout(set = 0, binding = {}) uniform {} {}; layout(set = 0, binding = {}) uniform {} {};",
+                    t.texture_binding, t.texture_ty, t.name, t.sampler_binding, t.sampler_ty, t.sampler_name
+                );
+            }
+            if g.initializer.is_some() {
+                self.diags.push(
+                    Diagnostic::warning("W0130", format!("initializer of uniform `{}` is ignored", s.original_name(&g.name)))
+                        .at(s.file, g.initializer.clone().unwrap_or(g.name_span.clone()), "this value is not used")
+                        .with_help("set the default in the effect manifest's [uniforms] table"),
+                );
+            }
+        }
+        self.edits.replace(decl, text);
+    }
+
+    /// Adds `item` to the declaration's layout qualifier (or a new one), unless `key` is set.
+    pub(super) fn add_layout(&mut self, g: &crate::front::syntax::Global, item: &str, key: &str) {
+        if g.layout.iter().any(|(k, _)| k == key) {
+            return;
+        }
+        match &g.layout_span {
+            Some(span) => {
+                let open = self.s.text[span.clone()].find('(').map(|i| span.start + i + 1).unwrap_or(span.start);
+                self.edits.insert(open, format!("{item}, "));
+            }
+            None => self.edits.insert(g.decl_span.start, format!("layout({item}) ")),
+        }
+    }
+}

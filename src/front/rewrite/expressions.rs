@@ -1,0 +1,44 @@
+//! Expressions naga reads differently: array sizes written as values (unsized arrays sized
+//! by their initializer, sizes and case labels from local constants), scalar swizzles as
+//! constructors.
+
+use super::Ctx;
+
+impl Ctx<'_> {
+    /// `vec3 p[] = vec3[](a, b)`: naga cannot construct unsized arrays; the size is the
+    /// initializer's length.
+    pub(super) fn unsized_arrays(&mut self) {
+        let s = self.s;
+        for (span, n) in &s.constant_sizes {
+            self.edits.replace(span.clone(), n.to_string());
+        }
+        for (span, n) in &s.unsized_sizes {
+            let text = &s.text[span.clone()];
+            if text.trim() == "[]" {
+                self.edits.replace(span.clone(), format!("[{n}]"));
+            } else if text.trim().is_empty() {
+                // The node spans nothing: find the brackets after it.
+                if let Some(open) = s.text[span.start..].find('[') {
+                    let at = span.start + open + 1;
+                    if s.text[at..].trim_start().starts_with(']') {
+                        self.edits.insert(at, n.to_string());
+                    }
+                }
+            }
+        }
+    }
+
+    /// The swizzles (indices into `s.swizzles`) naga found applied to a scalar, written as
+    /// constructors: `x.rrr` → `vec3(x)`, `x.r` → `(x)`.
+    pub(super) fn scalar_swizzles(&mut self, scalar_swizzles: &[usize]) {
+        let s = self.s;
+        for &i in scalar_swizzles {
+            let w = &s.swizzles[i];
+            let ctor = if w.width == 1 { "(".to_string() } else { format!("vec{}(", w.width) };
+            // Only `.field` is replaced, so a parenthesised base keeps its own parentheses.
+            let dot = s.text[w.whole.clone()].rfind('.').map_or(w.base.end, |d| w.whole.start + d);
+            self.edits.insert(w.base.start, ctor);
+            self.edits.replace(dot..w.whole.end, ")");
+        }
+    }
+}

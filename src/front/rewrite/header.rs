@@ -1,0 +1,127 @@
+//! The text inserted after the structs the shared block needs and before the first
+//! function: the `EffectcUniforms` block (with std140 fillers), textures split out of struct
+//! uniforms, and the declarations that stand in for removed built-ins.
+
+use std::fmt::Write;
+
+use super::{Ctx, OTHER_STAGE_PREFIX};
+use crate::front::plan::{block_size_align, UNIFORM_BLOCK};
+use crate::front::syntax::{dims_text, Storage, Target};
+use crate::stage::StageKind;
+
+impl Ctx<'_> {
+    pub(super) fn insert_header(&mut self) {
+        let s = self.s;
+        let mut h = String::new();
+        if self.plan.has_block() {
+            for name in &self.plan.block_structs {
+                if s.struct_def(name).is_none() {
+                    // The block needs a struct this stage does not declare: copy it.
+                    if let Some(def) = self.plan.struct_texts.get(name) {
+                        let _ = writeln!(h, "{def}");
+                    }
+                }
+            }
+            let _ = writeln!(h, "layout(std140, set = 0, binding = 0) uniform {UNIFORM_BLOCK} {{");
+            // naga's GLSL front aligns a struct member only to its largest member, but WGSL
+            // wants structs in uniform buffers 16-aligned and followed by at least
+            // roundUp(16, size) bytes: fillers make the layout valid (reflection reads the
+            // final offsets from naga's IR).
+            let mut pad = 0;
+            let mut offset = 0u32;
+            let mut filler = |h: &mut String, ty: &str, size: u32, offset: &mut u32| {
+                let _ = writeln!(h, "    {ty} effectc_pad{pad};");
+                pad += 1;
+                *offset = offset.next_multiple_of(size) + size;
+            };
+            for (i, m) in self.plan.members.iter().enumerate() {
+                let is_struct = self.plan.struct_members.contains_key(&m.block_ty.base);
+                if is_struct {
+                    while !offset.is_multiple_of(16) {
+                        filler(&mut h, "uint", 4, &mut offset);
+                    }
+                }
+                let (size, align) = block_size_align(&m.block_ty, self.plan);
+                offset = offset.next_multiple_of(align) + size;
+                // A uniform another stage declares must not shadow this stage's own
+                // variable of that name: keep its bytes, not its name.
+                let shadowed = s.global(&m.name).is_some_and(|g| g.storage != Storage::Uniform) || defines_macro(&s.text, &m.name);
+                let name = if shadowed { format!("{OTHER_STAGE_PREFIX}{}", m.name) } else { m.name.clone() };
+                let _ = writeln!(h, "    {} {name}{};", m.block_ty.base, dims_text(&m.block_ty));
+                if is_struct && !m.block_ty.is_array() && i + 1 < self.plan.members.len() {
+                    filler(&mut h, "vec4", 16, &mut offset);
+                }
+            }
+            h.push_str("};\n");
+        }
+        // Textures flattened out of struct uniforms are declared here.
+        for t in &self.plan.textures {
+            if t.user_path.contains('.') {
+                let root = t.user_path.split(['.', '[']).next().unwrap_or("");
+                if s.global(root).is_some() {
+                    let _ = writeln!(
+                        h,
+                        "layout(set = 0, binding = {}) uniform {} {}; layout(set = 0, binding = {}) uniform {} {};",
+                        t.texture_binding, t.texture_ty, t.name, t.sampler_binding, t.sampler_ty, t.sampler_name
+                    );
+                }
+            }
+        }
+        let unresolved = |n: &str| s.uses.iter().any(|u| u.name == n && u.target == Target::Unresolved);
+        if s.stage == StageKind::Fragment && unresolved("gl_FragColor") {
+            h.push_str("layout(location = 0) out vec4 effectc_FragColor;\n");
+        }
+        if s.stage == StageKind::Fragment {
+            let mut ks: Vec<i64> = s
+                .uses
+                .iter()
+                .filter(|u| u.name == "gl_FragData" && u.target == Target::Unresolved)
+                .filter_map(|u| u.index.as_ref().and_then(|i| i.2))
+                .collect();
+            ks.sort();
+            ks.dedup();
+            for k in ks {
+                let _ = writeln!(h, "layout(location = {k}) out vec4 effectc_FragData{k};");
+            }
+        }
+        if unresolved("gl_PointSize") {
+            // WebGPU draws points one pixel wide: the size is computed but not used.
+            h.push_str("float effectc_PointSize;\n");
+        }
+        if s.stage == StageKind::Vertex && unresolved("gl_ClipDistance") {
+            // User clip planes need a WebGPU feature; the distances are computed, not used.
+            h.push_str("float effectc_ClipDistance[8];\n");
+        }
+        if s.stage == StageKind::Vertex && unresolved("gl_CullDistance") {
+            // Cull distances have no WebGPU equivalent; computed, not used.
+            h.push_str("float effectc_CullDistance[8];\n");
+        }
+        if self.need_mat2_helper {
+            h.push_str("mat2 effectc_mat2(vec4 v) { return mat2(v.xy, v.zw); }\n");
+        }
+        if h.is_empty() {
+            return;
+        }
+        // After every struct the block needs, before the first function.
+        let structs_end =
+            self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).map(|d| line_end(&s.text, d.span.end)).max().unwrap_or(0);
+        let at = s.first_function.unwrap_or(s.text.len()).max(structs_end);
+        let at = if at >= s.text.len() && !s.text.ends_with('\n') {
+            h.insert(0, '\n');
+            s.text.len()
+        } else {
+            at
+        };
+        self.edits.insert(at, h);
+    }
+}
+
+/// Whether `text` has a `#define name` (a uniform of another stage by that name would be
+/// macro-expanded in this stage's copy of the shared block).
+fn defines_macro(text: &str, name: &str) -> bool {
+    crate::front::conditionals::define_lines(text).iter().any(|(n, _)| n == name)
+}
+
+fn line_end(text: &str, at: usize) -> usize {
+    text[at.min(text.len())..].find('\n').map(|i| at + i + 1).unwrap_or(text.len())
+}

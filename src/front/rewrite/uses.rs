@@ -1,0 +1,244 @@
+//! Identifier uses: loose uniforms read from the shared block in their stored form,
+//! combined samplers as texture + sampler pairs, legacy and naga-typed built-ins renamed,
+//! block members a loose global would shadow renamed.
+
+use std::ops::Range;
+
+use super::Ctx;
+use crate::diag::Diagnostic;
+use crate::front::limitation::Limitation;
+use crate::front::plan::Repr;
+use crate::front::syntax::{GlslType, Storage, Target};
+use crate::stage::StageKind;
+
+impl Ctx<'_> {
+    pub(super) fn uses(&mut self) {
+        let s = self.s;
+        for u in &s.uses {
+            match &u.target {
+                Target::Global(gi) => {
+                    let g = &s.globals[*gi];
+                    if g.storage != Storage::Uniform || g.block.is_some() {
+                        continue;
+                    }
+                    if g.ty.is_sampler() {
+                        self.sampler_use(u, &g.name, &g.ty);
+                    } else if let Some((field, dot_span)) = &u.field {
+                        // `material.diffuse` where the member is a sampler.
+                        let path = match &u.index {
+                            Some((_, _, Some(k))) => format!("{}[{k}].{field}", g.name),
+                            Some((_, isp, None)) => {
+                                if self.plan.textures.iter().any(|t| {
+                                    t.user_path.starts_with(&format!("{}[", g.name)) && t.user_path.ends_with(&format!(".{field}"))
+                                }) {
+                                    self.dynamic_sampler_index(isp.clone(), &g.name);
+                                    continue;
+                                }
+                                String::new()
+                            }
+                            None => format!("{}.{field}", g.name),
+                        };
+                        if let Some(t) = self.plan.texture(&path) {
+                            let text = if u.user_call_arg {
+                                format!("{}, {}", t.name, t.sampler_name)
+                            } else {
+                                format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name)
+                            };
+                            self.edits.replace(dot_span.clone(), text);
+                            continue;
+                        }
+                        self.member_use(u, &g.name);
+                    } else {
+                        self.member_use(u, &g.name);
+                    }
+                }
+                Target::Param(fi, pi) => {
+                    let p = &s.functions[*fi].params[*pi];
+                    let name = p.name.clone().unwrap_or_default();
+                    let text = if u.user_call_arg {
+                        format!("{name}, {name}_sampler")
+                    } else {
+                        format!("{}({name}, {name}_sampler)", combined_ctor(&p.ty.base))
+                    };
+                    self.edits.replace(u.span.clone(), text);
+                }
+                Target::Unresolved => {
+                    if self.limitation.is_none() && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version) {
+                        // naga reports these unevenly ("unknown variable", or a field
+                        // lookup failing on `gl_BaryCoordEXT.x`): decide before asking it.
+                        self.limitation = Some(Limitation { construct: format!("the built-in `{}`", u.name), span: Some(u.span.clone()) });
+                    }
+                    self.builtin_use(u)
+                }
+            }
+        }
+        for p in &s.precision_statements {
+            // `precision highp sampler2DShadow;` (GLSL ES): naga takes precision for
+            // `float` and `int` only, and it means nothing on desktop.
+            let text = &s.text[p.clone()];
+            if !text.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').any(|w| matches!(w, "float" | "int")) {
+                self.edits.delete(p.clone());
+            }
+        }
+    }
+
+    /// naga's GLSL front also declares the members of an instance-named interface block
+    /// (`out Vertex { vec2 texCoord; } OUT;`) as globals, so a global of the same name
+    /// (`in vec2 texCoord;`, the classic tutorial vertex stage) reads the block member
+    /// instead. Such members are renamed `<instance>_<member>` in the rewrite; blocks link
+    /// by location after the name-level checks, so the other stage is unaffected.
+    pub(super) fn shadowed_block_members(&mut self) {
+        let s = self.s;
+        let loose: std::collections::HashSet<&str> = s.globals.iter().filter(|g| g.block.is_none()).map(|g| g.name.as_str()).collect();
+        let mut renamed: Vec<(usize, String, String)> = Vec::new();
+        for (gi, g) in s.globals.iter().enumerate() {
+            let Some(b) = &g.block else { continue };
+            let (Some(instance), Storage::In | Storage::Out) = (&b.instance, g.storage) else { continue };
+            for m in b.members.iter().filter(|m| loose.contains(m.name.as_str())) {
+                let new = format!("{instance}_{}", m.name);
+                self.edits.replace(m.span.clone(), new.clone());
+                renamed.push((gi, m.name.clone(), new));
+            }
+        }
+        for u in &s.uses {
+            let Target::Global(gi) = u.target else { continue };
+            let Some((field, dot)) = &u.field else { continue };
+            if let Some((_, _, new)) = renamed.iter().find(|(g, m, _)| *g == gi && m == field) {
+                if s.text.get(dot.clone()).is_some_and(|t| t.ends_with(field.as_str())) {
+                    self.edits.replace(dot.end - field.len()..dot.end, new.clone());
+                }
+            }
+        }
+    }
+
+    fn sampler_use(&mut self, u: &crate::front::syntax::Use, name: &str, ty: &GlslType) {
+        let (span, path) = match &u.index {
+            Some((bracket, _, Some(k))) if ty.is_array() => (bracket.clone(), format!("{name}[{k}]")),
+            Some((_, isp, None)) if ty.is_array() => {
+                self.dynamic_sampler_index(isp.clone(), name);
+                return;
+            }
+            _ => (u.span.clone(), name.to_string()),
+        };
+        let Some(t) = self.plan.texture(&path) else { return };
+        let text = if u.user_call_arg {
+            format!("{}, {}", t.name, t.sampler_name)
+        } else {
+            format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name)
+        };
+        self.edits.replace(span, text);
+    }
+
+    fn dynamic_sampler_index(&mut self, span: Range<usize>, name: &str) {
+        let v = &self.s.version;
+        if (!v.is_es() && v.number >= 400) || (v.is_es() && v.number >= 320) {
+            // Legal since GLSL 4.00 (dynamically uniform indices); WGSL has no arrays of
+            // combined samplers, which is a translation limit, not an error.
+            if self.limitation.is_none() {
+                self.limitation = Some(Limitation {
+                    construct: format!(
+                        "`{}` indexed with a non-constant expression (an array of samplers; WGSL and naga have none)",
+                        self.s.original_name(name)
+                    ),
+                    span: Some(span),
+                });
+            }
+            return;
+        }
+        self.diags.push(
+            Diagnostic::error("E0110", format!("`{}` is indexed with a non-constant expression", self.s.original_name(name)))
+                .at(self.s.file, span, "not a constant index")
+                .with_note(
+                    "effectc splits sampler arrays into one texture binding per element; WGSL and naga have no arrays of combined samplers",
+                )
+                .with_help("index with a literal or a `const int`, e.g. unroll the loop"),
+        );
+    }
+
+    fn member_use(&mut self, u: &crate::front::syntax::Use, name: &str) {
+        let Some(m) = self.plan.member(name) else { return };
+        match &m.repr {
+            Repr::Plain => {}
+            Repr::Bool { components: 1 } => self.edits.replace(u.span.clone(), format!("({name} != 0u)")),
+            Repr::Bool { components } => self.edits.replace(u.span.clone(), format!("bvec{components}({name})")),
+            Repr::Padded { swizzle, bool_elems } => match &u.index {
+                Some((bracket, _, _)) => {
+                    if *bool_elems {
+                        self.edits.insert(bracket.start, "(");
+                        self.edits.insert(bracket.end, format!(".{swizzle} != 0u)"));
+                    } else {
+                        self.edits.insert(bracket.end, format!(".{swizzle}"));
+                    }
+                }
+                None => {
+                    let n = m.user_ty.dims.first().copied().flatten().unwrap_or(0);
+                    let elems: Vec<String> = (0..n)
+                        .map(|i| if *bool_elems { format!("({name}[{i}].x != 0u)") } else { format!("{name}[{i}].{swizzle}") })
+                        .collect();
+                    self.edits.replace(u.span.clone(), format!("{}[{n}]({})", m.user_ty.base, elems.join(", ")));
+                }
+            },
+            Repr::Mat2 => {
+                self.need_mat2_helper = true;
+                self.edits.insert(u.span.start, "effectc_mat2(");
+                self.edits.insert(u.span.end, ")");
+            }
+            Repr::Mat2Array => {
+                self.need_mat2_helper = true;
+                if let Some((bracket, _, _)) = &u.index {
+                    self.edits.insert(bracket.start, "effectc_mat2(");
+                    self.edits.insert(bracket.end, ")");
+                }
+            }
+        }
+    }
+
+    fn builtin_use(&mut self, u: &crate::front::syntax::Use) {
+        let stage = self.s.stage;
+        match (u.name.as_str(), stage) {
+            ("gl_FragColor", StageKind::Fragment) => {
+                self.legacy(u.span.clone(), "gl_FragColor", "a declared `out vec4`");
+                self.edits.replace(u.span.clone(), "effectc_FragColor");
+            }
+            ("gl_FragData", StageKind::Fragment) => match &u.index {
+                Some((bracket, _, Some(k))) => {
+                    self.legacy(bracket.clone(), "gl_FragData", "declared `out vec4` outputs");
+                    self.edits.replace(bracket.clone(), format!("effectc_FragData{k}"));
+                }
+                Some((_, isp, None)) => self.diags.push(
+                    Diagnostic::error("E0111", "`gl_FragData` is indexed with a non-constant expression")
+                        .at(self.s.file, isp.clone(), "not a constant index")
+                        .with_help("declare `layout(location = N) out vec4 name;` outputs and write them by name"),
+                ),
+                None => {}
+            },
+            // naga types these `uint`; GLSL's are `int`.
+            ("gl_VertexID" | "gl_VertexIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_VertexIndex)"),
+            ("gl_InstanceID" | "gl_InstanceIndex", StageKind::Vertex) => self.edits.replace(u.span.clone(), "int(gl_InstanceIndex)"),
+            ("gl_DrawID" | "gl_BaseVertex" | "gl_BaseInstance", StageKind::Vertex)
+            | ("gl_PrimitiveID" | "gl_SampleID", StageKind::Fragment) => self.edits.replace(u.span.clone(), format!("int({})", u.name)),
+            ("gl_PointSize", _) => self.edits.replace(u.span.clone(), "effectc_PointSize"),
+            ("gl_PointCoord", StageKind::Fragment) => {
+                // WebGPU rasterizes points one pixel wide, so the one fragment of a point
+                // is its centre: what GL gives for a point of size 1.
+                self.edits.replace(u.span.clone(), "vec2(0.5)");
+                self.diags.push(
+                    Diagnostic::note("N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU draws points one pixel wide")
+                        .at(self.s.file, u.span.clone(), "the centre of a one-pixel point")
+                        .with_note("WebGPU has no point sprites (and no `gl_PointSize`); draw a quad per point to keep a sprite's texture coordinates"),
+                );
+            }
+            ("gl_ClipDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
+            ("gl_CullDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_CullDistance"),
+            _ => {}
+        }
+    }
+}
+
+/// The combined-sampler constructor naga knows for a user's sampler type.
+pub(super) fn combined_ctor(user_ty: &str) -> &str {
+    match user_ty {
+        "sampler2DRect" => "sampler2D",
+        other => other,
+    }
+}

@@ -1,0 +1,17 @@
+//! Small readers of glsl-lang AST nodes: a node's span in the text, an expression as text.
+
+use std::ops::Range;
+
+use glsl_lang::ast::{self, NodeContent};
+use glsl_lang::transpiler::glsl::{show_expr, FormattingState};
+
+pub(super) fn span_of<T: NodeContent>(node: &ast::Node<T>) -> Range<usize> {
+    node.span.map(|s| usize::from(s.range().start())..usize::from(s.range().end())).unwrap_or(0..0)
+}
+
+/// Render an expression (used for messages only).
+pub fn expr_text(e: &ast::Expr) -> String {
+    let mut out = String::new();
+    let _ = show_expr(&mut out, e, &mut FormattingState::default());
+    out
+}

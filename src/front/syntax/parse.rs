@@ -1,0 +1,226 @@
+//! One stage through glsl-lang: the text prepared for it (`#version`, conditionals,
+//! renamed keywords, lexical masks), its syntax errors in the user's terms, and whether it
+//! is Vulkan GLSL.
+
+use std::collections::HashMap;
+use std::ops::Range;
+
+use glsl_lang::ast;
+use glsl_lang::parse::DefaultParse;
+
+use crate::diag::{Diagnostic, FileId};
+use crate::front::syntax::collect::Collector;
+use crate::front::syntax::model::{StageSyntax, Target};
+use crate::front::syntax::types::Storage;
+use crate::front::version::{self, Renames};
+use crate::stage::StageKind;
+
+/// Parses one stage. Errors are syntax diagnostics at the user's spans.
+pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSyntax, Vec<Diagnostic>> {
+    let version = match version::parse_version(original) {
+        Ok(v) => v,
+        Err((msg, span)) => {
+            return Err(vec![Diagnostic::error("E0101", msg)
+                .at(file, span, "in this `#version` directive")
+                .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
+        }
+    };
+    let unextended = version::blank_extensions(original);
+    let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
+    if let Some(span) = compiled_include(&resolved) {
+        return Err(vec![Diagnostic::error(
+            crate::front::conditionals::E_INCLUDE,
+            format!("cannot read included file `{}`", &original[span.clone()]),
+        )
+        .at(file, span, "not found relative to the including file")
+        .with_note("`#include` names a file relative to the file that includes it")]);
+    }
+    let (text, mut renames) = version::rename_new_keywords(&resolved, &version, original);
+    let masked = crate::front::lexical::mask(&text, &version::blank_comments(&text));
+    let mut text = masked.for_parser;
+    let opts = glsl_lang::parse::ParseOptions {
+        default_version: 110,
+        // Vulkan GLSL's types (`texture2D`, `sampler`, `subpassInput`) are keywords there only.
+        target_vulkan: vulkan_source(original),
+        ..Default::default()
+    };
+    if opts.target_vulkan && version.number >= 400 && !version.is_es() {
+        // glsl-lang enables Vulkan's types from `#version 460` only; Vulkan GLSL has them
+        // from 4.50 on. Same-length digits keep every offset.
+        if let Some(span) = version.number_span.clone() {
+            text.replace_range(span, "460");
+        }
+    }
+    let parse = |text: &str| {
+        std::panic::catch_unwind(|| {
+            ast::TranslationUnit::parse_with_options(text, &opts).map(|(tu, _, _)| tu).map_err(|e| {
+                let pos = e.pos();
+                let start = usize::from(pos.start());
+                let end = usize::from(pos.end());
+                (trim_expected(&e.inner().to_string()), start..end)
+            })
+        })
+    };
+    let mut parsed = parse(text.as_str());
+    // glsl-lang's lexer takes a struct's name for a type everywhere, but GLSL lets a local
+    // variable hide it (`float Attenuation = …;` beside `struct Attenuation`). Rename the
+    // local, from its declaration to the end of its block, and parse again.
+    for _ in 0..16 {
+        let Ok(Err((msg, span))) = &parsed else { break };
+        let Some(hidden) = rename_struct_hiding_local(&text, msg, span.start, &mut renames) else { break };
+        text = hidden;
+        parsed = parse(text.as_str());
+    }
+    let tu = match parsed {
+        Ok(Ok(tu)) => tu,
+        Ok(Err((msg, span))) => {
+            let span = clamp(span, original);
+            return Err(vec![Diagnostic::error("E0102", format!("syntax error: {msg}")).at(file, span, "the GLSL parser stopped here")]);
+        }
+        Err(_) => return Err(vec![Diagnostic::error("E0102", "syntax error: the GLSL parser failed on this file").in_file(file)]),
+    };
+    let mut syntax = StageSyntax {
+        file,
+        stage,
+        version,
+        renames,
+        text: crate::front::lexical::restored(&text, &masked.restore),
+        unsupported: masked.unsupported,
+        per_vertex: masked.per_vertex,
+        swizzles: Vec::new(),
+        globals: Vec::new(),
+        structs: Vec::new(),
+        functions: Vec::new(),
+        uses: Vec::new(),
+        calls: Vec::new(),
+        precision_statements: Vec::new(),
+        first_function: None,
+        int_consts: HashMap::new(),
+        has_main: false,
+        main_body: None,
+        main_returns: Vec::new(),
+        defaults: Vec::new(),
+        unsized_sizes: Vec::new(),
+        constant_sizes: Vec::new(),
+        vulkan: false,
+    };
+    Collector::run(&mut syntax, &tu);
+    syntax.vulkan = looks_like_vulkan(&syntax, original);
+    Ok(syntax)
+}
+
+/// For a parse error on a struct's name used as a variable at `at`, the text with that
+/// name renamed (same length) from `at` to the end of the enclosing `{ … }` block.
+fn rename_struct_hiding_local(text: &str, msg: &str, at: usize, renames: &mut Renames) -> Option<String> {
+    let name = msg.strip_prefix("unexpected type name `")?.split('`').next()?;
+    if !text.get(at..)?.starts_with(name) || name.len() < 2 {
+        return None;
+    }
+    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let declared_struct = text
+        .match_indices("struct")
+        .any(|(i, _)| text[i + 6..].trim_start().strip_prefix(name).is_some_and(|r| !r.bytes().next().is_some_and(is_ident)));
+    if !declared_struct {
+        return None;
+    }
+    // The local's scope: to the brace that closes the block it is declared in.
+    let bytes = text.as_bytes();
+    let mut depth = 0i32;
+    let mut end = text.len();
+    for (i, &b) in bytes.iter().enumerate().skip(at) {
+        match b {
+            b'{' => depth += 1,
+            b'}' => {
+                depth -= 1;
+                if depth < 0 {
+                    end = i;
+                    break;
+                }
+            }
+            _ => {}
+        }
+    }
+    let new = (0..100)
+        .map(|k| format!("{}{}", &name[..name.len() - 1], (b'a' + (k % 26) as u8) as char))
+        .find(|c| c != name && !text.contains(c.as_str()))?;
+    let mut out = text.as_bytes().to_vec();
+    let mut i = at;
+    while let Some(off) = text[i..end].find(name) {
+        let s = i + off;
+        let e = s + name.len();
+        let before_ok = s == 0 || !is_ident(bytes[s - 1]);
+        let after_ok = e >= bytes.len() || !is_ident(bytes[e]);
+        if before_ok && after_ok {
+            out[s..e].copy_from_slice(new.as_bytes());
+        }
+        i = e;
+    }
+    renames.to_original.insert(new, name.to_string());
+    String::from_utf8(out).ok()
+}
+
+/// glsl-lang lists every token it would accept; keep the message readable.
+fn trim_expected(msg: &str) -> String {
+    let Some(at) = msg.find(", expected ") else { return msg.to_string() };
+    let (head, list) = msg.split_at(at);
+    let items: Vec<&str> = list[", expected ".len()..].split(", ").collect();
+    if items.len() <= 6 {
+        return msg.to_string();
+    }
+    let mut short: Vec<&str> =
+        items.iter().copied().filter(|i| !i.contains("texture") && !i.contains("subpass") && !i.contains("sampler")).take(6).collect();
+    if short.is_empty() {
+        short = items[..6].to_vec();
+    }
+    format!("{head}, expected {} …", short.join(", "))
+}
+
+fn clamp(span: Range<usize>, text: &str) -> Range<usize> {
+    let start = span.start.min(text.len());
+    let end = span.end.clamp(start, text.len());
+    if start == end && start < text.len() {
+        // Point at the offending character rather than nothing.
+        let next = text[start..].chars().next().map_or(1, char::len_utf8);
+        start..start + next
+    } else {
+        start..end
+    }
+}
+
+/// The file name of an `#include` left in the compiled text (one `includes` could not read).
+fn compiled_include(text: &str) -> Option<Range<usize>> {
+    crate::front::conditionals::include_directives(text).into_iter().next().map(|(_, _, name)| name)
+}
+
+/// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
+/// constants, subpass inputs, separate texture and sampler uniforms)?
+fn vulkan_source(text: &str) -> bool {
+    let squeezed: String = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    squeezed.contains("push_constant")
+        || squeezed.contains("subpassInput")
+        || squeezed.contains("input_attachment_index")
+        || squeezed.contains("GL_KHR_vulkan_glsl")
+        || squeezed.contains("uniform sampler ")
+        || squeezed.contains("uniform samplerShadow ")
+        || ["texture2D", "texture3D", "textureCube", "texture2DArray"].iter().any(|t| squeezed.contains(&format!("uniform {t} ")))
+        || squeezed.split("layout").skip(1).any(|l| {
+            let inside = l.trim_start().strip_prefix('(').and_then(|r| r.split(')').next()).unwrap_or("");
+            inside.split(',').any(|item| item.trim().starts_with("set"))
+        })
+}
+
+/// Vulkan GLSL shows itself by what only Vulkan has.
+fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
+    let layout_vulkan = s
+        .globals
+        .iter()
+        .any(|g| g.layout.iter().any(|(k, _)| matches!(k.as_str(), "set" | "push_constant" | "constant_id" | "input_attachment_index")));
+    let separate = s.globals.iter().any(|g| {
+        g.storage == Storage::Uniform
+            && matches!(g.ty.base.as_str(), "sampler" | "samplerShadow" | "texture2D" | "textureCube" | "texture2DArray" | "texture3D")
+    });
+    layout_vulkan
+        || separate
+        || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Target::Unresolved)
+        || original.contains("GL_KHR_vulkan_glsl")
+}

@@ -1,0 +1,100 @@
+//! GLSL types and storage as written: a base name with array dimensions, the storage and
+//! interpolation qualifiers, and the texture + sampler pair naga wants for a combined sampler.
+
+/// Storage class of a global declaration, as written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Storage {
+    Uniform,
+    In,
+    Out,
+    /// 1xx `attribute` (a vertex input).
+    Attribute,
+    /// 1xx `varying` (an output in the vertex stage, an input in the fragment stage).
+    Varying,
+    Buffer,
+    Const,
+    /// A private global (`float x;`).
+    Private,
+}
+
+/// Interpolation qualifiers that must agree across a link.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Interp {
+    Smooth,
+    Flat,
+    NoPerspective,
+}
+
+/// A GLSL type as written: base name plus array dimensions (None = unsized).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct GlslType {
+    pub base: String,
+    pub dims: Vec<Option<u32>>,
+}
+
+impl GlslType {
+    pub fn scalar(base: &str) -> Self {
+        GlslType { base: base.to_string(), dims: Vec::new() }
+    }
+    pub fn is_array(&self) -> bool {
+        !self.dims.is_empty()
+    }
+    pub fn element(&self) -> GlslType {
+        GlslType { base: self.base.clone(), dims: self.dims.iter().skip(1).cloned().collect() }
+    }
+    /// Integer scalar or vector (`int`, `uvec3`, …): never interpolated, so `flat` in effect.
+    pub fn is_integer(&self) -> bool {
+        matches!(self.base.as_str(), "int" | "uint")
+            || ["ivec", "uvec"].iter().any(|p| self.base.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")))
+    }
+    /// Opaque (sampler) base type.
+    pub fn is_sampler(&self) -> bool {
+        sampler_parts(&self.base).is_some()
+    }
+}
+
+impl std::fmt::Display for GlslType {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.base)?;
+        for d in &self.dims {
+            match d {
+                Some(n) => write!(f, "[{n}]")?,
+                None => f.write_str("[]")?,
+            }
+        }
+        Ok(())
+    }
+}
+
+/// `[4][2]` for a type's dimensions.
+pub fn dims_text(ty: &GlslType) -> String {
+    ty.dims.iter().map(|d| d.map_or("[]".to_string(), |n| format!("[{n}]"))).collect()
+}
+
+/// For a combined sampler type, the separate texture type and sampler type naga wants.
+pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
+    Some(match base {
+        "sampler1D" => ("texture1D", "sampler"),
+        "sampler2D" => ("texture2D", "sampler"),
+        "sampler3D" => ("texture3D", "sampler"),
+        "samplerCube" => ("textureCube", "sampler"),
+        "sampler2DArray" => ("texture2DArray", "sampler"),
+        "samplerCubeArray" => ("textureCubeArray", "sampler"),
+        "sampler2DMS" => ("texture2DMS", "sampler"),
+        "sampler2DShadow" => ("texture2D", "samplerShadow"),
+        "samplerCubeShadow" => ("textureCube", "samplerShadow"),
+        "sampler2DArrayShadow" => ("texture2DArray", "samplerShadow"),
+        "isampler2D" => ("itexture2D", "sampler"),
+        "isampler3D" => ("itexture3D", "sampler"),
+        "isamplerCube" => ("itextureCube", "sampler"),
+        "isampler2DArray" => ("itexture2DArray", "sampler"),
+        "usampler2D" => ("utexture2D", "sampler"),
+        "usampler3D" => ("utexture3D", "sampler"),
+        "usamplerCube" => ("utextureCube", "sampler"),
+        "usampler2DArray" => ("utexture2DArray", "sampler"),
+        "sampler2DRect" => ("texture2D", "sampler"),
+        "samplerBuffer" => ("textureBuffer", "sampler"),
+        _ => return None,
+    })
+}
