@@ -174,26 +174,12 @@ impl Ctx<'_> {
         let mut knobs = Vec::new();
         for (k, v) in entries(root) {
             match key(k) {
-                "name" => {
-                    if let Some(s) = self.string(v, "`name`") {
-                        if s.trim().is_empty() {
-                            self.error(E_VALUE, v.span(), "`name` is empty".into(), "empty name");
-                        } else {
-                            name = Some((s.to_owned(), v.span()));
-                        }
-                    }
-                }
+                "name" => name = self.effect_name(v),
                 "description" => description = self.string(v, "`description`").map(str::to_owned),
                 "stages" => {
                     saw_stages = true;
                     stages_key = Some(k.span());
-                    if let Some(t) = self.table(v, "`stages`") {
-                        if t.is_empty() {
-                            let d = self.error(E_MISSING, k.span(), "`[stages]` lists no stage".into(), "no stage here");
-                            d.help = Some("add e.g. `vertex = \"effect.vert\"` and `fragment = \"effect.frag\"`".into());
-                        }
-                        stages = self.stages(t);
-                    }
+                    stages = self.stages_table(k, v);
                 }
                 "uniforms" => {
                     if let Some(t) = self.table(v, "`uniforms`") {
@@ -240,30 +226,8 @@ impl Ctx<'_> {
                 .with_help("add a `[stages]` table, e.g. `[stages]` / `vertex = \"effect.vert\"` / `fragment = \"effect.frag\"`");
             self.diags.push(d);
         }
-        let file = self.file;
-        for t in &textures {
-            if let Some(u) = uniforms.iter().find(|u: &&UniformDefault| u.name == t.name) {
-                let d = self.error(
-                    E_CONFLICT,
-                    t.name_span.clone(),
-                    format!("`{}` is listed both in [uniforms] and in [textures]", t.name),
-                    "bound to a texture here",
-                );
-                d.labels.push(crate::diag::Label { file, span: u.name_span.clone(), message: "given a value here".into() });
-                d.help = Some("samplers get a texture in [textures]; other uniforms get a value in [uniforms]".into());
-            }
-        }
-        for k in &knobs {
-            if !uniforms.iter().any(|u| u.name == k.name && u.value.as_ref().and_then(UniformValue::as_f64).is_some()) {
-                let d = self.error(
-                    E_VALUE,
-                    k.name_span.clone(),
-                    format!("knob `{}` is not a number in [uniforms]", k.name),
-                    "no numeric [uniforms] entry of this name",
-                );
-                d.help = Some(format!("a knob sweeps a uniform's value: add `{} = <default>` to [uniforms]", k.name));
-            }
-        }
+        self.check_textures_not_uniforms(&textures, &uniforms);
+        self.check_knobs_are_numbers(&knobs, &uniforms);
         let (name, name_span) = name.unwrap_or_else(|| (default_name(self.dir), 0..0));
         Effect {
             file: self.file,
@@ -284,6 +248,48 @@ impl Ctx<'_> {
             output,
             knobs,
             warnings: Vec::new(),
+        }
+    }
+
+    /// `name`: a non-empty string, with its span.
+    fn effect_name(&mut self, v: &Val<'_>) -> Option<(String, Range<usize>)> {
+        let s = self.string(v, "`name`")?;
+        if s.trim().is_empty() {
+            self.error(E_VALUE, v.span(), "`name` is empty".into(), "empty name");
+            return None;
+        }
+        Some((s.to_owned(), v.span()))
+    }
+
+    /// A sampler is bound in `[textures]`, never given a value in `[uniforms]` as well.
+    fn check_textures_not_uniforms(&mut self, textures: &[TextureDecl], uniforms: &[UniformDefault]) {
+        let file = self.file;
+        for t in textures {
+            if let Some(u) = uniforms.iter().find(|u: &&UniformDefault| u.name == t.name) {
+                let d = self.error(
+                    E_CONFLICT,
+                    t.name_span.clone(),
+                    format!("`{}` is listed both in [uniforms] and in [textures]", t.name),
+                    "bound to a texture here",
+                );
+                d.labels.push(crate::diag::Label { file, span: u.name_span.clone(), message: "given a value here".into() });
+                d.help = Some("samplers get a texture in [textures]; other uniforms get a value in [uniforms]".into());
+            }
+        }
+    }
+
+    /// Every knob sweeps a `[uniforms]` entry with a numeric default.
+    fn check_knobs_are_numbers(&mut self, knobs: &[KnobDecl], uniforms: &[UniformDefault]) {
+        for k in knobs {
+            if !uniforms.iter().any(|u| u.name == k.name && u.value.as_ref().and_then(UniformValue::as_f64).is_some()) {
+                let d = self.error(
+                    E_VALUE,
+                    k.name_span.clone(),
+                    format!("knob `{}` is not a number in [uniforms]", k.name),
+                    "no numeric [uniforms] entry of this name",
+                );
+                d.help = Some(format!("a knob sweeps a uniform's value: add `{} = <default>` to [uniforms]", k.name));
+            }
         }
     }
 }

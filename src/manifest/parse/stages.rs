@@ -5,11 +5,23 @@ use std::ops::Range;
 
 use toml::de::DeTable;
 
-use super::{entries, key, Ctx};
-use crate::manifest::{StageRef, E_CONFLICT, E_STAGE_NOT_FOUND, W_STAGE_EXTENSION};
+use super::{entries, key, Ctx, Key, Val};
+use crate::manifest::{StageRef, E_CONFLICT, E_MISSING, E_STAGE_NOT_FOUND, W_STAGE_EXTENSION};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
+    /// The `[stages]` key and its value: a table that lists at least one stage.
+    pub(super) fn stages_table(&mut self, k: &Key<'_>, v: &Val<'_>) -> Vec<StageRef> {
+        let Some(t) = self.table(v, "`stages`") else {
+            return Vec::new();
+        };
+        if t.is_empty() {
+            let d = self.error(E_MISSING, k.span(), "`[stages]` lists no stage".into(), "no stage here");
+            d.help = Some("add e.g. `vertex = \"effect.vert\"` and `fragment = \"effect.frag\"`".into());
+        }
+        self.stages(t)
+    }
+
     pub(super) fn stages(&mut self, t: &DeTable<'_>) -> Vec<StageRef> {
         let names: Vec<&str> = StageKind::ALL.iter().map(|s| s.name()).collect();
         let mut stages = Vec::new();

@@ -21,6 +21,42 @@ const FACE_ORDER: &str = "+x, -x, +y, -y, +z, -z";
 /// Generated-texture parameter keys (besides the source itself).
 const GEN_PARAMS: &[&str] = &["size", "colors", "cells", "seed", "octaves"];
 
+/// What the keys of one texture table gave, before they are checked against each other.
+struct TextureFields {
+    /// Every key was known and its value read without a problem.
+    ok: bool,
+    /// The source keys given (`file`, `cube`, `generate`), with their key spans.
+    sources: Vec<(&'static str, Range<usize>)>,
+    file: Option<PathBuf>,
+    faces: Option<[PathBuf; 6]>,
+    generator: Option<Generator>,
+    kind: Option<(TextureKind, Range<usize>)>,
+    /// The generator parameter keys given, with their key spans.
+    params_given: Vec<(&'static str, Range<usize>)>,
+    size: u32,
+    params: GeneratorParams,
+    filter: Filter,
+    wrap: Wrap,
+}
+
+impl TextureFields {
+    fn new() -> Self {
+        TextureFields {
+            ok: true,
+            sources: Vec::new(),
+            file: None,
+            faces: None,
+            generator: None,
+            kind: None,
+            params_given: Vec::new(),
+            size: DEFAULT_TEXTURE_SIZE,
+            params: GeneratorParams::default(),
+            filter: Filter::default(),
+            wrap: Wrap::default(),
+        }
+    }
+}
+
 impl Ctx<'_> {
     pub(super) fn textures(&mut self, t: &DeTable<'_>) -> Vec<TextureDecl> {
         let mut out = Vec::new();
@@ -54,95 +90,119 @@ impl Ctx<'_> {
     }
 
     fn texture_table(&mut self, name: &str, k: &Key<'_>, v: &Val<'_>, t: &DeTable<'_>) -> Option<TextureDecl> {
-        let mut ok = true;
-        let mut sources: Vec<(&'static str, Range<usize>)> = Vec::new();
-        let mut file = None;
-        let mut faces = None;
-        let mut generator = None;
-        let mut kind = None;
-        let mut params_given: Vec<(&'static str, Range<usize>)> = Vec::new();
-        let mut size = DEFAULT_TEXTURE_SIZE;
-        let mut params = GeneratorParams::default();
-        let mut filter = Filter::default();
-        let mut wrap = Wrap::default();
+        let f = self.texture_fields(name, t);
+        let source_kind = self.texture_source(name, v, &f.sources)?;
+        let tex_kind = self.texture_kind(name, source_kind, f.kind.clone());
+        let params_ok = self.check_generator_params(name, source_kind, f.generator, &f.params_given);
+        if !(f.ok && tex_kind.is_some() && params_ok) {
+            return None;
+        }
+        let source = match source_kind {
+            "file" => TextureSource::File(f.file?),
+            "cube" => TextureSource::Faces(f.faces?),
+            _ => TextureSource::Generated { generator: f.generator?, size: f.size, params: f.params },
+        };
+        Some(TextureDecl {
+            name: name.to_owned(),
+            name_span: k.span(),
+            kind: tex_kind?,
+            source,
+            span: v.span(),
+            filter: f.filter,
+            wrap: f.wrap,
+        })
+    }
+
+    /// Reads every key of a texture table; what they say together is checked by the caller.
+    fn texture_fields(&mut self, name: &str, t: &DeTable<'_>) -> TextureFields {
+        let mut f = TextureFields::new();
         for (k2, v2) in entries(t) {
             let what = format!("`textures.{name}.{}`", key(k2));
             let what = what.as_str();
             match key(k2) {
                 "file" => {
-                    sources.push(("file", k2.span()));
-                    file = self.file_path(v2, what, E_ASSET_NOT_FOUND, "texture file");
-                    ok &= file.is_some();
+                    f.sources.push(("file", k2.span()));
+                    f.file = self.file_path(v2, what, E_ASSET_NOT_FOUND, "texture file");
+                    f.ok &= f.file.is_some();
                 }
                 "cube" => {
-                    sources.push(("cube", k2.span()));
-                    faces = self.faces(v2, what);
-                    ok &= faces.is_some();
+                    f.sources.push(("cube", k2.span()));
+                    f.faces = self.faces(v2, what);
+                    f.ok &= f.faces.is_some();
                 }
                 "generate" => {
-                    sources.push(("generate", k2.span()));
+                    f.sources.push(("generate", k2.span()));
                     let choices: Vec<_> = Generator::ALL.iter().map(|g| (g.name(), *g)).collect();
-                    generator = self.choice(v2, what, "generator", &choices);
-                    ok &= generator.is_some();
+                    f.generator = self.choice(v2, what, "generator", &choices);
+                    f.ok &= f.generator.is_some();
                 }
                 "kind" => {
                     let choices = [("2d", TextureKind::D2), ("cube", TextureKind::Cube)];
                     match self.choice(v2, what, "texture kind", &choices) {
-                        Some(x) => kind = Some((x, k2.span())),
-                        None => ok = false,
+                        Some(x) => f.kind = Some((x, k2.span())),
+                        None => f.ok = false,
                     }
                 }
                 p @ ("size" | "colors" | "cells" | "seed" | "octaves") => {
                     let p = GEN_PARAMS.iter().copied().find(|g| *g == p).unwrap_or("size");
-                    params_given.push((p, k2.span()));
+                    f.params_given.push((p, k2.span()));
                     let parsed = match p {
-                        "size" => self.uint(v2, what, 1, MAX_TEXTURE_SIZE).map(|n| size = n),
-                        "colors" => self.colors(v2, what).map(|c| params.colors = c),
-                        "cells" => self.uint(v2, what, 1, MAX_CELLS).map(|n| params.cells = n),
-                        "seed" => self.uint(v2, what, 0, u32::MAX).map(|n| params.seed = n),
-                        _ => self.uint(v2, what, 1, MAX_OCTAVES).map(|n| params.octaves = n),
+                        "size" => self.uint(v2, what, 1, MAX_TEXTURE_SIZE).map(|n| f.size = n),
+                        "colors" => self.colors(v2, what).map(|c| f.params.colors = c),
+                        "cells" => self.uint(v2, what, 1, MAX_CELLS).map(|n| f.params.cells = n),
+                        "seed" => self.uint(v2, what, 0, u32::MAX).map(|n| f.params.seed = n),
+                        _ => self.uint(v2, what, 1, MAX_OCTAVES).map(|n| f.params.octaves = n),
                     };
-                    ok &= parsed.is_some();
+                    f.ok &= parsed.is_some();
                 }
                 "filter" => {
                     let choices = [("linear", Filter::Linear), ("nearest", Filter::Nearest)];
                     match self.choice(v2, what, "filter", &choices) {
-                        Some(f) => filter = f,
-                        None => ok = false,
+                        Some(x) => f.filter = x,
+                        None => f.ok = false,
                     }
                 }
                 "wrap" => {
                     let choices = [("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp), ("mirror", Wrap::Mirror)];
                     match self.choice(v2, what, "wrap mode", &choices) {
-                        Some(w) => wrap = w,
-                        None => ok = false,
+                        Some(w) => f.wrap = w,
+                        None => f.ok = false,
                     }
                 }
                 other => {
                     self.unknown_key(other, k2.span(), &format!("in texture `{name}`"), TEXTURE_KEYS);
-                    ok = false;
+                    f.ok = false;
                 }
             }
         }
-        let source_kind = match sources.as_slice() {
+        f
+    }
+
+    /// The one source key (`file`, `cube` or `generate`) of a texture table.
+    fn texture_source(&mut self, name: &str, v: &Val<'_>, sources: &[(&'static str, Range<usize>)]) -> Option<&'static str> {
+        match sources {
             [] => {
                 let d = self.error(E_MISSING, v.span(), format!("texture `{name}` has no source"), "no `file`, `cube` or `generate`");
                 d.help = Some("add `file = \"image.png\"`, `cube = [six images]` or `generate = \"checker\"`".into());
-                return None;
+                None
             }
-            [(s, _)] => *s,
+            [(s, _)] => Some(*s),
             [(_, first), (_, second), ..] => {
                 let file_id = self.file;
                 let (first, second) = (first.clone(), second.clone());
                 let d = self.error(E_CONFLICT, second, format!("texture `{name}` has more than one source"), "second source");
                 d.labels.push(crate::diag::Label { file: file_id, span: first, message: "first source".into() });
                 d.help = Some("keep exactly one of `file`, `cube` and `generate`".into());
-                return None;
+                None
             }
-        };
-        // Kind: `cube = [...]` is a cube; `file` is 2D; `generate` is either (default 2D).
+        }
+    }
+
+    /// The texture's kind: `cube = [...]` is a cube; `file` is 2D; `generate` is either
+    /// (default 2D). `None` when an explicit `kind` contradicts the source (reported).
+    fn texture_kind(&mut self, name: &str, source_kind: &str, kind: Option<(TextureKind, Range<usize>)>) -> Option<TextureKind> {
         let natural = if source_kind == "cube" { TextureKind::Cube } else { TextureKind::D2 };
-        let tex_kind = match kind {
+        match kind {
             Some((want, span)) if source_kind != "generate" && want != natural => {
                 let msg = match source_kind {
                     "cube" => {
@@ -152,14 +212,25 @@ impl Ctx<'_> {
                 };
                 let d = self.error(E_CONFLICT, span, msg, "conflicts with the source");
                 d.help = Some("a cube map comes from `cube = [six images]` or from `generate` with `kind = \"cube\"`".into());
-                ok = false;
-                natural
+                None
             }
-            Some((want, _)) => want,
-            None => natural,
-        };
+            Some((want, _)) => Some(want),
+            None => Some(natural),
+        }
+    }
+
+    /// Generator parameters on a loaded image are errors; parameters the chosen generator
+    /// ignores are warnings. False when an error was reported.
+    fn check_generator_params(
+        &mut self,
+        name: &str,
+        source_kind: &str,
+        generator: Option<Generator>,
+        params_given: &[(&'static str, Range<usize>)],
+    ) -> bool {
+        let mut ok = true;
         if source_kind != "generate" {
-            for (p, span) in &params_given {
+            for (p, span) in params_given {
                 let d = self.error(
                     E_CONFLICT,
                     span.clone(),
@@ -170,7 +241,7 @@ impl Ctx<'_> {
                 ok = false;
             }
         } else if let Some(g) = generator {
-            for (p, span) in &params_given {
+            for (p, span) in params_given {
                 if *p != "size" && !g.params().contains(p) {
                     let d = self.warning(
                         W_UNUSED_PARAM,
@@ -182,15 +253,7 @@ impl Ctx<'_> {
                 }
             }
         }
-        if !ok {
-            return None;
-        }
-        let source = match source_kind {
-            "file" => TextureSource::File(file?),
-            "cube" => TextureSource::Faces(faces?),
-            _ => TextureSource::Generated { generator: generator?, size, params },
-        };
-        Some(TextureDecl { name: name.to_owned(), name_span: k.span(), kind: tex_kind, source, span: v.span(), filter, wrap })
+        ok
     }
 
     fn faces(&mut self, v: &Val<'_>, what: &str) -> Option<[PathBuf; 6]> {
