@@ -11,14 +11,62 @@ pub struct MeshDecl {
     pub span: Range<usize>,
     pub source: MeshSource,
     /// Optional explicit mapping: (shader input name, mesh attribute), in manifest order.
-    /// Mesh attributes are the names in [`MESH_ATTRIBUTES`].
+    /// Mesh attributes are [`MeshAttribute::name`]s (the names in [`MESH_ATTRIBUTES`]).
     pub attributes: Vec<(String, String)>,
     /// Spans of the shader input names in `attributes`, index for index.
     pub attribute_spans: Vec<Range<usize>>,
 }
 
-/// The attributes a mesh provides.
-pub const MESH_ATTRIBUTES: &[&str] = &["position", "normal", "uv", "tangent", "color"];
+/// An attribute a mesh provides, which `[mesh.attributes]` can map a vertex input to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MeshAttribute {
+    Position,
+    Normal,
+    Uv,
+    /// xyz tangent, w = bitangent sign (±1), MikkTSpace convention.
+    Tangent,
+    /// cross(normal, tangent.xyz) × tangent.w.
+    Bitangent,
+    Color,
+}
+
+impl MeshAttribute {
+    pub const ALL: [MeshAttribute; 6] = [
+        MeshAttribute::Position,
+        MeshAttribute::Normal,
+        MeshAttribute::Uv,
+        MeshAttribute::Tangent,
+        MeshAttribute::Bitangent,
+        MeshAttribute::Color,
+    ];
+
+    /// The name used in manifests (and by the renderer's mesh).
+    pub const fn name(self) -> &'static str {
+        match self {
+            MeshAttribute::Position => "position",
+            MeshAttribute::Normal => "normal",
+            MeshAttribute::Uv => "uv",
+            MeshAttribute::Tangent => "tangent",
+            MeshAttribute::Bitangent => "bitangent",
+            MeshAttribute::Color => "color",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<MeshAttribute> {
+        MeshAttribute::ALL.into_iter().find(|a| a.name() == name)
+    }
+}
+
+/// The names of [`MeshAttribute::ALL`], in that order.
+pub const MESH_ATTRIBUTES: &[&str] = &{
+    let mut names = [""; MeshAttribute::ALL.len()];
+    let mut i = 0;
+    while i < names.len() {
+        names[i] = MeshAttribute::ALL[i].name();
+        i += 1;
+    }
+    names
+};
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum MeshSource {

@@ -47,7 +47,7 @@ use crate::diag::{Diagnostic, FileId, Files};
 pub use effect::{Effect, StageRef};
 pub use instances::{InstanceAttribute, InstanceSource, InstancesDecl, MAX_INSTANCES};
 pub use knobs::KnobDecl;
-pub use mesh::{BuiltinMesh, MeshDecl, MeshSource, MESH_ATTRIBUTES};
+pub use mesh::{BuiltinMesh, MeshAttribute, MeshDecl, MeshSource, MESH_ATTRIBUTES};
 pub use passes::{PassClear, PassDecl, PassDraw, SampleDecl, SampleKind, TargetDecl, TargetFormat, TargetRef, TargetSize};
 pub use scene::{Blend, CameraDecl, CameraKey, Cull, DepthCompare, Ease, ModelDecl, RenderDecl, MAX_FRAMES, MAX_FRAME_SIDE};
 pub use textures::{

@@ -6,7 +6,7 @@ use std::ops::Range;
 use toml::de::{DeTable, DeValue};
 
 use super::{entries, is_ident, key, list, Ctx, Val};
-use crate::manifest::{BuiltinMesh, MeshDecl, MeshSource, E_ASSET_NOT_FOUND, E_CONFLICT, E_MISSING, E_VALUE, MESH_ATTRIBUTES};
+use crate::manifest::{BuiltinMesh, MeshAttribute, MeshDecl, MeshSource, E_ASSET_NOT_FOUND, E_CONFLICT, E_MISSING, E_VALUE};
 
 const MESH_KEYS: &[&str] = &["builtin", "obj", "segments", "rings", "divisions", "attributes"];
 const MAX_MESH_DIVISIONS: u32 = 1024;
@@ -69,7 +69,7 @@ impl Ctx<'_> {
                         ok = false;
                         continue;
                     };
-                    let choices: Vec<(&'static str, &'static str)> = MESH_ATTRIBUTES.iter().map(|n| (*n, *n)).collect();
+                    let choices: Vec<(&'static str, MeshAttribute)> = MeshAttribute::ALL.iter().map(|a| (a.name(), *a)).collect();
                     for (ak, av) in entries(at) {
                         let input = key(ak);
                         if !is_ident(input) || input.starts_with("gl_") {
@@ -79,7 +79,7 @@ impl Ctx<'_> {
                         }
                         match self.choice(av, &format!("`mesh.attributes.{input}`"), "mesh attribute", &choices) {
                             Some(attr) => {
-                                attributes.push((input.to_owned(), attr.to_owned()));
+                                attributes.push((input.to_owned(), attr.name().to_owned()));
                                 attribute_spans.push(ak.span());
                             }
                             None => ok = false,
