@@ -1,5 +1,5 @@
 //! What the stages declare that `effect.toml` can name: loose uniforms and members of
-//! uniform blocks without an instance name ([`Decls`], with every declaration site and
+//! uniform blocks without an instance name (`Decls`, with every declaration site and
 //! whether some stage reads it), the samplers among them by path (`tex`,
 //! `material.diffuse`), and manifest uniform paths (`lights[1].color`) taken apart.
 //! [`Declared`] is the summary other checks use (the pass graph, `effectc check`'s

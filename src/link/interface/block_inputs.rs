@@ -1,6 +1,6 @@
 //! Interface blocks, matched by *block* name (instance names may differ). An input block
 //! without a match is paired with the output block most likely meant, so a renamed block is
-//! one diagnostic; matched blocks are compared member by member ([`super::super::blocks`]).
+//! one diagnostic; matched blocks are compared member by member ([`crate::link::blocks`]).
 
 use std::collections::HashSet;
 

@@ -12,9 +12,9 @@
 //! so the classic `out vert_out {…}` / `in vert_vars {…}` mismatch is one diagnostic, not
 //! one per member plus an unread-output warning.
 //!
-//! The checks run in this order, each in its own file: [`geometry`] (geometry inputs are
-//! arrays), [`locations`] (inputs matched by explicit location), [`loose_inputs`] (loose
-//! varyings by name), [`block_inputs`] (interface blocks by block name) and [`unread`]
+//! The checks run in this order, each in its own file: `geometry` (geometry inputs are
+//! arrays), `locations` (inputs matched by explicit location), `loose_inputs` (loose
+//! varyings by name), `block_inputs` (interface blocks by block name) and `unread`
 //! (outputs nothing accounts for).
 
 use std::collections::HashSet;
