@@ -238,7 +238,7 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Ve
                 let s: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
                 diags.extend(crate::link::check_interface(&s));
                 if pass.reuse.is_none() {
-                    let declared = crate::link::manifest::declared(&s);
+                    let declared = crate::link::declared::declared(&s);
                     view.uniforms.retain(|u| pass.uniforms.iter().any(|p| p.name == u.name) || declared.has_uniform(&u.name));
                     view.textures.retain(|t| declared.sampler(&t.name).is_some());
                     used_uniforms.extend(view.uniforms.iter().map(|u| u.name.clone()));

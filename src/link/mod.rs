@@ -12,8 +12,8 @@
 //! - [`names`]: uses of a name that only another stage declares (`vert_out.x` in the
 //!   fragment stage).
 //! - [`uniforms`]: uniforms are program-wide, so declarations of one name must agree.
-//! - [`manifest`] (with [`values`]): `effect.toml` `[uniforms]` / `[textures]` against the
-//!   declarations.
+//! - [`effect_uniforms`] (with [`values`]): `effect.toml` `[uniforms]` / `[textures]` against
+//!   the declarations, which [`declared`] gathers.
 //!
 //! Names are compared and displayed as the user wrote them ([`StageSyntax::original_name`]):
 //! each stage renames newer keywords on its own, so internal names may differ per stage.
@@ -54,8 +54,9 @@
 
 pub mod attributes;
 pub mod blocks;
+pub mod declared;
+pub mod effect_uniforms;
 pub mod interface;
-pub mod manifest;
 pub mod names;
 pub mod passes;
 pub mod uniforms;
@@ -187,7 +188,7 @@ fn es_fragment_output_locations(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
 /// declared uniform and fits its type, every read uniform has a default, every sampler a
 /// texture.
 pub fn check_manifest(effect: &crate::manifest::Effect, stages: &[StageSyntax], files: &Files) -> Vec<Diagnostic> {
-    let mut out = manifest::check(effect, stages, files);
+    let mut out = effect_uniforms::check(effect, stages, files);
     out.extend(attributes::check(effect, stages));
     out
 }
@@ -200,7 +201,7 @@ pub fn check_pass_manifest(
     files: &Files,
     bound: &std::collections::HashSet<String>,
 ) -> Vec<Diagnostic> {
-    let mut out = manifest::check_with_bound(effect, stages, files, bound);
+    let mut out = effect_uniforms::check_with_bound(effect, stages, files, bound);
     out.extend(attributes::check(effect, stages));
     out
 }

@@ -228,7 +228,7 @@ fn reads(effect: &Effect, i: usize, out: &mut Vec<Diagnostic>) {
 
 /// `samples` must name sampler uniforms of the pass, of a type that reads the target's format.
 fn samplers(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut Vec<Diagnostic>) {
-    let declared = crate::link::manifest::declared(stages);
+    let declared = crate::link::declared::declared(stages);
     for s in &pass.samples {
         let Some(ty) = declared.sampler(&s.sampler) else {
             let names: Vec<&str> = declared.samplers.iter().map(|(n, _)| n.as_str()).collect();

@@ -503,6 +503,33 @@ fn mesh_rules() {
 }
 
 #[test]
+fn mesh_attributes_accept_every_attribute_the_renderer_feeds() {
+    let dir = minimal_dir();
+    // `bitangent` was documented and rendered but rejected with E0006.
+    let text = minimal("[mesh]\nbuiltin = \"cube\"\n[mesh.attributes]\naBitangent = \"bitangent\"\n");
+    let mesh = run(&text, &dir).unwrap().mesh.unwrap();
+    assert_eq!(mesh.attributes, [("aBitangent".to_owned(), "bitangent".to_owned())]);
+    assert_eq!(MeshAttribute::from_name("bitangent"), Some(MeshAttribute::Bitangent));
+
+    // Every name the renderer's mesh can feed parses, and names round-trip through the enum.
+    assert_eq!(MESH_ATTRIBUTES, crate::render::mesh::ATTRIBUTES);
+    for attr in MeshAttribute::ALL {
+        assert_eq!(MeshAttribute::from_name(attr.name()), Some(attr));
+        let text = minimal(&format!("[mesh]\nbuiltin = \"cube\"\n[mesh.attributes]\nv = \"{}\"\n", attr.name()));
+        assert_eq!(run(&text, &dir).unwrap().mesh.unwrap().attributes[0].1, attr.name());
+    }
+
+    // An unknown name is still E0006, and the valid names listed come from the enum.
+    let text = minimal("[mesh]\nbuiltin = \"cube\"\n[mesh.attributes]\nv = \"binormal\"\n");
+    let diags = errors(&text, &dir);
+    let d = one(&diags, E_VALUE);
+    assert_eq!(span_text(&text, d), "\"binormal\"");
+    let listed: Vec<String> = MESH_ATTRIBUTES.iter().map(|n| format!("`{n}`")).collect();
+    assert_eq!(d.notes, [format!("expected one of: {}", listed.join(", "))]);
+    assert_eq!(MeshAttribute::from_name("binormal"), None);
+}
+
+#[test]
 fn stage_rules() {
     let dir = fixture_dir("st", &["a.vert", "a.frag", "a.comp", "b.geom"]);
     let text = "[stages]\nfragment = \"a.frag\"\ngeometry = \"b.geom\"\nvertex = \"a.vert\"\n";

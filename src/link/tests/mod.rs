@@ -1,7 +1,7 @@
 //! Tests of the link checks, on real GLSL through [`crate::front::syntax::analyse`].
 
+mod effect_uniforms;
 mod interface;
-mod manifest;
 mod uniforms;
 
 use std::ops::Range;

@@ -136,27 +136,7 @@ impl Ctx<'_> {
     }
 
     fn pass(&mut self, v: &Val<'_>, t: &DeTable<'_>, index: usize) -> Option<PassDecl> {
-        let mut pass = PassDecl {
-            name: format!("pass{}", index + 1),
-            name_span: v.span(),
-            span: v.span(),
-            stages: Vec::new(),
-            reuse: None,
-            draw: PassDraw::Mesh,
-            mesh: None,
-            instances: None,
-            model: None,
-            uniforms: Vec::new(),
-            targets: Vec::new(),
-            targets_span: None,
-            depth: None,
-            samples: Vec::new(),
-            blend: None,
-            cull: None,
-            depth_write: None,
-            depth_compare: None,
-            clear: PassClear::Default,
-        };
+        let mut pass = new_pass(v, index);
         let mut ok = true;
         let mut stages_key = None;
         let mut uniforms_key = None;
@@ -249,6 +229,13 @@ impl Ctx<'_> {
                 }
             }
         }
+        let ok = self.check_pass(&pass, stages_key, uniforms_key, ok);
+        ok.then_some(pass)
+    }
+
+    /// What a pass's keys say together: exactly one of `effect` and `stages`, no uniforms
+    /// on a reused effect, and some target written. Returns `ok`, false once an error is reported.
+    fn check_pass(&mut self, pass: &PassDecl, stages_key: Option<Range<usize>>, uniforms_key: Option<Range<usize>>, mut ok: bool) -> bool {
         let name = pass.name.clone();
         match (&pass.reuse, stages_key) {
             (Some((_, span)), Some(stages)) => {
@@ -276,7 +263,7 @@ impl Ctx<'_> {
             d.help = Some("add `targets = [\"name\"]` with names from [targets]".into());
             ok = false;
         }
-        ok.then_some(pass)
+        ok
     }
 
     /// `effect = "../sun"` or `"../sun/effect.toml"`: the manifest must exist.
@@ -375,5 +362,30 @@ impl Ctx<'_> {
             }
             _ => {}
         }
+    }
+}
+
+/// Pass number `index` (from 0) with nothing set yet: named `pass<index + 1>`, drawing the mesh.
+fn new_pass(v: &Val<'_>, index: usize) -> PassDecl {
+    PassDecl {
+        name: format!("pass{}", index + 1),
+        name_span: v.span(),
+        span: v.span(),
+        stages: Vec::new(),
+        reuse: None,
+        draw: PassDraw::Mesh,
+        mesh: None,
+        instances: None,
+        model: None,
+        uniforms: Vec::new(),
+        targets: Vec::new(),
+        targets_span: None,
+        depth: None,
+        samples: Vec::new(),
+        blend: None,
+        cull: None,
+        depth_write: None,
+        depth_compare: None,
+        clear: PassClear::Default,
     }
 }

@@ -5,13 +5,14 @@
 //! `material.color`) — and its value must fit the declared type ([`super::values`]). A
 //! `semantic` must provide the declared type and `range` needs a scalar number. In the
 //! other direction every uniform a stage reads should get a default (samplers a
-//! `[textures]` entry), and uniforms nothing reads are reported.
+//! `[textures]` entry), and uniforms nothing reads are reported. What the stages declare
+//! is gathered in [`super::declared`].
 
 use std::collections::HashSet;
-use std::ops::Range;
 
+use super::declared::{parse_path, texture_path, Decl, Decls, Step};
 use super::values::Shape;
-use super::{is_opaque, is_read, is_sampler_like, list, member_read, stage_title, type_text};
+use super::{is_opaque, is_sampler_like, list, stage_title, type_text};
 use super::{
     E_MANIFEST_PATH, E_MANIFEST_RANGE, E_MANIFEST_SEMANTIC, E_MANIFEST_UNKNOWN, E_MANIFEST_VALUE, E_TEXTURE_KIND, E_TEXTURE_UNKNOWN,
     W_DEFAULT_UNREAD, W_NO_DEFAULT, W_NO_TEXTURE, W_UNREAD_UNIFORM,
@@ -19,210 +20,6 @@ use super::{
 use crate::diag::{Diagnostic, FileId, Files};
 use crate::front::syntax::{GlslType, StageSyntax, Storage};
 use crate::manifest::{did_you_mean, Effect, Semantic, TextureKind, UniformDefault};
-
-/// One uniform the manifest can name: a loose uniform or a member of an anonymous block.
-struct Decl<'a> {
-    /// The user's name.
-    name: String,
-    /// Stage of the first declaration, where types are resolved.
-    stage: &'a StageSyntax,
-    ty: &'a GlslType,
-    /// Every declaration (file, name span, stage), first one first.
-    sites: Vec<(FileId, Range<usize>, &'a StageSyntax)>,
-    /// Some stage reads it.
-    read: bool,
-    /// A member of an anonymous uniform block.
-    in_block: bool,
-}
-
-impl Decl<'_> {
-    fn file(&self) -> FileId {
-        self.sites[0].0
-    }
-    fn span(&self) -> Range<usize> {
-        self.sites[0].1.clone()
-    }
-    fn type_text(&self) -> String {
-        type_text(self.stage, self.ty)
-    }
-    fn shape(&self, ty: &GlslType) -> Shape {
-        Shape::of(ty, &|b| self.stage.struct_def(b).is_some())
-    }
-}
-
-/// A uniform block the manifest cannot address member by member.
-struct NamedBlock<'a> {
-    stage: &'a StageSyntax,
-    index: usize,
-}
-
-struct Decls<'a> {
-    list: Vec<Decl<'a>>,
-    named_blocks: Vec<NamedBlock<'a>>,
-    /// Blocks (named or not) no stage reads: stage, global index.
-    unread_blocks: Vec<(&'a StageSyntax, usize)>,
-}
-
-impl<'a> Decls<'a> {
-    fn collect(stages: &'a [StageSyntax]) -> Self {
-        let mut d = Decls { list: Vec::new(), named_blocks: Vec::new(), unread_blocks: Vec::new() };
-        let mut read_blocks: HashSet<String> = HashSet::new();
-        let mut block_decls: Vec<(&StageSyntax, usize, String)> = Vec::new();
-        for s in stages {
-            for (i, g) in s.globals.iter().enumerate() {
-                if g.storage != Storage::Uniform || s.original_name(&g.name).starts_with("gl_") {
-                    continue;
-                }
-                match &g.block {
-                    None => d.add(s, s.original_name(&g.name), &g.ty, g.name_span.clone(), is_read(s, i), false),
-                    Some(b) => {
-                        let bn = s.original_name(&b.block_name).to_string();
-                        if is_read(s, i) {
-                            read_blocks.insert(bn.clone());
-                        }
-                        block_decls.push((s, i, bn));
-                        if b.instance.is_some() {
-                            d.named_blocks.push(NamedBlock { stage: s, index: i });
-                            continue;
-                        }
-                        for m in &b.members {
-                            let read = member_read(s, i, &m.name);
-                            d.add(s, s.original_name(&m.name), &m.ty, m.span.clone(), read, true);
-                        }
-                    }
-                }
-            }
-        }
-        let mut seen = HashSet::new();
-        for (s, i, bn) in block_decls {
-            if !read_blocks.contains(&bn) && seen.insert(bn) {
-                d.unread_blocks.push((s, i));
-            }
-        }
-        d
-    }
-
-    fn add(&mut self, s: &'a StageSyntax, name: &str, ty: &'a GlslType, span: Range<usize>, read: bool, in_block: bool) {
-        if let Some(d) = self.list.iter_mut().find(|d| d.name == name) {
-            d.read |= read;
-            d.sites.push((s.file, span, s));
-            return;
-        }
-        self.list.push(Decl { name: name.to_string(), stage: s, ty, sites: vec![(s.file, span, s)], read, in_block });
-    }
-
-    fn get(&self, name: &str) -> Option<&Decl<'a>> {
-        self.list.iter().find(|d| d.name == name)
-    }
-
-    /// Every sampler the manifest can bind: its path (`tex`, `material.diffuse`), the
-    /// sampler type and the declaration it lives in.
-    fn samplers(&self) -> Vec<(String, GlslType, &Decl<'a>)> {
-        fn walk<'d, 'a>(decl: &'d Decl<'a>, path: String, ty: &GlslType, depth: usize, out: &mut Vec<(String, GlslType, &'d Decl<'a>)>) {
-            if is_sampler_like(ty) {
-                out.push((path, ty.clone(), decl));
-            } else if let Some(def) = decl.stage.struct_def(&ty.base) {
-                if depth < 4 {
-                    for m in &def.members {
-                        let p = format!("{path}.{}", decl.stage.original_name(&m.name));
-                        walk(decl, p, &m.ty, depth + 1, out);
-                    }
-                }
-            }
-        }
-        let mut out = Vec::new();
-        for d in &self.list {
-            walk(d, d.name.clone(), d.ty, 0, &mut out);
-        }
-        out
-    }
-}
-
-/// One step of a manifest uniform path.
-#[derive(Debug, Clone, PartialEq, Eq)]
-enum Step {
-    Index(u64),
-    Field(String),
-}
-
-/// `lights[1].color` → (`lights`, [Index(1), Field(color)]); `None` if it is not a path.
-fn parse_path(s: &str) -> Option<(String, Vec<Step>)> {
-    let ident = |s: &str| -> usize {
-        s.char_indices().take_while(|&(i, c)| c == '_' || c.is_ascii_alphabetic() || (i > 0 && c.is_ascii_digit())).count()
-    };
-    let n = ident(s);
-    if n == 0 {
-        return None;
-    }
-    let base = s[..n].to_string();
-    let mut rest = &s[n..];
-    let mut steps = Vec::new();
-    while !rest.is_empty() {
-        if let Some(r) = rest.strip_prefix('[') {
-            let close = r.find(']')?;
-            steps.push(Step::Index(r[..close].trim().parse().ok()?));
-            rest = &r[close + 1..];
-        } else if let Some(r) = rest.strip_prefix('.') {
-            let n = ident(r);
-            if n == 0 {
-                return None;
-            }
-            steps.push(Step::Field(r[..n].to_string()));
-            rest = &r[n..];
-        } else {
-            return None;
-        }
-    }
-    Some((base, steps))
-}
-
-/// A texture name without array indices (`maps[2]` → `maps`).
-fn texture_path(name: &str) -> String {
-    match parse_path(name) {
-        Some((base, steps)) => {
-            let mut p = base;
-            for s in steps {
-                if let Step::Field(f) = s {
-                    p.push('.');
-                    p.push_str(&f);
-                }
-            }
-            p
-        }
-        None => name.to_string(),
-    }
-}
-
-/// What a set of stages declares that a manifest can name.
-#[derive(Debug, Default)]
-pub struct Declared {
-    /// Uniform names (loose uniforms and members of anonymous blocks).
-    pub uniforms: HashSet<String>,
-    /// Sampler paths (`tex`, `material.diffuse`) with their types.
-    pub samplers: Vec<(String, GlslType)>,
-}
-
-impl Declared {
-    /// Whether a `[uniforms]` entry (`lights[0].color`) names a uniform of these stages.
-    pub fn has_uniform(&self, entry: &str) -> bool {
-        let base = parse_path(entry).map_or(entry.to_string(), |(b, _)| b);
-        self.uniforms.contains(&base)
-    }
-    /// The type of the sampler a `[textures]` entry binds, when these stages declare it.
-    pub fn sampler(&self, entry: &str) -> Option<&GlslType> {
-        let path = texture_path(entry);
-        self.samplers.iter().find(|(p, _)| *p == path).map(|(_, t)| t)
-    }
-}
-
-/// The uniforms and samplers `stages` declare.
-pub fn declared(stages: &[StageSyntax]) -> Declared {
-    let decls = Decls::collect(stages);
-    Declared {
-        uniforms: decls.list.iter().map(|d| d.name.clone()).collect(),
-        samplers: decls.samplers().into_iter().map(|(p, t, _)| (p, t)).collect(),
-    }
-}
 
 pub fn check(effect: &Effect, stages: &[StageSyntax], files: &Files) -> Vec<Diagnostic> {
     check_with_bound(effect, stages, files, &HashSet::new())
@@ -248,34 +45,46 @@ pub fn check_with_bound(effect: &Effect, stages: &[StageSyntax], files: &Files, 
 
 /// Checks one `[uniforms]` entry.
 fn default(effect: &Effect, u: &UniformDefault, decls: &Decls, stages: &[StageSyntax], files: &Files, out: &mut Vec<Diagnostic>) {
-    let mf = effect.file;
     let (base, steps) = parse_path(&u.name).unwrap_or_else(|| (u.name.clone(), Vec::new()));
     let Some(decl) = decls.get(&base) else {
         out.push(unknown(effect, u, &base, decls, stages, files));
         return;
     };
-    // Follow the path to the type being set.
+    let (ty, shown) = match follow_path(effect.file, u, decl, &steps) {
+        Ok(found) => found,
+        Err(d) => {
+            out.push(d);
+            return;
+        }
+    };
+    let shape = decl.shape(&ty);
+    let tt = type_text(decl.stage, &ty);
+    let decl_label = format!("`{}` is declared as `{}` here", decl.name, decl.type_text());
+    let entry = Entry { mf: effect.file, u, decl, ty, shown, shape, tt, decl_label };
+    entry.check_value(out);
+    entry.check_semantic(out);
+    entry.check_range(out);
+    entry.check_read(out);
+}
+
+/// Follows an entry's path (`[1]`, `.color`) from its declaration to the type being set:
+/// that type and the path as shown (`lights[1].color`), or why the path does not fit.
+fn follow_path(mf: FileId, u: &UniformDefault, decl: &Decl, steps: &[Step]) -> Result<(GlslType, String), Diagnostic> {
     let mut ty = decl.ty.clone();
     let mut shown = decl.name.clone();
-    for step in &steps {
+    for step in steps {
         match step {
             Step::Index(i) => {
                 let Some(first) = ty.dims.first().copied() else {
-                    out.push(
-                        Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` is not an array"))
-                            .at(mf, u.name_span.clone(), format!("indexes `{shown}`"))
-                            .with_label(decl.file(), decl.span(), format!("`{shown}` is a `{}`", type_text(decl.stage, &ty))),
-                    );
-                    return;
+                    return Err(Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` is not an array"))
+                        .at(mf, u.name_span.clone(), format!("indexes `{shown}`"))
+                        .with_label(decl.file(), decl.span(), format!("`{shown}` is a `{}`", type_text(decl.stage, &ty))));
                 };
                 if let Some(k) = first {
                     if *i >= u64::from(k) {
-                        out.push(
-                            Diagnostic::error(E_MANIFEST_PATH, format!("index {i} is out of bounds for `{shown}`"))
-                                .at(mf, u.name_span.clone(), format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)))
-                                .with_label(decl.file(), decl.span(), format!("declared as `{}`", type_text(decl.stage, &ty))),
-                        );
-                        return;
+                        return Err(Diagnostic::error(E_MANIFEST_PATH, format!("index {i} is out of bounds for `{shown}`"))
+                            .at(mf, u.name_span.clone(), format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)))
+                            .with_label(decl.file(), decl.span(), format!("declared as `{}`", type_text(decl.stage, &ty))));
                     }
                 }
                 ty = ty.element();
@@ -284,12 +93,9 @@ fn default(effect: &Effect, u: &UniformDefault, decls: &Decls, stages: &[StageSy
             Step::Field(f) => {
                 let def = (!ty.is_array()).then(|| decl.stage.struct_def(&ty.base)).flatten();
                 let Some(def) = def else {
-                    out.push(
-                        Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` has no field `{f}`"))
-                            .at(mf, u.name_span.clone(), format!("`{shown}` is a `{}`, not a struct", type_text(decl.stage, &ty)))
-                            .with_label(decl.file(), decl.span(), "declared here"),
-                    );
-                    return;
+                    return Err(Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` has no field `{f}`"))
+                        .at(mf, u.name_span.clone(), format!("`{shown}` is a `{}`, not a struct", type_text(decl.stage, &ty)))
+                        .with_label(decl.file(), decl.span(), "declared here"));
                 };
                 let Some(m) = def.members.iter().find(|m| decl.stage.original_name(&m.name) == f) else {
                     let names: Vec<&str> = def.members.iter().map(|m| decl.stage.original_name(&m.name)).collect();
@@ -301,94 +107,136 @@ fn default(effect: &Effect, u: &UniformDefault, decls: &Decls, stages: &[StageSy
                         Some(c) => d.with_help(format!("did you mean `{shown}.{c}`?")),
                         None => d.with_note(format!("its members are {}", list(&names.iter().map(|n| n.to_string()).collect::<Vec<_>>()))),
                     };
-                    out.push(d);
-                    return;
+                    return Err(d);
                 };
                 ty = m.ty.clone();
                 shown = format!("{shown}.{f}");
             }
         }
     }
-    let shape = decl.shape(&ty);
-    let tt = type_text(decl.stage, &ty);
-    let decl_label = format!("`{}` is declared as `{}` here", decl.name, decl.type_text());
-    match (&u.value, &shape) {
-        _ if is_sampler_like(&ty) => out.push(
-            Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
-                .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
-                .with_label(decl.file(), decl.span(), decl_label.clone())
-                .with_help(format!("bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`")),
-        ),
-        (_, Shape::Struct(sname)) => {
-            let sname = decl.stage.original_name(sname).to_string();
-            let members: Vec<String> = decl
-                .stage
-                .struct_def(&ty.base)
-                .map(|def| def.members.iter().map(|m| format!("{shown}.{}", decl.stage.original_name(&m.name))).collect())
-                .unwrap_or_default();
-            out.push(
-                Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a struct (`{sname}`) and cannot take one value"))
-                    .at(mf, u.value_span.clone(), "a value for a whole struct")
+    Ok((ty, shown))
+}
+
+/// One `[uniforms]` entry and the declared uniform (or part of one) it sets.
+struct Entry<'a> {
+    /// The manifest.
+    mf: FileId,
+    u: &'a UniformDefault,
+    decl: &'a Decl<'a>,
+    /// The type at the end of the entry's path, its shape and its GLSL text.
+    ty: GlslType,
+    /// The entry's path as shown in messages.
+    shown: String,
+    shape: Shape,
+    tt: String,
+    /// "`x` is declared as `T` here", for the label at the declaration.
+    decl_label: String,
+}
+
+impl Entry<'_> {
+    /// The value fits the type: no value for a sampler or a whole struct.
+    fn check_value(&self, out: &mut Vec<Diagnostic>) {
+        let Entry { u, decl, ty, shown, shape, tt, decl_label, .. } = self;
+        let mf = self.mf;
+        match (&u.value, &shape) {
+            _ if is_sampler_like(&ty) => out.push(
+                Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
+                    .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
                     .with_label(decl.file(), decl.span(), decl_label.clone())
-                    .with_help(format!("set the members one by one: {}", list(&members))),
-            );
-        }
-        (Some(v), _) => {
-            if let Err(why) = shape.fit(v) {
+                    .with_help(format!("bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`")),
+            ),
+            (_, Shape::Struct(sname)) => {
+                let sname = decl.stage.original_name(sname).to_string();
+                let members: Vec<String> = decl
+                    .stage
+                    .struct_def(&ty.base)
+                    .map(|def| def.members.iter().map(|m| format!("{shown}.{}", decl.stage.original_name(&m.name))).collect())
+                    .unwrap_or_default();
                 out.push(
-                    Diagnostic::error(E_MANIFEST_VALUE, format!("the default for `{shown}` does not fit its type `{tt}`"))
-                        .at(mf, u.value_span.clone(), why)
+                    Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a struct (`{sname}`) and cannot take one value"))
+                        .at(mf, u.value_span.clone(), "a value for a whole struct")
                         .with_label(decl.file(), decl.span(), decl_label.clone())
-                        .with_note(format!("a `{tt}` takes {}", shape.expected())),
+                        .with_help(format!("set the members one by one: {}", list(&members))),
+                );
+            }
+            (Some(v), _) => {
+                if let Err(why) = shape.fit(v) {
+                    out.push(
+                        Diagnostic::error(E_MANIFEST_VALUE, format!("the default for `{shown}` does not fit its type `{tt}`"))
+                            .at(mf, u.value_span.clone(), why)
+                            .with_label(decl.file(), decl.span(), decl_label.clone())
+                            .with_note(format!("a `{tt}` takes {}", shape.expected())),
+                    );
+                }
+            }
+            (None, _) => {}
+        }
+    }
+
+    /// The semantic provides the declared type.
+    fn check_semantic(&self, out: &mut Vec<Diagnostic>) {
+        let Entry { u, decl, ty, shown, tt, decl_label, .. } = self;
+        let mf = self.mf;
+        if let Some(sem) = u.semantic {
+            let fits = !ty.is_array() && sem.glsl_types().contains(&tt.as_str());
+            if !fits {
+                let span = u.semantic_span.clone().unwrap_or_else(|| u.value_span.clone());
+                let provides = sem.glsl_types().join("` or `");
+                let others: Vec<String> = Semantic::ALL
+                    .iter()
+                    .filter(|s| !ty.is_array() && s.glsl_types().contains(&tt.as_str()))
+                    .map(|s| s.name().to_string())
+                    .collect();
+                let help = if others.is_empty() {
+                    format!("declare `{shown}` as `{provides}`; no semantic provides a `{tt}`")
+                } else {
+                    format!("declare `{shown}` as `{provides}`, or use a semantic that provides a `{tt}`: {}", list(&others))
+                };
+                out.push(
+                    Diagnostic::error(
+                        E_MANIFEST_SEMANTIC,
+                        format!("semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`", sem.name()),
+                    )
+                    .at(mf, span, format!("provides `{provides}`"))
+                    .with_label(decl.file(), decl.span(), decl_label.clone())
+                    .with_help(help),
                 );
             }
         }
-        (None, _) => {}
     }
-    if let Some(sem) = u.semantic {
-        let fits = !ty.is_array() && sem.glsl_types().contains(&tt.as_str());
-        if !fits {
-            let span = u.semantic_span.clone().unwrap_or_else(|| u.value_span.clone());
-            let provides = sem.glsl_types().join("` or `");
-            let others: Vec<String> = Semantic::ALL
-                .iter()
-                .filter(|s| !ty.is_array() && s.glsl_types().contains(&tt.as_str()))
-                .map(|s| s.name().to_string())
-                .collect();
-            let help = if others.is_empty() {
-                format!("declare `{shown}` as `{provides}`; no semantic provides a `{tt}`")
-            } else {
-                format!("declare `{shown}` as `{provides}`, or use a semantic that provides a `{tt}`: {}", list(&others))
-            };
-            out.push(
-                Diagnostic::error(
-                    E_MANIFEST_SEMANTIC,
-                    format!("semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`", sem.name()),
-                )
-                .at(mf, span, format!("provides `{provides}`"))
-                .with_label(decl.file(), decl.span(), decl_label.clone())
-                .with_help(help),
-            );
-        }
-    }
-    if let Some(span) = &u.range_span {
-        if !shape.takes_range() {
-            out.push(
-                Diagnostic::error(E_MANIFEST_RANGE, format!("`range` needs a number or a vector of numbers, but `{shown}` is a `{tt}`"))
+
+    /// `range` only on a number or a numeric vector.
+    fn check_range(&self, out: &mut Vec<Diagnostic>) {
+        let Entry { u, decl, shown, shape, tt, decl_label, .. } = self;
+        let mf = self.mf;
+        if let Some(span) = &u.range_span {
+            if !shape.takes_range() {
+                out.push(
+                    Diagnostic::error(
+                        E_MANIFEST_RANGE,
+                        format!("`range` needs a number or a vector of numbers, but `{shown}` is a `{tt}`"),
+                    )
                     .at(mf, span.clone(), "a range on a uniform that is not a number or vector")
                     .with_label(decl.file(), decl.span(), decl_label.clone())
                     .with_note("`range` bounds a number (`float`, `int`, `uint`, `double`) or each component of a numeric vector")
                     .with_help("remove `range` from this entry"),
-            );
+                );
+            }
         }
     }
-    if !decl.read {
-        out.push(
-            Diagnostic::warning(W_DEFAULT_UNREAD, format!("`{}` has a default, but no stage reads it", decl.name))
-                .at(mf, u.name_span.clone(), "default for an unread uniform")
-                .with_label(decl.file(), decl.span(), "declared here, never read")
-                .with_help("remove the entry, or use the uniform in a shader"),
-        );
+
+    /// A default for a uniform no stage reads.
+    fn check_read(&self, out: &mut Vec<Diagnostic>) {
+        let Entry { u, decl, .. } = self;
+        let mf = self.mf;
+        if !decl.read {
+            out.push(
+                Diagnostic::warning(W_DEFAULT_UNREAD, format!("`{}` has a default, but no stage reads it", decl.name))
+                    .at(mf, u.name_span.clone(), "default for an unread uniform")
+                    .with_label(decl.file(), decl.span(), "declared here, never read")
+                    .with_help("remove the entry, or use the uniform in a shader"),
+            );
+        }
     }
 }
 

@@ -1,0 +1,64 @@
+//! `[stages]`: one shader file per pipeline stage, checked to exist, with a warning when a
+//! file's extension names another stage and an error when compute is mixed with graphics.
+
+use std::ops::Range;
+
+use toml::de::DeTable;
+
+use super::{entries, key, Ctx, Key, Val};
+use crate::manifest::{StageRef, E_CONFLICT, E_MISSING, E_STAGE_NOT_FOUND, W_STAGE_EXTENSION};
+use crate::stage::StageKind;
+
+impl Ctx<'_> {
+    /// The `[stages]` key and its value: a table that lists at least one stage.
+    pub(super) fn stages_table(&mut self, k: &Key<'_>, v: &Val<'_>) -> Vec<StageRef> {
+        let Some(t) = self.table(v, "`stages`") else {
+            return Vec::new();
+        };
+        if t.is_empty() {
+            let d = self.error(E_MISSING, k.span(), "`[stages]` lists no stage".into(), "no stage here");
+            d.help = Some("add e.g. `vertex = \"effect.vert\"` and `fragment = \"effect.frag\"`".into());
+        }
+        self.stages(t)
+    }
+
+    pub(super) fn stages(&mut self, t: &DeTable<'_>) -> Vec<StageRef> {
+        let names: Vec<&str> = StageKind::ALL.iter().map(|s| s.name()).collect();
+        let mut stages = Vec::new();
+        for (k, v) in entries(t) {
+            let Some(kind) = StageKind::from_name(key(k)) else {
+                self.unknown_key(key(k), k.span(), "in `[stages]`", &names);
+                continue;
+            };
+            let what = format!("`stages.{kind}`");
+            let Some(path) = self.file_path(v, &what, E_STAGE_NOT_FOUND, "stage file") else {
+                continue;
+            };
+            let implied = path.extension().and_then(|e| e.to_str()).and_then(StageKind::from_extension);
+            if let Some(other) = implied.filter(|&o| o != kind) {
+                let d = self.warning(
+                    W_STAGE_EXTENSION,
+                    v.span(),
+                    format!("the {kind} stage is a file whose extension means {other}"),
+                    format!("looks like a {other} shader"),
+                );
+                d.help = Some(format!("list it under `{other}` if that is what it is"));
+            }
+            stages.push(StageRef { kind, path, span: v.span(), key_span: k.span() });
+        }
+        stages.sort_by_key(|s| s.kind);
+        if let Some(compute) = stages.iter().find(|s| s.kind == StageKind::Compute) {
+            let graphics: Vec<Range<usize>> = stages.iter().filter(|s| s.kind != StageKind::Compute).map(|s| s.key_span.clone()).collect();
+            if !graphics.is_empty() {
+                let span = compute.key_span.clone();
+                let file = self.file;
+                let d = self.error(E_CONFLICT, span, "a compute stage cannot be combined with graphics stages".into(), "compute stage");
+                for g in graphics {
+                    d.labels.push(crate::diag::Label { file, span: g, message: "graphics stage".into() });
+                }
+                d.help = Some("put the compute shader in an effect of its own".into());
+            }
+        }
+        stages
+    }
+}
