@@ -14,6 +14,7 @@
 
 pub mod eval;
 pub mod facts;
+mod geometric;
 pub mod interval;
 pub mod ops;
 pub mod value;

@@ -3,11 +3,14 @@
 //! Each operation returns a value containing every possible result, and the hazard its
 //! operands make possible (if they are known). Vector facts follow the algebra: lengths
 //! through the triangle inequality, Cauchy–Schwarz for `dot`, matrix gains for products.
+//! [`math`] takes the builtins by family; the geometric ones (`dot`, `normalize`, …) live in
+//! `geometric`.
 
 use naga::{BinaryOperator as B, MathFunction as M, ScalarKind};
 
+use super::geometric::geometric;
 use super::interval::Iv;
-use super::value::{length_of, Num};
+use super::value::Num;
 use super::walk::Step;
 
 /// `sin`/`cos` arguments beyond this lose precision: one f32 ulp of 10⁴ is 10⁻³ rad, and
@@ -37,7 +40,7 @@ pub struct Out {
     pub hazard: Option<Kind>,
 }
 
-fn ok(value: Num) -> Out {
+pub(super) fn ok(value: Num) -> Out {
     Out { value, hazard: None }
 }
 
@@ -370,11 +373,28 @@ impl Iv {
 }
 
 /// A GLSL builtin. `same`: the two arguments are the same value; `nonzero`: a guard proved
-/// the argument of `normalize` non-zero.
+/// the argument of `normalize` non-zero. Builtins the analysis does not model give unknown values.
 pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonzero: bool) -> Out {
-    use std::f64::consts::{FRAC_PI_2, PI};
-    let b0 = || b.cloned().unwrap_or_else(|| Num::unknown(1, 1, ScalarKind::Float));
-    let hazard_if = |cond: bool, kind: Kind| (cond && a.known).then_some(kind);
+    common(fun, a, b, d)
+        .or_else(|| trigonometric(fun, a))
+        .or_else(|| exponential(fun, a, b))
+        .or_else(|| geometric(fun, a, b, d, same, nonzero))
+        .or_else(|| matrix(fun, a, b))
+        .unwrap_or_else(|| ok(Num { known: false, ..Num::unknown(a.c.len(), a.cols, a.kind) }))
+}
+
+/// An optional argument as a value: when it is absent, a float nothing is known about.
+pub(super) fn or_unknown(x: Option<&Num>) -> Num {
+    x.cloned().unwrap_or_else(|| Num::unknown(1, 1, ScalarKind::Float))
+}
+
+/// `kind` when `cond` holds and the argument `a` is known.
+pub(super) fn hazard_if(a: &Num, cond: bool, kind: Kind) -> Option<Kind> {
+    (cond && a.known).then_some(kind)
+}
+
+/// Common functions (abs, min, max, clamp, rounding, mix, step…); `None` for other builtins.
+fn common(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>) -> Option<Out> {
     let value = match fun {
         M::Abs => {
             let mut r = map(a, Iv::abs);
@@ -382,24 +402,55 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
             r.gap = a.gap;
             r
         }
-        M::Min => zip(a, &b0(), Iv::min),
-        M::Max => zip(a, &b0(), Iv::max),
+        M::Min => zip(a, &or_unknown(b), Iv::min),
+        M::Max => zip(a, &or_unknown(b), Iv::max),
         M::Clamp => {
-            let lo = b0();
-            let hi = d.cloned().unwrap_or_else(|| Num::unknown(1, 1, ScalarKind::Float));
+            let lo = or_unknown(b);
+            let hi = or_unknown(d);
             let r = zip(a, &lo, Iv::max);
             zip(&r, &hi, Iv::min)
         }
         M::Saturate => map(a, |x| x.clamp(Iv::point(0.0), Iv::point(1.0))),
+        M::Ceil => map(a, Iv::ceil),
+        M::Floor => map(a, Iv::floor),
+        M::Round => map(a, |x| Iv::new(x.lo.round(), x.hi.round())),
+        M::Trunc => map(a, Iv::floor_toward_zero),
+        M::Fract => map(a, Iv::fract),
+        M::Sign => map(a, Iv::sign),
+        M::Fma => {
+            let m = zip(a, &or_unknown(b), |x, y| x.mul(y));
+            zip(&m, &or_unknown(d), |x, y| x.add(y))
+        }
+        M::Mix => {
+            let y = or_unknown(b);
+            let t = or_unknown(d);
+            let n = a.c.len();
+            let get = |v: &Num, i: usize| v.c[i.min(v.c.len() - 1)];
+            let comps = (0..n).map(|i| Iv::mix(get(a, i), get(&y, i), get(&t, i))).collect();
+            let mut r = Num::from_comps(comps, 1, a.kind, a.known && y.known && t.known);
+            r.per_draw = a.per_draw && y.per_draw && t.per_draw;
+            r
+        }
+        M::Step => zip(&or_unknown(b), a, |_, _| Iv::UNIT),
+        M::SmoothStep => map(d.unwrap_or(a), |_| Iv::UNIT),
+        _ => return None,
+    };
+    Some(ok(value))
+}
+
+/// Angle and trigonometric functions; `None` for other builtins.
+fn trigonometric(fun: M, a: &Num) -> Option<Out> {
+    use std::f64::consts::{FRAC_PI_2, PI};
+    let value = match fun {
         M::Sin | M::Cos => {
             let big = a.c.iter().any(|x| x.mag() > TRIG_LIMIT);
             let f = if fun == M::Sin { Iv::sin } else { Iv::cos };
-            return Out { value: map(a, f), hazard: hazard_if(big, Kind::Trig) };
+            return Some(Out { value: map(a, f), hazard: hazard_if(a, big, Kind::Trig) });
         }
         M::Tan => {
             let big = a.c.iter().any(|x| x.mag() > TRIG_LIMIT);
             let r = map(a, |x| if x.lo > -FRAC_PI_2 && x.hi < FRAC_PI_2 { x.monotone(f64::tan) } else { Iv::TOP });
-            return Out { value: r, hazard: hazard_if(big, Kind::Trig) };
+            return Some(Out { value: r, hazard: hazard_if(a, big, Kind::Trig) });
         }
         M::Asin | M::Acos => {
             let outside = a.c.iter().any(|x| x.lo < -1.0 || x.hi > 1.0);
@@ -412,7 +463,7 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
                 })
             };
             let kind = if fun == M::Asin { Kind::Asin } else { Kind::Acos };
-            return Out { value: r, hazard: hazard_if(outside, kind) };
+            return Some(Out { value: r, hazard: hazard_if(a, outside, kind) });
         }
         M::Atan => map(a, |x| x.monotone(f64::atan)),
         M::Atan2 => map(a, |_| Iv::new(-PI, PI)),
@@ -421,130 +472,48 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
         }
         M::Radians => map(a, |x| x.mul(Iv::point(PI / 180.0))),
         M::Degrees => map(a, |x| x.mul(Iv::point(180.0 / PI))),
-        M::Ceil => map(a, Iv::ceil),
-        M::Floor => map(a, Iv::floor),
-        M::Round => map(a, |x| Iv::new(x.lo.round(), x.hi.round())),
-        M::Trunc => map(a, Iv::floor_toward_zero),
-        M::Fract => map(a, Iv::fract),
+        _ => return None,
+    };
+    Some(ok(value))
+}
+
+/// Exponential functions (exp, log, pow, sqrt, inversesqrt); `None` for other builtins.
+fn exponential(fun: M, a: &Num, b: Option<&Num>) -> Option<Out> {
+    let value = match fun {
         M::Exp => map(a, |x| x.monotone(f64::exp)),
         M::Exp2 => map(a, |x| x.monotone(f64::exp2)),
         M::Log | M::Log2 => {
             let bad = a.c.iter().any(|x| x.lo <= 0.0) && !(a.c.len() == 1 && a.gap > 0.0 && a.c[0].lo >= 0.0);
             let f = if fun == M::Log { f64::ln } else { f64::log2 };
             let r = map(a, |x| if x.lo > 0.0 { x.monotone(f) } else { Iv::new(f64::NEG_INFINITY, f(x.hi.max(0.0))) });
-            return Out { value: taint(r, bad && a.known), hazard: hazard_if(bad, Kind::Log) };
+            return Some(Out { value: taint(r, bad && a.known), hazard: hazard_if(a, bad, Kind::Log) });
         }
         M::Pow => {
-            let e = b0();
+            let e = or_unknown(b);
             let negative = a.c.iter().any(|x| x.lo < 0.0);
             let zero_to_nonpositive =
                 a.c.iter().zip(e.c.iter().cycle()).any(|(x, y)| x.contains(0.0) && y.lo <= 0.0) && !(a.c.len() == 1 && a.gap > 0.0);
             let r = zip(a, &e, |x, y| x.pow(y));
             let bad = negative || zero_to_nonpositive;
-            return Out { value: r, hazard: (bad && a.known && e.known).then_some(Kind::Pow) };
+            return Some(Out { value: r, hazard: (bad && a.known && e.known).then_some(Kind::Pow) });
         }
         M::Sqrt => {
             let bad = a.c.iter().any(|x| x.lo < 0.0);
-            return Out { value: map(a, Iv::sqrt), hazard: hazard_if(bad, Kind::Sqrt) };
+            return Some(Out { value: map(a, Iv::sqrt), hazard: hazard_if(a, bad, Kind::Sqrt) });
         }
         M::InverseSqrt => {
             let bad = a.c.iter().any(|x| x.lo <= 0.0) && !(a.c.len() == 1 && a.gap > 0.0 && a.c[0].lo >= 0.0);
             let r = map(a, |x| if x.lo > 0.0 { Iv::new(1.0 / x.hi.sqrt(), 1.0 / x.lo.sqrt()).rounded() } else { Iv::NON_NEGATIVE });
-            return Out { value: taint(r, bad && a.known), hazard: hazard_if(bad, Kind::InverseSqrt) };
+            return Some(Out { value: taint(r, bad && a.known), hazard: hazard_if(a, bad, Kind::InverseSqrt) });
         }
-        M::Dot => {
-            let o = b0();
-            let mut r = if same {
-                Iv::new(a.min_len().powi(2), a.len.hi.powi(2)).rounded()
-            } else {
-                let sum = a.c.iter().zip(&o.c).fold(Iv::point(0.0), |acc, (x, y)| acc.add(x.mul(*y)));
-                let cs = a.len.hi * o.len.hi * (1.0 + 1e-6);
-                sum.meet(Iv::new(-cs, cs))
-            };
-            if same {
-                r = r.meet(a.c.iter().fold(Iv::point(0.0), |acc, x| acc.add(x.square())));
-            }
-            let mut n = Num::float(r);
-            n.known = a.known && o.known;
-            n.per_draw = a.per_draw && o.per_draw;
-            n
-        }
-        M::Cross => {
-            let o = b0();
-            let (x, y) = (&a.c, &o.c);
-            let comps = vec![x[1].mul(y[2]).sub(x[2].mul(y[1])), x[2].mul(y[0]).sub(x[0].mul(y[2])), x[0].mul(y[1]).sub(x[1].mul(y[0]))];
-            let mut n = Num::from_comps(comps, 1, a.kind, a.known && o.known);
-            n.len = n.len.meet(Iv::new(0.0, a.len.hi * o.len.hi).rounded());
-            n.per_draw = a.per_draw && o.per_draw;
-            n
-        }
-        M::Length => {
-            let mut n = Num::float(Iv::new(a.min_len(), a.len.hi.min(length_of(&a.c).hi)));
-            n.known = a.known;
-            n.per_draw = a.per_draw;
-            n
-        }
-        M::Distance => {
-            let diff = binary(B::Subtract, a, &b0(), same).value;
-            let mut n = Num::float(Iv::new(diff.min_len(), diff.len.hi));
-            n.known = diff.known;
-            n
-        }
-        M::Normalize => {
-            let min = a.min_len();
-            let zero = min <= 0.0 && !nonzero;
-            let mut n = if min > 0.0 {
-                map(a, |x| x.mul(Iv::new(1.0 / a.len.hi, 1.0 / min)).meet(Iv::SIGNED_UNIT))
-            } else {
-                map(a, |_| Iv::SIGNED_UNIT)
-            };
-            n.len = Iv::new(1.0 - 1e-6, 1.0 + 1e-6);
-            n.len3 = if a.c.len() == 3 { n.len } else { n.len3 };
-            n.cone = a.cone;
-            return Out { value: n, hazard: hazard_if(zero, Kind::Normalize) };
-        }
-        M::FaceForward => {
-            let mut r = a.clone();
-            r.c = a.c.iter().map(|x| Iv::new(-x.mag(), x.mag())).collect();
-            r.per_draw = false;
-            r
-        }
-        M::Reflect => {
-            // I - 2 dot(N, I) N: |R| <= |I| (1 + 2 |N|²).
-            let nv = b0();
-            let bound = a.len.hi * (1.0 + 2.0 * nv.len.hi * nv.len.hi);
-            let mut r = map(a, |_| Iv::new(-bound, bound));
-            r.known = a.known && nv.known;
-            if nv.len.lo >= 1.0 - 1e-3 && nv.len.hi <= 1.0 + 1e-3 {
-                r.len = r.len.meet(Iv::new(a.len.lo * 0.99, a.len.hi * 1.01));
-            }
-            r
-        }
-        M::Refract => {
-            let nv = b0();
-            let eta = d.map_or(Iv::TOP, |e| e.iv());
-            let bound = eta.mag() * a.len.hi + (eta.mag() * nv.len.hi * a.len.hi + (1.0 + eta.mag() * eta.mag()).sqrt()) * nv.len.hi;
-            let mut r = map(a, |_| Iv::new(-bound, bound));
-            r.known = a.known && nv.known;
-            r
-        }
-        M::Sign => map(a, Iv::sign),
-        M::Fma => {
-            let m = zip(a, &b0(), |x, y| x.mul(y));
-            zip(&m, &d.cloned().unwrap_or_else(|| Num::unknown(1, 1, ScalarKind::Float)), |x, y| x.add(y))
-        }
-        M::Mix => {
-            let y = b0();
-            let t = d.cloned().unwrap_or_else(|| Num::unknown(1, 1, ScalarKind::Float));
-            let n = a.c.len();
-            let get = |v: &Num, i: usize| v.c[i.min(v.c.len() - 1)];
-            let comps = (0..n).map(|i| Iv::mix(get(a, i), get(&y, i), get(&t, i))).collect();
-            let mut r = Num::from_comps(comps, 1, a.kind, a.known && y.known && t.known);
-            r.per_draw = a.per_draw && y.per_draw && t.per_draw;
-            r
-        }
-        M::Step => zip(&b0(), a, |_, _| Iv::UNIT),
-        M::SmoothStep => map(d.unwrap_or(a), |_| Iv::UNIT),
+        _ => return None,
+    };
+    Some(ok(value))
+}
+
+/// Matrix functions (transpose, inverse, determinant, outer product); `None` for other builtins.
+fn matrix(fun: M, a: &Num, b: Option<&Num>) -> Option<Out> {
+    let value = match fun {
         M::Transpose => {
             let rows = a.rows();
             let mut comps = Vec::with_capacity(a.c.len());
@@ -582,10 +551,10 @@ pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonze
             r
         }
         M::Determinant => Num { known: a.known, ..Num::unknown(1, 1, a.kind) },
-        M::Outer => Num { known: a.known, ..Num::unknown(a.c.len() * b0().c.len(), b0().c.len(), a.kind) },
-        _ => Num { known: false, ..Num::unknown(a.c.len(), a.cols, a.kind) },
+        M::Outer => Num { known: a.known, ..Num::unknown(a.c.len() * or_unknown(b).c.len(), or_unknown(b).c.len(), a.kind) },
+        _ => return None,
     };
-    ok(value)
+    Some(ok(value))
 }
 
 /// After a hazard whose result is unbounded (log, inversesqrt) the result is no longer
