@@ -105,23 +105,7 @@ impl PassGraph {
     ) -> Result<PassGraph, Vec<Diagnostic>> {
         let GraphOptions { mode, flipped_y, dump, output_size, degenerate } = options;
         let output_name = effect.output.as_ref().map(|o| o.name.clone()).unwrap_or_default();
-        let textures: Vec<wgpu::Texture> = plan
-            .textures
-            .iter()
-            .map(|t| {
-                let names: Vec<&str> = t.targets.iter().map(|(n, _, _)| n.as_str()).collect();
-                gpu.device.create_texture(&wgpu::TextureDescriptor {
-                    label: Some(&names.join("+")),
-                    size: wgpu::Extent3d { width: t.size.0, height: t.size.1, depth_or_array_layers: 1 },
-                    mip_level_count: 1,
-                    sample_count: 1,
-                    dimension: wgpu::TextureDimension::D2,
-                    format: effective_format(t.format, mode),
-                    usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
-                    view_formats: &[],
-                })
-            })
-            .collect();
+        let textures = create_textures(gpu, &plan, mode);
         let view_of = |target: &str| plan.texture_of(target).map(|i| textures[i].create_view(&Default::default()));
         let mut passes = Vec::new();
         let mut warnings = Vec::new();
@@ -196,25 +180,7 @@ impl PassGraph {
                 .in_file(file)
                 .with_note(e.to_string())]);
         }
-        let readback = |target: &str| -> Option<Readback> {
-            let texture = plan.texture_of(target)?;
-            let t = &plan.textures[texture];
-            let format = effective_format(t.format, mode);
-            let padded_row = frames::padded_row_of(t.size.0, format);
-            Some(Readback {
-                target: target.to_owned(),
-                texture,
-                format,
-                size: t.size,
-                padded_row,
-                buffer: gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some(target),
-                    size: u64::from(padded_row) * u64::from(t.size.1),
-                    usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-                    mapped_at_creation: false,
-                }),
-            })
-        };
+        let readback = |target: &str| readback(gpu, &plan, mode, target);
         let Some(output) = readback(&output_name) else {
             return Err(vec![
                 Diagnostic::error(crate::render::scene::E_UNRENDERABLE, "no pass writes the output target").in_file(effect.file)
@@ -241,7 +207,6 @@ impl PassGraph {
         })
     }
 
-    /// How [`Frame::gpu_ms`] is measured.
     /// The scene of every running pass, with its index into `Effect::passes`.
     pub fn scenes(&self) -> impl Iterator<Item = (usize, &Scene)> {
         self.passes.iter().map(|p| (p.index, &p.scene))
@@ -454,4 +419,45 @@ fn decode_rgba(bytes: &[u8], format: wgpu::TextureFormat, (w, h): (u32, u32), pa
         }
     }
     out
+}
+
+/// One texture per physical texture of the plan (targets with disjoint lifetimes share).
+fn create_textures(gpu: &Gpu, plan: &PassPlan, mode: ColorMode) -> Vec<wgpu::Texture> {
+    plan.textures
+        .iter()
+        .map(|t| {
+            let names: Vec<&str> = t.targets.iter().map(|(n, _, _)| n.as_str()).collect();
+            gpu.device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(&names.join("+")),
+                size: wgpu::Extent3d { width: t.size.0, height: t.size.1, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: effective_format(t.format, mode),
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
+                view_formats: &[],
+            })
+        })
+        .collect()
+}
+
+/// A readback buffer for `target`'s texture (`None` when no running pass touches it).
+fn readback(gpu: &Gpu, plan: &PassPlan, mode: ColorMode, target: &str) -> Option<Readback> {
+    let texture = plan.texture_of(target)?;
+    let t = &plan.textures[texture];
+    let format = effective_format(t.format, mode);
+    let padded_row = frames::padded_row_of(t.size.0, format);
+    Some(Readback {
+        target: target.to_owned(),
+        texture,
+        format,
+        size: t.size,
+        padded_row,
+        buffer: gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(target),
+            size: u64::from(padded_row) * u64::from(t.size.1),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        }),
+    })
 }

@@ -38,8 +38,8 @@ pub struct Mesh {
     pub computed: Vec<&'static str>,
 }
 
-/// The names [`Mesh::attribute`] knows.
-pub const ATTRIBUTES: [&str; 6] = ["position", "normal", "uv", "tangent", "bitangent", "color"];
+/// The names [`Mesh::attribute`] knows: the manifest's mesh attributes.
+pub use crate::manifest::MESH_ATTRIBUTES as ATTRIBUTES;
 
 /// The color of vertices whose source gives none.
 const WHITE: [f32; 4] = [1.0; 4];
