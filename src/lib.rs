@@ -1,26 +1,35 @@
 //! effectc: a shader toolchain for desktop-GLSL effects.
 //!
 //! # Steps
-//! 1. [`inputs`]: command-line paths → programs (manifests, directories, stage files);
-//!    [`front::includes`] inlines `#include`d files into a stage, with the map back to each file.
-//! 2. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures, mesh).
-//! 3. [`front`]: each GLSL stage → syntax facts (glsl-lang, spans) → GLSL 4.50 rewrite with an
-//!    offset map → naga parse + validate.
-//! 4. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader uniforms.
-//! 5. [`check`]: all of the above per program, one bad program never stopping the others.
-//!    Multi-pass effects are checked pass by pass, then as a [`graph`] of passes and targets
-//!    (`link::passes`).
-//! 6. [`back`]: a clean program's stage modules → one merged, fixed, pruned module →
-//!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection; [`translate`] writes them (per pass, for
-//!    the passes that reach the output).
-//! 7. [`render`]: wgpu headless: scenes, targets, frames, pass graphs (one scene per pass).
-//! 8. [`stability`]: static hazards (interval analysis on the IR, warnings in `check`) and
-//!    `effectc stress`, renders under extreme inputs counting NaN/Inf, with the culprit
-//!    expression located by instrumenting the fragment stage.
-//! 9. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
+//! A program flows down this list; each module imports only modules on earlier lines
+//! (`tests/suite/layout.rs` checks every `crate::` path against this order, and that no
+//! module's own submodules import each other in a cycle).
 //!
-//! Every finding is a [`diag::Diagnostic`], rendered by one emitter (human, JSON, GitHub
-//! annotations, SARIF).
+//! 1. [`diag`], [`stage`]: every finding is a [`diag::Diagnostic`] with a typed code,
+//!    rendered by one emitter (human, JSON, GitHub annotations, SARIF); stage kinds.
+//! 2. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures,
+//!    mesh, passes).
+//! 3. [`graph`]: the pass graph of a multi-pass effect: reads/writes, what reaches the
+//!    output, target lifetimes and sharing.
+//! 4. [`inputs`]: command-line paths → programs (manifests, directories, stage files).
+//! 5. [`assets`]: CPU-side scene data: meshes, textures, the camera over time, degenerate
+//!    mesh variants (no GPU; shared by the static analysis and the renderer).
+//! 6. [`front`]: each GLSL stage → `#include`s inlined → syntax facts (glsl-lang, spans) →
+//!    GLSL 4.50 rewrite with an offset map → naga parse + validate.
+//! 7. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader
+//!    declarations; the pass graph's rules.
+//! 8. [`check`]: all of the above per program, one bad program never stopping the others;
+//!    its static hazard analysis (`check::hazards`, interval analysis on the IR).
+//! 9. [`back`]: a clean program's stage modules → one merged, fixed, pruned module →
+//!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection (`back::units`: one unit per program or
+//!    per pass that reaches the output).
+//! 10. [`output`]: atomic file writes that never replace an input.
+//! 11. [`translate`]: `effectc translate`: check, translate, write the targets.
+//! 12. [`render`]: wgpu headless: one drawer per program (scene or pass graph), frames, PNG.
+//! 13. [`stress`]: renders under extreme inputs counting NaN/Inf, the culprit expression
+//!     located by instrumenting the translation (`stress::culprit`).
+//! 14. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
+//! 15. [`cli`]: the command line (clap), above every command it configures.
 
 pub mod assets;
 pub mod back;

@@ -13,6 +13,8 @@
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
 //! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
+//! - [`layout`]: the tree's shape: layers import downward, no submodule cycles, file and
+//!   function sizes.
 //! - [`passes`]: multi-pass effects: skipped passes, dropped attachments, shared
 //!   textures, `--dump-targets`, per-pass translation.
 //! - [`pixels`]: every effect's frames against reference PNGs under `snapshots/png/`.
@@ -31,6 +33,8 @@ mod common;
 mod fail;
 #[path = "suite/hazards.rs"]
 mod hazards;
+#[path = "suite/layout.rs"]
+mod layout;
 #[path = "suite/passes.rs"]
 mod passes;
 #[path = "suite/pixels.rs"]
