@@ -17,4 +17,6 @@ if command -v apt-get >/dev/null; then
     fi
 fi
 command -v cargo >/dev/null || { echo "setup.sh: cargo not found; install Rust (rustup) first" >&2; exit 2; }
+# rustfmt and clippy for .ci/run's habits (already there on most rustup installs).
+if command -v rustup >/dev/null; then rustup component add rustfmt clippy >/dev/null 2>&1 || true; fi
 cargo build --release

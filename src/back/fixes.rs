@@ -322,6 +322,70 @@ fn replace_return(block: &mut naga::Block, old: Handle<Expression>, new: Handle<
     false
 }
 
+/// Marks storage buffers that no function or entry point writes as read-only.
+pub fn read_only_unwritten_storage(module: &mut Module) {
+    let Ok(info) = crate::front::naga_run::validator().validate(module) else { return };
+    let written = |h: naga::Handle<naga::GlobalVariable>| {
+        module.functions.iter().any(|(f, _)| info[f][h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
+            || (0..module.entry_points.len())
+                .any(|i| info.get_entry_point(i)[h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
+    };
+    let unwritten: Vec<_> = module
+        .global_variables
+        .iter()
+        .filter(|(h, v)| {
+            matches!(v.space, naga::AddressSpace::Storage { access } if access.contains(naga::StorageAccess::STORE)) && !written(*h)
+        })
+        .map(|(h, _)| h)
+        .collect();
+    for h in unwritten {
+        module.global_variables[h].space = naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD };
+    }
+}
+
+/// Puts the interpolation and sampling qualifiers the user wrote on interface-block members
+/// onto the bindings of this stage's outputs (vertex) or inputs (fragment), by member name.
+pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::syntax::StageSyntax) {
+    use crate::front::syntax::{Interp, Storage};
+    let side = match syntax.stage {
+        crate::stage::StageKind::Vertex => Storage::Out,
+        crate::stage::StageKind::Fragment => Storage::In,
+        _ => return,
+    };
+    let mut wanted: std::collections::HashMap<String, (Option<Interp>, bool)> = std::collections::HashMap::new();
+    for g in syntax.globals.iter().filter(|g| g.storage == side) {
+        let Some(b) = &g.block else { continue };
+        for m in b.members.iter().filter(|m| m.interp.is_some() || m.centroid) {
+            wanted.insert(m.name.clone(), (m.interp, m.centroid));
+            if let Some(instance) = &b.instance {
+                wanted.insert(format!("{instance}_{}", m.name), (m.interp, m.centroid));
+            }
+        }
+    }
+    if wanted.is_empty() {
+        return;
+    }
+    for_each_interface_binding(module, |binding, _, name| {
+        let (Binding::Location { interpolation, sampling, .. }, Some((interp, centroid))) = (binding, name.and_then(|n| wanted.get(n)))
+        else {
+            return;
+        };
+        match interp {
+            Some(Interp::Flat) => {
+                *interpolation = Some(Interpolation::Flat);
+                *sampling = None;
+                return;
+            }
+            Some(Interp::NoPerspective) => *interpolation = Some(Interpolation::Linear),
+            Some(Interp::Smooth) => *interpolation = Some(Interpolation::Perspective),
+            None => {}
+        }
+        if *centroid {
+            *sampling = Some(Sampling::Centroid);
+        }
+    });
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -402,68 +466,4 @@ mod tests {
         naga::compact::compact(&mut m, naga::compact::KeepUnused::No);
         wgsl(&m).unwrap();
     }
-}
-
-/// Marks storage buffers that no function or entry point writes as read-only.
-pub fn read_only_unwritten_storage(module: &mut Module) {
-    let Ok(info) = crate::front::naga_run::validator().validate(module) else { return };
-    let written = |h: naga::Handle<naga::GlobalVariable>| {
-        module.functions.iter().any(|(f, _)| info[f][h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
-            || (0..module.entry_points.len())
-                .any(|i| info.get_entry_point(i)[h].intersects(naga::valid::GlobalUse::WRITE | naga::valid::GlobalUse::ATOMIC))
-    };
-    let unwritten: Vec<_> = module
-        .global_variables
-        .iter()
-        .filter(|(h, v)| {
-            matches!(v.space, naga::AddressSpace::Storage { access } if access.contains(naga::StorageAccess::STORE)) && !written(*h)
-        })
-        .map(|(h, _)| h)
-        .collect();
-    for h in unwritten {
-        module.global_variables[h].space = naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD };
-    }
-}
-
-/// Puts the interpolation and sampling qualifiers the user wrote on interface-block members
-/// onto the bindings of this stage's outputs (vertex) or inputs (fragment), by member name.
-pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::syntax::StageSyntax) {
-    use crate::front::syntax::{Interp, Storage};
-    let side = match syntax.stage {
-        crate::stage::StageKind::Vertex => Storage::Out,
-        crate::stage::StageKind::Fragment => Storage::In,
-        _ => return,
-    };
-    let mut wanted: std::collections::HashMap<String, (Option<Interp>, bool)> = std::collections::HashMap::new();
-    for g in syntax.globals.iter().filter(|g| g.storage == side) {
-        let Some(b) = &g.block else { continue };
-        for m in b.members.iter().filter(|m| m.interp.is_some() || m.centroid) {
-            wanted.insert(m.name.clone(), (m.interp, m.centroid));
-            if let Some(instance) = &b.instance {
-                wanted.insert(format!("{instance}_{}", m.name), (m.interp, m.centroid));
-            }
-        }
-    }
-    if wanted.is_empty() {
-        return;
-    }
-    for_each_interface_binding(module, |binding, _, name| {
-        let (Binding::Location { interpolation, sampling, .. }, Some((interp, centroid))) = (binding, name.and_then(|n| wanted.get(n)))
-        else {
-            return;
-        };
-        match interp {
-            Some(Interp::Flat) => {
-                *interpolation = Some(Interpolation::Flat);
-                *sampling = None;
-                return;
-            }
-            Some(Interp::NoPerspective) => *interpolation = Some(Interpolation::Linear),
-            Some(Interp::Smooth) => *interpolation = Some(Interpolation::Perspective),
-            None => {}
-        }
-        if *centroid {
-            *sampling = Some(Sampling::Centroid);
-        }
-    });
 }

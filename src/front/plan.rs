@@ -295,7 +295,7 @@ fn describe_block_structs(plan: &mut Plan, stages: &[StageSyntax]) {
         let nested = plan.struct_members.values().flatten().any(|m| m.base == name)
             || stages.iter().any(|s| s.structs.iter().any(|d| d.members.iter().any(|m| m.ty.base == name)))
             || plan.members.iter().any(|m| m.block_ty.base == name && m.block_ty.is_array());
-        let (_, align) = block_size_align(&GlslType::scalar(&name), &plan);
+        let (_, align) = block_size_align(&GlslType::scalar(&name), plan);
         if align < 16 && !constructed && nested {
             plan.padded_structs.push(name.clone());
             if let Some(members) = plan.struct_members.get_mut(&name) {

@@ -139,7 +139,7 @@ impl Entry<'_> {
         let Entry { u, decl, ty, shown, shape, tt, decl_label, .. } = self;
         let mf = self.mf;
         match (&u.value, &shape) {
-            _ if is_sampler_like(&ty) => out.push(
+            _ if is_sampler_like(ty) => out.push(
                 Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
                     .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
                     .with_label(decl.file(), decl.span(), decl_label.clone())

@@ -9,13 +9,16 @@ use crate::render::uniforms::UniformBuffer;
 
 use super::textures::Textures;
 
+/// The storage buffers a scene made, by binding name.
+pub(super) type StorageBuffers = Vec<(String, wgpu::Buffer)>;
+
 pub(super) fn bind_groups(
     gpu: &Gpu,
     pipeline: &wgpu::RenderPipeline,
     r: &Reflection,
     uniforms: &[(UniformBuffer, wgpu::Buffer)],
     textures: &Textures,
-) -> (Vec<(u32, wgpu::BindGroup)>, Vec<(String, wgpu::Buffer)>) {
+) -> (Vec<(u32, wgpu::BindGroup)>, StorageBuffers) {
     let mut by_group: BTreeMap<u32, Vec<&BindingInfo>> = BTreeMap::new();
     for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
         by_group.entry(b.group).or_default().push(b);
