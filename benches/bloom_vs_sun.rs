@@ -20,9 +20,8 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use effectc::back::TranslateOptions;
-use effectc::front::program::FrontOptions;
-use effectc::render::command::{self, Request, Step};
+use effectc::check::InputSpec;
+use effectc::render::command::{self, Request};
 use effectc::render::frames::GpuClock;
 
 fn main() {
@@ -82,23 +81,13 @@ fn sun_without_blur(dir: &Path) -> PathBuf {
 }
 
 fn request(manifest: &Path, size: u32, n: u32, out: &Path) -> Request {
+    let input = InputSpec { paths: vec![manifest.to_path_buf()], ..InputSpec::default() };
     Request {
-        inputs: vec![manifest.to_path_buf()],
-        stage: None,
-        front: FrontOptions::default(),
-        back: TranslateOptions::for_rendering(true),
         frames: Some(n),
-        step: Step::Default,
-        start: 0.0,
         size: Some((size, size)),
         out: Some(out.to_path_buf()),
-        contact_sheet: false,
-        gif: false,
-        float: false,
         timeout: Duration::from_secs(60),
-        progress: false,
-        started: Instant::now(),
-        dump_targets: false,
+        ..Request::new(input)
     }
 }
 

@@ -17,9 +17,8 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use effectc::back::{Target as BackTarget, TranslateOptions};
-use effectc::check::check_inputs;
-use effectc::front::program::FrontOptions;
-use effectc::render::command::{self, Request, Step};
+use effectc::check::InputSpec;
+use effectc::render::command::{self, Request};
 use effectc::render::device::Gpu;
 use effectc::render::scene::{ColorMode, Scene, SceneInput};
 use effectc::render::semantics::FrameState;
@@ -48,24 +47,8 @@ fn main() {
 }
 
 fn request(manifest: &Path, size: u32, frames: u32, out: PathBuf) -> Request {
-    Request {
-        inputs: vec![manifest.to_path_buf()],
-        stage: None,
-        front: FrontOptions::default(),
-        back: TranslateOptions::for_rendering(true),
-        frames: Some(frames),
-        step: Step::Default,
-        start: 0.0,
-        size: Some((size, size)),
-        out: Some(out),
-        contact_sheet: false,
-        gif: false,
-        float: false,
-        timeout: Duration::from_secs(60),
-        progress: false,
-        started: Instant::now(),
-        dump_targets: false,
-    }
+    let input = InputSpec { paths: vec![manifest.to_path_buf()], ..InputSpec::default() };
+    Request { frames: Some(frames), size: Some((size, size)), out: Some(out), timeout: Duration::from_secs(60), ..Request::new(input) }
 }
 
 /// effectc's ms/frame in steady state: (t(n + 4 frames) − t(4 frames)) / n, best of 3.
@@ -87,16 +70,15 @@ fn effectc_steady_ms(manifest: &Path, size: u32, frames: u32) -> f64 {
 
 /// The same pipeline drawn in a minimal loop: write uniforms, draw, copy, map, read.
 fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
-    let (outcome, checked) = check_inputs(&[manifest.to_path_buf()], None, FrontOptions::default());
-    let c = &checked[0];
-    let t =
-        effectc::back::units::translate_checked(c, &outcome, TranslateOptions::for_rendering(true)).expect("checks").expect("translates");
+    let (_, checked) = InputSpec { paths: vec![manifest.to_path_buf()], ..InputSpec::default() }.check();
+    let unit = checked[0].units.first().expect("checks");
+    let t = effectc::back::units::translate_unit(unit, TranslateOptions::for_rendering(true)).expect("translates");
     let wgsl = String::from_utf8(effectc::back::emit(&t, BackTarget::Wgsl).unwrap().remove(0).bytes).unwrap();
     let input = SceneInput {
         translation: &t,
         wgsl: &wgsl,
-        program: c.program.as_ref().unwrap(),
-        effect: c.effect.as_ref(),
+        program: &unit.program,
+        effect: unit.effect.as_ref(),
         mode: ColorMode::Unorm8,
         flipped_y: true,
         pass: None,

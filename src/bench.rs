@@ -12,18 +12,15 @@
 
 pub mod plot;
 
-use std::path::PathBuf;
 use std::time::Duration;
 
 use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
-use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command;
 use crate::render::device::Gpu;
 use crate::render::frames::{GpuClock, Pixels};
 use crate::render::memory::{self, MemoryRequest, MemoryRun};
-use crate::stage::StageKind;
 
 pub const E_KNOB_UNKNOWN: &str = "E0801";
 pub const E_NOTHING: &str = "E0802";
@@ -32,9 +29,7 @@ pub const E_KNOB_VALUES: &str = "E0803";
 /// What `bench` was asked to do.
 #[derive(Debug, Clone)]
 pub struct Request {
-    pub inputs: Vec<PathBuf>,
-    pub stage: Option<StageKind>,
-    pub front: FrontOptions,
+    pub input: check::InputSpec,
     /// `--knob NAME=v1,v2,…` (the last value is the reference); empty: the manifest's knobs.
     pub knobs: Vec<(String, Vec<f64>)>,
     pub frames: u32,
@@ -87,7 +82,7 @@ pub struct BenchResult {
 
 /// Runs check, then the sweeps of every program with knobs.
 pub fn run(request: &Request) -> BenchResult {
-    let (mut outcome, checked) = check::check_inputs(&request.inputs, request.stage, request.front);
+    let (mut outcome, checked) = request.input.check();
     let mut result = BenchResult { outcome: Outcome::default(), reports: Vec::new(), adapter: None };
     let mut gpu: Option<Gpu> = None;
     for c in checked.iter().filter(|c| !c.failed) {

@@ -1,10 +1,20 @@
-//! Command-line definitions (clap derive) — every flag and its documentation, in one place.
+//! Command-line definitions (clap derive) — every flag and its documentation, in one place —
+//! and the requests they make: flags are validated by their value parsers (sizes, counts,
+//! times), so a request built here is within the limits.
 
+use std::io::IsTerminal;
 use std::path::PathBuf;
+use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+use crate::back::{Target, TranslateOptions};
+use crate::check::InputSpec;
+use crate::front::program::FrontOptions;
+use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
+use crate::render::command::Step;
 use crate::stage::StageKind;
+use crate::{bench, render, stress, translate};
 
 /// effectc: check, translate and render desktop-GLSL effects.
 #[derive(Debug, Parser)]
@@ -151,16 +161,16 @@ pub struct RenderArgs {
     #[command(flatten)]
     pub common: CommonArgs,
     /// Number of frames (default: the manifest's `[render] frames`, else 1).
-    #[arg(long)]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
     pub frames: Option<u32>,
     /// Frames per second of effect time (default: the manifest's `[render] fps`, else 30).
-    #[arg(long, conflicts_with = "time_step")]
+    #[arg(long, conflicts_with = "time_step", value_parser = parse_positive)]
     pub fps: Option<f64>,
     /// Seconds of effect time between frames (instead of --fps).
-    #[arg(long)]
+    #[arg(long, value_parser = parse_finite, allow_negative_numbers = true)]
     pub time_step: Option<f64>,
     /// Effect time of the first frame, in seconds.
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.0, value_parser = parse_finite, allow_negative_numbers = true)]
     pub start: f64,
     /// Frame size `WIDTHxHEIGHT` (default: the manifest's `[render] size`, else 512x512).
     #[arg(long, value_parser = parse_size)]
@@ -178,8 +188,8 @@ pub struct RenderArgs {
     #[arg(long)]
     pub float: bool,
     /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop).
-    #[arg(long, default_value_t = 5.0)]
-    pub timeout: f64,
+    #[arg(long, default_value = "5", value_parser = parse_timeout)]
+    pub timeout: Duration,
     /// Print GPU and CPU milliseconds per frame and the time to the first frame.
     #[arg(long)]
     pub timings: bool,
@@ -208,20 +218,20 @@ pub struct BenchArgs {
     #[arg(long = "knob", value_parser = crate::bench::parse_knob)]
     pub knobs: Vec<(String, Vec<f64>)>,
     /// Frames per value (effect time advances 1/8 s per frame).
-    #[arg(long, default_value_t = 4)]
+    #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub frames: u32,
     /// Frame size `WIDTHxHEIGHT`.
     #[arg(long, value_parser = parse_size, default_value = "256x256")]
     pub size: (u32, u32),
     /// Renders of every value (ms/frame median and spread over all of them).
-    #[arg(long, default_value_t = 3)]
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=100))]
     pub repeats: u32,
     /// Write the error-against-time curve of every knob as an SVG.
     #[arg(long)]
     pub plot: Option<PathBuf>,
     /// Seconds a frame may take before the run stops.
-    #[arg(long, default_value_t = 10.0)]
-    pub timeout: f64,
+    #[arg(long, default_value = "10", value_parser = parse_timeout)]
+    pub timeout: Duration,
 }
 
 #[derive(Debug, clap::Args)]
@@ -229,7 +239,7 @@ pub struct StressArgs {
     #[command(flatten)]
     pub common: CommonArgs,
     /// Random points of the uniform ranges, besides their ends.
-    #[arg(long, default_value_t = 8)]
+    #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub samples: u32,
     /// Seed of the random points.
     #[arg(long, default_value_t = 1)]
@@ -241,13 +251,140 @@ pub struct StressArgs {
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Seconds a frame may take before the run stops.
-    #[arg(long, default_value_t = 10.0)]
-    pub timeout: f64,
+    #[arg(long, default_value = "10", value_parser = parse_timeout)]
+    pub timeout: Duration,
 }
 
-/// `512x512` → (512, 512).
+/// `512x512` → (512, 512), each side within 1..=[`MAX_FRAME_SIDE`].
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or("expected WIDTHxHEIGHT, e.g. 512x512")?;
     let side = |t: &str| t.trim().parse::<u32>().map_err(|_| format!("`{t}` is not a whole number of pixels"));
-    Ok((side(w)?, side(h)?))
+    let (w, h) = (side(w)?, side(h)?);
+    if !(1..=MAX_FRAME_SIDE).contains(&w) || !(1..=MAX_FRAME_SIDE).contains(&h) {
+        return Err(format!("{w}x{h} is outside 1..={MAX_FRAME_SIDE} per side"));
+    }
+    Ok((w, h))
+}
+
+/// A finite number.
+fn parse_finite(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => Err(format!("`{s}` is not a finite number")),
+    }
+}
+
+/// A finite number above zero.
+fn parse_positive(s: &str) -> Result<f64, String> {
+    match parse_finite(s)? {
+        v if v > 0.0 => Ok(v),
+        _ => Err(format!("`{s}` is not a positive number")),
+    }
+}
+
+/// Seconds above zero, at most a day.
+fn parse_timeout(s: &str) -> Result<Duration, String> {
+    let seconds = parse_positive(s)?;
+    Duration::try_from_secs_f64(seconds).ok().filter(|d| d.as_secs() <= 86_400).ok_or_else(|| format!("`{s}` s is more than a day"))
+}
+
+impl CommonArgs {
+    /// What the command reads.
+    pub fn input_spec(&self) -> InputSpec {
+        InputSpec { paths: self.inputs.clone(), stage: self.stage.map(Into::into), front: FrontOptions { strict: self.strict } }
+    }
+}
+
+impl TranslateArgs {
+    /// The request these flags make.
+    pub fn request(&self) -> translate::Request {
+        let mut targets: Vec<Target> = Vec::new();
+        for t in &self.to {
+            match t {
+                TargetArg::All => targets.extend(Target::ALL),
+                one => targets.push(one.target()),
+            }
+        }
+        targets.sort();
+        targets.dedup();
+        translate::Request {
+            input: self.common.input_spec(),
+            back: TranslateOptions { gl_depth: !self.keep_gl_depth, ..TranslateOptions::default() },
+            targets,
+            out: self.out.clone(),
+        }
+    }
+}
+
+impl TargetArg {
+    /// The target (`All` is expanded by the caller; it maps to the last one here).
+    fn target(self) -> Target {
+        match self {
+            TargetArg::Wgsl => Target::Wgsl,
+            TargetArg::Spv => Target::Spv,
+            TargetArg::Spvasm => Target::Spvasm,
+            TargetArg::Glsl => Target::Glsl,
+            TargetArg::Msl => Target::Msl,
+            TargetArg::Hlsl => Target::Hlsl,
+            TargetArg::Reflect => Target::Reflect,
+            TargetArg::Ir | TargetArg::All => Target::Ir,
+        }
+    }
+}
+
+impl RenderArgs {
+    /// The request these flags make; `started` is when the process started (for the time
+    /// to the first frame).
+    pub fn request(&self, started: Instant) -> render::command::Request {
+        let step = match (self.fps, self.time_step) {
+            (Some(f), _) => Step::Fps(f),
+            (None, Some(s)) => Step::Seconds(s),
+            (None, None) => Step::Default,
+        };
+        render::command::Request {
+            input: self.common.input_spec(),
+            back: TranslateOptions::for_rendering(!self.keep_gl_depth),
+            frames: self.frames,
+            step,
+            start: self.start,
+            size: self.size,
+            out: self.out.clone(),
+            contact_sheet: self.contact_sheet,
+            gif: self.gif,
+            float: self.float,
+            timeout: self.timeout,
+            progress: std::io::stderr().is_terminal() && std::env::var_os("CI").is_none(),
+            started,
+            dump_targets: self.dump_targets,
+        }
+    }
+}
+
+impl BenchArgs {
+    /// The request these flags make.
+    pub fn request(&self) -> bench::Request {
+        bench::Request {
+            input: self.common.input_spec(),
+            knobs: self.knobs.clone(),
+            frames: self.frames,
+            size: self.size,
+            repeats: self.repeats,
+            step: 0.125,
+            timeout: self.timeout,
+        }
+    }
+}
+
+impl StressArgs {
+    /// The request these flags make (masks go to `out/stress/` unless `--out` says otherwise).
+    pub fn request(&self) -> stress::Request {
+        stress::Request {
+            input: self.common.input_spec(),
+            samples: self.samples,
+            seed: self.seed,
+            size: self.size,
+            timeout: self.timeout,
+            out: Some(self.out.clone().unwrap_or_else(|| PathBuf::from("out/stress"))),
+        }
+    }
 }

@@ -35,6 +35,8 @@ pub struct PassPlan {
     pub depth_kept: Vec<bool>,
     /// Textures to allocate, each shared by targets whose lifetimes do not overlap.
     pub textures: Vec<PhysicalTexture>,
+    /// Planned with `keep_all` (nothing pruned or shared).
+    pub keep_all: bool,
 }
 
 /// One texture and the targets that live in it, in order of use.
@@ -54,6 +56,12 @@ impl PassPlan {
     /// The passes that run, in order.
     pub fn running(&self) -> impl Iterator<Item = usize> + '_ {
         self.runs.iter().enumerate().filter(|(_, r)| **r).map(|(i, _)| i)
+    }
+    /// The same plan with its textures allocated for another output size (which passes
+    /// run and what they attach do not depend on it).
+    pub fn sized(&self, effect: &Effect, output_size: (u32, u32)) -> PassPlan {
+        let textures = allocate(effect, output_size, &self.runs, &self.attached, self.keep_all);
+        PassPlan { textures, ..self.clone() }
     }
 }
 
@@ -105,7 +113,7 @@ pub fn plan(effect: &Effect, output_size: (u32, u32), keep_all: bool) -> PassPla
         }
     }
     let textures = allocate(effect, output_size, &runs, &attached, keep_all);
-    PassPlan { runs, attached, depth_kept, textures }
+    PassPlan { runs, attached, depth_kept, textures, keep_all }
 }
 
 /// Lifetimes of the targets the running passes use, then a greedy assignment to textures.

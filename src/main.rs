@@ -5,11 +5,9 @@ use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 
 use clap::Parser;
-use effectc::back::{Target, TranslateOptions};
 use effectc::check::Outcome;
-use effectc::cli::{BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, StressArgs, TargetArg, TranslateArgs};
+use effectc::cli::{BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, StressArgs, TranslateArgs};
 use effectc::diag;
-use effectc::front::program::FrontOptions;
 
 fn main() -> ExitCode {
     // naga can panic on odd inputs; those panics are caught and reported as diagnostics,
@@ -34,35 +32,8 @@ fn main() -> ExitCode {
 }
 
 fn render(args: RenderArgs) -> ExitCode {
-    let started = std::time::Instant::now();
+    let request = args.request(std::time::Instant::now());
     let c = &args.common;
-    if !(args.timeout.is_finite() && args.timeout > 0.0) {
-        eprintln!("error: --timeout must be a positive number of seconds");
-        return ExitCode::from(2);
-    }
-    let step = match (args.fps, args.time_step) {
-        (Some(f), _) => effectc::render::command::Step::Fps(f),
-        (None, Some(s)) => effectc::render::command::Step::Seconds(s),
-        (None, None) => effectc::render::command::Step::Default,
-    };
-    let request = effectc::render::command::Request {
-        inputs: c.inputs.clone(),
-        stage: c.stage.map(Into::into),
-        front: FrontOptions { strict: c.strict },
-        back: TranslateOptions::for_rendering(!args.keep_gl_depth),
-        frames: args.frames,
-        step,
-        start: args.start,
-        size: args.size,
-        out: args.out.clone(),
-        contact_sheet: args.contact_sheet,
-        gif: args.gif,
-        float: args.float,
-        timeout: std::time::Duration::from_secs_f64(args.timeout),
-        progress: std::io::stderr().is_terminal() && std::env::var_os("CI").is_none(),
-        started,
-        dump_targets: args.dump_targets,
-    };
     let result = effectc::render::command::run(&request);
     let mut text = String::new();
     if c.format == Format::Human {
@@ -87,29 +58,7 @@ fn render(args: RenderArgs) -> ExitCode {
 
 fn bench(args: BenchArgs) -> ExitCode {
     let c = &args.common;
-    let limits_ok = args.frames >= 1
-        && args.frames <= 1000
-        && args.repeats >= 1
-        && args.repeats <= 100
-        && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.0)
-        && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.1)
-        && args.timeout.is_finite()
-        && args.timeout > 0.0;
-    if !limits_ok {
-        eprintln!("error: --frames must be 1..=1000, --repeats 1..=100, --size 1..=8192 per side, --timeout positive");
-        return ExitCode::from(2);
-    }
-    let request = effectc::bench::Request {
-        inputs: c.inputs.clone(),
-        stage: c.stage.map(Into::into),
-        front: FrontOptions { strict: c.strict },
-        knobs: args.knobs.clone(),
-        frames: args.frames,
-        size: args.size,
-        repeats: args.repeats,
-        step: 0.125,
-        timeout: std::time::Duration::from_secs_f64(args.timeout),
-    };
+    let request = args.request();
     let mut result = effectc::bench::run(&request);
     if let Some(path) = &args.plot {
         if let Err(e) = effectc::bench::plot::write_svg(path, &result.reports) {
@@ -141,22 +90,7 @@ fn bench(args: BenchArgs) -> ExitCode {
 
 fn stress(args: StressArgs) -> ExitCode {
     let c = &args.common;
-    let sizes_ok =
-        (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.0) && (1..=effectc::manifest::MAX_FRAME_SIDE).contains(&args.size.1);
-    if !sizes_ok || args.samples > 10_000 || !(args.timeout.is_finite() && args.timeout > 0.0) {
-        eprintln!("error: --size must be 1..=8192 per side, --samples at most 10000, --timeout positive");
-        return ExitCode::from(2);
-    }
-    let request = effectc::stress::Request {
-        inputs: c.inputs.clone(),
-        stage: c.stage.map(Into::into),
-        front: FrontOptions { strict: c.strict },
-        samples: args.samples,
-        seed: args.seed,
-        size: args.size,
-        timeout: std::time::Duration::from_secs_f64(args.timeout),
-        out: Some(args.out.clone().unwrap_or_else(|| std::path::PathBuf::from("out/stress"))),
-    };
+    let request = args.request();
     let result = effectc::stress::run(&request);
     let text = match c.format {
         Format::Json => report_json("programs", &result.reports, &result.adapter, &result.outcome),
@@ -176,8 +110,7 @@ fn stress(args: StressArgs) -> ExitCode {
 
 fn check(args: CheckArgs) -> ExitCode {
     let c = &args.common;
-    let options = FrontOptions { strict: c.strict };
-    let (outcome, _) = effectc::check::check_inputs(&c.inputs, c.stage.map(Into::into), options);
+    let (outcome, _) = c.input_spec().check();
     let text = diagnostics_text(c, &outcome);
     if print(&text).is_err() {
         return ExitCode::from(2);
@@ -187,23 +120,7 @@ fn check(args: CheckArgs) -> ExitCode {
 
 fn translate(args: TranslateArgs) -> ExitCode {
     let c = &args.common;
-    let mut targets: Vec<Target> = Vec::new();
-    for t in &args.to {
-        match t {
-            TargetArg::All => targets.extend(Target::ALL),
-            one => targets.push(target_of(*one)),
-        }
-    }
-    targets.sort();
-    targets.dedup();
-    let request = effectc::translate::Request {
-        inputs: c.inputs.clone(),
-        stage: c.stage.map(Into::into),
-        front: FrontOptions { strict: c.strict },
-        back: TranslateOptions { gl_depth: !args.keep_gl_depth, ..TranslateOptions::default() },
-        targets,
-        out: args.out.clone(),
-    };
+    let request = args.request();
     let (outcome, written) = effectc::translate::run(&request);
     let mut text = String::new();
     if c.format == Format::Human {
@@ -216,19 +133,6 @@ fn translate(args: TranslateArgs) -> ExitCode {
         return ExitCode::from(2);
     }
     exit_code(&outcome, false)
-}
-
-fn target_of(t: TargetArg) -> Target {
-    match t {
-        TargetArg::Wgsl => Target::Wgsl,
-        TargetArg::Spv => Target::Spv,
-        TargetArg::Spvasm => Target::Spvasm,
-        TargetArg::Glsl => Target::Glsl,
-        TargetArg::Msl => Target::Msl,
-        TargetArg::Hlsl => Target::Hlsl,
-        TargetArg::Reflect => Target::Reflect,
-        TargetArg::Ir | TargetArg::All => Target::Ir,
-    }
 }
 
 /// The diagnostics in the requested format (human: with the summary line).

@@ -11,16 +11,12 @@ use crate::back::units::{emit_contained, target_error, translate_units};
 use crate::back::{Target, TranslateOptions, Translation};
 use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
-use crate::front::program::FrontOptions;
 use crate::output::{input_paths, write_atomic, E_OUTPUT_IO};
-use crate::stage::StageKind;
 
 /// What `translate` was asked to do.
 #[derive(Debug, Clone)]
 pub struct Request {
-    pub inputs: Vec<PathBuf>,
-    pub stage: Option<StageKind>,
-    pub front: FrontOptions,
+    pub input: check::InputSpec,
     pub back: TranslateOptions,
     pub targets: Vec<Target>,
     /// `None`: `out/<effect>/` for each program.
@@ -37,11 +33,11 @@ pub struct Written {
 
 /// Runs check and translation; diagnostics of both are in the outcome.
 pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
-    let (mut outcome, checked) = check::check_inputs(&request.inputs, request.stage, request.front);
-    let inputs = input_paths(&outcome, &request.inputs);
+    let (mut outcome, checked) = request.input.check();
+    let inputs = input_paths(&outcome, &request.input.paths);
     let mut written = Vec::new();
     for c in &checked {
-        for (result, dir_name) in translate_units(c, &outcome, request.back) {
+        for (result, dir_name) in translate_units(c, request.back) {
             let translation = match result {
                 Ok(t) => t,
                 Err(diags) => {

@@ -10,6 +10,7 @@ use std::path::Path;
 
 use crate::diag::{Diagnostic, FileId, Files};
 use crate::front::program::{self, CompiledProgram, FrontOptions};
+use crate::graph::PassPlan;
 use crate::inputs::{self, ProgramInput};
 use crate::manifest::{self, Effect};
 use crate::stage::StageKind;
@@ -27,26 +28,69 @@ pub struct Outcome {
     pub io_error: bool,
 }
 
-/// A checked program, kept for later steps (translate, render).
+/// A checked program, kept for later steps (translate, render, stress, bench): the one
+/// value they all start from.
 #[derive(Debug)]
 pub struct Checked {
     pub name: String,
     pub effect: Option<Effect>,
-    pub program: Option<CompiledProgram>,
-    /// Errors were found in this program.
+    /// Errors were found in this program (`units` is then empty).
     pub failed: bool,
-    /// Multi-pass effects: every pass, in manifest order (`program` is then `None`).
-    pub passes: Vec<CheckedPass>,
+    /// What there is to translate and draw: one unit for a single-pass program; one per
+    /// pass of a multi-pass effect, in manifest order (those that do not reach the
+    /// output have `runs == false`).
+    pub units: Vec<Unit>,
+    /// Multi-pass effects: the pass plan, computed once here (at output size 1×1; see
+    /// [`crate::graph::PassPlan::sized`]).
+    pub plan: Option<PassPlan>,
 }
 
-/// One pass of a multi-pass effect, checked.
+/// One program of a checked input: what one translation is made from.
 #[derive(Debug)]
-pub struct CheckedPass {
+pub struct Unit {
+    /// Index into `Effect::passes` (0 for a single-pass program).
+    pub pass: usize,
+    /// The translation's name: the effect's, the pass view's (`<effect>.<pass>`), or for
+    /// bare stage files the first file's stem.
     pub name: String,
-    /// The single-pass effect the pass amounts to ([`Effect::pass_view`]), with the
-    /// top-level uniforms and textures narrowed to those the pass's stages declare.
-    pub view: Effect,
-    pub program: Option<CompiledProgram>,
+    /// The effect the program is translated and drawn with: the manifest's, or for a pass
+    /// its view ([`Effect::pass_view`], the top-level uniforms and textures narrowed to
+    /// those the pass's stages declare). `None` for bare stage files.
+    pub effect: Option<Effect>,
+    pub program: CompiledProgram,
+    /// The unit reaches the output (always, for a single-pass program).
+    pub runs: bool,
+}
+
+impl Checked {
+    /// The units that reach the output, in order.
+    pub fn running(&self) -> impl Iterator<Item = &Unit> {
+        self.units.iter().filter(|u| u.runs)
+    }
+    /// The unit of pass `pass` (0 for a single-pass program).
+    pub fn unit(&self, pass: usize) -> Option<&Unit> {
+        self.units.iter().find(|u| u.pass == pass)
+    }
+    /// The effect when it has passes.
+    pub fn multi_pass(&self) -> Option<&Effect> {
+        self.effect.as_ref().filter(|e| e.is_multi_pass())
+    }
+}
+
+/// What a command reads: the paths named on the command line, the stage of files whose
+/// extension does not tell it, and the front's options. Every command starts from one.
+#[derive(Debug, Clone, Default)]
+pub struct InputSpec {
+    pub paths: Vec<std::path::PathBuf>,
+    pub stage: Option<StageKind>,
+    pub front: FrontOptions,
+}
+
+impl InputSpec {
+    /// Checks every program the spec names.
+    pub fn check(&self) -> (Outcome, Vec<Checked>) {
+        check_inputs(&self.paths, self.stage, self.front)
+    }
 }
 
 /// Checks every program named by `inputs`.
@@ -97,12 +141,13 @@ pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outc
     let mut effect = None;
     let mut stage_files: Vec<(FileId, StageKind)> = Vec::new();
     let mut readable = true;
-    let mut passes = Vec::new();
+    let mut units = Vec::new();
+    let mut plan = None;
     match input {
         ProgramInput::Manifest(path) => match manifest::load(path, &mut out.files) {
             Ok(e) if e.is_multi_pass() => {
                 out.diagnostics.extend(e.warnings.iter().cloned());
-                passes = check_passes(&e, options, out);
+                (units, plan) = check_passes(&e, options, out);
                 dedup_from(&mut out.diagnostics, start);
                 effect = Some(e);
             }
@@ -131,14 +176,25 @@ pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outc
             }
         }
     }
-    let mut program = None;
     if readable && !stage_files.is_empty() {
-        let (p, diags) = check_stages(&out.files, &stage_files, effect.as_ref(), options);
-        program = p;
+        let (program, diags) = check_stages(&out.files, &stage_files, effect.as_ref(), options);
         out.diagnostics.extend(diags);
+        if let Some(program) = program {
+            let name = effect.as_ref().map_or_else(|| stem_of(&out.files, &program), |e| e.name.clone());
+            units.push(Unit { pass: 0, name, effect: effect.clone(), program, runs: true });
+        }
     }
     let failed = out.diagnostics[start..].iter().any(Diagnostic::is_error);
-    Checked { name: input.display_name(), effect, program, failed, passes }
+    if failed {
+        units.clear();
+    }
+    Checked { name: input.display_name(), effect, failed, units, plan }
+}
+
+/// The name of a program from bare stage files: its first file's stem.
+fn stem_of(files: &Files, program: &CompiledProgram) -> String {
+    let path = Path::new(files.path(program.stages[0].syntax.file));
+    path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "effect".into())
 }
 
 /// Checks the stages of one program already in `files` (front, link rules, the manifest
@@ -177,15 +233,16 @@ fn dedup_from(diags: &mut Vec<Diagnostic>, start: usize) {
     diags.extend(seen);
 }
 
-/// Checks every pass of a multi-pass effect, then the graph they form.
-fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Vec<CheckedPass> {
+/// Checks every pass of a multi-pass effect, then the graph they form: a unit per pass that
+/// compiled, and the pass plan when the graph has no errors.
+fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (Vec<Unit>, Option<PassPlan>) {
     let mut read: HashMap<std::path::PathBuf, Option<FileId>> = HashMap::new();
-    let mut passes = Vec::new();
+    let mut units = Vec::new();
     let mut syntaxes_of: Vec<Option<Vec<crate::front::syntax::StageSyntax>>> = Vec::new();
     let mut used_uniforms: HashSet<String> = HashSet::new();
     let mut used_textures: HashSet<String> = HashSet::new();
     let mut all_declared = true;
-    for pass in &effect.passes {
+    for (i, pass) in effect.passes.iter().enumerate() {
         let reused = match &pass.reuse {
             None => None,
             Some((path, span)) => match manifest::load(path, &mut out.files) {
@@ -214,7 +271,6 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Ve
         };
         let mut view = effect.pass_view(pass, reused.as_ref());
         if pass.reuse.is_some() && reused.is_none() {
-            passes.push(CheckedPass { name: pass.name.clone(), view, program: None });
             syntaxes_of.push(None);
             all_declared = false;
             continue;
@@ -256,13 +312,21 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> Ve
         }
         all_declared &= syntaxes.is_some() || pass.reuse.is_some();
         syntaxes_of.push(syntaxes);
-        passes.push(CheckedPass { name: pass.name.clone(), view, program });
+        if let Some(program) = program {
+            units.push(Unit { pass: i, name: view.name.clone(), effect: Some(view), program, runs: true });
+        }
     }
     if all_declared {
         out.diagnostics.extend(crate::link::passes::unused_entries(effect, &used_uniforms, &used_textures));
     }
     let shaders: Vec<crate::link::passes::PassShaders<'_>> =
         syntaxes_of.iter().map(|s| crate::link::passes::PassShaders { stages: s.as_deref() }).collect();
-    out.diagnostics.extend(crate::link::passes::check(effect, &shaders));
-    passes
+    let (diags, plan) = crate::link::passes::check(effect, &shaders);
+    out.diagnostics.extend(diags);
+    if let Some(plan) = &plan {
+        for unit in &mut units {
+            unit.runs = plan.runs[unit.pass];
+        }
+    }
+    (units, plan)
 }

@@ -40,8 +40,9 @@ pub struct PassShaders<'a> {
 }
 
 /// Checks the graph of `effect` (which has passes); `shaders` is index for index with
-/// `effect.passes`.
-pub fn check(effect: &Effect, shaders: &[PassShaders<'_>]) -> Vec<Diagnostic> {
+/// `effect.passes`. Also returns the pass plan (at output size 1×1, see
+/// [`graph::PassPlan::sized`]) when the graph has no errors.
+pub fn check(effect: &Effect, shaders: &[PassShaders<'_>]) -> (Vec<Diagnostic>, Option<graph::PassPlan>) {
     let mut out = Vec::new();
     let file = effect.file;
     let names: Vec<&str> = effect.targets.iter().map(|t| t.name.as_str()).collect();
@@ -95,10 +96,12 @@ pub fn check(effect: &Effect, shaders: &[PassShaders<'_>]) -> Vec<Diagnostic> {
             );
         }
     }
-    if all_known && !out.iter().any(Diagnostic::is_error) {
-        pruning(effect, &mut out);
+    if !all_known || out.iter().any(Diagnostic::is_error) {
+        return (out, None);
     }
-    out
+    let plan = graph::plan(effect, (1, 1), false);
+    pruning(effect, &plan, &mut out);
+    (out, Some(plan))
 }
 
 /// "an" before a word read with a vowel sound (`an int`, `an rgba8`, `an isampler2D`).
@@ -383,8 +386,7 @@ fn outputs(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut V
 }
 
 /// Passes that never reach the output, and attachments nobody reads.
-fn pruning(effect: &Effect, out: &mut Vec<Diagnostic>) {
-    let plan = graph::plan(effect, (1, 1), false);
+fn pruning(effect: &Effect, plan: &graph::PassPlan, out: &mut Vec<Diagnostic>) {
     for (i, pass) in effect.passes.iter().enumerate() {
         if !plan.runs[i] {
             out.push(

@@ -15,8 +15,6 @@ use std::time::{Duration, Instant};
 use crate::back::TranslateOptions;
 use crate::check::{self, Outcome};
 use crate::diag::{Diagnostic, FileId};
-use crate::front::program::FrontOptions;
-use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
 use crate::output::{self, write_atomic, E_OUTPUT_IO};
 use crate::render::device::Gpu;
 pub use crate::render::drawer::DEFAULT_SIZE;
@@ -24,7 +22,6 @@ use crate::render::drawer::{build, frame_state, prepare, BuildSettings, Drawer, 
 use crate::render::encode;
 use crate::render::frames::{Dump, Frame, FrameError, GpuClock, Pixels, Target};
 use crate::render::scene::ColorMode;
-use crate::stage::StageKind;
 
 /// No usable adapter (exit 2: the machine, not the input).
 pub const E_NO_ADAPTER: &str = "E0401";
@@ -54,9 +51,7 @@ pub enum Step {
 /// What `render` was asked to do.
 #[derive(Debug, Clone)]
 pub struct Request {
-    pub inputs: Vec<PathBuf>,
-    pub stage: Option<StageKind>,
-    pub front: FrontOptions,
+    pub input: check::InputSpec,
     pub back: TranslateOptions,
     /// `None`: the manifest's `[render] frames`, else 1.
     pub frames: Option<u32>,
@@ -79,6 +74,27 @@ pub struct Request {
 }
 
 impl Request {
+    /// A request for what `input` names with every flag at its default (the manifest's
+    /// frames, size and frame rate; 5 s timeout; frames to `out/<effect>/frames/`).
+    pub fn new(input: check::InputSpec) -> Request {
+        Request {
+            input,
+            back: TranslateOptions::for_rendering(true),
+            frames: None,
+            step: Step::Default,
+            start: 0.0,
+            size: None,
+            out: None,
+            contact_sheet: false,
+            gif: false,
+            float: false,
+            timeout: Duration::from_secs(5),
+            progress: false,
+            started: Instant::now(),
+            dump_targets: false,
+        }
+    }
+
     /// What building each program takes from these flags.
     pub fn build_settings(&self) -> BuildSettings {
         BuildSettings { back: self.back, size: self.size, dump_targets: self.dump_targets }
@@ -125,15 +141,9 @@ pub struct RunResult {
 
 /// Runs check, translation and rendering for every program of the request.
 pub fn run(request: &Request) -> RunResult {
-    let (mut outcome, checked) = check::check_inputs(&request.inputs, request.stage, request.front);
+    let (mut outcome, checked) = request.input.check();
     let mut result = RunResult { outcome: Outcome::default(), rendered: Vec::new(), adapter: None, hung: false };
-    if let Some(d) = limit_error(request) {
-        outcome.io_error = true;
-        outcome.diagnostics.push(d);
-        result.outcome = outcome;
-        return result;
-    }
-    let inputs = output::input_paths(&outcome, &request.inputs);
+    let inputs = output::input_paths(&outcome, &request.input.paths);
     let mut gpu: Option<Gpu> = None;
     for c in &checked {
         let Some(prepared) = prepare(c, &mut outcome, &request.build_settings(), None) else { continue };
@@ -207,31 +217,11 @@ pub fn open_once<'g>(gpu: &'g mut Option<Gpu>, adapter: &mut Option<String>, out
     gpu.as_ref()
 }
 
-/// Flags beyond the limits, refused before anything is allocated.
-fn limit_error(request: &Request) -> Option<Diagnostic> {
-    if let Some((w, h)) = request.size {
-        if w == 0 || h == 0 || w > MAX_FRAME_SIDE || h > MAX_FRAME_SIDE {
-            return Some(Diagnostic::error(E_LIMIT, format!("--size {w}x{h} is outside 1..={MAX_FRAME_SIDE} per side")));
-        }
-    }
-    if let Some(n) = request.frames {
-        if n == 0 || n > MAX_FRAMES {
-            return Some(Diagnostic::error(E_LIMIT, format!("--frames {n} is outside 1..={MAX_FRAMES}")));
-        }
-    }
-    match request.step {
-        Step::Fps(f) if !(f.is_finite() && f > 0.0) => Some(Diagnostic::error(E_LIMIT, "--fps must be a positive number")),
-        Step::Seconds(s) if !s.is_finite() => Some(Diagnostic::error(E_LIMIT, "--time-step must be a finite number")),
-        _ if !request.start.is_finite() => Some(Diagnostic::error(E_LIMIT, "--start must be a finite number")),
-        _ => None,
-    }
-}
-
 /// Limits that depend on the device and on what the run keeps in memory.
 fn device_limit_error(gpu: &Gpu, (w, h): (u32, u32), frames: u32, request: &Request) -> Option<Diagnostic> {
     let limits = gpu.device.limits();
     let max_side = limits.max_texture_dimension_2d;
-    if w > max_side || h > max_side {
+    if w == 0 || h == 0 || w > max_side || h > max_side {
         return Some(Diagnostic::error(E_LIMIT, format!("a {w}x{h} frame exceeds the adapter's limit of {max_side} per side")));
     }
     let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };

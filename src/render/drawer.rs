@@ -9,9 +9,8 @@ use crate::assets::camera;
 use crate::assets::degenerate::Degenerate;
 use crate::back::units;
 use crate::back::{Target as BackTarget, TranslateOptions, Translation};
-use crate::check::{self, Outcome};
+use crate::check::{self, Outcome, Unit};
 use crate::diag::{Diagnostic, FileId};
-use crate::front::program::CompiledProgram;
 use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::render::device::Gpu;
 use crate::render::frames::{self, Frame, FrameError, GpuClock, Target};
@@ -33,62 +32,39 @@ pub struct BuildSettings {
 }
 
 /// Changes a translation before it is built (`stress` instruments it): called with the
-/// pass index (0 for a single-pass program), the translation, the program it was
-/// translated from and the effect (or pass view) it was translated with.
-pub type Instrument<'a> = &'a dyn Fn(usize, &mut Translation, &CompiledProgram, Option<&Effect>) -> Result<(), String>;
+/// unit it was translated from.
+pub type Instrument<'a> = &'a dyn Fn(&Unit, &mut Translation) -> Result<(), String>;
 
 /// A checked program translated to WGSL: one unit for a single-pass program, one per
 /// running pass for a multi-pass effect.
 pub(crate) struct Prepared {
     /// (pass index, translation, WGSL); the index is 0 for a single-pass program.
     pub(crate) units: Vec<(usize, Translation, String)>,
-    /// The pass plan of a multi-pass effect.
+    /// The pass plan of a multi-pass effect, at the frame size.
     pub(crate) plan: Option<crate::graph::PassPlan>,
 }
 
-/// Translates what `c` renders; diagnostics go to `outcome`. `None` when there is nothing
-/// to render (check or translation errors).
+/// Translates what `c` draws; diagnostics go to `outcome`. `None` when there is nothing
+/// to draw (check or translation errors).
 pub(crate) fn prepare(
     c: &check::Checked,
     outcome: &mut Outcome,
     settings: &BuildSettings,
     instrument: Option<Instrument<'_>>,
 ) -> Option<Prepared> {
-    let multi = c.effect.as_ref().filter(|e| e.is_multi_pass());
-    let (indices, results): (Vec<usize>, Vec<Result<Translation, Vec<Diagnostic>>>) = match multi {
-        Some(effect) => {
-            if c.failed {
-                return None;
-            }
+    if c.failed {
+        return None;
+    }
+    let plan = match (c.multi_pass(), &c.plan) {
+        (Some(effect), Some(plan)) => {
             let size = settings.size.or(effect.render.size).unwrap_or(DEFAULT_SIZE);
-            let plan = crate::graph::plan(effect, size, settings.dump_targets);
-            let mut units = Vec::new();
-            for i in plan.running() {
-                let pass = &c.passes[i];
-                let program = pass.program.as_ref()?;
-                let t = units::translate_program(&pass.view.name, program, Some(&pass.view), settings.back);
-                units.push((i, t));
-            }
-            let (indices, results) = units.into_iter().unzip();
-            let prepared = wgsl_units(indices, results, outcome, c, instrument)?;
-            return Some(Prepared { units: prepared, plan: Some(plan) });
+            Some(if settings.dump_targets { crate::graph::plan(effect, size, true) } else { plan.sized(effect, size) })
         }
-        None => (vec![0], vec![units::translate_checked(c, outcome, settings.back)?]),
+        _ => None,
     };
-    Some(Prepared { units: wgsl_units(indices, results, outcome, c, instrument)?, plan: None })
-}
-
-/// The WGSL of every translated unit, after `instrument` changed it.
-fn wgsl_units(
-    indices: Vec<usize>,
-    results: Vec<Result<Translation, Vec<Diagnostic>>>,
-    outcome: &mut Outcome,
-    c: &check::Checked,
-    instrument: Option<Instrument<'_>>,
-) -> Option<Vec<(usize, Translation, String)>> {
     let mut units = Vec::new();
-    for (i, r) in indices.into_iter().zip(results) {
-        let mut translation = match r {
+    for unit in c.units.iter().filter(|u| plan.as_ref().map_or(u.runs, |p| p.runs[u.pass])) {
+        let mut translation = match units::translate_unit(unit, settings.back) {
             Ok(t) => t,
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
@@ -96,11 +72,7 @@ fn wgsl_units(
             }
         };
         if let Some(instrument) = instrument {
-            let (program, effect) = match c.passes.get(i) {
-                Some(pass) => (pass.program.as_ref()?, Some(&pass.view)),
-                None => (c.program.as_ref()?, c.effect.as_ref()),
-            };
-            if let Err(message) = instrument(i, &mut translation, program, effect) {
+            if let Err(message) = instrument(unit, &mut translation) {
                 outcome.diagnostics.push(crate::back::internal_error(translation.file, message));
                 return None;
             }
@@ -112,9 +84,9 @@ fn wgsl_units(
                 return None;
             }
         };
-        units.push((i, translation, wgsl));
+        units.push((unit.pass, translation, wgsl));
     }
-    Some(units)
+    (!units.is_empty()).then_some(Prepared { units, plan })
 }
 
 /// What draws the frames of one program.
@@ -203,15 +175,16 @@ pub(crate) fn build(
     let Variant { overrides, degenerate } = variant;
     let flipped_y = settings.back.flip_y;
     let with_overrides = |e: &Effect| with_overrides(e, overrides);
-    match (&prepared.plan, c.effect.as_ref()) {
+    match (&prepared.plan, c.multi_pass()) {
         (Some(plan), Some(effect)) => {
-            let views: Vec<Effect> = c.passes.iter().map(|p| with_overrides(&p.view)).collect();
+            let views: Vec<(usize, Effect, &Unit)> =
+                c.units.iter().filter_map(|u| Some((u.pass, with_overrides(u.effect.as_ref()?), u))).collect();
             let programs: Vec<PassProgram<'_>> = prepared
                 .units
                 .iter()
                 .filter_map(|(i, t, wgsl)| {
-                    let pass = &c.passes[*i];
-                    Some(PassProgram { index: *i, translation: t, wgsl, program: pass.program.as_ref()?, view: &views[*i] })
+                    let (_, view, unit) = views.iter().find(|(p, _, _)| p == i)?;
+                    Some(PassProgram { index: *i, translation: t, wgsl, program: &unit.program, view })
                 })
                 .collect();
             let options = GraphOptions { mode, flipped_y, dump: settings.dump_targets, output_size: size, degenerate };
@@ -220,9 +193,10 @@ pub(crate) fn build(
         }
         _ => {
             let (_, translation, wgsl) = &prepared.units[0];
-            let program = c.program.as_ref().expect("translated programs have a program");
-            let effect = c.effect.as_ref().map(with_overrides);
-            let input = SceneInput { translation, wgsl, program, effect: effect.as_ref(), mode, flipped_y, pass: None, degenerate };
+            let unit = &c.units[0];
+            let effect = unit.effect.as_ref().map(with_overrides);
+            let input =
+                SceneInput { translation, wgsl, program: &unit.program, effect: effect.as_ref(), mode, flipped_y, pass: None, degenerate };
             let scene = Scene::new(gpu, &input)?;
             let target = Target::new(gpu, &scene, size.0, size.1, mode);
             Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))

@@ -102,8 +102,7 @@ impl<'c> InMemory<'c> {
         let Some(drawer) = self.drawer.as_mut() else { return Err("the device is still busy with a frame that timed out".into()) };
         let c = self.c;
         for (pass, scene) in drawer.scenes_mut() {
-            let effect = if c.passes.is_empty() { c.effect.as_ref() } else { c.passes.get(pass).map(|p| &p.view) };
-            let effect = effect.map(|e| with_overrides(e, overrides));
+            let effect = c.unit(pass).and_then(|u| u.effect.as_ref()).map(|e| with_overrides(e, overrides));
             let (buffers, _) = uniforms::buffers(&scene.module, effect.as_ref())?;
             for (data, (old, _)) in buffers.into_iter().zip(&mut scene.uniforms) {
                 *old = data;

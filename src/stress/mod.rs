@@ -25,7 +25,6 @@ use std::time::Duration;
 use crate::assets::degenerate::Degenerate;
 use crate::check::{self, Outcome};
 use crate::diag::Diagnostic;
-use crate::front::program::FrontOptions;
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command;
 use crate::render::device::Gpu;
@@ -47,9 +46,7 @@ pub const EXTREME_TIMES: [f64; 3] = [1e3, 1e5, 1e7];
 /// What `stress` was asked to do.
 #[derive(Debug, Clone)]
 pub struct Request {
-    pub inputs: Vec<PathBuf>,
-    pub stage: Option<StageKind>,
-    pub front: FrontOptions,
+    pub input: check::InputSpec,
     /// Random points of the uniform ranges.
     pub samples: u32,
     pub seed: u32,
@@ -182,10 +179,10 @@ fn show(v: &UniformValue) -> String {
 
 /// Runs check, then every case of every clean program.
 pub fn run(request: &Request) -> StressResult {
-    let (mut outcome, checked) = check::check_inputs(&request.inputs, request.stage, request.front);
+    let (mut outcome, checked) = request.input.check();
     let mut result = StressResult { outcome: Outcome::default(), reports: Vec::new(), adapter: None };
     let mut gpu: Option<Gpu> = None;
-    for c in checked.iter().filter(|c| !c.failed && (c.program.is_some() || !c.passes.is_empty())) {
+    for c in checked.iter().filter(|c| !c.failed && !c.units.is_empty()) {
         let Some(gpu) = command::open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
         if let Some(report) = stress_program(gpu, c, &mut outcome, request) {
             result.reports.push(report);
@@ -253,7 +250,7 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
         let geometry: Vec<String> = run
             .degenerate
             .iter()
-            .map(|(pass, what)| match effect.filter(|e| e.is_multi_pass()).and_then(|e| e.passes.get(*pass)) {
+            .map(|(pass, what)| match c.multi_pass().and_then(|e| e.passes.get(*pass)) {
                 Some(p) => format!("{}: {what}", p.name),
                 None => what.clone(),
             })
@@ -365,8 +362,8 @@ fn at_case(mut d: Diagnostic, c: &check::Checked, case: &Case, geometry: &[Strin
             None => d = d.in_file(e.file),
         },
         (None, _) => {
-            if let Some(p) = &c.program {
-                d = d.in_file(p.stages[0].syntax.file);
+            if let Some(u) = c.units.first() {
+                d = d.in_file(u.program.stages[0].syntax.file);
             }
         }
     }
@@ -405,8 +402,8 @@ impl Probed {
     ) -> Option<(InMemory<'c>, Probed)> {
         let probes = std::cell::RefCell::new(Vec::new());
         let vertex = gpu.vertex_storage();
-        let instrument = |pass: usize, t: &mut crate::back::Translation, p: &crate::front::program::CompiledProgram, e: Option<&Effect>| {
-            probes.borrow_mut().push((pass, culprit::instrument_translation(t, p, e, vertex)?));
+        let instrument = |unit: &check::Unit, t: &mut crate::back::Translation| {
+            probes.borrow_mut().push((unit.pass, culprit::instrument_translation(t, &unit.program, unit.effect.as_ref(), vertex)?));
             Ok(())
         };
         let m = MemoryRequest { read_back: Some(COUNTS_BUFFER), ..m };
@@ -474,17 +471,16 @@ impl Culprit {
 /// begins) is the primary span when the diagnostic has none.
 fn with_culprits(mut d: Diagnostic, c: &check::Checked, culprits: &[Culprit]) -> Diagnostic {
     for (k, f) in culprits.iter().enumerate() {
-        let program = if c.passes.is_empty() { c.program.as_ref() } else { c.passes.get(f.pass).and_then(|p| p.program.as_ref()) };
-        let Some(stage) = program.and_then(|p| p.stages.iter().find(|s| s.syntax.stage == f.probe.stage)) else { continue };
+        let Some(stage) = c.unit(f.pass).and_then(|u| u.program.stages.iter().find(|s| s.syntax.stage == f.probe.stage)) else { continue };
         let (Some(range), Some(rw)) = (f.probe.span.to_range(), &stage.rewritten) else { continue };
         let span = rw.map.range_to_original(range);
         let stage_name = match f.invoked {
             StageKind::Vertex => "vertex",
             _ => "fragment",
         };
-        let pass = match (&c.effect, c.passes.is_empty()) {
-            (Some(e), false) => e.passes.get(f.pass).map(|p| format!(" of pass `{}`", p.name)).unwrap_or_default(),
-            _ => String::new(),
+        let pass = match c.multi_pass() {
+            Some(e) => e.passes.get(f.pass).map(|p| format!(" of pass `{}`", p.name)).unwrap_or_default(),
+            None => String::new(),
         };
         let lead = if k == 0 { "the first non-finite value" } else { "then non-finite" };
         let label = format!("{lead} ({}) in {} of {} {stage_name} invocations{pass}", f.probe.what, f.first_in, f.total);

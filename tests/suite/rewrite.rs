@@ -39,8 +39,7 @@ fn glslang_links(dir: &Path) -> Option<bool> {
 
 #[test]
 fn rewrite_corpus() {
-    let dirs = common::subdirs("tests/rewrite");
-    assert!(dirs.len() >= 20, "expected at least 20 programs, found {}", dirs.len());
+    let dirs = common::fixtures("tests/rewrite", 42);
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("../../snapshots/rewrite");
     settings.set_prepend_module_to_snapshot(false);
@@ -59,7 +58,7 @@ fn rewrite_corpus() {
             problems.push(format!("{name}:\n{}", common::render(&outcome)));
             continue;
         }
-        let program = checked[0].program.as_ref().expect("a checked program");
+        let program = &checked[0].units.first().expect("a checked program").program;
         assert_eq!(program.stages.len(), common::stage_files(dir).len(), "{name}: every stage file compiled");
         for stage in &program.stages {
             let path = outcome.files.path(stage.syntax.file);
@@ -78,7 +77,7 @@ fn rewrite_corpus() {
 #[test]
 fn rewrite_known_failures_still_fail() {
     let mut now_passing = Vec::new();
-    for dir in common::subdirs("tests/rewrite_known_failures") {
+    for dir in common::fixtures("tests/rewrite_known_failures", 7) {
         let name = common::name_of(&dir);
         let why = std::fs::read_to_string(dir.join("why")).unwrap_or_default();
         assert!(!why.trim().is_empty(), "{name}: no `why` file");
@@ -86,7 +85,7 @@ fn rewrite_known_failures_still_fail() {
         let status = if diag::has_errors(&outcome.diagnostics) {
             "check errors".to_string()
         } else {
-            let program = checked[0].program.as_ref().expect("a checked program");
+            let program = &checked[0].units.first().expect("a checked program").program;
             let unvalidated = program.stages.iter().filter(|s| s.syntax.stage.naga().is_some() && s.naga.is_none()).count();
             if unvalidated > 0 {
                 format!("{unvalidated} stage(s) not validated by naga")

@@ -19,8 +19,8 @@ use crate::common;
 use crate::common::in_ci;
 
 fn programs() -> Vec<PathBuf> {
-    let mut dirs = common::subdirs("effects");
-    dirs.extend(common::subdirs("tests/rewrite"));
+    let mut dirs = common::fixtures("effects", 20);
+    dirs.extend(common::fixtures("tests/rewrite", 42));
     dirs
 }
 
@@ -62,19 +62,17 @@ fn every_program_translates_validates_and_builds_a_pipeline() {
     std::fs::create_dir_all(&scratch).unwrap();
     let mut problems = Vec::new();
     let dirs = programs();
-    assert!(dirs.len() >= 25, "expected the effects and the rewrite corpus, found {}", dirs.len());
     for dir in &dirs {
         let name = common::name_of(dir);
         let (outcome, checked) = common::check(dir);
         assert!(!diag::has_errors(&outcome.diagnostics), "{name} does not check:\n{}", common::render(&outcome));
         let c = &checked[0];
         // A multi-pass effect translates pass by pass (`<effect>.<pass>`).
-        let units: Vec<(String, &effectc::front::program::CompiledProgram, Option<&effectc::manifest::Effect>)> = if c.passes.is_empty() {
-            vec![(name.clone(), c.program.as_ref().unwrap(), c.effect.as_ref())]
-        } else {
-            c.passes.iter().map(|p| (p.view.name.clone(), p.program.as_ref().unwrap(), Some(&p.view))).collect()
-        };
-        for (name, program, effect) in units {
+        for unit in &c.units {
+            let (name, program, effect) = match c.multi_pass() {
+                Some(_) => (unit.name.clone(), &unit.program, unit.effect.as_ref()),
+                None => (name.clone(), &unit.program, unit.effect.as_ref()),
+            };
             let t = match back::translate(&name, program, effect, TranslateOptions::default()) {
                 Ok(t) => t,
                 Err(d) => {
@@ -127,7 +125,7 @@ fn manifest_defaults_pack_into_the_reflected_bytes() {
     assert!(!diag::has_errors(&outcome.diagnostics));
     let c = &checked[0];
     let effect = c.effect.as_ref().unwrap();
-    let t = back::translate("sun", c.program.as_ref().unwrap(), Some(effect), TranslateOptions::default()).unwrap();
+    let t = back::translate("sun", &c.units[0].program, Some(effect), TranslateOptions::default()).unwrap();
     let bytes = back::reflect::pack_defaults(&t.module, effect).unwrap().expect("sun has a uniform block");
     let block = t.reflection.uniform_block.as_ref().unwrap();
     assert_eq!(bytes.len() as u32, block.size);
