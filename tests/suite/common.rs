@@ -18,6 +18,25 @@ pub fn subdirs(dir: &str) -> Vec<PathBuf> {
     dirs
 }
 
+/// The fixtures under `dir` (sorted subdirectories), narrowed to the names containing one
+/// of the comma-separated words of `EFFECTC_FIXTURE` when it is set (like naga's
+/// `NAGA_SNAPSHOT`): `EFFECTC_FIXTURE=33-pass cargo test --locked fail_fixtures` runs one.
+/// Without the filter the count must be exactly `expected`, so a fixture that goes missing
+/// (or one added without updating the count) fails the run.
+pub fn fixtures(dir: &str, expected: usize) -> Vec<PathBuf> {
+    let all = subdirs(dir);
+    match std::env::var("EFFECTC_FIXTURE").ok().filter(|f| !f.trim().is_empty()) {
+        Some(filter) => {
+            let words: Vec<&str> = filter.split(',').map(str::trim).filter(|w| !w.is_empty()).collect();
+            all.into_iter().filter(|d| words.iter().any(|w| name_of(d).contains(w))).collect()
+        }
+        None => {
+            assert_eq!(all.len(), expected, "{dir}: expected {expected} fixtures, found {}", all.len());
+            all
+        }
+    }
+}
+
 /// The last path component as a string.
 pub fn name_of(path: &Path) -> String {
     path.file_name().unwrap().to_string_lossy().into_owned()

@@ -56,8 +56,8 @@ struct Program {
 }
 
 fn programs() -> Vec<Program> {
-    let mut dirs = common::subdirs("tests/rewrite");
-    dirs.extend(common::subdirs("effects"));
+    let mut dirs = common::fixtures("tests/rewrite", 42);
+    dirs.extend(common::fixtures("effects", 20));
     dirs.into_iter()
         .map(|d| Program {
             stages: common::stage_files(&d)
