@@ -188,7 +188,7 @@ pub struct RenderArgs {
     #[arg(long)]
     pub float: bool,
     /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop).
-    #[arg(long, default_value = "5", value_parser = parse_timeout)]
+    #[arg(long, default_value = "5", value_parser = parse_timeout, allow_negative_numbers = true)]
     pub timeout: Duration,
     /// Print GPU and CPU milliseconds per frame and the time to the first frame.
     #[arg(long)]
@@ -230,7 +230,7 @@ pub struct BenchArgs {
     #[arg(long)]
     pub plot: Option<PathBuf>,
     /// Seconds a frame may take before the run stops.
-    #[arg(long, default_value = "10", value_parser = parse_timeout)]
+    #[arg(long, default_value = "10", value_parser = parse_timeout, allow_negative_numbers = true)]
     pub timeout: Duration,
 }
 
@@ -251,7 +251,7 @@ pub struct StressArgs {
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Seconds a frame may take before the run stops.
-    #[arg(long, default_value = "10", value_parser = parse_timeout)]
+    #[arg(long, default_value = "10", value_parser = parse_timeout, allow_negative_numbers = true)]
     pub timeout: Duration,
 }
 
