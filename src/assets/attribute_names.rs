@@ -1,27 +1,29 @@
 //! Which mesh attribute a vertex input's name suggests (`aPos`, `vertPosition`, `in_Normal`,
 //! `aTexCoords`, `tangent`, `vColor`, …): the guess the renderer and the static analysis share.
 
+use crate::manifest::MeshAttribute;
+
 /// The attribute an input's name suggests.
-pub fn by_name(name: &str) -> Option<&'static str> {
+pub fn by_name(name: &str) -> Option<MeshAttribute> {
     let n = name.to_ascii_lowercase();
     let has = |parts: &[&str]| parts.iter().any(|p| n.contains(p));
     // "vertex" contains "tex": look for uv words in what remains without it.
     let rest = n.replace("vertex", "");
     let rest_has = |parts: &[&str]| parts.iter().any(|p| rest.contains(p));
     if has(&["bitangent", "binormal", "bitan"]) {
-        Some("bitangent")
+        Some(MeshAttribute::Bitangent)
     } else if has(&["tangent", "tang"]) {
-        Some("tangent")
+        Some(MeshAttribute::Tangent)
     } else if has(&["normal", "norm"]) {
-        Some("normal")
+        Some(MeshAttribute::Normal)
     } else if has(&["pos"]) {
-        Some("position")
+        Some(MeshAttribute::Position)
     } else if rest_has(&["uv", "tex", "coord", "st0"]) || n == "st" || n.ends_with("_st") {
-        Some("uv")
+        Some(MeshAttribute::Uv)
     } else if has(&["color", "colour", "col"]) {
-        Some("color")
+        Some(MeshAttribute::Color)
     } else if has(&["vertex", "vert", "point"]) || ["p", "a_p", "in_p", "v"].contains(&n.as_str()) {
-        Some("position")
+        Some(MeshAttribute::Position)
     } else {
         None
     }
@@ -34,19 +36,19 @@ mod tests {
     #[test]
     fn tutorial_names_map_to_attributes() {
         for (name, attr) in [
-            ("aPos", "position"),
-            ("vertPosition", "position"),
-            ("vertexPosition_modelspace", "position"),
-            ("in_Position", "position"),
-            ("aNormal", "normal"),
-            ("vertexNormal", "normal"),
-            ("aTexCoords", "uv"),
-            ("vertTexCoords", "uv"),
-            ("a_uv", "uv"),
-            ("aTangent", "tangent"),
-            ("aBitangent", "bitangent"),
-            ("aColor", "color"),
-            ("vertexColour", "color"),
+            ("aPos", MeshAttribute::Position),
+            ("vertPosition", MeshAttribute::Position),
+            ("vertexPosition_modelspace", MeshAttribute::Position),
+            ("in_Position", MeshAttribute::Position),
+            ("aNormal", MeshAttribute::Normal),
+            ("vertexNormal", MeshAttribute::Normal),
+            ("aTexCoords", MeshAttribute::Uv),
+            ("vertTexCoords", MeshAttribute::Uv),
+            ("a_uv", MeshAttribute::Uv),
+            ("aTangent", MeshAttribute::Tangent),
+            ("aBitangent", MeshAttribute::Bitangent),
+            ("aColor", MeshAttribute::Color),
+            ("vertexColour", MeshAttribute::Color),
         ] {
             assert_eq!(by_name(name), Some(attr), "{name}");
         }

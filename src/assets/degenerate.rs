@@ -11,6 +11,7 @@
 //!   vertex stage only (what `stress` instruments there); the other half draws as usual.
 
 use crate::assets::mesh::Mesh;
+use crate::manifest::MeshAttribute;
 
 /// A stress variant of the mesh.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -31,10 +32,10 @@ impl Degenerate {
     }
 
     /// Whether the variant changes what a shader reading `attributes` sees.
-    pub fn affects(self, attributes: &[&str]) -> bool {
+    pub fn affects(self, attributes: &[MeshAttribute]) -> bool {
         match self {
-            Degenerate::ZeroNormals => attributes.iter().any(|a| matches!(*a, "normal" | "bitangent")),
-            Degenerate::ZeroAreaTriangles => attributes.contains(&"position"),
+            Degenerate::ZeroNormals => attributes.iter().any(|a| matches!(a, MeshAttribute::Normal | MeshAttribute::Bitangent)),
+            Degenerate::ZeroAreaTriangles => attributes.contains(&MeshAttribute::Position),
         }
     }
 
@@ -102,7 +103,7 @@ mod tests {
         assert!(m.normals.iter().all(|n| *n == [0.0; 3]));
         assert_eq!((&m.positions, &m.indices, &m.uvs), (&cube.positions, &cube.indices, &cube.uvs));
         assert_eq!(what, "all 24 normals zero");
-        assert!(m.attribute("bitangent").unwrap().iter().all(|b| b[..3] == [0.0; 3]));
+        assert!(m.attribute(MeshAttribute::Bitangent).iter().all(|b| b[..3] == [0.0; 3]));
     }
 
     #[test]
@@ -131,9 +132,9 @@ mod tests {
 
     #[test]
     fn a_variant_matters_only_to_shaders_reading_what_it_changes() {
-        assert!(Degenerate::ZeroNormals.affects(&["position", "normal"]));
-        assert!(!Degenerate::ZeroNormals.affects(&["position", "uv"]));
-        assert!(Degenerate::ZeroAreaTriangles.affects(&["position"]));
+        assert!(Degenerate::ZeroNormals.affects(&[MeshAttribute::Position, MeshAttribute::Normal]));
+        assert!(!Degenerate::ZeroNormals.affects(&[MeshAttribute::Position, MeshAttribute::Uv]));
+        assert!(Degenerate::ZeroAreaTriangles.affects(&[MeshAttribute::Position]));
         assert!(!Degenerate::ZeroAreaTriangles.affects(&[]));
     }
 }

@@ -11,8 +11,7 @@ pub struct MeshDecl {
     pub span: Range<usize>,
     pub source: MeshSource,
     /// Optional explicit mapping: (shader input name, mesh attribute), in manifest order.
-    /// Mesh attributes are [`MeshAttribute::name`]s (the names in [`MESH_ATTRIBUTES`]).
-    pub attributes: Vec<(String, String)>,
+    pub attributes: Vec<(String, MeshAttribute)>,
     /// Spans of the shader input names in `attributes`, index for index.
     pub attribute_spans: Vec<Range<usize>>,
 }
@@ -54,6 +53,12 @@ impl MeshAttribute {
 
     pub fn from_name(name: &str) -> Option<MeshAttribute> {
         MeshAttribute::ALL.into_iter().find(|a| a.name() == name)
+    }
+}
+
+impl std::fmt::Display for MeshAttribute {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 

@@ -145,7 +145,7 @@ fn full_example_parses() {
     let mesh = e.mesh.unwrap();
     assert_eq!(mesh.source, MeshSource::Builtin(BuiltinMesh::UvSphere { segments: 64, rings: 32 }));
     assert_eq!(&SUN[mesh.span.clone()], "[mesh]");
-    assert_eq!(mesh.attributes, [("vertPosition".to_owned(), "position".to_owned()), ("vertTexCoords".to_owned(), "uv".to_owned())]);
+    assert_eq!(mesh.attributes, [("vertPosition".to_owned(), MeshAttribute::Position), ("vertTexCoords".to_owned(), MeshAttribute::Uv)]);
     assert_eq!(&SUN[mesh.attribute_spans[1].clone()], "vertTexCoords");
 }
 
@@ -508,15 +508,15 @@ fn mesh_attributes_accept_every_attribute_the_renderer_feeds() {
     // `bitangent` was documented and rendered but rejected with E0006.
     let text = minimal("[mesh]\nbuiltin = \"cube\"\n[mesh.attributes]\naBitangent = \"bitangent\"\n");
     let mesh = run(&text, &dir).unwrap().mesh.unwrap();
-    assert_eq!(mesh.attributes, [("aBitangent".to_owned(), "bitangent".to_owned())]);
+    assert_eq!(mesh.attributes, [("aBitangent".to_owned(), MeshAttribute::Bitangent)]);
     assert_eq!(MeshAttribute::from_name("bitangent"), Some(MeshAttribute::Bitangent));
 
-    // Every name parses (the renderer's mesh uses these names: `assets::mesh::ATTRIBUTES`),
-    // and names round-trip through the enum.
+    // Every name parses (the renderer's mesh feeds every `MeshAttribute`), and names
+    // round-trip through the enum.
     for attr in MeshAttribute::ALL {
         assert_eq!(MeshAttribute::from_name(attr.name()), Some(attr));
         let text = minimal(&format!("[mesh]\nbuiltin = \"cube\"\n[mesh.attributes]\nv = \"{}\"\n", attr.name()));
-        assert_eq!(run(&text, &dir).unwrap().mesh.unwrap().attributes[0].1, attr.name());
+        assert_eq!(run(&text, &dir).unwrap().mesh.unwrap().attributes[0].1, attr);
     }
 
     // An unknown name is still E0006, and the valid names listed come from the enum.

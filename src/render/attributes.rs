@@ -9,6 +9,7 @@
 use crate::assets::attribute_names::by_name;
 use crate::assets::mesh::Mesh;
 use crate::back::reflect::InterfaceVar;
+use crate::manifest::MeshAttribute;
 
 /// Where one vertex input's data comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -16,19 +17,19 @@ pub struct Choice {
     pub location: u32,
     pub input: String,
     pub format: wgpu::VertexFormat,
-    /// A mesh attribute name, or `None` for zeros.
-    pub attribute: Option<&'static str>,
+    /// The mesh attribute, or `None` for zeros.
+    pub attribute: Option<MeshAttribute>,
     /// Why it was chosen, when the manifest did not say (`by its name`, `by its location`).
     pub guessed: Option<&'static str>,
 }
 
 /// Matches every input to a mesh attribute.
-pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, String)], mesh: &Mesh) -> Vec<Choice> {
+pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, MeshAttribute)]) -> Vec<Choice> {
     inputs
         .iter()
         .map(|input| {
             let format = input_format(input);
-            let given = explicit.iter().find(|(name, _)| *name == input.name).and_then(|(_, attr)| known(attr));
+            let given = explicit.iter().find(|(name, _)| *name == input.name).map(|(_, attr)| *attr);
             let (attribute, guessed) = match given {
                 Some(a) => (Some(a), None),
                 None => match by_name(&input.name) {
@@ -39,23 +40,18 @@ pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, String)], mesh: &Mes
                     },
                 },
             };
-            let attribute = attribute.filter(|a| mesh.attribute(a).is_some());
             Choice { location: input.location, input: input.name.clone(), format, attribute, guessed }
         })
         .collect()
 }
 
-fn known(name: &str) -> Option<&'static str> {
-    crate::assets::mesh::ATTRIBUTES.iter().copied().find(|a| *a == name)
-}
-
-fn by_location(location: u32, format: wgpu::VertexFormat) -> Option<&'static str> {
+fn by_location(location: u32, format: wgpu::VertexFormat) -> Option<MeshAttribute> {
     use wgpu::VertexFormat as F;
     match (location, format) {
-        (0, _) => Some("position"),
-        (_, F::Float32x2) => Some("uv"),
-        (_, F::Float32x3) => Some("normal"),
-        (_, F::Float32x4) => Some("color"),
+        (0, _) => Some(MeshAttribute::Position),
+        (_, F::Float32x2) => Some(MeshAttribute::Uv),
+        (_, F::Float32x3) => Some(MeshAttribute::Normal),
+        (_, F::Float32x4) => Some(MeshAttribute::Color),
         _ => None,
     }
 }
@@ -154,7 +150,7 @@ pub(crate) fn unit_random(seed: u32, instance: u32, component: u32) -> f32 {
 /// Interleaves the chosen attributes of `mesh` in the formats the shader declares.
 pub fn interleave(choices: &[Choice], mesh: &Mesh) -> Interleaved {
     let (attributes, stride) = packed_layout(choices.iter().map(|c| (c.location, c.format)));
-    let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.and_then(|a| mesh.attribute(a))).collect();
+    let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.map(|a| mesh.attribute(a))).collect();
     let count = mesh.vertex_count();
     let mut bytes = Vec::with_capacity(count * stride as usize);
     for v in 0..count {
@@ -215,11 +211,11 @@ mod tests {
     fn inputs_are_matched_explicitly_then_by_name_then_by_location() {
         let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Cube);
         let inputs = [input(0, "p0", "float32x3"), input(1, "weird", "float32x2"), input(2, "aNormal", "float32x3")];
-        let explicit = vec![("p0".to_string(), "position".to_string())];
-        let c = choose(&inputs, &explicit, &mesh);
-        assert_eq!((c[0].attribute, c[0].guessed), (Some("position"), None));
-        assert_eq!((c[1].attribute, c[1].guessed), (Some("uv"), Some("by its location and type")));
-        assert_eq!((c[2].attribute, c[2].guessed), (Some("normal"), Some("by its name")));
+        let explicit = vec![("p0".to_string(), MeshAttribute::Position)];
+        let c = choose(&inputs, &explicit);
+        assert_eq!((c[0].attribute, c[0].guessed), (Some(MeshAttribute::Position), None));
+        assert_eq!((c[1].attribute, c[1].guessed), (Some(MeshAttribute::Uv), Some("by its location and type")));
+        assert_eq!((c[2].attribute, c[2].guessed), (Some(MeshAttribute::Normal), Some("by its name")));
         let buf = interleave(&c, &mesh);
         assert_eq!(buf.stride, 12 + 8 + 12);
         assert_eq!(buf.bytes.len(), mesh.vertex_count() * 32);

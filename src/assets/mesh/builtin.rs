@@ -7,7 +7,7 @@ use std::f32::consts::PI;
 use glam::Vec3;
 
 use super::tangents::normalize;
-use super::{Mesh, WHITE};
+use super::{Mesh, MeshAttribute, WHITE};
 use crate::manifest::BuiltinMesh;
 
 /// A builtin mesh, with sphere and grid sizes raised to the manifest's minimums.
@@ -85,7 +85,7 @@ impl Builder {
             tangents: self.tangents,
             colors,
             indices: self.indices,
-            provided: vec!["position", "normal", "uv", "tangent"],
+            provided: vec![MeshAttribute::Position, MeshAttribute::Normal, MeshAttribute::Uv, MeshAttribute::Tangent],
             computed: Vec::new(),
         }
     }
@@ -108,8 +108,8 @@ fn fullscreen_triangle() -> Mesh {
         tangents: vec![[1.0, 0.0, 0.0, 1.0]; 3],
         colors: vec![WHITE; 3],
         indices: vec![0, 1, 2],
-        provided: vec!["position", "normal", "uv"],
-        computed: vec!["tangent"],
+        provided: vec![MeshAttribute::Position, MeshAttribute::Normal, MeshAttribute::Uv],
+        computed: vec![MeshAttribute::Tangent],
     }
 }
 

@@ -31,15 +31,13 @@ pub struct Mesh {
     pub colors: Vec<[f32; 4]>,
     /// Triangle list, counter-clockwise front faces (OpenGL default).
     pub indices: Vec<u32>,
-    /// Attributes that came from the source rather than defaults/computation,
-    /// by name: "position", "normal", "uv", "tangent", "color".
-    pub provided: Vec<&'static str>,
-    /// Attributes effectc computed (e.g. "normal" for an OBJ without normals, "tangent").
-    pub computed: Vec<&'static str>,
+    /// Attributes that came from the source rather than defaults/computation.
+    pub provided: Vec<MeshAttribute>,
+    /// Attributes effectc computed (the normal of an OBJ without normals, the tangent).
+    pub computed: Vec<MeshAttribute>,
 }
 
-/// The names [`Mesh::attribute`] knows: the manifest's mesh attributes.
-pub use crate::manifest::MESH_ATTRIBUTES as ATTRIBUTES;
+pub use crate::manifest::MeshAttribute;
 
 /// The color of vertices whose source gives none.
 const WHITE: [f32; 4] = [1.0; 4];
@@ -62,19 +60,16 @@ impl Mesh {
     }
 
     /// Attribute data as 4 components per vertex: position w = 1; normal/uv/tangent padded
-    /// with 0 (tangent keeps its w sign); color as is; "bitangent" = cross(normal, tangent.xyz) * tangent.w.
-    /// None for an unknown name.
-    pub fn attribute(&self, name: &str) -> Option<Vec<[f32; 4]>> {
-        let data = match name {
-            "position" => self.positions.iter().map(|&[x, y, z]| [x, y, z, 1.0]).collect(),
-            "normal" => self.normals.iter().map(|&[x, y, z]| [x, y, z, 0.0]).collect(),
-            "uv" => self.uvs.iter().map(|&[u, v]| [u, v, 0.0, 0.0]).collect(),
-            "tangent" => self.tangents.clone(),
-            "bitangent" => self.normals.iter().zip(&self.tangents).map(|(&n, &t)| tangents::bitangent(n, t)).collect(),
-            "color" => self.colors.clone(),
-            _ => return None,
-        };
-        Some(data)
+    /// with 0 (tangent keeps its w sign); color as is; bitangent = cross(normal, tangent.xyz) * tangent.w.
+    pub fn attribute(&self, attribute: MeshAttribute) -> Vec<[f32; 4]> {
+        match attribute {
+            MeshAttribute::Position => self.positions.iter().map(|&[x, y, z]| [x, y, z, 1.0]).collect(),
+            MeshAttribute::Normal => self.normals.iter().map(|&[x, y, z]| [x, y, z, 0.0]).collect(),
+            MeshAttribute::Uv => self.uvs.iter().map(|&[u, v]| [u, v, 0.0, 0.0]).collect(),
+            MeshAttribute::Tangent => self.tangents.clone(),
+            MeshAttribute::Bitangent => self.normals.iter().zip(&self.tangents).map(|(&n, &t)| tangents::bitangent(n, t)).collect(),
+            MeshAttribute::Color => self.colors.clone(),
+        }
     }
 
     pub fn vertex_count(&self) -> usize {

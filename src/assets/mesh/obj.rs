@@ -8,7 +8,7 @@ use std::path::Path;
 use glam::Vec3;
 
 use super::tangents::{compute_tangents, normalize, resolve_normals};
-use super::{Mesh, WHITE};
+use super::{Mesh, MeshAttribute, WHITE};
 
 /// Reads an OBJ file; errors name it.
 pub(super) fn load(path: &Path) -> Result<Mesh, String> {
@@ -241,19 +241,19 @@ impl ObjVertices {
     }
 
     fn into_mesh(self) -> Mesh {
-        let mut provided = vec!["position"];
+        let mut provided = vec![MeshAttribute::Position];
         let mut computed = Vec::new();
         if self.normals.iter().all(Option::is_some) {
-            provided.push("normal");
+            provided.push(MeshAttribute::Normal);
         } else {
-            computed.push("normal");
+            computed.push(MeshAttribute::Normal);
         }
         if self.uvs.iter().all(Option::is_some) {
-            provided.push("uv");
+            provided.push(MeshAttribute::Uv);
         }
-        computed.push("tangent");
+        computed.push(MeshAttribute::Tangent);
         if self.colors.iter().all(Option::is_some) {
-            provided.push("color");
+            provided.push(MeshAttribute::Color);
         }
         let normals = resolve_normals(&self.positions, &self.normals, &self.indices);
         let tangents = compute_tangents(&self.positions, &normals, &self.uvs, &self.indices);

@@ -65,8 +65,8 @@ fn check_invariants(mesh: &Mesh, what: &str) {
     assert_eq!(mesh.colors.len(), n, "{what}: colors");
     assert_eq!(mesh.indices.len() % 3, 0, "{what}: index count");
     assert!(mesh.indices.iter().all(|&i| (i as usize) < n), "{what}: index out of range");
-    for name in ATTRIBUTES {
-        let data = mesh.attribute(name).unwrap_or_else(|| panic!("{what}: no {name}"));
+    for name in MeshAttribute::ALL {
+        let data = mesh.attribute(name);
         assert_eq!(data.len(), n, "{what}: {name}");
         assert!(data.iter().flatten().all(|c| c.is_finite()), "{what}: {name} not finite");
     }
@@ -90,7 +90,7 @@ fn check_winding(mesh: &Mesh, what: &str) {
 
 /// The stored tangent follows ∂P/∂u and the bitangent ∂P/∂v of each triangle's uv mapping.
 fn check_tangent_frame(mesh: &Mesh, what: &str) {
-    let bitangents = mesh.attribute("bitangent").unwrap_or_default();
+    let bitangents = mesh.attribute(MeshAttribute::Bitangent);
     for [a, b, c] in triangles(mesh) {
         let (e1, e2) = (v3(mesh.positions[b]) - v3(mesh.positions[a]), v3(mesh.positions[c]) - v3(mesh.positions[a]));
         let (uv0, uv1, uv2) = (mesh.uvs[a], mesh.uvs[b], mesh.uvs[c]);
@@ -140,7 +140,7 @@ fn builtins_are_well_formed() {
         check_tangent_frame(&mesh, &what);
         assert!(mesh.uvs.iter().flatten().all(|c| (0.0..=1.0).contains(c)), "{what}: uv outside 0..1");
         assert!(mesh.colors.iter().all(|&c| c == WHITE), "{what}: colors");
-        assert_eq!(mesh.provided, ["position", "normal", "uv", "tangent"], "{what}");
+        assert_eq!(mesh.provided, [MeshAttribute::Position, MeshAttribute::Normal, MeshAttribute::Uv, MeshAttribute::Tangent], "{what}");
         assert!(mesh.computed.is_empty(), "{what}");
     }
 }
@@ -162,7 +162,7 @@ fn quads_cover_their_square_with_gl_uvs() {
 fn cube_faces_are_flat_outward_and_upright() {
     let mesh = Mesh::builtin(BuiltinMesh::Cube);
     assert_eq!(mesh.bounds(), ([-0.5; 3], [0.5; 3]));
-    let bitangents = mesh.attribute("bitangent").unwrap_or_default();
+    let bitangents = mesh.attribute(MeshAttribute::Bitangent);
     for (v, bitangent) in bitangents.iter().enumerate() {
         let (face, normal) = (v / 4, mesh.normals[v]);
         assert_eq!(normal, mesh.normals[face * 4], "flat normals on face {face}");
@@ -239,14 +239,12 @@ fn mikktspace_agrees_with_analytic_tangents() {
 #[test]
 fn attribute_layouts() {
     let mesh = Mesh::builtin(BuiltinMesh::Quad);
-    let positions = mesh.attribute("position").unwrap_or_default();
+    let positions = mesh.attribute(MeshAttribute::Position);
     assert!(positions.iter().all(|p| p[3] == 1.0));
-    assert!(mesh.attribute("normal").unwrap_or_default().iter().all(|n| *n == [0.0, 0.0, 1.0, 0.0]));
-    assert_eq!(mesh.attribute("uv").unwrap_or_default()[2], [0.0, 1.0, 0.0, 0.0]);
-    assert_eq!(mesh.attribute("color").unwrap_or_default()[0], WHITE);
-    assert_eq!(mesh.attribute("bitangent").unwrap_or_default()[0], [0.0, 1.0, 0.0, 0.0]);
-    assert_eq!(mesh.attribute("nonsense"), None);
-    assert_eq!(mesh.attribute("Position"), None);
+    assert!(mesh.attribute(MeshAttribute::Normal).iter().all(|n| *n == [0.0, 0.0, 1.0, 0.0]));
+    assert_eq!(mesh.attribute(MeshAttribute::Uv)[2], [0.0, 1.0, 0.0, 0.0]);
+    assert_eq!(mesh.attribute(MeshAttribute::Color)[0], WHITE);
+    assert_eq!(mesh.attribute(MeshAttribute::Bitangent)[0], [0.0, 1.0, 0.0, 0.0]);
 }
 
 const QUAD_OBJ: &str = "\
@@ -271,8 +269,8 @@ fn obj_quad_with_uvs_and_normals() {
     check_winding(&mesh, "quad");
     check_tangent_frame(&mesh, "quad");
     assert_eq!((mesh.vertex_count(), mesh.triangle_count()), (4, 2));
-    assert_eq!(mesh.provided, ["position", "normal", "uv"]);
-    assert_eq!(mesh.computed, ["tangent"]);
+    assert_eq!(mesh.provided, [MeshAttribute::Position, MeshAttribute::Normal, MeshAttribute::Uv]);
+    assert_eq!(mesh.computed, [MeshAttribute::Tangent]);
     assert_eq!(mesh.uvs, [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], "OBJ v = 0 is the bottom, as in GL");
     assert!(mesh.tangents.iter().all(|t| close3(xyz(*t), Vec3::X) && t[3] == 1.0), "{:?}", mesh.tangents);
     assert!(mesh.colors.iter().all(|&c| c == WHITE));
@@ -286,7 +284,7 @@ fn obj_bitangent_sign_follows_mirrored_uvs() {
     check_invariants(&mesh, "mirrored quad");
     check_tangent_frame(&mesh, "mirrored quad");
     assert!(mesh.tangents.iter().all(|t| close3(xyz(*t), [-1.0, 0.0, 0.0]) && t[3] == -1.0));
-    let bitangents = mesh.attribute("bitangent").unwrap_or_default();
+    let bitangents = mesh.attribute(MeshAttribute::Bitangent);
     assert!(bitangents.iter().all(|b| close3(xyz(*b), Vec3::Y) && b[3] == 0.0), "{bitangents:?}");
 }
 
@@ -296,8 +294,8 @@ fn obj_triangle_without_normals_gets_computed_ones() {
     check_invariants(&mesh, "triangle");
     check_winding(&mesh, "triangle");
     assert_eq!(mesh.normals, [Vec3::Z.to_array(); 3]);
-    assert_eq!(mesh.provided, ["position"]);
-    assert_eq!(mesh.computed, ["normal", "tangent"]);
+    assert_eq!(mesh.provided, [MeshAttribute::Position]);
+    assert_eq!(mesh.computed, [MeshAttribute::Normal, MeshAttribute::Tangent]);
     assert_eq!(mesh.uvs, [[0.0; 2]; 3], "missing uvs are zero");
 }
 
@@ -320,7 +318,7 @@ fn obj_computed_normals_are_smooth_and_area_weighted() {
 fn obj_without_uvs_gets_fallback_tangents() {
     let mesh = obj("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\n");
     check_invariants(&mesh, "no uvs");
-    assert_eq!(mesh.provided, ["position", "normal"]);
+    assert_eq!(mesh.provided, [MeshAttribute::Position, MeshAttribute::Normal]);
 }
 
 #[test]
@@ -342,7 +340,7 @@ fn obj_degenerate_triangles_do_not_make_nan() {
 fn obj_vertex_colors() {
     let mesh = obj("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 0.5\nf 1 2 3\n");
     assert_eq!(mesh.colors, [[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 1.0], [0.0, 0.0, 0.5, 1.0]]);
-    assert!(mesh.provided.contains(&"color"));
+    assert!(mesh.provided.contains(&MeshAttribute::Color));
     let partial = obj_error("v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     assert!(partial.contains("only 1 of the 3 `v` lines"), "{partial}");
 }
@@ -356,7 +354,7 @@ fn obj_models_merge_into_one_mesh() {
     check_winding(&mesh, "merged");
     assert_eq!(mesh.triangle_count(), 3);
     assert_eq!(mesh.indices[3..6].iter().map(|&i| mesh.positions[i as usize][2]).sum::<f32>(), 15.0);
-    assert_eq!(mesh.computed, ["normal", "tangent"], "one object had no normals");
+    assert_eq!(mesh.computed, [MeshAttribute::Normal, MeshAttribute::Tangent], "one object had no normals");
     assert_eq!(mesh.bounds(), ([0.0; 3], [1.0, 1.0, 5.0]));
 }
 

@@ -14,7 +14,7 @@ use naga::{Module, ScalarKind, TypeInner};
 use super::interval::Iv;
 use super::value::{singular_bounds, Num, Val};
 use crate::assets::mesh::Mesh;
-use crate::manifest::{Effect, MeshSource, Semantic, TextureSource, UniformDefault, UniformValue};
+use crate::manifest::{Effect, MeshAttribute, MeshSource, Semantic, TextureSource, UniformDefault, UniformValue};
 
 /// How long an effect is assumed to run when its time uniform has no `range`: a day.
 pub const DEFAULT_TIME_LIMIT: f64 = 86_400.0;
@@ -67,13 +67,10 @@ impl Facts {
                 if per_instance {
                     continue;
                 }
-                let attr = explicit
-                    .iter()
-                    .find(|(n, _)| n == name)
-                    .map(|(_, a)| a.as_str())
-                    .or_else(|| crate::assets::attribute_names::by_name(name));
-                if let Some(data) = attr.and_then(|a| mesh.attribute(a).map(|d| (a, d))) {
-                    f.attributes.insert(*location, attribute_fact(&mesh, data.0, &data.1));
+                let attr =
+                    explicit.iter().find(|(n, _)| n == name).map(|(_, a)| *a).or_else(|| crate::assets::attribute_names::by_name(name));
+                if let Some(a) = attr {
+                    f.attributes.insert(*location, attribute_fact(&mesh, a, &mesh.attribute(a)));
                 }
             }
         }
@@ -87,7 +84,7 @@ impl Facts {
 }
 
 /// Per-component hull, length bounds and the cone property of one mesh attribute.
-fn attribute_fact(mesh: &Mesh, name: &str, data: &[[f32; 4]]) -> Num {
+fn attribute_fact(mesh: &Mesh, attribute: MeshAttribute, data: &[[f32; 4]]) -> Num {
     let mut c = vec![Iv { lo: f64::INFINITY, hi: f64::NEG_INFINITY }; 4];
     let (mut len_lo, mut len_hi, mut l3_lo, mut l3_hi) = (f64::INFINITY, 0.0f64, f64::INFINITY, 0.0f64);
     for v in data {
@@ -105,7 +102,7 @@ fn attribute_fact(mesh: &Mesh, name: &str, data: &[[f32; 4]]) -> Num {
     let mut n = Num::from_comps(c, 1, ScalarKind::Float, true);
     n.len = n.len.meet(Iv::new(len_lo, len_hi).rounded());
     n.len3 = n.len3.meet(Iv::new(l3_lo, l3_hi).rounded());
-    n.cone = matches!(name, "normal" | "tangent" | "bitangent") && cone_holds(mesh, data);
+    n.cone = matches!(attribute, MeshAttribute::Normal | MeshAttribute::Tangent | MeshAttribute::Bitangent) && cone_holds(mesh, data);
     n
 }
 

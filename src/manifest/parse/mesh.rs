@@ -79,7 +79,7 @@ impl Ctx<'_> {
                         }
                         match self.choice(av, &format!("`mesh.attributes.{input}`"), "mesh attribute", &choices) {
                             Some(attr) => {
-                                attributes.push((input.to_owned(), attr.name().to_owned()));
+                                attributes.push((input.to_owned(), attr));
                                 attribute_spans.push(ak.span());
                             }
                             None => ok = false,

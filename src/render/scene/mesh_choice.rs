@@ -5,7 +5,7 @@ use crate::assets::mesh::Mesh;
 use crate::diag::{Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
-use crate::manifest::{BuiltinMesh, Effect, MeshSource};
+use crate::manifest::{BuiltinMesh, Effect, MeshAttribute, MeshSource};
 use crate::render::attributes;
 use crate::stage::StageKind;
 
@@ -89,7 +89,7 @@ pub(super) fn report_attributes(
             (None, _) => (W_ATTRIBUTE_ZERO, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),
         };
         let d = at_declaration(Diagnostic::warning(code, message), program, &c.input, Storage::In, "this input");
-        let example = c.attribute.unwrap_or("position");
+        let example = c.attribute.unwrap_or(MeshAttribute::Position);
         warnings.push(d.with_help(format!(
             "map it in the manifest: [mesh.attributes] `{} = \"{example}\"` (attributes: position, normal, uv, tangent, bitangent, color)",
             c.input

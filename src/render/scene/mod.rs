@@ -21,7 +21,7 @@ use crate::back::Translation;
 use crate::diag::{Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
-use crate::manifest::{Blend, CameraDecl, Cull, Effect, Filter, ModelDecl};
+use crate::manifest::{Blend, CameraDecl, Cull, Effect, Filter, MeshAttribute, ModelDecl};
 use crate::render::attributes;
 use crate::render::device::{color_formats, Gpu, PipelineSpec};
 use crate::render::uniforms::{self, UniformBuffer};
@@ -158,8 +158,8 @@ impl Scene {
         let instances = input.effect.and_then(|e| e.instances.as_ref());
         let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
         let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
-        let choices = attributes::choose(&per_vertex, &explicit, &mesh);
-        let read: Vec<&str> = choices.iter().filter_map(|c| c.attribute).collect();
+        let choices = attributes::choose(&per_vertex, &explicit);
+        let read: Vec<MeshAttribute> = choices.iter().filter_map(|c| c.attribute).collect();
         let (mesh, degenerate) = match input.degenerate {
             Some(d) if matches!(mesh_note, MeshNote::Manifest | MeshNote::Cube) && d.affects(&read) => {
                 let (changed, what) = d.apply(&mesh);
@@ -323,7 +323,8 @@ fn uniform_buffers(
 /// A one-line description of the mesh and its attributes, for `--verbose`.
 fn describe(mesh_note: &MeshNote, mesh: &Mesh, choices: &[attributes::Choice], effect: Option<&Effect>) -> String {
     let instances = effect.and_then(|e| e.instances.as_ref());
-    let mut inputs: Vec<String> = choices.iter().map(|c| format!("{} ← {}", c.input, c.attribute.unwrap_or("zeros"))).collect();
+    let mut inputs: Vec<String> =
+        choices.iter().map(|c| format!("{} ← {}", c.input, c.attribute.map_or("zeros", MeshAttribute::name))).collect();
     if let Some(d) = instances {
         inputs.extend(d.attributes.iter().map(|a| format!("{} ← per instance", a.input)));
     }
