@@ -9,11 +9,13 @@
 
 use std::ops::Range;
 
+mod code;
 mod github;
 mod human;
 mod json;
 mod sarif;
 
+pub use code::{Code, UnknownCode};
 pub use github::render_github;
 pub use human::render_human;
 pub use json::render_json;
