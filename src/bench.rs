@@ -15,16 +15,12 @@ pub mod plot;
 use std::time::Duration;
 
 use crate::check::{self, Outcome};
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command;
 use crate::render::device::Gpu;
 use crate::render::frames::{GpuClock, Pixels};
 use crate::render::memory::{self, MemoryRequest, MemoryRun};
-
-pub const E_KNOB_UNKNOWN: &str = "E0801";
-pub const E_NOTHING: &str = "E0802";
-pub const E_KNOB_VALUES: &str = "E0803";
 
 /// What `bench` was asked to do.
 #[derive(Debug, Clone)]
@@ -88,7 +84,7 @@ pub fn run(request: &Request) -> BenchResult {
     for c in checked.iter().filter(|c| !c.failed) {
         let Some(effect) = c.effect.as_ref() else {
             outcome.diagnostics.push(
-                Diagnostic::error(E_NOTHING, format!("`{}` has no manifest: nothing to sweep", c.name))
+                Diagnostic::new(Code::NothingToBench, format!("`{}` has no manifest: nothing to sweep", c.name))
                     .with_help("bench an effect.toml with a [knobs] table or a --knob over one of its [uniforms]"),
             );
             continue;
@@ -119,7 +115,7 @@ fn knobs_of(effect: &Effect, request: &Request) -> Result<Vec<Knob>, Box<Diagnos
     let default_of = |name: &str| effect.uniform(name).and_then(|u| u.value.clone()).filter(|v| v.as_f64().is_some());
     if request.knobs.is_empty() {
         if effect.knobs.is_empty() {
-            return Err(Box::new(Diagnostic::error(E_NOTHING, format!("effect `{}` has no [knobs] and no --knob was given", effect.name))
+            return Err(Box::new(Diagnostic::new(Code::NothingToBench, format!("effect `{}` has no [knobs] and no --knob was given", effect.name))
                 .in_file(effect.file)
                 .with_help("add e.g. `[knobs]` / `numLayers = { values = [4, 8, 16, 32], reference = 32 }`, or pass --knob numLayers=4,8,16,32")));
         }
@@ -139,7 +135,7 @@ fn knobs_of(effect: &Effect, request: &Request) -> Result<Vec<Knob>, Box<Diagnos
                 .map(|u| format!("`{}`", u.name))
                 .collect();
             return Err(Box::new(
-                Diagnostic::error(E_KNOB_UNKNOWN, format!("--knob `{name}` names no numeric [uniforms] entry of `{}`", effect.name))
+                Diagnostic::new(Code::KnobUnknown, format!("--knob `{name}` names no numeric [uniforms] entry of `{}`", effect.name))
                     .in_file(effect.file)
                     .with_note(if numeric.is_empty() {
                         "the manifest gives no numeric uniform".to_string()
@@ -281,16 +277,20 @@ fn frame_error(frame: &[u8], reference: &[u8], (w, h): (u32, u32)) -> FrameError
 
 /// `NAME=v1,v2,…` → (name, values).
 pub fn parse_knob(s: &str) -> Result<(String, Vec<f64>), String> {
-    let (name, list) = s.split_once('=').ok_or_else(|| format!("{E_KNOB_VALUES}: expected NAME=v1,v2,…, got `{s}`"))?;
+    let (name, list) = s.split_once('=').ok_or_else(|| format!("{}: expected NAME=v1,v2,…, got `{s}`", Code::KnobValues))?;
     let values: Result<Vec<f64>, String> = list
         .split(',')
         .map(|v| {
-            v.trim().parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| format!("{E_KNOB_VALUES}: `{v}` is not a finite number"))
+            v.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| format!("{}: `{v}` is not a finite number", Code::KnobValues))
         })
         .collect();
     let values = values?;
     if name.trim().is_empty() || values.is_empty() {
-        return Err(format!("{E_KNOB_VALUES}: expected NAME=v1,v2,…, got `{s}`"));
+        return Err(format!("{}: expected NAME=v1,v2,…, got `{s}`", Code::KnobValues));
     }
     Ok((name.trim().to_string(), values))
 }

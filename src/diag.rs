@@ -1,19 +1,22 @@
 //! Diagnostics as plain data, and the emitters that render them.
 //!
 //! Every problem effectc finds — in a manifest, a GLSL stage, a link between stages — is a
-//! [`Diagnostic`]: severity, a stable code, a primary location in one of the user's files,
-//! secondary labels (possibly in other files), notes and an optional help line. Spans are
-//! byte ranges into the *original* text registered in [`Files`]; never into generated code.
+//! [`Diagnostic`]: a stable [`Code`] (whose letter is the severity; every code is listed
+//! once, in `diag::code`), a primary location in one of the user's files, secondary labels
+//! (possibly in other files), notes and an optional help line. Spans are byte ranges into
+//! the *original* text registered in [`Files`]; never into generated code.
 //! One set of emitters renders them: human (codespan-reporting), JSON, GitHub workflow
 //! commands and SARIF 2.1.0.
 
 use std::ops::Range;
 
+mod code;
 mod github;
 mod human;
 mod json;
 mod sarif;
 
+pub use code::{Code, UnknownCode};
 pub use github::render_github;
 pub use human::render_human;
 pub use json::render_json;
@@ -43,9 +46,9 @@ pub struct Label {
 /// One problem found in the user's input.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Diagnostic {
-    pub severity: Severity,
-    /// Stable code such as `E0101` / `W0201`, documented in the README.
-    pub code: &'static str,
+    /// Stable code such as `E0101` / `W0201`, documented in the README; its letter is the
+    /// severity ([`Diagnostic::severity`]).
+    pub code: Code,
     /// Primary location: file and byte span (None for whole-run problems).
     pub file: Option<FileId>,
     pub span: Option<Range<usize>>,
@@ -58,9 +61,9 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
-    pub fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Self {
+    /// A diagnostic of `code`, with the severity the code's letter gives.
+    pub fn new(code: Code, message: impl Into<String>) -> Self {
         Diagnostic {
-            severity,
             code,
             file: None,
             span: None,
@@ -70,15 +73,6 @@ impl Diagnostic {
             notes: Vec::new(),
             help: None,
         }
-    }
-    pub fn error(code: &'static str, message: impl Into<String>) -> Self {
-        Self::new(Severity::Error, code, message)
-    }
-    pub fn warning(code: &'static str, message: impl Into<String>) -> Self {
-        Self::new(Severity::Warning, code, message)
-    }
-    pub fn note(code: &'static str, message: impl Into<String>) -> Self {
-        Self::new(Severity::Note, code, message)
     }
     /// Set the primary location and its label.
     pub fn at(mut self, file: FileId, span: Range<usize>, label: impl Into<String>) -> Self {
@@ -104,8 +98,12 @@ impl Diagnostic {
         self.help = Some(help.into());
         self
     }
+    /// How bad it is: from the code ([`Code::severity`]).
+    pub fn severity(&self) -> Severity {
+        self.code.severity()
+    }
     pub fn is_error(&self) -> bool {
-        self.severity == Severity::Error
+        self.severity() == Severity::Error
     }
 }
 
@@ -278,7 +276,7 @@ pub fn has_errors(diags: &[Diagnostic]) -> bool {
 
 /// Number of diagnostics of the given severity.
 pub fn count(diags: &[Diagnostic], severity: Severity) -> usize {
-    diags.iter().filter(|d| d.severity == severity).count()
+    diags.iter().filter(|d| d.severity() == severity).count()
 }
 
 /// Stable sort into reporting order: diagnostics without a file first, then by file id,
@@ -286,7 +284,7 @@ pub fn count(diags: &[Diagnostic], severity: Severity) -> usize {
 /// equal on all of these keep their relative order.
 pub fn sort(diags: &mut [Diagnostic]) {
     diags.sort_by(|a, b| {
-        let key = |d: &Diagnostic| (d.file, d.span.as_ref().map(|s| s.start), std::cmp::Reverse(d.severity), d.code);
+        let key = |d: &Diagnostic| (d.file, d.span.as_ref().map(|s| s.start), std::cmp::Reverse(d.severity()), d.code);
         key(a).cmp(&key(b))
     });
 }
@@ -345,9 +343,9 @@ mod tests {
 
     #[test]
     fn summary_line_plurals() {
-        let e = Diagnostic::error("E1", "x");
-        let w = Diagnostic::warning("W1", "y");
-        let n = Diagnostic::note("N1", "z");
+        let e = Diagnostic::new(Code::ManifestSyntax, "x");
+        let w = Diagnostic::new(Code::StageExtension, "y");
+        let n = Diagnostic::new(Code::SyntaxAndInterfaceOnly, "z");
         assert_eq!(summary_line(&[], 1), "checked 1 program: no problems");
         assert_eq!(summary_line(&[e.clone(), w.clone(), w.clone()], 3), "checked 3 programs: 1 error, 2 warnings");
         assert_eq!(summary_line(&[e.clone(), e, n], 0), "checked 0 programs: 2 errors, 1 note");
@@ -356,7 +354,11 @@ mod tests {
 
     #[test]
     fn counts_and_has_errors() {
-        let diags = vec![Diagnostic::warning("W1", "a"), Diagnostic::error("E1", "b"), Diagnostic::warning("W2", "c")];
+        let diags = vec![
+            Diagnostic::new(Code::StageExtension, "a"),
+            Diagnostic::new(Code::ManifestSyntax, "b"),
+            Diagnostic::new(Code::DefaultOutOfRange, "c"),
+        ];
         assert!(has_errors(&diags));
         assert!(!has_errors(&diags[..1]));
         assert_eq!(count(&diags, Severity::Warning), 2);
@@ -368,17 +370,18 @@ mod tests {
     fn sort_orders_by_file_span_severity_code() {
         let (f0, f1) = (FileId(0), FileId(1));
         let mut diags = vec![
-            Diagnostic::warning("W2", "1").at(f1, 0..1, ""),
-            Diagnostic::warning("W1", "2").at(f0, 5..6, ""),
-            Diagnostic::error("E9", "3").at(f0, 5..6, ""),
-            Diagnostic::warning("W1", "4").at(f0, 1..2, ""),
-            Diagnostic::error("E1", "5"),
-            Diagnostic::warning("W1", "6").at(f0, 5..9, ""),
-            Diagnostic::error("E2", "7").in_file(f0),
+            Diagnostic::new(Code::DefaultOutOfRange, "1").at(f1, 0..1, ""),
+            Diagnostic::new(Code::StageExtension, "2").at(f0, 5..6, ""),
+            Diagnostic::new(Code::ManifestConflict, "3").at(f0, 5..6, ""),
+            Diagnostic::new(Code::UnreadOutput, "8").at(f0, 1..2, ""),
+            Diagnostic::new(Code::StageExtension, "4").at(f0, 1..2, ""),
+            Diagnostic::new(Code::ManifestSyntax, "5"),
+            Diagnostic::new(Code::StageExtension, "6").at(f0, 5..9, ""),
+            Diagnostic::new(Code::ManifestIo, "7").in_file(f0),
         ];
         sort(&mut diags);
         let order: Vec<&str> = diags.iter().map(|d| d.message.as_str()).collect();
-        // "6" equals "2" on every key and came later: stable.
-        assert_eq!(order, ["5", "7", "4", "3", "2", "6", "1"]);
+        // "6" equals "2" on every key and came later: stable; "4" (W0001) before "8" (W0201).
+        assert_eq!(order, ["5", "7", "4", "8", "3", "2", "6", "1"]);
     }
 }

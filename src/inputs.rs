@@ -9,13 +9,8 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::stage::StageKind;
-
-/// Code for inputs that do not exist or cannot be read (the CLI exits with 2).
-pub const E_INPUT_IO: &str = "E0010";
-/// Code for a stage file whose stage cannot be told from its extension.
-pub const E_UNKNOWN_STAGE: &str = "E0011";
 
 /// One program to check.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -52,7 +47,7 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>) -> (Vec<ProgramInp
         let meta = match std::fs::metadata(input) {
             Ok(m) => m,
             Err(e) => {
-                diags.push(Diagnostic::error(E_INPUT_IO, format!("cannot read `{}`: {e}", input.display())));
+                diags.push(Diagnostic::new(Code::InputIo, format!("cannot read `{}`: {e}", input.display())));
                 continue;
             }
         };
@@ -66,7 +61,7 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>) -> (Vec<ProgramInp
             match stage_of(input, forced) {
                 Some(kind) => loose.push((input.clone(), kind)),
                 None => diags.push(
-                    Diagnostic::error(E_UNKNOWN_STAGE, format!("cannot tell the stage of `{}` from its extension", input.display()))
+                    Diagnostic::new(Code::UnknownStage, format!("cannot tell the stage of `{}` from its extension", input.display()))
                         .with_help("name it .vert/.vs/.vsh, .frag/.fs/.fsh, .geom/.gs, or pass --stage vertex|fragment|geometry|…"),
                 ),
             }
@@ -117,7 +112,7 @@ fn collect_dir(dir: &Path) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
         let entries = match std::fs::read_dir(&d) {
             Ok(e) => e,
             Err(e) => {
-                diags.push(Diagnostic::error(E_INPUT_IO, format!("cannot read directory `{}`: {e}", d.display())));
+                diags.push(Diagnostic::new(Code::InputIo, format!("cannot read directory `{}`: {e}", d.display())));
                 continue;
             }
         };
@@ -160,7 +155,7 @@ mod tests {
         let (progs, _) = collect(std::slice::from_ref(&dir), None);
         assert_eq!(progs.len(), 2, "directory groups by stem: a and b");
         let (_, diags) = collect(&[dir.join("missing.frag")], None);
-        assert_eq!(diags[0].code, E_INPUT_IO);
+        assert_eq!(diags[0].code, Code::InputIo);
         let (_, diags) = collect(&[dir.join("a.vert").with_extension("txt")], None);
         assert_eq!(diags.len(), 1);
         std::fs::remove_dir_all(&dir).unwrap();

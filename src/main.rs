@@ -63,7 +63,7 @@ fn bench(args: BenchArgs) -> ExitCode {
     if let Some(path) = &args.plot {
         if let Err(e) = effectc::bench::plot::write_svg(path, &result.reports) {
             result.outcome.io_error |= !result.reports.is_empty();
-            result.outcome.diagnostics.push(effectc::diag::Diagnostic::error(effectc::output::E_OUTPUT_IO, e));
+            result.outcome.diagnostics.push(diag::Diagnostic::new(diag::Code::OutputIo, e));
         }
     }
     let text = match c.format {

@@ -6,9 +6,6 @@ use std::path::{Path, PathBuf};
 
 use crate::check::Outcome;
 
-/// Code for an output that cannot be written (IO: exit 2).
-pub const E_OUTPUT_IO: &str = "E0014";
-
 /// Canonical paths of every file the run read.
 pub fn input_paths(outcome: &Outcome, inputs: &[PathBuf]) -> BTreeSet<PathBuf> {
     let mut set: BTreeSet<PathBuf> =

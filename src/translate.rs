@@ -10,8 +10,8 @@ use std::path::{Path, PathBuf};
 use crate::back::units::{emit_contained, target_error, translate_units};
 use crate::back::{Target, TranslateOptions, Translation};
 use crate::check::{self, Outcome};
-use crate::diag::Diagnostic;
-use crate::output::{input_paths, write_atomic, E_OUTPUT_IO};
+use crate::diag::{Code, Diagnostic};
+use crate::output::{input_paths, write_atomic};
 
 /// What `translate` was asked to do.
 #[derive(Debug, Clone)]
@@ -62,7 +62,7 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
                         Ok(()) => files.push(path),
                         Err(e) => {
                             outcome.io_error = true;
-                            outcome.diagnostics.push(Diagnostic::error(E_OUTPUT_IO, e));
+                            outcome.diagnostics.push(Diagnostic::new(Code::OutputIo, e));
                         }
                     }
                 }

@@ -11,6 +11,7 @@
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
 //! - [`bench`]: `effectc bench` knob sweeps (error to 0 at the reference, plot, mistakes).
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
+//! - [`codes`]: the README's Diagnostics table lists every diagnostic code, and no stale one.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
 //! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
 //! - [`layout`]: the tree's shape: layers import downward, no submodule cycles, file and
@@ -27,6 +28,8 @@
 mod bench;
 #[path = "suite/cli.rs"]
 mod cli;
+#[path = "suite/codes.rs"]
+mod codes;
 #[path = "suite/common.rs"]
 mod common;
 #[path = "suite/fail.rs"]

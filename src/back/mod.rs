@@ -31,7 +31,7 @@ pub use wgsl::verify as verify_wgsl;
 use naga::valid::ModuleInfo;
 use naga::Module;
 
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::plan::UNIFORM_BLOCK;
 use crate::front::program::CompiledProgram;
 use crate::manifest::Effect;
@@ -127,7 +127,7 @@ pub fn translate(
     options: TranslateOptions,
 ) -> Result<Translation, Vec<Diagnostic>> {
     let Some(first) = program.stages.first() else {
-        return Err(vec![Diagnostic::error("E0304", "the program has no stages to translate")]);
+        return Err(vec![Diagnostic::new(Code::StageNotValid, "the program has no stages to translate")]);
     };
     let file = first.syntax.file;
     let mut diags = Vec::new();
@@ -136,15 +136,18 @@ pub fn translate(
         let kind = stage.syntax.stage;
         if kind.naga().is_none() {
             diags.push(
-                Diagnostic::error("E0303", format!("the {kind} stage cannot be translated"))
+                Diagnostic::new(Code::StageNotTranslatable, format!("the {kind} stage cannot be translated"))
                     .in_file(stage.syntax.file)
                     .with_note("naga, WGSL and the WebGPU pipeline have no geometry or tessellation stages"),
             );
             continue;
         }
         if let Some(limit) = &stage.limitation {
-            let d = Diagnostic::error("E0306", format!("the {kind} stage uses {}, which naga cannot translate", limit.construct))
-                .with_note(
+            let d = Diagnostic::new(
+                Code::TargetCannotExpress,
+                format!("the {kind} stage uses {}, which naga cannot translate", limit.construct),
+            )
+            .with_note(
                 "the program is legal GLSL (`effectc check` accepts it); naga, which effectc translates with, does not take this construct",
             );
             diags.push(match &limit.span {
@@ -155,19 +158,21 @@ pub fn translate(
         }
         if let Some(validated) = stage.naga.as_ref().filter(|v| !v.needs.is_empty()) {
             diags.push(
-                Diagnostic::error(
-                    "E0306",
+                Diagnostic::new(
+                    Code::TargetCannotExpress,
                     format!("the {kind} stage needs {} , which WebGPU does not have", validated.needs.join(", ")),
                 )
                 .in_file(stage.syntax.file)
-                .with_note("legal in desktop GL; WebGPU has these only as optional features (or not at all), so effectc does not translate them")
+                .with_note(
+                    "legal in desktop GL; WebGPU has these only as optional features (or not at all), so effectc does not translate them",
+                )
                 .with_help(capability_help(&validated.needs)),
             );
             continue;
         }
         let (Some(validated), Some(rewritten)) = (&stage.naga, &stage.rewritten) else {
             diags.push(
-                Diagnostic::error("E0304", format!("the {kind} stage did not validate, so it cannot be translated"))
+                Diagnostic::new(Code::StageNotValid, format!("the {kind} stage did not validate, so it cannot be translated"))
                     .in_file(stage.syntax.file),
             );
             continue;
@@ -175,7 +180,7 @@ pub fn translate(
         let mut module = validated.module.clone();
         fixes::block_member_interpolation(&mut module, &stage.syntax);
         for span in fixes::fix_switch_fallthrough(&mut module) {
-            let mut d = Diagnostic::error("E0302", "a `switch` case falls through into the next case's code")
+            let mut d = Diagnostic::new(Code::SwitchFallThrough, "a `switch` case falls through into the next case's code")
                 .with_note("WGSL has no fall-through between cases, so this cannot be translated")
                 .with_help("end each case with `break` (repeat the shared code in each case if needed)");
             d = match span.to_range() {
@@ -191,7 +196,7 @@ pub fn translate(
     }
     let refs: Vec<(StageKind, &Module)> = modules.iter().map(|(k, m)| (*k, m)).collect();
     let mut module = merge::merge(&refs).map_err(|c| {
-        vec![Diagnostic::error("E0301", format!("the stages cannot share one module: {}", c.0))
+        vec![Diagnostic::new(Code::BindingConflict, format!("the stages cannot share one module: {}", c.0))
             .in_file(file)
             .with_help("give each resource its own binding in every stage")]
     })?;
@@ -247,7 +252,7 @@ fn capability_help(needs: &[String]) -> String {
 
 /// An internal error of the translation (E0305): a bug, not the user's input.
 pub fn internal_error(file: crate::diag::FileId, message: String) -> Diagnostic {
-    Diagnostic::error("E0305", message)
+    Diagnostic::new(Code::TranslateInternal, message)
         .in_file(file)
         .with_note("this is a bug in effectc's translation; please report it with the input files")
 }

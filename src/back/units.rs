@@ -4,7 +4,7 @@
 
 use crate::back::{self, Target, TranslateOptions, Translation};
 use crate::check::{Checked, Unit};
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 
 /// The translations of a checked program, each with the directory name its files go to:
 /// one for a single-pass program, one per pass that reaches the output for a multi-pass
@@ -39,19 +39,19 @@ pub fn emit_contained(t: &Translation, target: Target) -> Result<Vec<back::Outpu
 pub fn target_error(file: crate::diag::FileId, target: Target, message: &str) -> Diagnostic {
     let unsupported = ["doesn't support", "not supported", "nsupported", "Unimplemented"];
     if unsupported.iter().any(|u| message.contains(u)) {
-        Diagnostic::error("E0306", format!("the {} target cannot express this program", target.name()))
+        Diagnostic::new(Code::TargetCannotExpress, format!("the {} target cannot express this program", target.name()))
             .in_file(file)
             .with_note(message.to_string())
             .with_help("leave this target out of --to, or avoid the feature in the shader")
     } else {
-        Diagnostic::error("E0305", format!("cannot write {}: {message}", target.name()))
+        Diagnostic::new(Code::TranslateInternal, format!("cannot write {}: {message}", target.name()))
             .in_file(file)
             .with_note("this is a gap in naga's backend or a bug in effectc; please report it")
     }
 }
 
 fn panicked(file: crate::diag::FileId, what: &str) -> Diagnostic {
-    Diagnostic::error("E0305", format!("naga panicked during {what}"))
+    Diagnostic::new(Code::TranslateInternal, format!("naga panicked during {what}"))
         .in_file(file)
         .with_note("this is a bug in naga or effectc; please report it with the input files")
 }

@@ -8,15 +8,12 @@ pub mod hazards;
 use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
-use crate::diag::{Diagnostic, FileId, Files};
+use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::program::{self, CompiledProgram, FrontOptions};
 use crate::graph::PassPlan;
 use crate::inputs::{self, ProgramInput};
 use crate::manifest::{self, Effect};
 use crate::stage::StageKind;
-
-/// Code for a stage file that is not UTF-8 text.
-pub const E_NOT_TEXT: &str = "E0012";
 
 /// The result of checking a set of inputs.
 #[derive(Debug, Default)]
@@ -97,7 +94,7 @@ impl InputSpec {
 pub fn check_inputs(inputs: &[std::path::PathBuf], forced: Option<StageKind>, options: FrontOptions) -> (Outcome, Vec<Checked>) {
     let mut out = Outcome::default();
     let (programs, diags) = inputs::collect(inputs, forced);
-    out.io_error |= diags.iter().any(|d| d.code == inputs::E_INPUT_IO);
+    out.io_error |= diags.iter().any(|d| d.code == Code::InputIo);
     out.diagnostics.extend(diags);
     let mut checked = Vec::new();
     for p in programs {
@@ -120,7 +117,7 @@ fn read_stage(path: &Path, files: &mut Files, diags: &mut Vec<Diagnostic>, io_er
                 let text = String::from_utf8_lossy(e.as_bytes()).to_string();
                 let id = files.add(path.display().to_string(), text);
                 diags.push(
-                    Diagnostic::error(E_NOT_TEXT, "this stage file is not UTF-8 text")
+                    Diagnostic::new(Code::NotText, "this stage file is not UTF-8 text")
                         .at(id, valid..valid + 1, "invalid byte here")
                         .with_note("GLSL sources are text; is this a binary file?"),
                 );
@@ -129,7 +126,7 @@ fn read_stage(path: &Path, files: &mut Files, diags: &mut Vec<Diagnostic>, io_er
         },
         Err(e) => {
             *io_error = true;
-            diags.push(Diagnostic::error(inputs::E_INPUT_IO, format!("cannot read `{}`: {e}", path.display())));
+            diags.push(Diagnostic::new(Code::InputIo, format!("cannot read `{}`: {e}", path.display())));
             None
         }
     }
@@ -248,7 +245,7 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
             Some((path, span)) => match manifest::load(path, &mut out.files) {
                 Ok(r) if r.is_multi_pass() => {
                     out.diagnostics.push(
-                        Diagnostic::error(manifest::E_CONFLICT, format!("pass `{}` reuses a multi-pass effect", pass.name))
+                        Diagnostic::new(Code::ManifestConflict, format!("pass `{}` reuses a multi-pass effect", pass.name))
                             .at(effect.file, span.clone(), "has [[passes]] of its own")
                             .with_help("reuse a single-pass effect, or copy its passes into this manifest"),
                     );
@@ -258,7 +255,7 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
                 Err(diags) => {
                     out.io_error |= diags.iter().any(manifest::is_io_error);
                     out.diagnostics.push(
-                        Diagnostic::error(manifest::E_VALUE, format!("pass `{}` reuses an effect that has errors", pass.name)).at(
+                        Diagnostic::new(Code::ManifestValue, format!("pass `{}` reuses an effect that has errors", pass.name)).at(
                             effect.file,
                             span.clone(),
                             "this effect",

@@ -30,7 +30,7 @@ pub fn render_github(diags: &[Diagnostic], files: &Files) -> String {
     let diags = &files.resolved(diags)[..];
     let mut out = String::new();
     for d in diags {
-        let command = match d.severity {
+        let command = match d.severity() {
             Severity::Error => "error",
             Severity::Warning => "warning",
             Severity::Note => "notice",
@@ -45,7 +45,7 @@ pub fn render_github(diags: &[Diagnostic], files: &Files) -> String {
                 props.push(format!("endColumn={}", loc.end_column));
             }
         }
-        props.push(format!("title={}", escape_property(d.code)));
+        props.push(format!("title={}", escape_property(d.code.as_str())));
 
         let mut lines = vec![d.message.clone()];
         for label in &d.labels {
@@ -67,6 +67,7 @@ pub fn render_github(diags: &[Diagnostic], files: &Files) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diag::Code;
 
     #[test]
     fn escaping_rules() {
@@ -80,13 +81,13 @@ mod tests {
         let vs = files.add("dir,1/a:b.vert", "out vec3 c;\n");
         let fs = files.add("a.frag", "in vec4 c;\r\nvoid main() {}\r\n");
         let diags = vec![
-            Diagnostic::error("E0301", "type mismatch: vec4, vec3\nsecond line 100%")
+            Diagnostic::new(Code::BindingConflict, "type mismatch: vec4, vec3\nsecond line 100%")
                 .at(fs, 12..16, "here")
                 .with_label(vs, 9..10, "declared here")
                 .with_note("note one")
                 .with_help("fix it"),
-            Diagnostic::warning("W0001", "run-level warning"),
-            Diagnostic::note("N0001", "file note").in_file(vs),
+            Diagnostic::new(Code::StageExtension, "run-level warning"),
+            Diagnostic::new(Code::SyntaxAndInterfaceOnly, "file note").in_file(vs),
         ];
         let out = render_github(&diags, &files);
         let lines: Vec<&str> = out.lines().collect();
@@ -96,7 +97,7 @@ mod tests {
                 "::error file=a.frag,line=2,col=1,endLine=2,endColumn=5,title=E0301::type mismatch: vec4, vec3\
                  %0Asecond line 100%25%0Adir,1/a:b.vert:1:10: declared here%0Anote one%0Ahelp: fix it",
                 "::warning title=W0001::run-level warning",
-                "::notice file=dir%2C1/a%3Ab.vert,title=N0001::file note",
+                "::notice file=dir%2C1/a%3Ab.vert,title=N0101::file note",
             ]
         );
         assert!(out.ends_with('\n'));

@@ -52,7 +52,7 @@ impl<'a> csfiles::Files<'a> for Files {
 }
 
 fn to_codespan(d: &Diagnostic, files: &Files) -> cs::Diagnostic<FileId> {
-    let severity = match d.severity {
+    let severity = match d.severity() {
         Severity::Error => cs::Severity::Error,
         Severity::Warning => cs::Severity::Warning,
         Severity::Note => cs::Severity::Note,
@@ -75,7 +75,7 @@ fn to_codespan(d: &Diagnostic, files: &Files) -> cs::Diagnostic<FileId> {
     if let Some(help) = &d.help {
         notes.push(format!("help: {help}"));
     }
-    cs::Diagnostic::new(severity).with_code(d.code).with_message(&d.message).with_labels(labels).with_notes(notes)
+    cs::Diagnostic::new(severity).with_code(d.code.as_str()).with_message(&d.message).with_labels(labels).with_notes(notes)
 }
 
 /// Render diagnostics for a terminal, rustc style (`error[E0101]: message`, source
@@ -92,8 +92,10 @@ pub fn render_human(diags: &[Diagnostic], files: &Files, color: bool) -> String 
         let diagnostic = to_codespan(d, files);
         if term::emit_to_write_style(&mut buffer, &config, files, &diagnostic).is_err() {
             // Cannot happen with clamped spans and known files; never lose the message.
-            let fallback =
-                cs::Diagnostic::new(diagnostic.severity).with_code(d.code).with_message(&d.message).with_notes(diagnostic.notes.clone());
+            let fallback = cs::Diagnostic::new(diagnostic.severity)
+                .with_code(d.code.as_str())
+                .with_message(&d.message)
+                .with_notes(diagnostic.notes.clone());
             let _ = term::emit_to_write_style(&mut buffer, &config, files, &fallback);
         }
     }
@@ -103,13 +105,14 @@ pub fn render_human(diags: &[Diagnostic], files: &Files, color: bool) -> String 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diag::Code;
 
     #[test]
     fn two_file_diagnostic_shows_both_files_and_lines() {
         let mut files = Files::new();
         let vs = files.add("shaders/a.vert", "#version 330\nout vec3 vColor;\n");
         let fs = files.add("shaders/a.frag", "#version 330\n\nin vec4 vColor;\nvoid main() {}\n");
-        let d = Diagnostic::error("E0301", "interface mismatch for `vColor`")
+        let d = Diagnostic::new(Code::BindingConflict, "interface mismatch for `vColor`")
             .at(fs, 17..28, "declared as vec4 here")
             .with_label(vs, 17..28, "declared as vec3 here")
             .with_note("outputs and inputs must have the same type")
@@ -125,7 +128,7 @@ mod tests {
         assert!(out.contains("= outputs and inputs must have the same type"), "{out}");
         assert!(out.contains("= help: change one of the declarations"), "{out}");
         assert!(!out.contains('\u{1b}'), "no ANSI escapes without color: {out}");
-        let colored = render_human(&[Diagnostic::error("E1", "x")], &files, true);
+        let colored = render_human(&[Diagnostic::new(Code::ManifestSyntax, "x")], &files, true);
         assert!(colored.contains('\u{1b}'), "{colored}");
     }
 
@@ -138,7 +141,7 @@ mod tests {
         assert_eq!(files.line_col(id, start), (4, 3));
         // One single-line and one multi-line label (which spans the `\r\n`s).
         let m = text.find("void").unwrap();
-        let d = Diagnostic::error("E0101", "undeclared identifier `x`").at(id, start..start + 1, "not declared").with_label(
+        let d = Diagnostic::new(Code::NagaParse, "undeclared identifier `x`").at(id, start..start + 1, "not declared").with_label(
             id,
             m..text.len() - 2,
             "in this function",
@@ -153,7 +156,7 @@ mod tests {
     fn lone_carriage_return_is_blanked_with_offsets_kept() {
         let mut files = Files::new();
         let id = files.add("a.frag", "int a;\rint b;\n");
-        let d = Diagnostic::warning("W1", "w").at(id, 7..10, "here");
+        let d = Diagnostic::new(Code::StageExtension, "w").at(id, 7..10, "here");
         let out = render_human(&[d], &files, false);
         assert!(!out.contains('\r'), "{out:?}");
         assert!(out.contains("1 │ int a; int b;\n"), "{out}");
@@ -166,8 +169,8 @@ mod tests {
         let id = files.add("missing.frag", "");
         let out = render_human(
             &[
-                Diagnostic::error("E0001", "no effect.toml found").with_help("run in an effect directory"),
-                Diagnostic::error("E0002", "cannot read file").in_file(id),
+                Diagnostic::new(Code::ManifestSyntax, "no effect.toml found").with_help("run in an effect directory"),
+                Diagnostic::new(Code::ManifestIo, "cannot read file").in_file(id),
             ],
             &files,
             false,
@@ -186,13 +189,13 @@ mod tests {
         let id = files.add("a.frag", "é\nvoid main() {}");
         let empty = files.add("empty.frag", "");
         let diags = vec![
-            Diagnostic::error("E1", "past the end").at(id, 100..200, "here"),
-            Diagnostic::error("E2", "inside a char").at(id, 1..1, "here"),
-            Diagnostic::error("E3", "reversed").at(id, 9..3, "here").with_label(empty, 5..9, "empty file"),
-            Diagnostic::error("E4", "unknown file").at(FileId(42), 0..1, "x").with_label(FileId(9), 0..1, "y"),
+            Diagnostic::new(Code::ManifestSyntax, "past the end").at(id, 100..200, "here"),
+            Diagnostic::new(Code::ManifestIo, "inside a char").at(id, 1..1, "here"),
+            Diagnostic::new(Code::StageFileNotFound, "reversed").at(id, 9..3, "here").with_label(empty, 5..9, "empty file"),
+            Diagnostic::new(Code::ManifestUnknownKey, "unknown file").at(FileId(42), 0..1, "x").with_label(FileId(9), 0..1, "y"),
         ];
         let out = render_human(&diags, &files, false);
-        for code in ["E1", "E2", "E3", "E4"] {
+        for code in ["E0001", "E0002", "E0003", "E0004"] {
             assert!(out.contains(&format!("error[{code}]")), "{out}");
         }
         assert!(out.contains("┌─ a.frag:2:15"), "{out}"); // clamped to the end of the text

@@ -86,8 +86,8 @@ pub fn render_json(diags: &[Diagnostic], files: &Files) -> String {
         .map(|d| {
             let file = d.file.and_then(|id| files.try_get(id).map(|f| (id, f.path.as_str())));
             JsonDiagnostic {
-                severity: d.severity,
-                code: d.code,
+                severity: d.severity(),
+                code: d.code.as_str(),
                 message: &d.message,
                 file: file.map(|(_, path)| path),
                 span: file.zip(d.span.clone()).and_then(|((id, _), span)| files.span_location(id, span)),
@@ -125,6 +125,7 @@ pub fn render_json(diags: &[Diagnostic], files: &Files) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diag::Code;
     use serde_json::{json, Value};
 
     #[test]
@@ -133,13 +134,13 @@ mod tests {
         let vs = files.add("a.vert", "out vec3 c;\n");
         let fs = files.add("a.frag", "in vec4 c;\r\nvoid main() { c2; }\r\n");
         let diags = vec![
-            Diagnostic::error("E0101", "undeclared identifier `c2`")
+            Diagnostic::new(Code::NagaParse, "undeclared identifier `c2`")
                 .at(fs, 26..28, "not declared")
                 .with_label(vs, 9..10, "did you mean this?")
                 .with_note("first note")
                 .with_help("rename it"),
-            Diagnostic::warning("W0001", "whole-run warning"),
-            Diagnostic::note("N0001", "file note").in_file(vs),
+            Diagnostic::new(Code::StageExtension, "whole-run warning"),
+            Diagnostic::new(Code::SyntaxAndInterfaceOnly, "file note").in_file(vs),
         ];
         let out = render_json(&diags, &files);
         assert!(out.ends_with("}\n"));
@@ -151,7 +152,7 @@ mod tests {
                 "diagnostics": [
                     {
                         "severity": "error",
-                        "code": "E0101",
+                        "code": "E0150",
                         "message": "undeclared identifier `c2`",
                         "file": "a.frag",
                         "span": {"start": 26, "end": 28, "line": 2, "column": 15, "end_line": 2, "end_column": 17},
@@ -169,7 +170,7 @@ mod tests {
                         "file": null, "span": null, "label": null, "labels": [], "notes": [], "help": null
                     },
                     {
-                        "severity": "note", "code": "N0001", "message": "file note",
+                        "severity": "note", "code": "N0101", "message": "file note",
                         "file": "a.vert", "span": null, "label": null, "labels": [], "notes": [], "help": null
                     }
                 ],
@@ -189,7 +190,7 @@ mod tests {
     fn json_clamps_bad_spans() {
         let mut files = Files::new();
         let id = files.add("a.frag", "ab");
-        let d = Diagnostic::error("E1", "x").at(id, 5..1, "").with_label(super::super::FileId(3), 0..1, "gone");
+        let d = Diagnostic::new(Code::ManifestSyntax, "x").at(id, 5..1, "").with_label(super::super::FileId(3), 0..1, "gone");
         let v: Value = serde_json::from_str(&render_json(&[d], &files)).unwrap();
         let diag = &v["diagnostics"][0];
         assert_eq!(diag["span"], json!({"start": 2, "end": 2, "line": 1, "column": 3, "end_line": 1, "end_column": 3}));

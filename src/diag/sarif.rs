@@ -4,7 +4,7 @@ use std::collections::BTreeSet;
 
 use serde::Serialize;
 
-use super::{full_message, Diagnostic, FileId, Files, Severity};
+use super::{full_message, Code, Diagnostic, FileId, Files, Severity};
 
 const SCHEMA: &str = "https://json.schemastore.org/sarif-2.1.0.json";
 const INFORMATION_URI: &str = "https://github.com/effectc/effectc";
@@ -138,13 +138,14 @@ fn location(files: &Files, file: FileId, span: Option<std::ops::Range<usize>>) -
 /// their message) for secondary labels. Paths become URI references with forward slashes.
 pub fn render_sarif(diags: &[Diagnostic], files: &Files) -> String {
     let diags = &files.resolved(diags)[..];
-    let codes: Vec<&str> = diags.iter().map(|d| d.code).collect::<BTreeSet<_>>().into_iter().collect();
+    // `Code`'s order is the order of the code strings.
+    let codes: Vec<Code> = diags.iter().map(|d| d.code).collect::<BTreeSet<_>>().into_iter().collect();
     let results = diags
         .iter()
         .map(|d| SarifResult {
-            rule_id: d.code,
+            rule_id: d.code.as_str(),
             rule_index: codes.binary_search(&d.code).expect("every code is in the rules"),
-            level: match d.severity {
+            level: match d.severity() {
                 Severity::Error => "error",
                 Severity::Warning => "warning",
                 Severity::Note => "note",
@@ -178,7 +179,7 @@ pub fn render_sarif(diags: &[Diagnostic], files: &Files) -> String {
                     name: "effectc",
                     information_uri: INFORMATION_URI,
                     version: env!("CARGO_PKG_VERSION"),
-                    rules: codes.iter().map(|&id| Rule { id }).collect(),
+                    rules: codes.iter().map(|id| Rule { id: id.as_str() }).collect(),
                 },
             },
             results,
@@ -200,13 +201,13 @@ mod tests {
         let vs = files.add("shaders\\a b.vert", "out vec3 c;\n");
         let fs = files.add("shaders/a.frag", "in vec4 c;\r\nvoid main() {}\r\n");
         let diags = vec![
-            Diagnostic::error("E0301", "type mismatch")
+            Diagnostic::new(Code::BindingConflict, "type mismatch")
                 .at(fs, 8..9, "vec4 here")
                 .with_label(vs, 9..10, "vec3 here")
                 .with_note("types must match")
                 .with_help("change one"),
-            Diagnostic::warning("W0001", "run-level"),
-            Diagnostic::error("E0301", "again").in_file(vs),
+            Diagnostic::new(Code::StageExtension, "run-level"),
+            Diagnostic::new(Code::BindingConflict, "again").in_file(vs),
         ];
         let v: Value = serde_json::from_str(&render_sarif(&diags, &files)).unwrap();
         assert_eq!(v["$schema"], "https://json.schemastore.org/sarif-2.1.0.json");

@@ -21,9 +21,6 @@ use std::collections::HashMap;
 
 use crate::front::version::{Profile, Version};
 
-/// An `#include` that cannot be resolved (see `front::includes`).
-pub const E_INCLUDE: &str = "E0104";
-
 /// `(line range incl. its end, file name, name span)` of every `#include` line outside comments.
 pub fn include_directives(text: &str) -> Vec<(std::ops::Range<usize>, String, std::ops::Range<usize>)> {
     let clean = crate::front::version::blank_comments(text);

@@ -12,9 +12,8 @@
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
-use crate::diag::{Diagnostic, FileId, Files, Segment};
+use crate::diag::{Code, Diagnostic, FileId, Files, Segment};
 use crate::front::conditionals::include_directives;
-pub use crate::front::conditionals::E_INCLUDE;
 
 /// Deepest include nesting followed.
 const MAX_DEPTH: usize = 32;
@@ -70,7 +69,7 @@ impl Expansion {
             if self.stack.contains(&key) || self.stack.len() > MAX_DEPTH {
                 self.fail(
                     diags,
-                    Diagnostic::error(E_INCLUDE, format!("`{name}` includes itself")).at(id, name_span, "included again here"),
+                    Diagnostic::new(Code::IncludeUnresolved, format!("`{name}` includes itself")).at(id, name_span, "included again here"),
                 );
                 continue;
             }
@@ -148,7 +147,7 @@ mod tests {
         let id = files.add(path.display().to_string(), "#include <self.glsl>\n");
         let mut diags = Vec::new();
         assert!(expand(&path, id, &mut files, &mut diags).is_none());
-        assert_eq!(diags[0].code, E_INCLUDE);
+        assert_eq!(diags[0].code, Code::IncludeUnresolved);
         let resolved = files.resolved(&diags);
         let f = resolved[0].file.unwrap();
         assert!(files.path(f).ends_with("self.glsl"));

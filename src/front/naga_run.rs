@@ -15,7 +15,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use naga::front::glsl::ErrorKind;
 use naga::valid::Capabilities;
 
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::builtins;
 pub use crate::front::limitation::Limitation;
 use crate::front::rewrite::Rewritten;
@@ -161,7 +161,7 @@ fn layout_limitation(module: &naga::Module, err: &naga::valid::ValidationError) 
 pub fn scalar_swizzles(s: &crate::front::syntax::StageSyntax, errors: &[Diagnostic]) -> Vec<usize> {
     errors
         .iter()
-        .filter(|d| d.code == "E0150" && d.message.starts_with("Can't lookup field on this type"))
+        .filter(|d| d.code == Code::NagaParse && d.message.starts_with("Can't lookup field on this type"))
         .filter_map(|d| d.span.clone())
         .filter_map(|span| s.swizzles.iter().position(|w| w.whole.end == span.end || (w.base.end <= span.start && span.end <= w.whole.end)))
         .collect()
@@ -206,7 +206,7 @@ fn parse_and_validate_inner(
                 .iter()
                 .filter(|e| limitation(&e.kind, version).is_none())
                 .map(|e| {
-                    let d = Diagnostic::error("E0150", e.kind.to_string());
+                    let d = Diagnostic::new(Code::NagaParse, e.kind.to_string());
                     match map_span(e.meta) {
                         Some(span) => d.at(file, span, "naga's GLSL front rejects this"),
                         None => d.in_file(file),
@@ -235,7 +235,7 @@ fn parse_and_validate_inner(
 }
 
 fn crash(file: FileId, part: &str, payload: &(dyn std::any::Any + Send)) -> Diagnostic {
-    Diagnostic::error("E0152", format!("naga's {part} crashed on this file"))
+    Diagnostic::new(Code::NagaCrashed, format!("naga's {part} crashed on this file"))
         .in_file(file)
         .with_note(format!("panic: {}", panic_message(payload)))
         .with_note("this is a bug in naga; effectc contained it. Please report the input")
@@ -259,7 +259,7 @@ pub fn validation_diagnostic<E: std::error::Error>(
         message = format!("{message}: {first}");
         notes.remove(0);
     }
-    let mut d = Diagnostic::error("E0151", format!("naga validation: {message}"));
+    let mut d = Diagnostic::new(Code::NagaValidation, format!("naga validation: {message}"));
     let mut spans = err.spans().filter_map(|(span, label)| map_span(*span).map(|r| (r, label.clone())));
     match spans.next() {
         Some((r, label)) => {

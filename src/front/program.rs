@@ -4,7 +4,7 @@
 //! naga parse + validate. Stages naga has no notion of (geometry, tessellation) are checked
 //! at the syntax and interface level only, and a note says so.
 
-use crate::diag::{Diagnostic, FileId, Files};
+use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::naga_run::{self, Limitation, Outcome, Validated};
 use crate::front::plan::{self, Plan};
 use crate::front::rewrite::{self, Rewritten};
@@ -61,7 +61,7 @@ pub fn compile(
     for s in &syntaxes {
         if !s.has_main {
             diags.push(
-                Diagnostic::error("E0103", format!("the {} stage has no `main` function", s.stage))
+                Diagnostic::new(Code::NoMain, format!("the {} stage has no `main` function", s.stage))
                     .in_file(s.file)
                     .with_note("every stage of a GL program needs `void main()`"),
             );
@@ -72,7 +72,7 @@ pub fn compile(
     for s in syntaxes {
         let Some(naga_stage) = s.stage.naga() else {
             diags.push(
-                Diagnostic::note("N0101", format!("the {} stage is checked for syntax and interface only", s.stage))
+                Diagnostic::new(Code::SyntaxAndInterfaceOnly, format!("the {} stage is checked for syntax and interface only", s.stage))
                     .in_file(s.file)
                     .with_note("naga and WGSL have no geometry or tessellation stages, so it is not validated by naga"),
             );
@@ -114,8 +114,8 @@ pub fn compile(
             Some(outcome) => match outcome {
                 Outcome::Valid(v) => Some(v),
                 Outcome::Limited(limit) => {
-                    let d = Diagnostic::note(
-                        "N0102",
+                    let d = Diagnostic::new(
+                        Code::NagaCannotTake,
                         format!("naga cannot take {}, so the {} stage is checked for syntax and interface only", limit.construct, s.stage),
                     );
                     diags.push(

@@ -2,8 +2,8 @@
 //! `[instances.attributes]` is a vertex input, no input is fed by both, and per-instance
 //! values have no more components than the input holds.
 
-use super::{list, E_ATTRIBUTE_CONFLICT, E_ATTRIBUTE_UNKNOWN};
-use crate::diag::Diagnostic;
+use super::list;
+use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{StageSyntax, Storage};
 use crate::manifest::{did_you_mean, Effect};
 use crate::stage::StageKind;
@@ -36,7 +36,7 @@ pub fn check(effect: &Effect, stages: &[StageSyntax]) -> Vec<Diagnostic> {
     let names: Vec<&str> = inputs.iter().map(|(n, _)| n.as_str()).collect();
     let mut out = Vec::new();
     let unknown = |name: &str, span: std::ops::Range<usize>, section: &str, out: &mut Vec<Diagnostic>| {
-        let mut d = Diagnostic::error(E_ATTRIBUTE_UNKNOWN, format!("`{name}` in [{section}] is not an input of the vertex stage")).at(
+        let mut d = Diagnostic::new(Code::AttributeUnknown, format!("`{name}` in [{section}] is not an input of the vertex stage")).at(
             effect.file,
             span,
             "no vertex input has this name",
@@ -67,7 +67,7 @@ pub fn check(effect: &Effect, stages: &[StageSyntax]) -> Vec<Diagnostic> {
         if let Some(mesh) = &effect.mesh {
             if let Some(i) = mesh.attributes.iter().position(|(name, _)| *name == a.input) {
                 out.push(
-                    Diagnostic::error(E_ATTRIBUTE_CONFLICT, format!("vertex input `{}` is fed both per vertex and per instance", a.input))
+                    Diagnostic::new(Code::AttributeConflict, format!("vertex input `{}` is fed both per vertex and per instance", a.input))
                         .at(effect.file, a.input_span.clone(), "per instance here")
                         .with_label(effect.file, mesh.attribute_spans[i].clone(), "per vertex here")
                         .with_help("keep one of the two entries"),
@@ -77,8 +77,8 @@ pub fn check(effect: &Effect, stages: &[StageSyntax]) -> Vec<Diagnostic> {
         }
         if *n > 0 && a.components > *n {
             out.push(
-                Diagnostic::error(
-                    E_ATTRIBUTE_CONFLICT,
+                Diagnostic::new(
+                    Code::AttributeConflict,
                     format!("`{}` gets {} components per instance but the input holds {n}", a.input, a.components),
                 )
                 .at(effect.file, a.input_span.clone(), "too many components"),

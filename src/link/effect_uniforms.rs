@@ -13,11 +13,7 @@ use std::collections::HashSet;
 use super::declared::{parse_path, texture_path, Decl, Decls, Step};
 use super::values::Shape;
 use super::{is_opaque, is_sampler_like, list, stage_title, type_text};
-use super::{
-    E_MANIFEST_PATH, E_MANIFEST_RANGE, E_MANIFEST_SEMANTIC, E_MANIFEST_UNKNOWN, E_MANIFEST_VALUE, E_TEXTURE_KIND, E_TEXTURE_UNKNOWN,
-    W_DEFAULT_UNREAD, W_NO_DEFAULT, W_NO_TEXTURE, W_UNREAD_UNIFORM,
-};
-use crate::diag::{Diagnostic, FileId, Files};
+use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::syntax::{GlslType, StageSyntax, Storage};
 use crate::manifest::{did_you_mean, Effect, Semantic, TextureKind, UniformDefault};
 
@@ -76,13 +72,13 @@ fn follow_path(mf: FileId, u: &UniformDefault, decl: &Decl, steps: &[Step]) -> R
         match step {
             Step::Index(i) => {
                 let Some(first) = ty.dims.first().copied() else {
-                    return Err(Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` is not an array"))
+                    return Err(Diagnostic::new(Code::UniformPathMismatch, format!("`{shown}` is not an array"))
                         .at(mf, u.name_span.clone(), format!("indexes `{shown}`"))
                         .with_label(decl.file(), decl.span(), format!("`{shown}` is a `{}`", type_text(decl.stage, &ty))));
                 };
                 if let Some(k) = first {
                     if *i >= u64::from(k) {
-                        return Err(Diagnostic::error(E_MANIFEST_PATH, format!("index {i} is out of bounds for `{shown}`"))
+                        return Err(Diagnostic::new(Code::UniformPathMismatch, format!("index {i} is out of bounds for `{shown}`"))
                             .at(mf, u.name_span.clone(), format!("`{shown}` has {k} elements (0..={})", k.saturating_sub(1)))
                             .with_label(decl.file(), decl.span(), format!("declared as `{}`", type_text(decl.stage, &ty))));
                     }
@@ -93,14 +89,14 @@ fn follow_path(mf: FileId, u: &UniformDefault, decl: &Decl, steps: &[Step]) -> R
             Step::Field(f) => {
                 let def = (!ty.is_array()).then(|| decl.stage.struct_def(&ty.base)).flatten();
                 let Some(def) = def else {
-                    return Err(Diagnostic::error(E_MANIFEST_PATH, format!("`{shown}` has no field `{f}`"))
+                    return Err(Diagnostic::new(Code::UniformPathMismatch, format!("`{shown}` has no field `{f}`"))
                         .at(mf, u.name_span.clone(), format!("`{shown}` is a `{}`, not a struct", type_text(decl.stage, &ty)))
                         .with_label(decl.file(), decl.span(), "declared here"));
                 };
                 let Some(m) = def.members.iter().find(|m| decl.stage.original_name(&m.name) == f) else {
                     let names: Vec<&str> = def.members.iter().map(|m| decl.stage.original_name(&m.name)).collect();
                     let sname = decl.stage.original_name(&def.name);
-                    let mut d = Diagnostic::error(E_MANIFEST_PATH, format!("struct `{sname}` has no member `{f}`"))
+                    let mut d = Diagnostic::new(Code::UniformPathMismatch, format!("struct `{sname}` has no member `{f}`"))
                         .at(mf, u.name_span.clone(), format!("`{shown}` is a `{sname}`"))
                         .with_label(decl.stage.file, def.name_span.clone(), format!("`{sname}` is defined here"));
                     d = match did_you_mean(f, &names) {
@@ -140,7 +136,7 @@ impl Entry<'_> {
         let mf = self.mf;
         match (&u.value, &shape) {
             _ if is_sampler_like(ty) => out.push(
-                Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
+                Diagnostic::new(Code::UniformDefaultType, format!("`{shown}` is a sampler (`{tt}`) and takes no value"))
                     .at(mf, u.name_span.clone(), "a sampler under [uniforms]")
                     .with_label(decl.file(), decl.span(), decl_label.clone())
                     .with_help(format!("bind a texture under [textures] instead: `{shown} = {{ file = \"…\" }}`")),
@@ -153,7 +149,7 @@ impl Entry<'_> {
                     .map(|def| def.members.iter().map(|m| format!("{shown}.{}", decl.stage.original_name(&m.name))).collect())
                     .unwrap_or_default();
                 out.push(
-                    Diagnostic::error(E_MANIFEST_VALUE, format!("`{shown}` is a struct (`{sname}`) and cannot take one value"))
+                    Diagnostic::new(Code::UniformDefaultType, format!("`{shown}` is a struct (`{sname}`) and cannot take one value"))
                         .at(mf, u.value_span.clone(), "a value for a whole struct")
                         .with_label(decl.file(), decl.span(), decl_label.clone())
                         .with_help(format!("set the members one by one: {}", list(&members))),
@@ -162,7 +158,7 @@ impl Entry<'_> {
             (Some(v), _) => {
                 if let Err(why) = shape.fit(v) {
                     out.push(
-                        Diagnostic::error(E_MANIFEST_VALUE, format!("the default for `{shown}` does not fit its type `{tt}`"))
+                        Diagnostic::new(Code::UniformDefaultType, format!("the default for `{shown}` does not fit its type `{tt}`"))
                             .at(mf, u.value_span.clone(), why)
                             .with_label(decl.file(), decl.span(), decl_label.clone())
                             .with_note(format!("a `{tt}` takes {}", shape.expected())),
@@ -193,8 +189,8 @@ impl Entry<'_> {
                     format!("declare `{shown}` as `{provides}`, or use a semantic that provides a `{tt}`: {}", list(&others))
                 };
                 out.push(
-                    Diagnostic::error(
-                        E_MANIFEST_SEMANTIC,
+                    Diagnostic::new(
+                        Code::SemanticType,
                         format!("semantic `{}` provides a `{provides}`, but `{shown}` is a `{tt}`", sem.name()),
                     )
                     .at(mf, span, format!("provides `{provides}`"))
@@ -212,8 +208,8 @@ impl Entry<'_> {
         if let Some(span) = &u.range_span {
             if !shape.takes_range() {
                 out.push(
-                    Diagnostic::error(
-                        E_MANIFEST_RANGE,
+                    Diagnostic::new(
+                        Code::RangeNotNumeric,
                         format!("`range` needs a number or a vector of numbers, but `{shown}` is a `{tt}`"),
                     )
                     .at(mf, span.clone(), "a range on a uniform that is not a number or vector")
@@ -231,7 +227,7 @@ impl Entry<'_> {
         let mf = self.mf;
         if !decl.read {
             out.push(
-                Diagnostic::warning(W_DEFAULT_UNREAD, format!("`{}` has a default, but no stage reads it", decl.name))
+                Diagnostic::new(Code::DefaultUnread, format!("`{}` has a default, but no stage reads it", decl.name))
                     .at(mf, u.name_span.clone(), "default for an unread uniform")
                     .with_label(decl.file(), decl.span(), "declared here, never read")
                     .with_help("remove the entry, or use the uniform in a shader"),
@@ -242,8 +238,11 @@ impl Entry<'_> {
 
 /// A `[uniforms]` entry whose base name no stage declares as a settable uniform.
 fn unknown(effect: &Effect, u: &UniformDefault, base: &str, decls: &Decls, stages: &[StageSyntax], files: &Files) -> Diagnostic {
-    let mut d = Diagnostic::error(E_MANIFEST_UNKNOWN, format!("`[uniforms]` entry `{}` names no uniform declared by the shaders", u.name))
-        .at(effect.file, u.name_span.clone(), format!("no stage declares a uniform `{base}`"));
+    let mut d = Diagnostic::new(
+        Code::UniformUndeclared,
+        format!("`[uniforms]` entry `{}` names no uniform declared by the shaders", u.name),
+    )
+    .at(effect.file, u.name_span.clone(), format!("no stage declares a uniform `{base}`"));
     // A member (or the instance / block name) of a named uniform block?
     for nb in &decls.named_blocks {
         let s = nb.stage;
@@ -313,8 +312,8 @@ fn textures(effect: &Effect, decls: &Decls, out: &mut Vec<Diagnostic>) {
             if !fits {
                 let tt = type_text(decl.stage, ty);
                 out.push(
-                    Diagnostic::error(
-                        E_TEXTURE_KIND,
+                    Diagnostic::new(
+                        Code::TextureKindMismatch,
                         format!("texture `{}` is a {} texture, but `{path}` is a `{tt}`", t.name, t.kind.name()),
                     )
                     .at(effect.file, t.span.clone(), format!("a {} texture", t.kind.name()))
@@ -325,7 +324,7 @@ fn textures(effect: &Effect, decls: &Decls, out: &mut Vec<Diagnostic>) {
             }
             continue;
         }
-        let mut d = Diagnostic::error(E_TEXTURE_UNKNOWN, format!("`[textures]` entry `{}` names no sampler uniform", t.name)).at(
+        let mut d = Diagnostic::new(Code::TextureNoSampler, format!("`[textures]` entry `{}` names no sampler uniform", t.name)).at(
             effect.file,
             t.name_span.clone(),
             format!("no stage declares a sampler `{path}`"),
@@ -361,7 +360,7 @@ fn missing(decls: &Decls, covered: &HashSet<String>, textured: &HashSet<String>,
             if decl.in_block {
                 continue; // reported per block below
             }
-            let mut d = Diagnostic::warning(W_UNREAD_UNIFORM, format!("uniform `{}` is declared but never read", decl.name)).at(
+            let mut d = Diagnostic::new(Code::UniformUnread, format!("uniform `{}` is declared but never read", decl.name)).at(
                 decl.file(),
                 decl.span(),
                 "declared here",
@@ -432,7 +431,7 @@ fn missing(decls: &Decls, covered: &HashSet<String>, textured: &HashSet<String>,
         };
         let bn = s.original_name(&b.block_name);
         out.push(
-            Diagnostic::warning(W_UNREAD_UNIFORM, format!("uniform block `{bn}` is declared but never read"))
+            Diagnostic::new(Code::UniformUnread, format!("uniform block `{bn}` is declared but never read"))
                 .at(s.file, b.block_name_span.clone(), "no stage reads any of its members")
                 .with_help("remove the block, or use it"),
         );
@@ -441,7 +440,7 @@ fn missing(decls: &Decls, covered: &HashSet<String>, textured: &HashSet<String>,
 
 /// W0220: a uniform some stage reads has no default.
 fn no_default(decl: &Decl, type_text: &str, help: String) -> Diagnostic {
-    Diagnostic::warning(W_NO_DEFAULT, format!("uniform `{}` has no default in effect.toml", decl.name))
+    Diagnostic::new(Code::UniformNoDefault, format!("uniform `{}` has no default in effect.toml", decl.name))
         .at(decl.file(), decl.span(), format!("a `{type_text}` read without a default"))
         .with_help(help)
 }
@@ -453,7 +452,7 @@ fn no_texture(decl: &Decl, path: &str, ty: &GlslType) -> Diagnostic {
     } else {
         "{ file = \"….png\" }"
     };
-    Diagnostic::warning(W_NO_TEXTURE, format!("sampler `{path}` has no entry in [textures]"))
+    Diagnostic::new(Code::SamplerNoTexture, format!("sampler `{path}` has no entry in [textures]"))
         .at(decl.file(), decl.span(), format!("a `{tt}` read without a texture"))
         .with_help(format!("add `{path} = {example}` under [textures] in effect.toml (or `{{ generate = \"checker\" }}`)"))
 }

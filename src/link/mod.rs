@@ -65,74 +65,9 @@ pub mod values;
 #[cfg(test)]
 mod tests;
 
-use crate::diag::{Diagnostic, Files};
+use crate::diag::{Code, Diagnostic, Files};
 use crate::front::syntax::{Global, GlslType, Interp, StageSyntax, Target};
 use crate::stage::StageKind;
-
-pub const E_BLOCK_UNMATCHED: &str = "E0201";
-pub const E_NO_PRODUCER: &str = "E0202";
-pub const E_OTHER_STAGE_NAME: &str = "E0203";
-pub const E_UNIFORM_TYPE: &str = "E0204";
-pub const E_UNIFORM_BLOCK: &str = "E0205";
-pub const E_UNIFORM_STRUCT: &str = "E0206";
-pub const E_VARYING_TYPE: &str = "E0207";
-pub const E_INTERP: &str = "E0208";
-pub const E_CENTROID: &str = "E0209";
-pub const E_LOCATION: &str = "E0210";
-pub const E_BLOCK_MISMATCH: &str = "E0211";
-pub const E_NOT_ARRAYED: &str = "E0212";
-pub const E_ES_OUTPUT_LOCATION: &str = "E0213";
-pub const E_MANIFEST_UNKNOWN: &str = "E0220";
-pub const E_MANIFEST_VALUE: &str = "E0221";
-pub const E_MANIFEST_SEMANTIC: &str = "E0222";
-pub const E_MANIFEST_RANGE: &str = "E0223";
-pub const E_TEXTURE_UNKNOWN: &str = "E0224";
-pub const E_MANIFEST_PATH: &str = "E0225";
-pub const E_TEXTURE_KIND: &str = "E0226";
-/// A `[mesh.attributes]` / `[instances.attributes]` name that is no vertex input.
-pub const E_ATTRIBUTE_UNKNOWN: &str = "E0227";
-/// A vertex input fed twice, or given more components per instance than it holds.
-pub const E_ATTRIBUTE_CONFLICT: &str = "E0228";
-pub const W_UNREAD_OUTPUT: &str = "W0201";
-pub const W_UNUSED_INPUT: &str = "W0202";
-pub const W_INTERP: &str = "W0203";
-pub const W_CENTROID: &str = "W0204";
-pub const W_NO_DEFAULT: &str = "W0220";
-pub const W_UNREAD_UNIFORM: &str = "W0221";
-pub const W_NO_TEXTURE: &str = "W0222";
-pub const W_DEFAULT_UNREAD: &str = "W0223";
-
-/// Every code this module emits, with a one-line description.
-pub const CODES: &[(&str, &str)] = &[
-    (E_BLOCK_UNMATCHED, "input block has no output block of the same block name"),
-    (E_NO_PRODUCER, "input read by the stage has no matching output"),
-    (E_OTHER_STAGE_NAME, "name declared only in another stage"),
-    (E_UNIFORM_TYPE, "uniform declared with different types in two stages"),
-    (E_UNIFORM_BLOCK, "uniform block declared differently in two stages"),
-    (E_UNIFORM_STRUCT, "struct used by uniforms defined differently in two stages"),
-    (E_VARYING_TYPE, "output and input types differ"),
-    (E_INTERP, "interpolation qualifiers differ"),
-    (E_CENTROID, "centroid qualifiers differ"),
-    (E_LOCATION, "explicit locations differ"),
-    (E_BLOCK_MISMATCH, "interface blocks of the same name differ"),
-    (E_NOT_ARRAYED, "geometry input is not an array"),
-    (E_ES_OUTPUT_LOCATION, "GLSL ES fragment output without a location beside others"),
-    (E_MANIFEST_UNKNOWN, "manifest uniform is not declared by any stage"),
-    (E_MANIFEST_VALUE, "manifest default does not fit the declared type"),
-    (E_MANIFEST_SEMANTIC, "semantic does not fit the declared type"),
-    (E_MANIFEST_RANGE, "range on a uniform that is not a scalar number"),
-    (E_TEXTURE_UNKNOWN, "texture entry names no sampler uniform"),
-    (E_MANIFEST_PATH, "manifest uniform path does not fit the declaration"),
-    (E_TEXTURE_KIND, "texture kind does not match the sampler type"),
-    (W_UNREAD_OUTPUT, "output never read by the next stage"),
-    (W_UNUSED_INPUT, "unread input with no producer"),
-    (W_INTERP, "interpolation qualifiers differ (allowed since GLSL 4.30)"),
-    (W_CENTROID, "centroid qualifiers differ (allowed since GLSL 4.30)"),
-    (W_NO_DEFAULT, "uniform has no default in effect.toml"),
-    (W_UNREAD_UNIFORM, "uniform declared but never read"),
-    (W_NO_TEXTURE, "sampler has no [textures] entry"),
-    (W_DEFAULT_UNREAD, "manifest default for a uniform no stage reads"),
-];
 
 /// OpenGL link rules between consecutive stages of one program, plus the program-wide
 /// uniform rules. `stages` are in pipeline order (vertex → tessellation → geometry →
@@ -163,8 +98,8 @@ fn es_fragment_output_locations(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
     }
     for g in outputs.iter().filter(|g| g.location.is_none()) {
         out.push(
-            Diagnostic::error(
-                E_ES_OUTPUT_LOCATION,
+            Diagnostic::new(
+                Code::EsOutputLocation,
                 format!(
                     "fragment output `{}` has no `layout(location)`, but the stage has {} outputs",
                     s.original_name(&g.name),

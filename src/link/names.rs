@@ -10,8 +10,8 @@ use std::collections::HashMap;
 use std::ops::Range;
 
 use super::interface::{direction, Dir};
-use super::{stage_title, type_text, E_OTHER_STAGE_NAME};
-use crate::diag::Diagnostic;
+use super::{stage_title, type_text};
+use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{BlockInfo, Global, StageSyntax, Storage, Target};
 
 /// Use sites of one name: span and the field accessed (`name.field`), if any.
@@ -104,8 +104,8 @@ fn own_block_name(s: &StageSyntax, name: &str, sites: &[(Range<usize>, Option<St
     let g = s.globals.iter().find(|g| g.block.as_ref().is_some_and(|b| s.original_name(&b.block_name) == name))?;
     let blk = g.block.as_ref()?;
     let kind = storage_word(g, s);
-    let mut d = Diagnostic::error(
-        E_OTHER_STAGE_NAME,
+    let mut d = Diagnostic::new(
+        Code::OtherStageName,
         format!("`{name}` is a block name, not a variable"),
     )
     .at(s.file, sites[0].0.clone(), format!("the {kind} block `{name}` used by its block name"))
@@ -154,7 +154,7 @@ fn other_stage(stages: &[&StageSyntax], si: usize, name: &str, sites: &[(Range<u
         let kind = storage_word(g, t);
         let keyword = if g.storage == Storage::Uniform { "uniform".to_string() } else { decl_keyword(s, t) };
         return Some(
-            Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
+            Diagnostic::new(Code::OtherStageName, format!("`{name}` is not declared in the {st} stage"))
                 .at(s.file, sites[0].0.clone(), format!("`{name}` is a member of the {tt} stage's {kind} block `{bn}`"))
                 .with_label(t.file, m.span.clone(), format!("declared here in the {tt} stage"))
                 .with_note("each stage sees only its own declarations")
@@ -170,7 +170,7 @@ fn other_stage(stages: &[&StageSyntax], si: usize, name: &str, sites: &[(Range<u
         let dims = GlslDims(&g.ty.dims);
         format!("{kw} {base} {name}{dims};")
     };
-    let d = Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
+    let d = Diagnostic::new(Code::OtherStageName, format!("`{name}` is not declared in the {st} stage"))
         .with_note("each stage sees only its own declarations");
     let (label, help) = match (g.storage, direction(t.stage, g)) {
         (Storage::Uniform, _) => (
@@ -226,7 +226,7 @@ fn foreign_block(s: &StageSyntax, f: Found, name: &str, sites: &[(Range<usize>, 
         _ => (format!("the block name of a {kind} block in the {tt} stage"), blk.block_name_span.clone()),
     };
     let field = first_field(sites);
-    let mut d = Diagnostic::error(E_OTHER_STAGE_NAME, format!("`{name}` is not declared in the {st} stage"))
+    let mut d = Diagnostic::new(Code::OtherStageName, format!("`{name}` is not declared in the {st} stage"))
         .at(s.file, sites[0].0.clone(), format!("`{name}` is {what}"))
         .with_label(t.file, span, format!("declared here in the {tt} stage"))
         .with_note(

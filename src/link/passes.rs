@@ -18,21 +18,11 @@
 
 use std::collections::BTreeSet;
 
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::syntax::{StageSyntax, Storage};
 use crate::graph;
 use crate::manifest::{did_you_mean, Effect, PassDecl, SampleKind, TargetRef, TargetSize};
 use crate::stage::StageKind;
-
-pub const E_UNKNOWN_TARGET: &str = "E0240";
-pub const E_READ_BEFORE_WRITE: &str = "E0241";
-pub const E_CYCLE: &str = "E0242";
-pub const E_FORMAT: &str = "E0243";
-pub const E_OUTPUT_COUNT: &str = "E0244";
-pub const E_UNKNOWN_SAMPLER: &str = "E0245";
-pub const E_SIZE: &str = "E0246";
-pub const W_PASS_UNUSED: &str = "W0240";
-pub const N_ATTACHMENT_DROPPED: &str = "N0241";
 
 /// What the shaders of one pass tell the graph checks (`None` when they did not compile).
 pub struct PassShaders<'a> {
@@ -50,7 +40,7 @@ pub fn check(effect: &Effect, shaders: &[PassShaders<'_>]) -> (Vec<Diagnostic>, 
         if effect.target(&r.name).is_some() {
             return true;
         }
-        let mut d = Diagnostic::error(E_UNKNOWN_TARGET, format!("unknown target `{}`", r.name)).at(
+        let mut d = Diagnostic::new(Code::PassUnknownTarget, format!("unknown target `{}`", r.name)).at(
             file,
             r.span.clone(),
             "not declared in [targets]",
@@ -84,13 +74,13 @@ pub fn check(effect: &Effect, shaders: &[PassShaders<'_>]) -> (Vec<Diagnostic>, 
     if let Some(o) = effect.output.as_ref().filter(|o| effect.target(&o.name).is_some()) {
         if !effect.passes.iter().any(|p| p.writes(&o.name)) {
             out.push(
-                Diagnostic::error(E_READ_BEFORE_WRITE, format!("no pass writes the output target `{}`", o.name))
+                Diagnostic::new(Code::PassReadBeforeWrite, format!("no pass writes the output target `{}`", o.name))
                     .at(file, o.span.clone(), "the frame comes from this target")
                     .with_help("add it to the `targets` of the last pass"),
             );
         } else if effect.target(&o.name).is_some_and(|t| t.format.kind() == SampleKind::Depth) {
             out.push(
-                Diagnostic::error(E_FORMAT, format!("the output `{}` is a depth target", o.name))
+                Diagnostic::new(Code::PassFormat, format!("the output `{}` is a depth target", o.name))
                     .at(file, o.span.clone(), "frames are colour images")
                     .with_help("name a colour target as `output`"),
             );
@@ -121,7 +111,7 @@ fn attachment_kinds(effect: &Effect, pass: &PassDecl, out: &mut Vec<Diagnostic>)
     for t in &pass.targets {
         if let Some(decl) = effect.target(&t.name).filter(|d| d.format.kind() == SampleKind::Depth) {
             out.push(
-                Diagnostic::error(E_FORMAT, format!("pass `{}` draws colour into the depth target `{}`", pass.name, t.name))
+                Diagnostic::new(Code::PassFormat, format!("pass `{}` draws colour into the depth target `{}`", pass.name, t.name))
                     .at(effect.file, t.span.clone(), "a colour attachment")
                     .with_label(effect.file, decl.name_span.clone(), format!("`{}` is {}", t.name, decl.format.name()))
                     .with_help(format!("attach it with `depth = \"{}\"`", t.name)),
@@ -131,7 +121,7 @@ fn attachment_kinds(effect: &Effect, pass: &PassDecl, out: &mut Vec<Diagnostic>)
     if let Some(d) = &pass.depth {
         if let Some(decl) = effect.target(&d.name).filter(|t| t.format.kind() != SampleKind::Depth) {
             out.push(
-                Diagnostic::error(E_FORMAT, format!("pass `{}` uses the colour target `{}` as its depth buffer", pass.name, d.name))
+                Diagnostic::new(Code::PassFormat, format!("pass `{}` uses the colour target `{}` as its depth buffer", pass.name, d.name))
                     .at(effect.file, d.span.clone(), "a depth attachment")
                     .with_label(effect.file, decl.name_span.clone(), format!("`{}` is {}", d.name, decl.format.name()))
                     .with_help("declare a target with `format = \"depth32f\"` for it"),
@@ -148,7 +138,7 @@ fn attachment_sizes(effect: &Effect, pass: &PassDecl, out: &mut Vec<Diagnostic>)
         let Some(t) = effect.target(&r.name) else { continue };
         if t.size != first_size {
             out.push(
-                Diagnostic::error(E_SIZE, format!("the attachments of pass `{}` differ in size", pass.name))
+                Diagnostic::new(Code::PassSizeMismatch, format!("the attachments of pass `{}` differ in size", pass.name))
                     .at(effect.file, r.span.clone(), size_text(t.size))
                     .with_label(effect.file, first.span.clone(), size_text(first_size))
                     .with_note("every target a pass draws into (colours and depth) must have the same size")
@@ -172,7 +162,7 @@ fn reads(effect: &Effect, i: usize, out: &mut Vec<Diagnostic>) {
     for s in &pass.samples {
         if let Some(w) = pass.targets.iter().chain(&pass.depth).find(|t| t.name == s.target.name) {
             out.push(
-                Diagnostic::error(E_CYCLE, format!("pass `{}` samples `{}` while drawing into it", pass.name, s.target.name))
+                Diagnostic::new(Code::PassCycle, format!("pass `{}` samples `{}` while drawing into it", pass.name, s.target.name))
                     .at(file, s.target.span.clone(), "sampled here")
                     .with_label(file, w.span.clone(), "and drawn into here")
                     .with_note("a texture cannot be read and written in one pass (a feedback loop)")
@@ -193,7 +183,7 @@ fn reads(effect: &Effect, i: usize, out: &mut Vec<Diagnostic>) {
         }
         if let Some(path) = graph::cycle_through(effect, i, &r.name) {
             let chain: Vec<String> = path.iter().map(|(p, t)| format!("`{}` ← pass `{}`", t, effect.passes[*p].name)).collect();
-            let mut d = Diagnostic::error(E_CYCLE, format!("passes depend on each other in a cycle through `{}`", r.name)).at(
+            let mut d = Diagnostic::new(Code::PassCycle, format!("passes depend on each other in a cycle through `{}`", r.name)).at(
                 file,
                 r.span.clone(),
                 format!("pass `{}` reads `{}` here", pass.name, r.name),
@@ -211,8 +201,11 @@ fn reads(effect: &Effect, i: usize, out: &mut Vec<Diagnostic>) {
             continue;
         }
         let later = (i + 1..effect.passes.len()).find(|&j| effect.passes[j].writes(&r.name));
-        let mut d = Diagnostic::error(E_READ_BEFORE_WRITE, format!("pass `{}` reads `{}` before any pass writes it", pass.name, r.name))
-            .at(file, r.span.clone(), how);
+        let mut d = Diagnostic::new(
+            Code::PassReadBeforeWrite,
+            format!("pass `{}` reads `{}` before any pass writes it", pass.name, r.name),
+        )
+        .at(file, r.span.clone(), how);
         d = match later {
             Some(j) => {
                 let w = &effect.passes[j];
@@ -235,8 +228,8 @@ fn samplers(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut 
     for s in &pass.samples {
         let Some(ty) = declared.sampler(&s.sampler) else {
             let names: Vec<&str> = declared.samplers.iter().map(|(n, _)| n.as_str()).collect();
-            let mut d = Diagnostic::error(
-                E_UNKNOWN_SAMPLER,
+            let mut d = Diagnostic::new(
+                Code::PassUnknownSampler,
                 format!("pass `{}` binds `{}`, but its stages declare no sampler of that name", pass.name, s.sampler),
             )
             .at(effect.file, s.sampler_span.clone(), "no such sampler");
@@ -252,7 +245,7 @@ fn samplers(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut 
         let kind = target.format.kind();
         let decl = sampler_decl(stages, &s.sampler);
         if kind == SampleKind::Depth {
-            let mut d = Diagnostic::error(E_FORMAT, format!("`{}` is a depth target and cannot be sampled", s.target.name))
+            let mut d = Diagnostic::new(Code::PassFormat, format!("`{}` is a depth target and cannot be sampled", s.target.name))
                 .at(effect.file, s.target.span.clone(), format!("{} target", target.format.name()))
                 .with_note("effectc attaches depth targets with `depth = …` only")
                 .with_help("write what the later pass needs (depth, position) into a colour target such as rgba16f or r32f");
@@ -263,8 +256,8 @@ fn samplers(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut 
             continue;
         }
         if ty.base != kind.sampler() {
-            let mut d = Diagnostic::error(
-                E_FORMAT,
+            let mut d = Diagnostic::new(
+                Code::PassFormat,
                 format!(
                     "`{}` is {} `{}`, but target `{}` is {}",
                     s.sampler,
@@ -346,8 +339,8 @@ fn outputs(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut V
     if locations != wanted {
         let span = pass.targets_span.clone().unwrap_or(pass.name_span.clone());
         let listed: Vec<String> = slots.iter().map(|s| format!("{} at location {}", s.name, s.location)).collect();
-        let mut d = Diagnostic::error(
-            E_OUTPUT_COUNT,
+        let mut d = Diagnostic::new(
+            Code::PassOutputCount,
             format!(
                 "pass `{}` has {} target{}, but its fragment stage writes {} output{}",
                 pass.name,
@@ -373,8 +366,8 @@ fn outputs(effect: &Effect, pass: &PassDecl, stages: &[StageSyntax], out: &mut V
         let kind = decl.format.kind();
         if kind != SampleKind::Depth && kind != s.kind {
             out.push(
-                Diagnostic::error(
-                    E_FORMAT,
+                Diagnostic::new(
+                    Code::PassFormat,
                     format!("output `{}` is {}-valued, but target `{}` is {}", s.name, s.kind.output_scalar(), t.name, decl.format.name()),
                 )
                 .at(effect.file, t.span.clone(), format!("{} {} target", article(decl.format.name()), decl.format.name()))
@@ -390,7 +383,7 @@ fn pruning(effect: &Effect, plan: &graph::PassPlan, out: &mut Vec<Diagnostic>) {
     for (i, pass) in effect.passes.iter().enumerate() {
         if !plan.runs[i] {
             out.push(
-                Diagnostic::warning(W_PASS_UNUSED, format!("pass `{}` does not contribute to the output: it is skipped", pass.name))
+                Diagnostic::new(Code::PassUnused, format!("pass `{}` does not contribute to the output: it is skipped", pass.name))
                     .at(effect.file, pass.name_span.clone(), "skipped")
                     .with_note(format!("nothing it writes ({}) is read by a later pass or is the output", quoted(&graph::written(pass))))
                     .with_help("remove the pass, or sample its target in a later pass"),
@@ -400,8 +393,8 @@ fn pruning(effect: &Effect, plan: &graph::PassPlan, out: &mut Vec<Diagnostic>) {
         for (t, on) in pass.targets.iter().zip(&plan.attached[i]) {
             if !on {
                 out.push(
-                    Diagnostic::note(
-                        N_ATTACHMENT_DROPPED,
+                    Diagnostic::new(
+                        Code::AttachmentDropped,
                         format!("target `{}` of pass `{}` is never read: it is not attached", t.name, pass.name),
                     )
                     .at(effect.file, t.span.clone(), "dropped")
@@ -422,8 +415,8 @@ pub fn unused_entries(
     let mut out = Vec::new();
     for u in effect.uniforms.iter().filter(|u| !used_uniforms.contains(&u.name)) {
         out.push(
-            Diagnostic::error(
-                super::E_MANIFEST_UNKNOWN,
+            Diagnostic::new(
+                Code::UniformUndeclared,
                 format!("`[uniforms]` entry `{}` names no uniform declared by any pass", u.name),
             )
             .at(effect.file, u.name_span.clone(), "no pass's stages declare it")
@@ -432,7 +425,7 @@ pub fn unused_entries(
     }
     for t in effect.textures.iter().filter(|t| !used_textures.contains(&t.name)) {
         out.push(
-            Diagnostic::error(super::E_TEXTURE_UNKNOWN, format!("`[textures]` entry `{}` names no sampler declared by any pass", t.name))
+            Diagnostic::new(Code::TextureNoSampler, format!("`[textures]` entry `{}` names no sampler declared by any pass", t.name))
                 .at(effect.file, t.name_span.clone(), "no pass's stages declare it")
                 .with_note("samplers that read a target are bound with the pass's `samples`"),
         );

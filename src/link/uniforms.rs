@@ -7,8 +7,8 @@
 use std::collections::{BTreeSet, HashMap};
 
 use super::blocks::{self, Side};
-use super::{same_type, stage_title, type_text, E_UNIFORM_BLOCK, E_UNIFORM_STRUCT, E_UNIFORM_TYPE};
-use crate::diag::Diagnostic;
+use super::{same_type, stage_title, type_text};
+use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{Global, StageSyntax, Storage};
 
 pub fn check(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
@@ -35,8 +35,8 @@ fn loose(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
             let (tf, ts) = (type_text(f, &fg.ty), type_text(s, &g.ty));
             let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
             out.push(
-                Diagnostic::error(
-                    E_UNIFORM_TYPE,
+                Diagnostic::new(
+                    Code::UniformTypeMismatch,
                     format!("uniform `{name}` is `{tf}` in the {ft} stage but `{ts}` in the {st} stage"),
                 )
                 .at(s.file, g.name_span.clone(), format!("declared as `{ts}` here"))
@@ -73,10 +73,12 @@ fn blocks_by_name(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
             }
             let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
             let kind = if g.storage == Storage::Buffer { "buffer" } else { "uniform" };
-            let mut d =
-                Diagnostic::error(E_UNIFORM_BLOCK, format!("{kind} block `{name}` is declared differently in the {ft} and {st} stages"))
-                    .at(s.file, blk.block_name_span.clone(), format!("declared here in the {st} stage"))
-                    .with_label(f.file, fb.block_name_span.clone(), format!("declared here in the {ft} stage"));
+            let mut d = Diagnostic::new(
+                Code::UniformBlockMismatch,
+                format!("{kind} block `{name}` is declared differently in the {ft} and {st} stages"),
+            )
+            .at(s.file, blk.block_name_span.clone(), format!("declared here in the {st} stage"))
+            .with_label(f.file, fb.block_name_span.clone(), format!("declared here in the {ft} stage"));
             for diff in diffs {
                 if let Some((span, label)) = diff.a {
                     d = d.with_label(f.file, span, label);
@@ -138,8 +140,8 @@ fn structs(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
-            let mut d = Diagnostic::error(
-                E_UNIFORM_STRUCT,
+            let mut d = Diagnostic::new(
+                Code::UniformStructMismatch,
                 format!("struct `{name}` is used by uniforms but defined differently in the {ft} and {st} stages"),
             )
             .at(s.file, sd.name_span.clone(), format!("defined here in the {st} stage"))

@@ -2,7 +2,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::*;
-use crate::diag::{Diagnostic, FileId, Files, Severity};
+use crate::diag::{Code, Diagnostic, FileId, Files, Severity};
 use crate::stage::StageKind;
 
 static COUNTER: AtomicUsize = AtomicUsize::new(0);
@@ -66,7 +66,7 @@ fn span_text<'a>(text: &'a str, d: &Diagnostic) -> &'a str {
 }
 
 /// The only diagnostic with `code`.
-fn one<'d>(diags: &'d [Diagnostic], code: &str) -> &'d Diagnostic {
+fn one(diags: &[Diagnostic], code: Code) -> &Diagnostic {
     let found: Vec<_> = diags.iter().filter(|d| d.code == code).collect();
     assert_eq!(found.len(), 1, "expected one {code} in {diags:#?}");
     found[0]
@@ -162,7 +162,7 @@ fn crlf_manifest_parses_with_byte_spans() {
     // Errors in a CRLF file point at the right bytes and lines too.
     let bad = "[stages]\r\nvertex = \"a.vert\"\r\nfragmnet = \"a.frag\"\r\n";
     let diags = errors(bad, &minimal_dir());
-    let d = one(&diags, E_UNKNOWN_KEY);
+    let d = one(&diags, Code::ManifestUnknownKey);
     assert_eq!(span_text(bad, d), "fragmnet");
     let mut files = Files::new();
     let id = files.add("effect.toml", bad);
@@ -183,8 +183,8 @@ fn unknown_key_suggests_the_closest() {
     let diags = errors(text, &minimal_dir());
     assert_eq!(diags.len(), 1, "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(d.code, E_UNKNOWN_KEY);
-    assert_eq!(d.severity, Severity::Error);
+    assert_eq!(d.code, Code::ManifestUnknownKey);
+    assert_eq!(d.severity(), Severity::Error);
     assert_eq!(span_text(text, d), "fragmnet");
     assert_eq!(d.help.as_deref(), Some("did you mean `fragment`?"));
     assert!(d.notes[0].contains("`tess_control`"), "{:?}", d.notes);
@@ -209,8 +209,11 @@ fn wrong_types_are_reported_at_the_value() {
     let text =
         "[stages]\nvertex = 3\nfragment = \"a.frag\"\n[uniforms]\nx = { value = 1.0, range = \"x\" }\ny = \"hello\"\nz = 2024-01-01\n";
     let diags = errors(text, &minimal_dir());
-    let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(text, d))).collect();
-    assert_eq!(spans, [(E_TYPE, "3"), (E_TYPE, "\"x\""), (E_TYPE, "\"hello\""), (E_TYPE, "2024-01-01")]);
+    let spans: Vec<(Code, &str)> = diags.iter().map(|d| (d.code, span_text(text, d))).collect();
+    assert_eq!(
+        spans,
+        [(Code::ManifestType, "3"), (Code::ManifestType, "\"x\""), (Code::ManifestType, "\"hello\""), (Code::ManifestType, "2024-01-01")]
+    );
     assert_eq!(diags[0].message, "`stages.vertex` must be a string, found an integer");
     assert!(diags[1].message.contains("`[min, max]`"), "{}", diags[1].message);
 }
@@ -218,7 +221,7 @@ fn wrong_types_are_reported_at_the_value() {
 #[test]
 fn string_uniform_that_names_a_semantic_gets_help() {
     let text = minimal("[uniforms]\nt = \"time\"\n");
-    let d = one(&errors(&text, &minimal_dir()), E_TYPE).clone();
+    let d = one(&errors(&text, &minimal_dir()), Code::ManifestType).clone();
     assert_eq!(d.help.as_deref(), Some("to bind a value the runtime provides, write `{ semantic = \"time\" }`"));
 }
 
@@ -226,7 +229,7 @@ fn string_uniform_that_names_a_semantic_gets_help() {
 fn range_low_above_high() {
     let text = minimal("[uniforms]\nx = { value = 1.0, range = [2.0, 1.0] }\n");
     let diags = errors(&text, &minimal_dir());
-    let d = one(&diags, E_VALUE);
+    let d = one(&diags, Code::ManifestValue);
     assert_eq!(span_text(&text, d), "[2.0, 1.0]");
     assert!(d.message.contains("lower bound 2 is greater than upper bound 1"), "{}", d.message);
     assert_eq!(diags.len(), 1);
@@ -244,8 +247,8 @@ fn value_outside_range_is_a_warning() {
     let e = run(&text, &minimal_dir()).unwrap();
     assert_eq!(e.warnings.len(), 1);
     let w = &e.warnings[0];
-    assert_eq!(w.code, W_OUT_OF_RANGE);
-    assert_eq!(w.severity, Severity::Warning);
+    assert_eq!(w.code, Code::DefaultOutOfRange);
+    assert_eq!(w.severity(), Severity::Warning);
     assert_eq!(span_text(&text, w), "[0.5, 7.0]");
     assert_eq!(&text[w.labels[0].span.clone()], "[0, 1]");
     assert_eq!(e.uniforms[0].range, Some((0.0, 1.0)));
@@ -256,7 +259,7 @@ fn missing_stage_file() {
     let text = "[stages]\nvertex = \"a.vert\"\nfragment = \"nope.frag\"\n";
     let dir = minimal_dir();
     let diags = errors(text, &dir);
-    let d = one(&diags, E_STAGE_NOT_FOUND);
+    let d = one(&diags, Code::StageFileNotFound);
     assert_eq!(span_text(text, d), "\"nope.frag\"");
     assert_eq!(d.message, "stage file not found: `nope.frag`");
     assert!(d.notes[0].contains(&dir.join("nope.frag").display().to_string()));
@@ -266,16 +269,16 @@ fn missing_stage_file() {
 fn missing_or_empty_stages() {
     let dir = minimal_dir();
     let diags = errors("name = \"x\"\n", &dir);
-    let d = one(&diags, E_MISSING);
+    let d = one(&diags, Code::ManifestMissing);
     assert_eq!(d.span, None);
     assert_eq!(d.file, Some(FileId(0)));
 
     let text = "[stages]\n[uniforms]\n";
-    let d = one(&errors(text, &dir), E_MISSING).clone();
+    let d = one(&errors(text, &dir), Code::ManifestMissing).clone();
     assert_eq!(span_text(text, &d), "stages");
 
     let text = "stages = 5\n";
-    let d = one(&errors(text, &dir), E_TYPE).clone();
+    let d = one(&errors(text, &dir), Code::ManifestType).clone();
     assert_eq!(span_text(text, &d), "5");
 }
 
@@ -315,21 +318,30 @@ fn garbage_input_does_not_panic() {
         }
     }
     let d = &errors(&inputs[0], &dir)[0];
-    assert_eq!(d.code, E_SYNTAX);
-    let d = one(&errors(&inputs[2], &dir), E_SYNTAX).clone();
+    assert_eq!(d.code, Code::ManifestSyntax);
+    let d = one(&errors(&inputs[2], &dir), Code::ManifestSyntax).clone();
     assert_eq!(span_text(&inputs[2], &d), "a");
     assert!(d.message.contains("duplicate key"), "{}", d.message);
     // Our own depth limit, when toml's is not hit first.
     let diags = errors(&inputs[4], &dir);
-    assert!(diags.iter().any(|d| d.code == E_VALUE && d.message.contains("nest deeper")), "{diags:#?}");
+    assert!(diags.iter().any(|d| d.code == Code::ManifestValue && d.message.contains("nest deeper")), "{diags:#?}");
 }
 
 #[test]
 fn non_finite_and_huge_numbers() {
     let text = minimal("[uniforms]\na = nan\nb = -inf\nc = 1e400\nd = 99999999999999999999\ne = [1.0, +nan]\nf = 0x7fffffffffffffff\n");
     let diags = errors(&text, &minimal_dir());
-    let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
-    assert_eq!(spans, [(E_VALUE, "nan"), (E_VALUE, "-inf"), (E_VALUE, "1e400"), (E_VALUE, "99999999999999999999"), (E_VALUE, "+nan")]);
+    let spans: Vec<(Code, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
+    assert_eq!(
+        spans,
+        [
+            (Code::ManifestValue, "nan"),
+            (Code::ManifestValue, "-inf"),
+            (Code::ManifestValue, "1e400"),
+            (Code::ManifestValue, "99999999999999999999"),
+            (Code::ManifestValue, "+nan")
+        ]
+    );
 }
 
 #[test]
@@ -337,9 +349,9 @@ fn value_and_semantic_rules() {
     let dir = minimal_dir();
     let text = minimal("[uniforms]\na = { range = [0, 1] }\nb = { value = 1.0, semantic = \"time\" }\n");
     let diags = errors(&text, &dir);
-    let missing = one(&diags, E_MISSING);
+    let missing = one(&diags, Code::ManifestMissing);
     assert_eq!(span_text(&text, missing), "{ range = [0, 1] }");
-    let conflict = one(&diags, E_CONFLICT);
+    let conflict = one(&diags, Code::ManifestConflict);
     assert_eq!(span_text(&text, conflict), "semantic");
     assert_eq!(&text[conflict.labels[0].span.clone()], "value");
 
@@ -348,12 +360,12 @@ fn value_and_semantic_rules() {
     );
     let diags = errors(&text, &dir);
     assert_eq!(diags.len(), 2, "{diags:#?}");
-    assert_eq!(diags[0].code, E_VALUE);
+    assert_eq!(diags[0].code, Code::ManifestValue);
     assert_eq!(span_text(&text, &diags[0]), "\"tme\"");
     assert_eq!(diags[0].help.as_deref(), Some("did you mean `time`?"));
     assert!(diags[0].notes[0].contains("`camera_position`"));
     assert!(!diags[0].notes[0].contains("model_view_projection"));
-    assert_eq!(diags[1].code, E_TYPE);
+    assert_eq!(diags[1].code, Code::ManifestType);
     assert_eq!(span_text(&text, &diags[1]), "3");
 
     let text = minimal("[uniforms]\nc = { semantic = \"model_view_projection\" }\nd = { semantic = \"mvp\" }\n");
@@ -366,19 +378,19 @@ fn value_and_semantic_rules() {
 fn many_errors_in_one_pass() {
     let text = "name = 1\n[stages]\nvertex = \"missing.vert\"\nfragmnet = \"a.frag\"\n[uniforms]\nx = { value = 1.0, range = [2, 1] }\ny = { vlaue = 1 }\n[textures]\nt = { generate = \"nosie\", size = -5 }\n[mesh]\nbuiltin = \"sphere\"\n";
     let diags = errors(text, &minimal_dir());
-    let got: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(text, d))).collect();
+    let got: Vec<(Code, &str)> = diags.iter().map(|d| (d.code, span_text(text, d))).collect();
     assert_eq!(
         got,
         [
-            (E_TYPE, "1"),
-            (E_STAGE_NOT_FOUND, "\"missing.vert\""),
-            (E_UNKNOWN_KEY, "fragmnet"),
-            (E_VALUE, "[2, 1]"),
-            (E_MISSING, "{ vlaue = 1 }"),
-            (E_UNKNOWN_KEY, "vlaue"),
-            (E_VALUE, "\"nosie\""),
-            (E_VALUE, "-5"),
-            (E_VALUE, "\"sphere\""),
+            (Code::ManifestType, "1"),
+            (Code::StageFileNotFound, "\"missing.vert\""),
+            (Code::ManifestUnknownKey, "fragmnet"),
+            (Code::ManifestValue, "[2, 1]"),
+            (Code::ManifestMissing, "{ vlaue = 1 }"),
+            (Code::ManifestUnknownKey, "vlaue"),
+            (Code::ManifestValue, "\"nosie\""),
+            (Code::ManifestValue, "-5"),
+            (Code::ManifestValue, "\"sphere\""),
         ]
     );
     assert_eq!(diags[5].help.as_deref(), Some("did you mean `value`?"));
@@ -402,7 +414,7 @@ fn uniform_lists() {
     let diags = errors(&text, &minimal_dir());
     let got: Vec<&str> = diags.iter().map(|d| span_text(&text, d)).collect();
     assert_eq!(got, ["[1, 2, 3]", "[2]", "1", "[]"]);
-    assert!(diags.iter().all(|d| d.code == E_VALUE));
+    assert!(diags.iter().all(|d| d.code == Code::ManifestValue));
     assert_eq!(&text[diags[0].labels[0].span.clone()], "[1, 2]");
 }
 
@@ -439,25 +451,25 @@ fn texture_rules() {
     let text = minimal("[textures]\nt = { generate = \"checker\", seed = 3 }\n");
     let e = run(&text, &dir).unwrap();
     assert_eq!(e.warnings.len(), 1);
-    assert_eq!(e.warnings[0].code, W_UNUSED_PARAM);
+    assert_eq!(e.warnings[0].code, Code::UnusedGeneratorParam);
     assert_eq!(span_text(&text, &e.warnings[0]), "seed");
 
     let text = minimal(
         "[textures]\nnone = { filter = \"linear\" }\ntwo = { file = \"img.png\", generate = \"noise\" }\nsz = { file = \"img.png\", size = 64 }\nk = { file = \"img.png\", kind = \"cube\" }\nfive = { cube = [\"img.png\", \"img.png\"] }\ngone = { file = \"gone.png\" }\ncol = { generate = \"solid\", colors = [[1, 2]] }\nnum = 4\n",
     );
     let diags = errors(&text, &dir);
-    let got: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
+    let got: Vec<(Code, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
     assert_eq!(
         got,
         [
-            (E_MISSING, "{ filter = \"linear\" }"),
-            (E_CONFLICT, "generate"),
-            (E_CONFLICT, "size"),
-            (E_CONFLICT, "kind"),
-            (E_VALUE, "[\"img.png\", \"img.png\"]"),
-            (E_ASSET_NOT_FOUND, "\"gone.png\""),
-            (E_VALUE, "[1, 2]"),
-            (E_TYPE, "4"),
+            (Code::ManifestMissing, "{ filter = \"linear\" }"),
+            (Code::ManifestConflict, "generate"),
+            (Code::ManifestConflict, "size"),
+            (Code::ManifestConflict, "kind"),
+            (Code::ManifestValue, "[\"img.png\", \"img.png\"]"),
+            (Code::AssetNotFound, "\"gone.png\""),
+            (Code::ManifestValue, "[1, 2]"),
+            (Code::ManifestType, "4"),
         ]
     );
     assert_eq!(&text[diags[1].labels[0].span.clone()], "file");
@@ -467,7 +479,7 @@ fn texture_rules() {
 fn texture_and_uniform_with_the_same_name() {
     let text = minimal("[uniforms]\ntex = 1\n[textures]\ntex = \"img.png\"\n");
     let diags = errors(&text, &minimal_dir());
-    let d = one(&diags, E_CONFLICT);
+    let d = one(&diags, Code::ManifestConflict);
     assert_eq!(d.span.clone().unwrap().start, text.rfind("\ntex =").unwrap() + 1);
     assert_eq!(d.labels[0].span.start, text.find("\ntex =").unwrap() + 1);
 }
@@ -485,14 +497,14 @@ fn mesh_rules() {
     assert_eq!(e.mesh.unwrap().source, MeshSource::Obj(dir.join("teapot.obj")));
     assert_eq!(run(&minimal(""), &dir).unwrap().mesh, None);
 
-    let cases: &[(&str, &str, &str)] = &[
-        ("[mesh]\nbuiltin = \"cube\"\nsegments = 8\n", E_CONFLICT, "segments"),
-        ("[mesh]\nbuiltin = \"cube\"\nobj = \"teapot.obj\"\n", E_CONFLICT, "obj"),
-        ("[mesh]\nobj = \"nope.obj\"\n", E_ASSET_NOT_FOUND, "\"nope.obj\""),
-        ("[mesh.attributes]\np = \"position\"\n", E_MISSING, "mesh"),
-        ("[mesh]\nbuiltin = \"uv_sphere\"\nrings = 1\n", E_VALUE, "1"),
-        ("[mesh]\nbuiltin = \"quad\"\n[mesh.attributes]\np = \"positoin\"\n", E_VALUE, "\"positoin\""),
-        ("mesh = 3\n", E_TYPE, "3"),
+    let cases: &[(&str, Code, &str)] = &[
+        ("[mesh]\nbuiltin = \"cube\"\nsegments = 8\n", Code::ManifestConflict, "segments"),
+        ("[mesh]\nbuiltin = \"cube\"\nobj = \"teapot.obj\"\n", Code::ManifestConflict, "obj"),
+        ("[mesh]\nobj = \"nope.obj\"\n", Code::AssetNotFound, "\"nope.obj\""),
+        ("[mesh.attributes]\np = \"position\"\n", Code::ManifestMissing, "mesh"),
+        ("[mesh]\nbuiltin = \"uv_sphere\"\nrings = 1\n", Code::ManifestValue, "1"),
+        ("[mesh]\nbuiltin = \"quad\"\n[mesh.attributes]\np = \"positoin\"\n", Code::ManifestValue, "\"positoin\""),
+        ("mesh = 3\n", Code::ManifestType, "3"),
     ];
     for (extra, code, span) in cases {
         let text = minimal(extra);
@@ -522,7 +534,7 @@ fn mesh_attributes_accept_every_attribute_the_renderer_feeds() {
     // An unknown name is still E0006, and the valid names listed come from the enum.
     let text = minimal("[mesh]\nbuiltin = \"cube\"\n[mesh.attributes]\nv = \"binormal\"\n");
     let diags = errors(&text, &dir);
-    let d = one(&diags, E_VALUE);
+    let d = one(&diags, Code::ManifestValue);
     assert_eq!(span_text(&text, d), "\"binormal\"");
     let listed: Vec<String> = MESH_ATTRIBUTES.iter().map(|n| format!("`{n}`")).collect();
     assert_eq!(d.notes, [format!("expected one of: {}", listed.join(", "))]);
@@ -540,11 +552,11 @@ fn stage_rules() {
     let text = "[stages]\nvertex = \"a.frag\"\nfragment = \"a.frag\"\n";
     let e = run(text, &dir).unwrap();
     assert_eq!(e.warnings.len(), 1);
-    assert_eq!(e.warnings[0].code, W_STAGE_EXTENSION);
+    assert_eq!(e.warnings[0].code, Code::StageExtension);
     assert_eq!(span_text(text, &e.warnings[0]), "\"a.frag\"");
 
     let text = "[stages]\nvertex = \"a.vert\"\ncompute = \"a.comp\"\n";
-    let d = one(&errors(text, &dir), E_CONFLICT).clone();
+    let d = one(&errors(text, &dir), Code::ManifestConflict).clone();
     assert_eq!(span_text(text, &d), "compute");
     assert_eq!(&text[d.labels[0].span.clone()], "vertex");
 
@@ -571,13 +583,13 @@ fn load_reads_registers_and_reports_io_errors() {
     let diags = load(&dir.join("missing.toml"), &mut files).unwrap_err();
     assert_eq!(diags.len(), 1);
     assert!(is_io_error(&diags[0]));
-    assert_eq!(diags[0].code, E_IO);
+    assert_eq!(diags[0].code, Code::ManifestIo);
     assert!(diags[0].message.contains("missing.toml"), "{}", diags[0].message);
 
     let bin = dir.join("binary.toml");
     std::fs::write(&bin, b"name = \"a\"\n\xff\xfe\x00garbage").unwrap();
     let diags = load(&bin, &mut files).unwrap_err();
-    assert_eq!(diags[0].code, E_SYNTAX);
+    assert_eq!(diags[0].code, Code::ManifestSyntax);
     assert!(!is_io_error(&diags[0]));
     let id = diags[0].file.unwrap();
     assert_eq!(&files.text(id)[diags[0].span.clone().unwrap()], "\u{FFFD}");
@@ -709,18 +721,18 @@ zoom = 2
 "#,
     );
     let diags = errors(&text, &dir);
-    let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
-    assert!(spans.contains(&(E_VALUE, "180")), "{spans:?}");
-    assert!(spans.contains(&(E_VALUE, "1")), "decreasing key time: {spans:?}");
-    assert!(spans.contains(&(E_MISSING, "{ eye = [1, 1, 1] }")), "{spans:?}");
-    assert!(spans.contains(&(E_VALUE, "0")), "zero scale or size: {spans:?}");
-    assert!(spans.contains(&(E_VALUE, "99999")), "{spans:?}");
-    assert!(spans.contains(&(E_VALUE, "\"backside\"")), "{spans:?}");
-    assert!(spans.contains(&(E_UNKNOWN_KEY, "zoom")), "{spans:?}");
+    let spans: Vec<(Code, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
+    assert!(spans.contains(&(Code::ManifestValue, "180")), "{spans:?}");
+    assert!(spans.contains(&(Code::ManifestValue, "1")), "decreasing key time: {spans:?}");
+    assert!(spans.contains(&(Code::ManifestMissing, "{ eye = [1, 1, 1] }")), "{spans:?}");
+    assert!(spans.contains(&(Code::ManifestValue, "0")), "zero scale or size: {spans:?}");
+    assert!(spans.contains(&(Code::ManifestValue, "99999")), "{spans:?}");
+    assert!(spans.contains(&(Code::ManifestValue, "\"backside\"")), "{spans:?}");
+    assert!(spans.contains(&(Code::ManifestUnknownKey, "zoom")), "{spans:?}");
     let near_far = errors(&minimal("[camera]\nnear = 10\nfar = 1\n"), &dir);
-    assert_eq!(span_text(&minimal("[camera]\nnear = 10\nfar = 1\n"), one(&near_far, E_VALUE)), "10");
+    assert_eq!(span_text(&minimal("[camera]\nnear = 10\nfar = 1\n"), one(&near_far, Code::ManifestValue)), "10");
     let degenerate = errors(&minimal("[camera]\neye = [0, 0, 0]\n"), &dir);
-    assert!(one(&degenerate, E_VALUE).message.contains("equals its `target`"));
+    assert!(one(&degenerate, Code::ManifestValue).message.contains("equals its `target`"));
 }
 
 #[test]
@@ -766,13 +778,13 @@ d = { }
 "#,
     );
     let diags = errors(&text, &dir);
-    let spans: Vec<(&str, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
-    assert!(spans.contains(&(E_VALUE, "[1, 2, 3]")), "3 values for 2 instances: {spans:?}");
-    assert!(spans.contains(&(E_VALUE, "[[0, 0], [1, 1, 1]]")), "ends of different sizes: {spans:?}");
-    assert!(spans.contains(&(E_CONFLICT, "seed")), "seed without random: {spans:?}");
-    assert!(spans.contains(&(E_MISSING, "{ }")), "no source: {spans:?}");
+    let spans: Vec<(Code, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
+    assert!(spans.contains(&(Code::ManifestValue, "[1, 2, 3]")), "3 values for 2 instances: {spans:?}");
+    assert!(spans.contains(&(Code::ManifestValue, "[[0, 0], [1, 1, 1]]")), "ends of different sizes: {spans:?}");
+    assert!(spans.contains(&(Code::ManifestConflict, "seed")), "seed without random: {spans:?}");
+    assert!(spans.contains(&(Code::ManifestMissing, "{ }")), "no source: {spans:?}");
     let no_count = errors(&minimal("[instances]\n"), &dir);
-    assert!(one(&no_count, E_MISSING).message.contains("needs `count`"));
+    assert!(one(&no_count, Code::ManifestMissing).message.contains("needs `count`"));
 }
 
 const PASSES: &str = r#"name = "post"
@@ -849,19 +861,19 @@ fn passes_targets_and_output_parse() {
 #[test]
 fn pass_mistakes_are_reported_at_their_keys() {
     let dir = fixture_dir("post", &["a.vert", "a.frag", "b.frag"]);
-    let cases: &[(&str, &str, &str)] = &[
-        ("name = \"post\"\n[stages]\nvertex = \"a.vert\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_CONFLICT, "stages"),
-        ("output = \"x\"\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\n", E_MISSING, "\"p\""),
-        ("output = \"x\"\n[[passes]]\nname = \"p\"\ntargets = [\"x\"]\n", E_MISSING, "\"p\""),
-        ("[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_MISSING, "passes"),
-        ("output = \"x\"\n[[passes]]\nname = \"p\"\neffect = \"../nowhere\"\ntargets = [\"x\"]\n", E_ASSET_NOT_FOUND, "\"../nowhere\""),
-        ("output = \"x\"\n[targets]\nx = { format = \"rgb9\" }\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_VALUE, "\"rgb9\""),
-        ("output = \"x\"\n[targets]\nx = { scale = 0.5, size = [4, 4] }\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_CONFLICT, "size"),
-        ("output = \"x\"\n[[passes]]\nname = \"a.b\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_VALUE, "\"a.b\""),
-        ("output = \"x\"\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", E_VALUE, "\"p\""),
-        ("output = \"x\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\ndraw = \"quad\"\n", E_VALUE, "\"quad\""),
-        ("output = \"x\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\nsampels = {}\n", E_UNKNOWN_KEY, "sampels"),
-        ("output = \"x\"\n", E_CONFLICT, "\"x\""),
+    let cases: &[(&str, Code, &str)] = &[
+        ("name = \"post\"\n[stages]\nvertex = \"a.vert\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", Code::ManifestConflict, "stages"),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\n", Code::ManifestMissing, "\"p\""),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\ntargets = [\"x\"]\n", Code::ManifestMissing, "\"p\""),
+        ("[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", Code::ManifestMissing, "passes"),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\neffect = \"../nowhere\"\ntargets = [\"x\"]\n", Code::AssetNotFound, "\"../nowhere\""),
+        ("output = \"x\"\n[targets]\nx = { format = \"rgb9\" }\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", Code::ManifestValue, "\"rgb9\""),
+        ("output = \"x\"\n[targets]\nx = { scale = 0.5, size = [4, 4] }\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", Code::ManifestConflict, "size"),
+        ("output = \"x\"\n[[passes]]\nname = \"a.b\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", Code::ManifestValue, "\"a.b\""),
+        ("output = \"x\"\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n[[passes]]\nname = \"p\"\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\n", Code::ManifestValue, "\"p\""),
+        ("output = \"x\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\ndraw = \"quad\"\n", Code::ManifestValue, "\"quad\""),
+        ("output = \"x\"\n[[passes]]\nstages = { vertex = \"a.vert\" }\ntargets = [\"x\"]\nsampels = {}\n", Code::ManifestUnknownKey, "sampels"),
+        ("output = \"x\"\n", Code::ManifestConflict, "\"x\""),
     ];
     for (text, code, at) in cases {
         let diags = errors(text, &dir);

@@ -14,25 +14,14 @@ use std::time::{Duration, Instant};
 
 use crate::back::TranslateOptions;
 use crate::check::{self, Outcome};
-use crate::diag::{Diagnostic, FileId};
-use crate::output::{self, write_atomic, E_OUTPUT_IO};
+use crate::diag::{Code, Diagnostic, FileId};
+use crate::output::{self, write_atomic};
 use crate::render::device::Gpu;
 pub use crate::render::drawer::DEFAULT_SIZE;
 use crate::render::drawer::{build, frame_state, prepare, BuildSettings, Drawer, Variant};
 use crate::render::encode;
 use crate::render::frames::{Dump, Frame, FrameError, GpuClock, Pixels, Target};
 use crate::render::scene::ColorMode;
-
-/// No usable adapter (exit 2: the machine, not the input).
-pub const E_NO_ADAPTER: &str = "E0401";
-/// A frame did not finish within `--timeout`.
-pub const E_TIMEOUT: &str = "E0403";
-/// `--float` found NaN or Inf pixels.
-pub const E_NON_FINITE: &str = "E0404";
-/// A request beyond the safety limits (size, frame count, memory): exit 2.
-pub const E_LIMIT: &str = "E0405";
-/// A frame failed on the device (validation error while drawing, lost device).
-pub const E_FRAME: &str = "E0407";
 
 /// Frames kept in memory for `--contact-sheet` / `--gif` may use at most this much.
 pub const MAX_KEPT_BYTES: u64 = 2 << 30;
@@ -210,7 +199,7 @@ pub fn open_once<'g>(gpu: &'g mut Option<Gpu>, adapter: &mut Option<String>, out
             }
             Err(e) => {
                 outcome.io_error = true;
-                outcome.diagnostics.push(Diagnostic::error(E_NO_ADAPTER, e.0));
+                outcome.diagnostics.push(Diagnostic::new(Code::NoAdapter, e.0));
             }
         }
     }
@@ -222,17 +211,20 @@ fn device_limit_error(gpu: &Gpu, (w, h): (u32, u32), frames: u32, request: &Requ
     let limits = gpu.device.limits();
     let max_side = limits.max_texture_dimension_2d;
     if w == 0 || h == 0 || w > max_side || h > max_side {
-        return Some(Diagnostic::error(E_LIMIT, format!("a {w}x{h} frame exceeds the adapter's limit of {max_side} per side")));
+        return Some(Diagnostic::new(Code::RenderLimit, format!("a {w}x{h} frame exceeds the adapter's limit of {max_side} per side")));
     }
     let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
     let needed = Target::readback_size(w, h, mode);
     if needed > limits.max_buffer_size {
-        return Some(Diagnostic::error(E_LIMIT, format!("a {w}x{h} frame needs {} MiB, beyond the adapter's buffers", needed >> 20)));
+        return Some(Diagnostic::new(
+            Code::RenderLimit,
+            format!("a {w}x{h} frame needs {} MiB, beyond the adapter's buffers", needed >> 20),
+        ));
     }
     let kept = u64::from(w) * u64::from(h) * 4 * u64::from(frames);
     if (request.contact_sheet || request.gif) && kept > MAX_KEPT_BYTES {
         return Some(
-            Diagnostic::error(E_LIMIT, format!("--contact-sheet/--gif would keep {} MiB of frames in memory", kept >> 20))
+            Diagnostic::new(Code::RenderLimit, format!("--contact-sheet/--gif would keep {} MiB of frames in memory", kept >> 20))
                 .with_note(format!("the limit is {} MiB; use fewer frames or a smaller --size", MAX_KEPT_BYTES >> 20)),
         );
     }
@@ -299,7 +291,7 @@ fn draw_frames(
                 }
                 Err(FrameError::Timeout(t)) => {
                     stop = Some(Stop::Hung(Box::new(
-                        Diagnostic::error(E_TIMEOUT, format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()))
+                        Diagnostic::new(Code::FrameTimeout, format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()))
                             .in_file(file)
                             .with_note("a shader that never leaves a loop keeps the GPU busy forever")
                             .with_help("check the loop conditions, or raise --timeout for a very slow effect"),
@@ -308,7 +300,7 @@ fn draw_frames(
                 }
                 Err(FrameError::Device(e)) => {
                     stop = Some(Stop::Failed(Box::new(
-                        Diagnostic::error(E_FRAME, format!("frame {i} failed on the device")).in_file(file).with_note(e),
+                        Diagnostic::new(Code::FrameFailed, format!("frame {i} failed on the device")).in_file(file).with_note(e),
                     )));
                     break;
                 }
@@ -333,9 +325,11 @@ fn draw_frames(
             r.non_finite = Some((nf.nan, nf.pos_inf, nf.neg_inf));
         }
         if nf.nan + nf.pos_inf + nf.neg_inf > 0 {
-            let mut d =
-                Diagnostic::error(E_NON_FINITE, format!("frame {index}: {} NaN, {} +Inf, {} -Inf pixels", nf.nan, nf.pos_inf, nf.neg_inf))
-                    .in_file(file);
+            let mut d = Diagnostic::new(
+                Code::NonFinitePixels,
+                format!("frame {index}: {} NaN, {} +Inf, {} -Inf pixels", nf.nan, nf.pos_inf, nf.neg_inf),
+            )
+            .in_file(file);
             if let Some(m) = mask {
                 d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));
             }
@@ -353,7 +347,7 @@ fn draw_frames(
         let path = plan.dir.join(format!("{name}.gif"));
         match encode::gif_bytes(&frames_rgba, w, h, delay) {
             Ok(bytes) => write_file(&path, &bytes, inputs, &mut files, &mut diags),
-            Err(e) => diags.push(Diagnostic::error(E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
+            Err(e) => diags.push(Diagnostic::new(Code::OutputIo, format!("cannot encode {}: {e}", path.display()))),
         }
     }
     let rendered = Rendered {
@@ -413,14 +407,14 @@ fn encode_frames(
 fn write_png(path: &Path, rgba: &[u8], w: u32, h: u32, inputs: &BTreeSet<PathBuf>, files: &mut Vec<PathBuf>, diags: &mut Vec<Diagnostic>) {
     match encode::png_bytes(rgba, w, h) {
         Ok(bytes) => write_file(path, &bytes, inputs, files, diags),
-        Err(e) => diags.push(Diagnostic::error(E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display()))),
+        Err(e) => diags.push(Diagnostic::new(Code::OutputIo, format!("cannot encode {}: {e}", path.display()))),
     }
 }
 
 fn write_file(path: &Path, bytes: &[u8], inputs: &BTreeSet<PathBuf>, files: &mut Vec<PathBuf>, diags: &mut Vec<Diagnostic>) {
     match write_atomic(path, bytes, inputs) {
         Ok(()) => files.push(path.to_path_buf()),
-        Err(e) => diags.push(Diagnostic::error(E_OUTPUT_IO, e)),
+        Err(e) => diags.push(Diagnostic::new(Code::OutputIo, e)),
     }
 }
 

@@ -11,9 +11,8 @@ use std::time::Duration;
 use crate::assets::degenerate::Degenerate;
 use crate::back::TranslateOptions;
 use crate::check::{self, Outcome};
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::manifest::UniformValue;
-use crate::render::command::{E_FRAME, E_TIMEOUT};
 use crate::render::device::Gpu;
 use crate::render::drawer::{build, frame_state, prepare, with_overrides, BuildSettings, Drawer, Instrument, Variant};
 use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels};
@@ -136,7 +135,9 @@ impl<'c> InMemory<'c> {
                         FrameError::Timeout(t) => format!("frame {i} did not finish within {:.1} s", t.as_secs_f64()),
                         FrameError::Device(d) => format!("frame {i} failed on the device: {d}"),
                     };
-                    outcome.diagnostics.push(Diagnostic::error(if hung { E_TIMEOUT } else { E_FRAME }, message).in_file(self.file));
+                    outcome
+                        .diagnostics
+                        .push(Diagnostic::new(if hung { Code::FrameTimeout } else { Code::FrameFailed }, message).in_file(self.file));
                     if hung {
                         // The device is still busy: dropping the scene would wait for it.
                         std::mem::forget(self.drawer.take());
@@ -154,7 +155,7 @@ impl<'c> InMemory<'c> {
                         FrameError::Timeout(t) => format!("the storage buffer was not ready within {:.1} s", t.as_secs_f64()),
                         FrameError::Device(d) => format!("the storage buffer could not be read: {d}"),
                     };
-                    outcome.diagnostics.push(Diagnostic::error(E_FRAME, message).in_file(self.file));
+                    outcome.diagnostics.push(Diagnostic::new(Code::FrameFailed, message).in_file(self.file));
                     return None;
                 }
             }

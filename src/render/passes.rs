@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 use crate::assets::camera;
 use crate::back::Translation;
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::program::CompiledProgram;
 use crate::graph::{self, PassPlan};
 use crate::manifest::{Effect, Filter, PassClear, PassDraw, TargetFormat};
@@ -176,15 +176,13 @@ impl PassGraph {
         }
         if let Some(e) = pollster::block_on(scope.pop()) {
             let file = programs.first().map(|p| p.translation.file).unwrap_or(effect.file);
-            return Err(vec![Diagnostic::error(crate::render::scene::E_PIPELINE, "wgpu rejected the pass graph")
+            return Err(vec![Diagnostic::new(Code::PipelineRejected, "wgpu rejected the pass graph")
                 .in_file(file)
                 .with_note(e.to_string())]);
         }
         let readback = |target: &str| readback(gpu, &plan, mode, target);
         let Some(output) = readback(&output_name) else {
-            return Err(vec![
-                Diagnostic::error(crate::render::scene::E_UNRENDERABLE, "no pass writes the output target").in_file(effect.file)
-            ]);
+            return Err(vec![Diagnostic::new(Code::Unrenderable, "no pass writes the output target").in_file(effect.file)]);
         };
         let dumps = if dump {
             effect.targets.iter().filter(|t| t.name != output_name).filter_map(|t| readback(&t.name)).collect()

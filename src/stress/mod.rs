@@ -24,7 +24,7 @@ use std::time::Duration;
 
 use crate::assets::degenerate::Degenerate;
 use crate::check::{self, Outcome};
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::manifest::{Effect, UniformValue};
 use crate::render::command;
 use crate::render::device::Gpu;
@@ -33,12 +33,6 @@ use crate::render::frames::Pixels;
 use crate::render::memory::{InMemory, MemoryRequest, MemoryRun};
 use crate::stage::StageKind;
 use crate::stress::culprit::{Instrumented, Probe, StageCounts, COUNTS_BUFFER};
-
-/// A case rendered NaN or Inf pixels.
-pub const E_NON_FINITE_CASE: &str = "E0701";
-
-/// A case computes non-finite intermediate values but its output is finite.
-pub const W_HIDDEN_NON_FINITE: &str = "W0702";
 
 /// Effect times of the time cases (seconds).
 pub const EXTREME_TIMES: [f64; 3] = [1e3, 1e5, 1e7];
@@ -265,8 +259,8 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
             let d = case_error(c, &case, &program, (counts.nan, inf), mask_path.as_deref(), &geometry);
             outcome.diagnostics.push(with_culprits(d, c, &culprits));
         } else if !culprits.is_empty() {
-            let d = Diagnostic::warning(
-                W_HIDDEN_NON_FINITE,
+            let d = Diagnostic::new(
+                Code::StressHiddenNonFinite,
                 format!("{program}: case `{}` computes non-finite values, though its output is finite", case.name),
             );
             let d = at_case(d, c, &case, &geometry);
@@ -294,7 +288,7 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
 /// One frame of a built program with the case's uniform values, at its time.
 fn render_case(gpu: &Gpu, program: &mut InMemory<'_>, case: &Case, outcome: &mut Outcome) -> Option<MemoryRun> {
     if let Err(e) = program.set_overrides(&case.overrides) {
-        outcome.diagnostics.push(Diagnostic::error(crate::render::scene::E_PIPELINE, e));
+        outcome.diagnostics.push(Diagnostic::new(Code::PipelineRejected, e));
         return None;
     }
     program.render(gpu, outcome, case.time)
@@ -309,7 +303,7 @@ fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut
     let bytes = match encode::png_bytes(rgba, w, h) {
         Ok(b) => b,
         Err(e) => {
-            outcome.diagnostics.push(Diagnostic::error(crate::output::E_OUTPUT_IO, format!("cannot encode {}: {e}", path.display())));
+            outcome.diagnostics.push(Diagnostic::new(Code::OutputIo, format!("cannot encode {}: {e}", path.display())));
             return None;
         }
     };
@@ -317,7 +311,7 @@ fn write_mask(dir: &Path, name: &str, rgba: &[u8], w: u32, h: u32, outcome: &mut
         Ok(()) => Some(path),
         Err(e) => {
             outcome.io_error = true;
-            outcome.diagnostics.push(Diagnostic::error(crate::output::E_OUTPUT_IO, e));
+            outcome.diagnostics.push(Diagnostic::new(Code::OutputIo, e));
             None
         }
     }
@@ -332,7 +326,7 @@ fn case_error(
     mask: Option<&Path>,
     geometry: &[String],
 ) -> Diagnostic {
-    let d = Diagnostic::error(E_NON_FINITE_CASE, format!("{program}: case `{}` renders {nan} NaN and {inf} Inf pixels", case.name));
+    let d = Diagnostic::new(Code::StressNonFinite, format!("{program}: case `{}` renders {nan} NaN and {inf} Inf pixels", case.name));
     let mut d = at_case(d, c, case, geometry);
     if let Some(m) = mask {
         d = d.with_note(format!("mask: {} (NaN red, +Inf yellow, -Inf cyan)", m.display()));

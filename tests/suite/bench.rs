@@ -2,6 +2,8 @@
 //! written; knobs that name no uniform, effects without knobs and malformed `--knob` flags
 //! are reported. (Times are printed, never asserted: speed lives in benchmarks.)
 
+use effectc::diag::Code;
+
 use crate::common::{code, effectc, scratch, stdout};
 use crate::render::have_gpu;
 
@@ -56,11 +58,11 @@ fn bench_mistakes_are_reported() {
     // A --knob over a name that is not a numeric uniform.
     let out = effectc(&["bench", "effects/pom/effect.toml", "--knob", "numLayer=1,2"]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains("E0801") && stdout(&out).contains("`numLayers`"), "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::KnobUnknown.as_str()) && stdout(&out).contains("`numLayers`"), "{}", stdout(&out));
     // An effect without [knobs] and no --knob.
     let out = effectc(&["bench", "effects/phong/effect.toml"]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains("E0802"), "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::NothingToBench.as_str()), "{}", stdout(&out));
     // A malformed flag is a usage error.
     let out = effectc(&["bench", "effects/pom/effect.toml", "--knob", "numLayers=4,x"]);
     assert_eq!(code(&out), 2);

@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use effectc::diag::Code;
+
 use crate::common::{self, code, effectc, stdout};
 
 const SEED: &str = "tests/fail/01-vert-out-vs-vert-vars";
@@ -26,7 +28,7 @@ fn seed_block_mismatch_names_both_blocks_and_files() {
     let out = effectc(&["check", "--color", "never", SEED]);
     let text = stdout(&out);
     assert_eq!(code(&out), 1, "{text}");
-    for needle in ["vert_vars", "vert_out", "sun.vert", "sun.frag", "E0201"] {
+    for needle in ["vert_vars", "vert_out", "sun.vert", "sun.frag", Code::InputBlockUnmatched.as_str()] {
         assert!(text.contains(needle), "missing `{needle}` in:\n{text}");
     }
 }
@@ -35,7 +37,7 @@ fn seed_block_mismatch_names_both_blocks_and_files() {
 fn missing_path_exits_2() {
     let out = effectc(&["check", "tests/fail/does-not-exist.frag"]);
     assert_eq!(code(&out), 2, "{}", stdout(&out));
-    assert!(stdout(&out).contains("E0010"));
+    assert!(stdout(&out).contains(Code::InputIo.as_str()));
 }
 
 #[test]
@@ -45,7 +47,7 @@ fn json_parses_and_counts_errors() {
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("valid JSON");
     assert!(v["summary"]["errors"].as_u64().unwrap() > 0, "{v}");
     let d = &v["diagnostics"][0];
-    assert_eq!(d["code"], "E0201");
+    assert_eq!(d["code"], Code::InputBlockUnmatched.as_str());
     assert!(d["file"].as_str().unwrap().ends_with("sun.frag"));
     assert!(d["labels"][0]["file"].as_str().unwrap().ends_with("sun.vert"));
 }
@@ -68,7 +70,7 @@ fn sarif_is_2_1_0() {
     let text = stdout(&out);
     assert!(text.contains("\"version\": \"2.1.0\""), "{text}");
     let v: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
-    assert_eq!(v["runs"][0]["results"][0]["ruleId"], "E0201");
+    assert_eq!(v["runs"][0]["results"][0]["ruleId"], Code::InputBlockUnmatched.as_str());
 }
 
 #[test]
@@ -83,10 +85,10 @@ fn strict_turns_legacy_warning_into_error() {
     let dir = "tests/fail/16-texture2d-in-420-core-warning";
     let out = effectc(&["check", dir]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
-    assert!(stdout(&out).contains("W0120"));
+    assert!(stdout(&out).contains(Code::RemovedInVersion.as_str()));
     let out = effectc(&["check", "--strict", dir]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains("E0120"));
+    assert!(stdout(&out).contains(Code::RemovedInVersionStrict.as_str()));
 }
 
 #[test]
@@ -97,7 +99,7 @@ fn stage_flag_for_glsl_extension() {
     let path = file.to_str().unwrap();
     let out = effectc(&["check", path]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains("E0011"));
+    assert!(stdout(&out).contains(Code::UnknownStage.as_str()));
     let out = effectc(&["check", "--stage", "fragment", path]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     assert!(stdout(&out).contains("checked 1 program"));

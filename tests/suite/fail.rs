@@ -6,7 +6,7 @@
 //! snapshotted as `snapshots/fail/<dir name>.snap`, so message, span and label changes
 //! show up in review.
 
-use effectc::diag::{self, Severity};
+use effectc::diag::{self, Code, Severity};
 
 use crate::common;
 
@@ -33,8 +33,10 @@ fn fail_fixtures() {
             problems.push(format!("{name}: expected an error, got:\n{text}"));
         }
         for code in expect.split_whitespace() {
-            if !diags.iter().any(|d| d.code == code) {
-                problems.push(format!("{name}: expected code {code}, got:\n{text}"));
+            match code.parse::<Code>() {
+                Ok(code) if diags.iter().any(|d| d.code == code) => {}
+                Ok(code) => problems.push(format!("{name}: expected code {code}, got:\n{text}")),
+                Err(e) => problems.push(format!("{name}: `expect` names an {e}")),
             }
         }
         settings.bind(|| insta::assert_snapshot!(name.as_str(), text));

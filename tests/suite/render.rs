@@ -8,6 +8,7 @@
 
 use std::path::Path;
 
+use effectc::diag::Code;
 use effectc::render::compare;
 
 use crate::common::{code, effectc, in_ci, scratch, stdout};
@@ -142,7 +143,7 @@ fn absurd_requests_are_refused_before_allocating() {
         let out = effectc(&[&["render", "effects/sun/effect.toml", "--out", "/nonexistent/never-written"][..], &args].concat());
         let text = stdout(&out);
         assert_eq!(code(&out), 2, "{text}");
-        assert!(text.contains("E0405") && text.contains("in memory"), "{text}");
+        assert!(text.contains(Code::RenderLimit.as_str()) && text.contains("in memory"), "{text}");
     }
     let bad = effectc(&["render", "effects/sun/effect.toml", "--size", "12by3"]);
     assert_eq!(code(&bad), 2, "a malformed size is a usage error");

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use effectc::back::{self, Target, TranslateOptions};
-use effectc::diag;
+use effectc::diag::{self, Code};
 use effectc::stage::StageKind;
 
 use crate::common;
@@ -197,6 +197,6 @@ fn translate_refuses_a_program_with_check_errors() {
         .unwrap();
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{stdout}");
-    assert!(stdout.contains("E0201"), "check's diagnostic is the output:\n{stdout}");
+    assert!(stdout.contains(Code::InputBlockUnmatched.as_str()), "check's diagnostic is the output:\n{stdout}");
     assert!(!dir.exists(), "nothing is written for a refused program");
 }

@@ -20,7 +20,7 @@ pub mod ops;
 pub mod value;
 pub mod walk;
 
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::manifest::Effect;
 use crate::stage::StageKind;
@@ -28,21 +28,10 @@ use interval::Iv;
 use ops::Kind;
 use value::Num;
 
-pub const W_DIVISION: &str = "W0710";
-pub const W_ASIN: &str = "W0711";
-pub const W_SQRT: &str = "W0712";
-pub const W_LOG: &str = "W0713";
-pub const W_POW: &str = "W0714";
-pub const W_NORMALIZE: &str = "W0715";
-pub const W_INVERSE_SQRT: &str = "W0716";
-pub const W_TRIG: &str = "W0717";
-pub const W_HASH: &str = "W0718";
-pub const W_COUNTER: &str = "W0719";
-
 /// One finding, at a span of the rewritten stage text.
 #[derive(Debug, Clone)]
 pub struct Hazard {
-    pub code: &'static str,
+    pub code: Code,
     pub span: naga::Span,
     pub message: String,
     pub label: String,
@@ -55,7 +44,7 @@ impl Hazard {
     pub fn new(kind: Kind, span: naga::Span, a: &Num, b: Option<&Num>) -> Hazard {
         let (code, message, label, note, help) = match kind {
             Kind::Division => (
-                W_DIVISION,
+                Code::HazardDivision,
                 "division by a value that can be zero".to_string(),
                 format!("the divisor can be 0: {}", describe(a)),
                 "x / 0 is ±Inf, and 0 / 0 is NaN".to_string(),
@@ -64,7 +53,7 @@ impl Hazard {
             Kind::Asin | Kind::Acos => {
                 let f = if kind == Kind::Asin { "asin" } else { "acos" };
                 (
-                    W_ASIN,
+                    Code::HazardAsin,
                     format!("`{f}` of a value that can leave [-1, 1]"),
                     format!("the argument lies in {}", describe(a)),
                     format!("{f} is undefined outside [-1, 1] (NaN on GPUs); rounding alone takes a dot product of unit vectors just past 1"),
@@ -72,42 +61,42 @@ impl Hazard {
                 )
             }
             Kind::Sqrt => (
-                W_SQRT,
+                Code::HazardSqrt,
                 "`sqrt` of a value that can be negative".to_string(),
                 format!("the argument lies in {}", describe(a)),
                 "sqrt of a negative number is NaN".to_string(),
                 "use `sqrt(max(x, 0.0))`",
             ),
             Kind::Log => (
-                W_LOG,
+                Code::HazardLog,
                 "`log` of a value that can be zero or negative".to_string(),
                 format!("the argument lies in {}", describe(a)),
                 "log(0) is -Inf and log of a negative number NaN".to_string(),
                 "use `log(max(x, 1e-6))`",
             ),
             Kind::Pow => (
-                W_POW,
+                Code::HazardPow,
                 "`pow` with a base that can be negative, or zero to a power <= 0".to_string(),
                 format!("the base lies in {}{}", describe(a), b.map(|e| format!(", the exponent in {}", describe(e))).unwrap_or_default()),
                 "GLSL leaves pow(x, y) undefined for x < 0, and for x = 0 with y <= 0 (NaN or Inf on GPUs)".to_string(),
                 "use `pow(max(x, 0.0), y)` (with `y > 0`), e.g. `pow(max(dot(r, v), 0.0), shininess)`",
             ),
             Kind::Normalize => (
-                W_NORMALIZE,
+                Code::HazardNormalize,
                 "`normalize` of a vector that can be zero".to_string(),
                 format!("its length can be 0: {}", describe(a)),
                 "normalize(0) divides by a zero length: NaN on most GPUs (0 on some, such as llvmpipe)".to_string(),
                 "use `v * inversesqrt(max(dot(v, v), 1e-12))`, or guard with `if (length(v) > 0.0)`",
             ),
             Kind::InverseSqrt => (
-                W_INVERSE_SQRT,
+                Code::HazardInverseSqrt,
                 "`inversesqrt` of a value that can be zero or negative".to_string(),
                 format!("the argument lies in {}", describe(a)),
                 "inversesqrt(0) is +Inf and of a negative number NaN".to_string(),
                 "use `inversesqrt(max(x, 1e-12))`",
             ),
             Kind::Trig => (
-                W_TRIG,
+                Code::HazardTrig,
                 "trigonometric function of an argument too large for f32".to_string(),
                 format!("the argument reaches {}", big(a.iv().mag())),
                 format!(
@@ -130,7 +119,7 @@ impl Hazard {
             notes.push(format!("the argument of sin reaches {}, where sin is not even that accurate", big(x.mag())));
         }
         Hazard {
-            code: W_HASH,
+            code: Code::HazardSinHash,
             span,
             message: "`fract(sin(x) * K)` hash depends on the GPU's sin precision".into(),
             label: format!("K = {}{}", describe_iv(k), if grows { format!(", x in {}", describe_iv(x)) } else { String::new() }),
@@ -142,7 +131,7 @@ impl Hazard {
     pub fn counter(span: naga::Span, counter: Iv, next: Iv, kind: naga::ScalarKind) -> Hazard {
         let ty = if kind == naga::ScalarKind::Uint { "uint" } else { "int" };
         Hazard {
-            code: W_COUNTER,
+            code: Code::HazardCounterOverflow,
             span,
             message: format!("loop counter can overflow `{ty}`"),
             label: format!("the counter reaches {}, its update {}", describe_iv(counter), describe_iv(next)),
@@ -243,7 +232,7 @@ fn varying(mut n: Num) -> Num {
 }
 
 fn diagnostic(h: &Hazard, file: FileId, rw: &crate::front::rewrite::Rewritten) -> Diagnostic {
-    let mut d = Diagnostic::warning(h.code, h.message.clone());
+    let mut d = Diagnostic::new(h.code, h.message.clone());
     if let Some(r) = h.span.to_range() {
         d = d.at(file, rw.map.range_to_original(r), h.label.clone());
     } else {

@@ -4,7 +4,7 @@
 
 use super::uses::combined_ctor;
 use super::Ctx;
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::Storage;
 use crate::stage::StageKind;
 
@@ -152,7 +152,7 @@ impl Ctx<'_> {
         let bias = c.args[base_args].clone();
         self.edits.delete(c.args[base_args - 1].end..bias.end);
         self.diags.push(
-            Diagnostic::note("N0103", "the bias of this shadow lookup is dropped")
+            Diagnostic::new(Code::ShadowBiasDropped, "the bias of this shadow lookup is dropped")
                 .at(self.s.file, bias, "level-of-detail bias on a depth comparison")
                 .with_note("naga and WGSL compare depth without a bias; it changes nothing unless the depth texture has mipmaps"),
         );

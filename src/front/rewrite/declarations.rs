@@ -8,7 +8,7 @@ use std::ops::Range;
 
 use super::varyings::{is_fragment_output, is_vertex_input, LocationAllocator};
 use super::{Ctx, USER_BUFFER_SET, USER_COUNTER_SET, USER_IMAGE_SET, USER_UNIFORM_SET};
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::plan::{is_unblocked_opaque, location_slots, struct_text};
 use crate::front::syntax::{Storage, Target};
 use crate::stage::StageKind;
@@ -102,9 +102,12 @@ impl Ctx<'_> {
             }
             if g.initializer.is_some() {
                 self.diags.push(
-                    Diagnostic::warning("W0130", format!("initializer of uniform `{}` is ignored", s.original_name(&g.name)))
-                        .at(s.file, g.initializer.clone().unwrap_or(g.name_span.clone()), "this value is not used")
-                        .with_help("set the default in the effect manifest's [uniforms] table"),
+                    Diagnostic::new(
+                        Code::UniformInitializerIgnored,
+                        format!("initializer of uniform `{}` is ignored", s.original_name(&g.name)),
+                    )
+                    .at(s.file, g.initializer.clone().unwrap_or(g.name_span.clone()), "this value is not used")
+                    .with_help("set the default in the effect manifest's [uniforms] table"),
                 );
             }
         }

@@ -24,7 +24,7 @@ mod varyings;
 
 use std::ops::Range;
 
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::edits::{Edits, OffsetMap};
 use crate::front::limitation::Limitation;
 pub use crate::front::plan::is_unblocked_opaque;
@@ -107,7 +107,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     let (text, map, dropped) = edits.apply(&s.text);
     for e in dropped {
         diags.push(
-            Diagnostic::warning("W0190", "effectc could not rewrite this expression for naga")
+            Diagnostic::new(Code::RewriteFailed, "effectc could not rewrite this expression for naga")
                 .at(s.file, e.range.clone(), "overlapping rewrites here")
                 .with_note("this is a limitation of effectc; naga may report an error nearby"),
         );
@@ -123,7 +123,7 @@ impl Ctx<'_> {
         let v = &self.s.version;
         let profile = if v.is_es() { "es".to_string() } else { "core".to_string() };
         let msg = format!("`{what}` is not part of GLSL {} {profile}", v.number);
-        let d = if self.strict { Diagnostic::error("E0120", msg) } else { Diagnostic::warning("W0120", msg) };
+        let d = if self.strict { Diagnostic::new(Code::RemovedInVersionStrict, msg) } else { Diagnostic::new(Code::RemovedInVersion, msg) };
         self.diags.push(
             d.at(self.s.file, span, format!("removed from the {profile} profile"))
                 .with_note("strict compilers such as glslangValidator reject this; effectc accepts it")

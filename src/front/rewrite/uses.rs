@@ -5,7 +5,7 @@
 use std::ops::Range;
 
 use super::Ctx;
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::limitation::Limitation;
 use crate::front::plan::Repr;
 use crate::front::syntax::{GlslType, Storage, Target};
@@ -146,12 +146,15 @@ impl Ctx<'_> {
             return;
         }
         self.diags.push(
-            Diagnostic::error("E0110", format!("`{}` is indexed with a non-constant expression", self.s.original_name(name)))
-                .at(self.s.file, span, "not a constant index")
-                .with_note(
-                    "effectc splits sampler arrays into one texture binding per element; WGSL and naga have no arrays of combined samplers",
-                )
-                .with_help("index with a literal or a `const int`, e.g. unroll the loop"),
+            Diagnostic::new(
+                Code::NonConstantSamplerIndex,
+                format!("`{}` is indexed with a non-constant expression", self.s.original_name(name)),
+            )
+            .at(self.s.file, span, "not a constant index")
+            .with_note(
+                "effectc splits sampler arrays into one texture binding per element; WGSL and naga have no arrays of combined samplers",
+            )
+            .with_help("index with a literal or a `const int`, e.g. unroll the loop"),
         );
     }
 
@@ -206,7 +209,7 @@ impl Ctx<'_> {
                     self.edits.replace(bracket.clone(), format!("effectc_FragData{k}"));
                 }
                 Some((_, isp, None)) => self.diags.push(
-                    Diagnostic::error("E0111", "`gl_FragData` is indexed with a non-constant expression")
+                    Diagnostic::new(Code::NonConstantFragDataIndex, "`gl_FragData` is indexed with a non-constant expression")
                         .at(self.s.file, isp.clone(), "not a constant index")
                         .with_help("declare `layout(location = N) out vec4 name;` outputs and write them by name"),
                 ),
@@ -223,7 +226,7 @@ impl Ctx<'_> {
                 // is its centre: what GL gives for a point of size 1.
                 self.edits.replace(u.span.clone(), "vec2(0.5)");
                 self.diags.push(
-                    Diagnostic::note("N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU draws points one pixel wide")
+                    Diagnostic::new(Code::PointCoordConstant, "`gl_PointCoord` is (0.5, 0.5): WebGPU draws points one pixel wide")
                         .at(self.s.file, u.span.clone(), "the centre of a one-pixel point")
                         .with_note("WebGPU has no point sprites (and no `gl_PointSize`); draw a quad per point to keep a sprite's texture coordinates"),
                 );

@@ -8,7 +8,7 @@ use std::ops::Range;
 use glsl_lang::ast;
 use glsl_lang::parse::DefaultParse;
 
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::syntax::collect::Collector;
 use crate::front::syntax::model::{StageSyntax, Target};
 use crate::front::syntax::types::Storage;
@@ -20,7 +20,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
     let version = match version::parse_version(original) {
         Ok(v) => v,
         Err((msg, span)) => {
-            return Err(vec![Diagnostic::error("E0101", msg)
+            return Err(vec![Diagnostic::new(Code::BadVersion, msg)
                 .at(file, span, "in this `#version` directive")
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
@@ -28,12 +28,9 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
     let unextended = version::blank_extensions(original);
     let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
     if let Some(span) = compiled_include(&resolved) {
-        return Err(vec![Diagnostic::error(
-            crate::front::conditionals::E_INCLUDE,
-            format!("cannot read included file `{}`", &original[span.clone()]),
-        )
-        .at(file, span, "not found relative to the including file")
-        .with_note("`#include` names a file relative to the file that includes it")]);
+        return Err(vec![Diagnostic::new(Code::IncludeUnresolved, format!("cannot read included file `{}`", &original[span.clone()]))
+            .at(file, span, "not found relative to the including file")
+            .with_note("`#include` names a file relative to the file that includes it")]);
     }
     let (text, mut renames) = version::rename_new_keywords(&resolved, &version, original);
     let masked = crate::front::lexical::mask(&text, &version::blank_comments(&text));
@@ -75,9 +72,13 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         Ok(Ok(tu)) => tu,
         Ok(Err((msg, span))) => {
             let span = clamp(span, original);
-            return Err(vec![Diagnostic::error("E0102", format!("syntax error: {msg}")).at(file, span, "the GLSL parser stopped here")]);
+            return Err(vec![Diagnostic::new(Code::SyntaxError, format!("syntax error: {msg}")).at(
+                file,
+                span,
+                "the GLSL parser stopped here",
+            )]);
         }
-        Err(_) => return Err(vec![Diagnostic::error("E0102", "syntax error: the GLSL parser failed on this file").in_file(file)]),
+        Err(_) => return Err(vec![Diagnostic::new(Code::SyntaxError, "syntax error: the GLSL parser failed on this file").in_file(file)]),
     };
     let mut syntax = StageSyntax {
         file,

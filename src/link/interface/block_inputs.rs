@@ -5,11 +5,10 @@
 use std::collections::HashSet;
 
 use super::{arrayed_inputs, arrayed_outputs, dims_text, per_vertex, qualifiers_relaxed, Pair};
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::StageSyntax;
 use crate::link::blocks::{self, MemberDiff, Side};
 use crate::link::{is_read, list};
-use crate::link::{E_BLOCK_MISMATCH, E_BLOCK_UNMATCHED, W_INTERP, W_UNUSED_INPUT};
 
 impl Pair<'_> {
     pub(super) fn block_inputs(&mut self) {
@@ -84,9 +83,9 @@ impl Pair<'_> {
         let read = is_read(b, bi);
         let message = format!("{bt} input block `{bname}` has no matching output block in the {at} stage");
         let mut d = if read {
-            Diagnostic::error(E_BLOCK_UNMATCHED, message)
+            Diagnostic::new(Code::InputBlockUnmatched, message)
         } else {
-            Diagnostic::warning(W_UNUSED_INPUT, format!("{message} (it is never read)"))
+            Diagnostic::new(Code::UnusedInput, format!("{message} (it is never read)"))
         }
         .at(b.file, blk.block_name_span.clone(), format!("no {at} output block is named `{bname}`"));
         if let Some(ai) = pair {
@@ -201,8 +200,10 @@ impl Pair<'_> {
             )
         };
         if !errors.is_empty() {
-            let mut d =
-                head(Diagnostic::error(E_BLOCK_MISMATCH, format!("interface block `{name}` differs between the {at} and {bt} stages")));
+            let mut d = head(Diagnostic::new(
+                Code::InterfaceBlockMismatch,
+                format!("interface block `{name}` differs between the {at} and {bt} stages"),
+            ));
             for diff in errors {
                 d = self.add_diff(d, diff);
             }
@@ -212,8 +213,8 @@ impl Pair<'_> {
             self.out.push(d);
         }
         if !warnings.is_empty() {
-            let mut d = head(Diagnostic::warning(
-                W_INTERP,
+            let mut d = head(Diagnostic::new(
+                Code::InterpolationDiffers,
                 format!("interface block `{name}` has different qualifiers in the {at} and {bt} stages"),
             ));
             for diff in warnings {

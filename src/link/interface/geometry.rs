@@ -2,9 +2,8 @@
 //! and each input block instance must be an array.
 
 use super::Pair;
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::link::type_text;
-use crate::link::E_NOT_ARRAYED;
 use crate::stage::StageKind;
 
 impl Pair<'_> {
@@ -23,8 +22,8 @@ impl Pair<'_> {
             let name = b.original_name(&g.name);
             let ty = type_text(b, &g.ty);
             self.out.push(
-                Diagnostic::error(
-                    E_NOT_ARRAYED,
+                Diagnostic::new(
+                    Code::GeometryInputNotArray,
                     format!("geometry input `{name}` must be an array"),
                 )
                 .at(b.file, g.name_span.clone(), "declared without `[]`")
@@ -45,8 +44,8 @@ impl Pair<'_> {
             };
             let inst = blk.instance.as_deref().map_or("gs_in", |n| b.original_name(n));
             self.out.push(
-                Diagnostic::error(
-                    E_NOT_ARRAYED,
+                Diagnostic::new(
+                    Code::GeometryInputNotArray,
                     format!("geometry input block `{bn}` must be declared as an array"),
                 )
                 .at(b.file, span, label)

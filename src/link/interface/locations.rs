@@ -3,10 +3,9 @@
 //! each declaration occupies, and the checks on the pairs they form.
 
 use super::{arrayed_outputs, input_arrayed, is_vulkan, per_vertex, Pair};
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{GlslType, StageSyntax};
 use crate::link::{is_read, same_type, type_text};
-use crate::link::{E_NO_PRODUCER, E_VARYING_TYPE};
 
 /// One location an output or input occupies: the declaration and the type there.
 #[derive(Debug, Clone)]
@@ -82,8 +81,8 @@ impl Pair<'_> {
                     if read {
                         let what = self.slot_name(b, slot);
                         self.out.push(
-                            Diagnostic::error(
-                                E_NO_PRODUCER,
+                            Diagnostic::new(
+                                Code::NoProducer,
                                 format!("{bt} input `{what}` at location {} has no matching output in the {at} stage", slot.location),
                             )
                             .at(b.file, slot.span.clone(), format!("no {at} output has location {}", slot.location))
@@ -97,8 +96,8 @@ impl Pair<'_> {
                     let (wa, wb) = (self.slot_name(a, o), self.slot_name(b, slot));
                     let (ta, tb) = (type_text(a, &o.ty), type_text(b, &slot.ty));
                     self.out.push(
-                        Diagnostic::error(
-                            E_VARYING_TYPE,
+                        Diagnostic::new(
+                            Code::VaryingTypeMismatch,
                             format!(
                                 "location {}: `{wb}` is `{tb}` in the {bt} stage but the {at} stage's `{wa}` there is `{ta}`",
                                 slot.location

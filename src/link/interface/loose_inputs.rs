@@ -4,10 +4,9 @@
 use std::collections::HashSet;
 
 use super::{arrayed_inputs, arrayed_outputs, dims_text, input_arrayed, per_vertex, qualifiers_relaxed, Pair};
-use crate::diag::Diagnostic;
+use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{Global, GlslType, Interp};
 use crate::link::{interp_text, is_read, list, same_type, type_text};
-use crate::link::{E_CENTROID, E_INTERP, E_LOCATION, E_NO_PRODUCER, E_VARYING_TYPE, W_CENTROID, W_INTERP, W_UNUSED_INPUT};
 use crate::manifest::did_you_mean;
 
 impl Pair<'_> {
@@ -33,9 +32,9 @@ impl Pair<'_> {
         let name = b.original_name(&g.name);
         let read = is_read(b, bi);
         let mut d = if read {
-            Diagnostic::error(E_NO_PRODUCER, format!("{bt} input `{name}` has no matching output in the {at} stage"))
+            Diagnostic::new(Code::NoProducer, format!("{bt} input `{name}` has no matching output in the {at} stage"))
         } else {
-            Diagnostic::warning(W_UNUSED_INPUT, format!("{bt} input `{name}` has no matching output in the {at} stage (it is never read)"))
+            Diagnostic::new(Code::UnusedInput, format!("{bt} input `{name}` has no matching output in the {at} stage (it is never read)"))
         }
         .at(b.file, g.name_span.clone(), format!("no {at} output is named `{name}`"))
         .with_note("an output of one stage and an input of the next match by variable name (interface blocks by block name)");
@@ -100,10 +99,11 @@ impl Pair<'_> {
             }
             want_dims.extend(ta.dims.iter().copied());
             let want = format!("in {} {name}{}", a.original_name(&ta.base), dims_text(&want_dims));
-            let mut d = Diagnostic::error(E_VARYING_TYPE, format!("`{name}` is `{sa}` in the {at} stage but `{sb}` in the {bt} stage"))
-                .at(b.file, gb.name_span.clone(), format!("{bt} input declared as `{sb}`"))
-                .with_label(a.file, ga.name_span.clone(), format!("{at} output declared as `{sa}`"))
-                .with_note("an output and the input of the same name must have the same type and array size");
+            let mut d =
+                Diagnostic::new(Code::VaryingTypeMismatch, format!("`{name}` is `{sa}` in the {at} stage but `{sb}` in the {bt} stage"))
+                    .at(b.file, gb.name_span.clone(), format!("{bt} input declared as `{sb}`"))
+                    .with_label(a.file, ga.name_span.clone(), format!("{at} output declared as `{sa}`"))
+                    .with_note("an output and the input of the same name must have the same type and array size");
             if b_arrayed {
                 d = d.with_note(format!(
                     "{bt} inputs are arrays with one element per vertex: `in {} {name}[]` matches `out {} {name}`",
@@ -128,13 +128,13 @@ impl Pair<'_> {
             };
             let message = format!("`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage", interp_text(ia), interp_text(ib));
             let d = if relaxed {
-                Diagnostic::warning(W_INTERP, message).with_note(format!(
+                Diagnostic::new(Code::InterpolationDiffers, message).with_note(format!(
                     "since GLSL 4.30 the qualifiers may differ and the {bt} stage's `{}` is used; the {at} stage's `{}` has no effect",
                     interp_text(ib),
                     interp_text(ia)
                 ))
             } else {
-                Diagnostic::error(E_INTERP, message).with_note(
+                Diagnostic::new(Code::InterpolationMismatch, message).with_note(
                     "before GLSL 4.30 an output and its input must have the same interpolation qualifier (no qualifier means `smooth`)",
                 )
             };
@@ -148,10 +148,11 @@ impl Pair<'_> {
             let word = |c: bool| if c { "`centroid`" } else { "not `centroid`" };
             let message = format!("`{name}` is {} in the {at} stage but {} in the {bt} stage", word(ga.centroid), word(gb.centroid));
             let d = if relaxed {
-                Diagnostic::warning(W_CENTROID, message)
+                Diagnostic::new(Code::CentroidDiffers, message)
                     .with_note(format!("since GLSL 4.30 auxiliary qualifiers may differ and the {bt} stage's declaration is used"))
             } else {
-                Diagnostic::error(E_CENTROID, message).with_note("before GLSL 4.30 an output and its input must agree on `centroid`")
+                Diagnostic::new(Code::CentroidMismatch, message)
+                    .with_note("before GLSL 4.30 an output and its input must agree on `centroid`")
             };
             self.out.push(
                 d.at(b.file, gb.name_span.clone(), word(gb.centroid))
@@ -164,8 +165,8 @@ impl Pair<'_> {
                 let span_a = ga.layout_span.clone().unwrap_or_else(|| ga.name_span.clone());
                 let span_b = gb.layout_span.clone().unwrap_or_else(|| gb.name_span.clone());
                 self.out.push(
-                    Diagnostic::error(
-                        E_LOCATION,
+                    Diagnostic::new(
+                        Code::LocationMismatch,
                         format!("`{name}` has `location = {la}` in the {at} stage but `location = {lb}` in the {bt} stage"),
                     )
                     .at(b.file, span_b, format!("location {lb}"))

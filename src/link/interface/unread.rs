@@ -2,8 +2,7 @@
 //! member of an input block of the same name would have read).
 
 use super::Pair;
-use crate::diag::Diagnostic;
-use crate::link::W_UNREAD_OUTPUT;
+use crate::diag::{Code, Diagnostic};
 
 impl Pair<'_> {
     /// Outputs of `a` that no input of `b` accounts for.
@@ -15,7 +14,7 @@ impl Pair<'_> {
             }
             let g = &a.globals[ai];
             let name = a.original_name(&g.name);
-            let mut d = Diagnostic::warning(W_UNREAD_OUTPUT, format!("{at} output `{name}` is never read by the {bt} stage")).at(
+            let mut d = Diagnostic::new(Code::UnreadOutput, format!("{at} output `{name}` is never read by the {bt} stage")).at(
                 a.file,
                 g.name_span.clone(),
                 "written here, read nowhere",
@@ -49,7 +48,7 @@ impl Pair<'_> {
             };
             let name = a.original_name(&blk.block_name);
             self.out.push(
-                Diagnostic::warning(W_UNREAD_OUTPUT, format!("{at} output block `{name}` is never read by the {bt} stage"))
+                Diagnostic::new(Code::UnreadOutput, format!("{at} output block `{name}` is never read by the {bt} stage"))
                     .at(a.file, blk.block_name_span.clone(), "written here, read nowhere")
                     .with_note(format!(
                         "the {bt} stage declares no input block named `{name}` (blocks match by block name, not by instance name)"

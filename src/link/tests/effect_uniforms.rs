@@ -47,12 +47,12 @@ fn unknown_uniform_suggests_the_nearest_name() {
     let s = Setup::new(VERT, &f, "[uniforms]\nminBI = 0.2\nmaxBl = 1.4\n");
     let diags = s.check();
     // The typo, and `maxBI` consequently has no default.
-    assert_eq!(codes(&diags), ["E0220", "W0220"], "{diags:#?}");
-    let d = only(&diags, "E0220");
+    assert_eq!(codes(&diags), [Code::UniformUndeclared, Code::UniformNoDefault], "{diags:#?}");
+    let d = only(&diags, Code::UniformUndeclared);
     assert_eq!(primary(&s.p, d), (s.manifest(), "maxBl"));
     assert_eq!(d.help.as_deref(), Some("did you mean `maxBI`?"));
     assert_eq!(label_texts(&s.p, d, s.p.file(Fragment)), ["maxBI"]);
-    let w = only(&diags, "W0220");
+    let w = only(&diags, Code::UniformNoDefault);
     assert_eq!(primary(&s.p, w), (s.p.file(Fragment), "maxBI"));
 }
 
@@ -61,7 +61,7 @@ fn unknown_uniform_without_a_close_name_lists_the_declarations() {
     let f = frag("uniform float minBI;", "fragColor = vec4(minBI);");
     let s = Setup::new(VERT, &f, "[uniforms]\nminBI = 0.2\nexposure = 1.0\n");
     let diags = s.check();
-    let d = only(&diags, "E0220");
+    let d = only(&diags, Code::UniformUndeclared);
     assert_eq!(d.help, None);
     assert_eq!(label_texts(&s.p, d, s.p.file(Fragment)), ["minBI"]);
     assert!(d.labels[0].message.contains("declares `minBI`"), "{d:#?}");
@@ -72,7 +72,7 @@ fn value_type_mismatch_points_at_value_and_declaration() {
     let f = frag("uniform vec3 tint;", "fragColor = vec4(tint, 1.0);");
     let s = Setup::new(VERT, &f, "[uniforms]\ntint = [1.0, 0.5]\n");
     let diags = s.check();
-    assert_eq!(codes(&diags), ["E0221"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::UniformDefaultType], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(d.message, "the default for `tint` does not fit its type `vec3`");
     assert_eq!(primary(&s.p, d), (s.manifest(), "[1.0, 0.5]"));
@@ -91,7 +91,7 @@ fn values_of_every_shape() {
     let bad = "[uniforms]\na = true\nb = 2.5\nc = -1\nd = 1\ne = [1.0, 2]\nm = [1.0, 0.0, 0.0]\nn = [[1.0, 0.0], [0.0, 1.0]]\nw = [0.1, 0.2]\nv = [0.0, 1.0]\n";
     let s = Setup::new(VERT, &frag(decls, body), bad);
     let diags = s.check();
-    assert_eq!(codes(&diags), ["E0221"; 9], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::UniformDefaultType; 9], "{diags:#?}");
     let c = diags.iter().find(|d| d.message.contains("`c`")).unwrap();
     assert_eq!(c.primary_label, "expected a non-negative integer, found the negative integer `-1`");
 }
@@ -105,12 +105,12 @@ fn semantic_and_range_must_fit_the_type() {
         "[uniforms]\nt = { semantic = \"time\" }\ntint = { value = [true, true, true], range = [0.0, 1.0] }\ntime = { semantic = \"time\" }\n",
     );
     let diags = s.check();
-    assert_eq!(codes(&diags), ["E0222", "E0223"], "{diags:#?}");
-    let sem = only(&diags, "E0222");
+    assert_eq!(codes(&diags), [Code::SemanticType, Code::RangeNotNumeric], "{diags:#?}");
+    let sem = only(&diags, Code::SemanticType);
     assert_eq!(primary(&s.p, sem), (s.manifest(), "\"time\""));
     assert_eq!(label_texts(&s.p, sem, s.p.file(Fragment)), ["t"]);
     assert!(sem.help.as_deref().unwrap().contains("`resolution`"), "{sem:#?}");
-    let range = only(&diags, "E0223");
+    let range = only(&diags, Code::RangeNotNumeric);
     assert_eq!(primary(&s.p, range), (s.manifest(), "[0.0, 1.0]"));
 }
 
@@ -119,7 +119,7 @@ fn read_uniform_without_default_warns_with_an_example() {
     let f = frag("uniform float bFrequency;\nuniform float timeVarFrag;", "fragColor = vec4(sin(timeVarFrag * bFrequency));");
     let s = Setup::new(VERT, &f, "");
     let diags = s.check();
-    assert_eq!(codes(&diags), ["W0220", "W0220"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::UniformNoDefault, Code::UniformNoDefault], "{diags:#?}");
     assert_eq!(diags[0].message, "uniform `bFrequency` has no default in effect.toml");
     assert_eq!(primary(&s.p, &diags[0]), (s.p.file(Fragment), "bFrequency"));
     assert_eq!(diags[0].help.as_deref(), Some("add `bFrequency = 0.0` under [uniforms] in effect.toml"));
@@ -131,11 +131,11 @@ fn unread_uniform_and_its_default_warn() {
     let f = frag("uniform float used;\nuniform float unused;", "fragColor = vec4(used);");
     let s = Setup::new(VERT, &f, "[uniforms]\nused = 1.0\nunused = 2.0\n");
     let diags = s.check();
-    assert_eq!(codes(&diags), ["W0221", "W0223"], "{diags:#?}");
-    let w = only(&diags, "W0221");
+    assert_eq!(codes(&diags), [Code::UniformUnread, Code::DefaultUnread], "{diags:#?}");
+    let w = only(&diags, Code::UniformUnread);
     assert_eq!(w.message, "uniform `unused` is declared but never read");
     assert_eq!(primary(&s.p, w), (s.p.file(Fragment), "unused"));
-    let m = only(&diags, "W0223");
+    let m = only(&diags, Code::DefaultUnread);
     assert_eq!(primary(&s.p, m), (s.manifest(), "unused"));
     assert_eq!(label_texts(&s.p, m, s.p.file(Fragment)), ["unused"]);
 }
@@ -153,7 +153,7 @@ fn anonymous_block_members_take_defaults() {
     let f = frag("layout(std140) uniform Params { float gain; vec3 tint; };", "fragColor = vec4(tint * gain, 1.0);");
     let s = Setup::new(VERT, &f, "[uniforms]\ngain = 2.0\ntint = [1.0, 0.5]\n");
     let diags = s.check();
-    assert_eq!(codes(&diags), ["E0221"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::UniformDefaultType], "{diags:#?}");
 }
 
 #[test]
@@ -161,9 +161,9 @@ fn struct_paths_and_whole_structs() {
     let f = frag("struct Light { vec3 color; float power; };\nuniform Light light;", "fragColor = vec4(light.color * light.power, 1.0);");
     let s = Setup::new(VERT, &f, "[uniforms]\nlight = 1.0\n\"light.color\" = [1.0, 1.0, 1.0]\n\"light.powr\" = 2.0\n");
     let diags = s.check();
-    assert_eq!(codes(&diags), ["E0221", "E0225"], "{diags:#?}");
-    assert_eq!(only(&diags, "E0225").help.as_deref(), Some("did you mean `light.power`?"));
-    assert!(only(&diags, "E0221").help.as_deref().unwrap().contains("`light.color`"));
+    assert_eq!(codes(&diags), [Code::UniformDefaultType, Code::UniformPathMismatch], "{diags:#?}");
+    assert_eq!(only(&diags, Code::UniformPathMismatch).help.as_deref(), Some("did you mean `light.power`?"));
+    assert!(only(&diags, Code::UniformDefaultType).help.as_deref().unwrap().contains("`light.color`"));
 }
 
 #[test]
@@ -176,11 +176,15 @@ fn textures_against_samplers() {
     let diags = s.check();
     // `textureSampler` is a typo (and so `textureSamplerVar` has no texture), `sky` is
     // bound to a 2d texture, `noTexture` has none.
-    assert_eq!(codes(&diags), ["E0224", "E0226", "W0222", "W0222"], "{diags:#?}");
-    let d = only(&diags, "E0224");
+    assert_eq!(
+        codes(&diags),
+        [Code::TextureNoSampler, Code::TextureKindMismatch, Code::SamplerNoTexture, Code::SamplerNoTexture],
+        "{diags:#?}"
+    );
+    let d = only(&diags, Code::TextureNoSampler);
     assert_eq!(primary(&s.p, d), (s.manifest(), "textureSampler"));
     assert_eq!(d.help.as_deref(), Some("did you mean `textureSamplerVar`?"));
-    let k = only(&diags, "E0226");
+    let k = only(&diags, Code::TextureKindMismatch);
     assert_eq!(label_texts(&s.p, k, s.p.file(Fragment)), ["sky"]);
 }
 
@@ -189,8 +193,8 @@ fn sampler_under_uniforms_is_rejected() {
     let f = frag("uniform sampler2D tex;", "fragColor = texture(tex, uv);");
     let s = Setup::new(VERT, &f, "[uniforms]\ntex = 1\n");
     let diags = s.check();
-    assert_eq!(codes(&diags), ["E0221", "W0222"], "{diags:#?}");
-    let d = only(&diags, "E0221");
+    assert_eq!(codes(&diags), [Code::UniformDefaultType, Code::SamplerNoTexture], "{diags:#?}");
+    let d = only(&diags, Code::UniformDefaultType);
     assert_eq!(primary(&s.p, d), (s.manifest(), "tex"));
     assert_eq!(d.help.as_deref(), Some("bind a texture under [textures] instead: `tex = { file = \"…\" }`"));
 }
@@ -217,10 +221,10 @@ fn sampler_arrays_and_struct_samplers_need_textures_not_values() {
     );
     let s = Setup::new(VERT, &f, "[textures]\n\"maps[0]\" = { generate = \"checker\" }\n");
     let diags = s.check();
-    assert_eq!(codes(&diags), ["W0220", "W0222"], "{diags:#?}");
-    let w = only(&diags, "W0220");
+    assert_eq!(codes(&diags), [Code::UniformNoDefault, Code::SamplerNoTexture], "{diags:#?}");
+    let w = only(&diags, Code::UniformNoDefault);
     assert_eq!(w.help.as_deref(), Some("add its members under [uniforms] in effect.toml: `material.shininess = 0.0`"));
-    let t = only(&diags, "W0222");
+    let t = only(&diags, Code::SamplerNoTexture);
     assert_eq!(t.message, "sampler `material.diffuse` has no entry in [textures]");
 }
 
@@ -233,7 +237,7 @@ fn range_applies_to_numbers_and_numeric_vectors_only() {
         "[uniforms]\ntint = { value = [1, 0.5, 0], range = [0, 1] }\nwarp = { value = [1, 0, 0, 1], range = [0, 1] }\nflags = { value = [true, false], range = [0, 1] }\n",
     );
     let diags = s.check();
-    let ranges: Vec<&Diagnostic> = diags.iter().filter(|d| d.code == "E0223").collect();
+    let ranges: Vec<&Diagnostic> = diags.iter().filter(|d| d.code == Code::RangeNotNumeric).collect();
     assert_eq!(ranges.len(), 2, "mat2 and bvec2 take no range; vec3 does: {diags:#?}");
     assert!(ranges.iter().all(|d| !d.message.contains("`tint`")), "{diags:#?}");
 }

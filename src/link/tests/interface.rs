@@ -71,9 +71,9 @@ void main()
 fn sun_block_name_mismatch_is_one_error_in_both_files() {
     let p = Program::new(&[(Vertex, SUN_VERT), (Fragment, SUN_FRAG)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0201"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::InputBlockUnmatched], "{diags:#?}");
     let d = &diags[0];
-    assert_eq!(d.severity, Severity::Error);
+    assert_eq!(d.severity(), Severity::Error);
     let (vert, frag) = (p.file(Vertex), p.file(Fragment));
     assert_eq!(primary(&p, d), (frag, "vert_vars"));
     assert_eq!(d.message, "fragment input block `vert_vars` has no matching output block in the vertex stage");
@@ -90,7 +90,7 @@ fn sun_block_name_mismatch_is_one_error_in_both_files() {
 fn renamed_sun_block_links_cleanly() {
     let frag = SUN_FRAG.replace("in vert_vars", "in vert_out");
     let p = Program::new(&[(Vertex, SUN_VERT), (Fragment, &frag)]);
-    assert_eq!(codes(&p.interface()), Vec::<&str>::new());
+    assert_eq!(codes(&p.interface()), Vec::<Code>::new());
 }
 
 #[test]
@@ -99,7 +99,7 @@ fn paired_blocks_with_different_members_list_the_differences() {
     let frag = "#version 330\nin FsIn { vec2 uv; vec4 normal; } fs;\nout vec4 c;\nvoid main() { c = fs.normal; }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0201"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::InputBlockUnmatched], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(d.help.as_deref(), Some("rename `in FsIn` to `in VsOut` and make the members agree"));
     assert!(d.notes.iter().any(|n| n.contains("`vec3` in the vertex stage but `vec4`")));
@@ -122,7 +122,7 @@ fn block_member_type_mismatch_labels_both_members() {
     let frag = "#version 330\nin VS_OUT { vec4 n; vec2 uv; } fs_in;\nout vec4 c;\nvoid main() { c = fs_in.n; }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0211"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::InterfaceBlockMismatch], "{diags:#?}");
     let d = &diags[0];
     let (vf, ff) = (p.file(Vertex), p.file(Fragment));
     assert_eq!(primary(&p, d), (ff, "VS_OUT"));
@@ -137,7 +137,7 @@ fn block_member_order_and_count_differences_are_one_error() {
     let frag = "#version 330\nin B { vec3 b; vec3 a; } i;\nout vec4 c;\nvoid main() { c = vec4(i.a, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0211"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::InterfaceBlockMismatch], "{diags:#?}");
     let notes = &diags[0].notes;
     assert!(notes.iter().any(|n| n == "member `float extra` is declared only in the vertex stage"), "{notes:#?}");
     assert!(notes.iter().any(|n| n.starts_with("the members are in a different order: (a, b)")), "{notes:#?}");
@@ -149,7 +149,7 @@ fn interpolation_mismatch_is_an_error_before_430() {
     let frag = "#version 330\nin vec3 color;\nout vec4 c;\nvoid main() { c = vec4(color, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0208"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::InterpolationMismatch], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(d.message, "`color` is `flat` in the vertex stage but `smooth` in the fragment stage");
     assert_eq!(primary(&p, d), (p.file(Fragment), "color"));
@@ -164,7 +164,7 @@ fn interpolation_mismatch_is_a_warning_from_430() {
         "#version 450\nlayout(location = 0) in vec3 color;\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(color, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["W0203"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::InterpolationDiffers], "{diags:#?}");
 }
 
 #[test]
@@ -173,8 +173,8 @@ fn centroid_and_location_mismatches() {
     let frag = "#version 410\nlayout(location = 2) in vec2 uv;\nout vec4 c;\nvoid main() { c = vec4(uv, 0.0, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0209", "E0210"], "{diags:#?}");
-    let loc = only(&diags, "E0210");
+    assert_eq!(codes(&diags), [Code::CentroidMismatch, Code::LocationMismatch], "{diags:#?}");
+    let loc = only(&diags, Code::LocationMismatch);
     assert_eq!(primary(&p, loc), (p.file(Fragment), "layout(location = 2)"));
     assert_eq!(label_texts(&p, loc, p.file(Vertex)), ["layout(location = 1)"]);
 }
@@ -185,7 +185,7 @@ fn loose_type_mismatch_labels_both_declarations() {
     let frag = "#version 330\nin vec4 vNormal;\nout vec4 c;\nvoid main() { c = vNormal; }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0207"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::VaryingTypeMismatch], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(d.message, "`vNormal` is `vec3` in the vertex stage but `vec4` in the fragment stage");
     assert_eq!(primary(&p, d), (p.file(Fragment), "vNormal"));
@@ -200,7 +200,7 @@ fn missing_producer_suggests_the_nearest_output() {
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
     // The typo is one error; the misspelt output is not reported again as unread.
-    assert_eq!(codes(&diags), ["E0202"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::NoProducer], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(primary(&p, d), (p.file(Fragment), "vNormals"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["vNormal"]);
@@ -212,7 +212,7 @@ fn missing_producer_that_is_a_block_member() {
     let frag = "#version 420 core\nin vec2 outputTexCoords;\nout vec4 c;\nvoid main() { c = vec4(outputTexCoords, 0.0, 1.0); }\n";
     let p = Program::new(&[(Vertex, SUN_VERT), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0202"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::NoProducer], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(
         d.help.as_deref(),
@@ -226,7 +226,7 @@ fn unread_input_without_producer_is_only_a_warning() {
     let vert = "#version 330\nvoid main() { gl_Position = vec4(0.0); }\n";
     let frag = "#version 330\nin vec3 unused;\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
-    assert_eq!(codes(&p.interface()), ["W0202"]);
+    assert_eq!(codes(&p.interface()), [Code::UnusedInput]);
 }
 
 #[test]
@@ -235,7 +235,7 @@ fn unread_output_is_a_warning() {
     let frag = "#version 330\nin vec3 used;\nout vec4 c;\nvoid main() { c = vec4(used, 1.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["W0201"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::UnreadOutput], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(d.message, "vertex output `extra` is never read by the fragment stage");
     assert_eq!(primary(&p, d), (p.file(Vertex), "extra"));
@@ -246,7 +246,7 @@ fn loose_outputs_read_as_a_block_are_one_error() {
     let vert = "#version 330\nout vec2 outputTexCoords;\nout vec3 swirlPosVector;\nvoid main() { outputTexCoords = vec2(0.0); swirlPosVector = vec3(0.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, SUN_FRAG)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0201"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::InputBlockUnmatched], "{diags:#?}");
     let d = &diags[0];
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["outputTexCoords", "swirlPosVector"]);
     assert!(d.help.as_deref().unwrap().contains("as separate outputs"), "{d:#?}");
@@ -258,7 +258,7 @@ fn other_stage_instance_name_is_explained() {
     let frag = "#version 330\nin VS { vec2 uv; } fs_in;\nout vec4 c;\nvoid main() { c = vec4(vs_out.uv, fs_in.uv); c += vec4(vs_out.uv, 0.0, 0.0); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0203"], "{diags:#?}");
+    assert_eq!(codes(&diags), [Code::OtherStageName], "{diags:#?}");
     let d = &diags[0];
     let (vf, ff) = (p.file(Vertex), p.file(Fragment));
     assert_eq!(primary(&p, d), (ff, "vs_out"));
@@ -274,8 +274,8 @@ fn seed_style_use_of_the_vertex_instance_in_the_fragment() {
     let p = Program::new(&[(Vertex, SUN_VERT), (Fragment, &frag)]);
     let diags = p.interface();
     // The block-name mismatch (unread now, so a warning) and the foreign instance name.
-    assert_eq!(codes(&diags), ["E0203", "W0202"], "{diags:#?}");
-    let d = only(&diags, "E0203");
+    assert_eq!(codes(&diags), [Code::OtherStageName, Code::UnusedInput], "{diags:#?}");
+    let d = only(&diags, Code::OtherStageName);
     assert_eq!(d.help.as_deref(), Some("in this stage the block instance is called `frag_in`: write `frag_in.outputTexCoords`"));
 }
 
@@ -284,7 +284,7 @@ fn block_name_used_as_a_variable() {
     let vert = "#version 330\nout VS { vec2 uv; } vs_out;\nvoid main() { vs_out.uv = vec2(0.0); }\n";
     let frag = "#version 330\nin VS { vec2 uv; } fs_in;\nout vec4 c;\nvoid main() { c = vec4(VS.uv, fs_in.uv); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
-    let d = only(&p.interface(), "E0203").clone();
+    let d = only(&p.interface(), Code::OtherStageName).clone();
     assert_eq!(d.message, "`VS` is a block name, not a variable");
     assert_eq!(primary(&p, &d).1, "VS");
 }
@@ -295,7 +295,7 @@ fn uniform_declared_only_in_another_stage() {
     let frag = "#version 330\nout vec4 c;\nvoid main() { c = vec4(timeVar); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    let d = only(&diags, "E0203");
+    let d = only(&diags, Code::OtherStageName);
     assert_eq!(primary(&p, d), (p.file(Fragment), "timeVar"));
     assert_eq!(label_texts(&p, d, p.file(Vertex)), ["timeVar"]);
     assert!(d.help.as_deref().unwrap().starts_with("declare `uniform float timeVar;`"), "{d:#?}");
@@ -317,10 +317,10 @@ fn geometry_input_type_mismatch_and_missing_array() {
     let geom = "#version 330\nlayout(points) in;\nlayout(points, max_vertices = 1) out;\nin vec4 normal[];\nin vec2 uv;\nvoid main() { gl_Position = normal[0] + vec4(uv, 0.0, 0.0); EmitVertex(); }\n";
     let p = Program::new(&[(Vertex, vert), (Geometry, geom)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0207", "E0212"], "{diags:#?}");
-    let ty = only(&diags, "E0207");
+    assert_eq!(codes(&diags), [Code::VaryingTypeMismatch, Code::GeometryInputNotArray], "{diags:#?}");
+    let ty = only(&diags, Code::VaryingTypeMismatch);
     assert_eq!(ty.help.as_deref(), Some("declare the geometry input as `in vec3 normal[];`"));
-    assert_eq!(primary(&p, only(&diags, "E0212")), (p.file(Geometry), "uv"));
+    assert_eq!(primary(&p, only(&diags, Code::GeometryInputNotArray)), (p.file(Geometry), "uv"));
 }
 
 #[test]
@@ -341,8 +341,8 @@ fn loose_output_read_as_a_member_of_a_matched_block() {
     let frag = "#version 330\nin VS { vec2 uv; vec3 normal; } i;\nout vec4 c;\nvoid main() { c = vec4(i.normal, i.uv.x); }\n";
     let p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
     let diags = p.interface();
-    assert_eq!(codes(&diags), ["E0211", "W0201"], "{diags:#?}");
-    let w = only(&diags, "W0201");
+    assert_eq!(codes(&diags), [Code::InterfaceBlockMismatch, Code::UnreadOutput], "{diags:#?}");
+    let w = only(&diags, Code::UnreadOutput);
     assert_eq!(primary(&p, w), (p.file(Vertex), "normal"));
     assert_eq!(label_texts(&p, w, p.file(Fragment)), ["normal"]);
     assert_eq!(w.help.as_deref(), Some("move the output into `out VS { … }` in the vertex stage"));

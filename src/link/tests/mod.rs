@@ -7,7 +7,7 @@ mod uniforms;
 use std::ops::Range;
 
 pub(super) use crate::diag::Severity;
-use crate::diag::{Diagnostic, FileId, Files};
+use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::syntax::{analyse, StageSyntax};
 use crate::stage::StageKind;
 
@@ -46,14 +46,14 @@ impl Program {
 }
 
 /// The diagnostics' codes, sorted (for count assertions that name every code).
-pub(super) fn codes(diags: &[Diagnostic]) -> Vec<&'static str> {
-    let mut c: Vec<&str> = diags.iter().map(|d| d.code).collect();
+pub(super) fn codes(diags: &[Diagnostic]) -> Vec<Code> {
+    let mut c: Vec<Code> = diags.iter().map(|d| d.code).collect();
     c.sort_unstable();
     c
 }
 
 /// The only diagnostic with `code`.
-pub(super) fn only<'a>(diags: &'a [Diagnostic], code: &str) -> &'a Diagnostic {
+pub(super) fn only(diags: &[Diagnostic], code: Code) -> &Diagnostic {
     let found: Vec<&Diagnostic> = diags.iter().filter(|d| d.code == code).collect();
     assert_eq!(found.len(), 1, "expected one {code}, got {diags:#?}");
     found[0]

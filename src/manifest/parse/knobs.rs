@@ -7,7 +7,8 @@
 use toml::de::{DeTable, DeValue};
 
 use super::{entries, key, Ctx};
-use crate::manifest::{KnobDecl, E_MISSING, E_VALUE};
+use crate::diag::Code;
+use crate::manifest::KnobDecl;
 
 const KNOB_KEYS: &[&str] = &["values", "reference"];
 /// At most this many values per knob (each renders the frames several times).
@@ -35,7 +36,7 @@ impl Ctx<'_> {
                             }
                         }
                         DeValue::Array(_) => {
-                            self.error(E_VALUE, v2.span(), format!("{what} needs 1 to {MAX_VALUES} values"), "wrong length");
+                            self.report(Code::ManifestValue, v2.span(), format!("{what} needs 1 to {MAX_VALUES} values"), "wrong length");
                         }
                         _ => self.wrong_type(v2, &what, "an array of numbers"),
                     },
@@ -45,15 +46,19 @@ impl Ctx<'_> {
             }
             let Some(values) = values else {
                 if !spec.contains_key("values") {
-                    let d = self.error(E_MISSING, k.span(), format!("knob `{name}` has no `values`"), "no values to sweep");
+                    let d = self.report(Code::ManifestMissing, k.span(), format!("knob `{name}` has no `values`"), "no values to sweep");
                     d.help = Some("add e.g. `values = [4, 8, 16, 32]`".into());
                 }
                 continue;
             };
             let reference = match reference {
                 Some((r, span)) if !values.contains(&r) => {
-                    let d =
-                        self.error(E_VALUE, span, format!("the reference of knob `{name}` is not one of its values"), "not in `values`");
+                    let d = self.report(
+                        Code::ManifestValue,
+                        span,
+                        format!("the reference of knob `{name}` is not one of its values"),
+                        "not in `values`",
+                    );
                     d.help = Some("the reference is the most accurate of the swept values".into());
                     continue;
                 }

@@ -6,7 +6,8 @@ use std::ops::Range;
 use toml::de::{DeTable, DeValue};
 
 use super::{entries, is_ident, key, list, Ctx, Val};
-use crate::manifest::{BuiltinMesh, MeshAttribute, MeshDecl, MeshSource, E_ASSET_NOT_FOUND, E_CONFLICT, E_MISSING, E_VALUE};
+use crate::diag::Code;
+use crate::manifest::{BuiltinMesh, MeshAttribute, MeshDecl, MeshSource};
 
 const MESH_KEYS: &[&str] = &["builtin", "obj", "segments", "rings", "divisions", "attributes"];
 const MAX_MESH_DIVISIONS: u32 = 1024;
@@ -49,7 +50,7 @@ impl Ctx<'_> {
                 }
                 "obj" => {
                     sources.push(("obj", k.span()));
-                    obj = self.file_path(v2, what, E_ASSET_NOT_FOUND, "mesh file");
+                    obj = self.file_path(v2, what, Code::AssetNotFound, "mesh file");
                     ok &= obj.is_some();
                 }
                 "segments" => {
@@ -73,7 +74,12 @@ impl Ctx<'_> {
                     for (ak, av) in entries(at) {
                         let input = key(ak);
                         if !is_ident(input) || input.starts_with("gl_") {
-                            self.error(E_VALUE, ak.span(), format!("`{input}` is not a vertex shader input name"), "not a GLSL identifier");
+                            self.report(
+                                Code::ManifestValue,
+                                ak.span(),
+                                format!("`{input}` is not a vertex shader input name"),
+                                "not a GLSL identifier",
+                            );
                             ok = false;
                             continue;
                         }
@@ -94,7 +100,7 @@ impl Ctx<'_> {
         }
         match sources.as_slice() {
             [] => {
-                let d = self.error(E_MISSING, v.span(), "`[mesh]` needs `builtin` or `obj`".into(), "no mesh source");
+                let d = self.report(Code::ManifestMissing, v.span(), "`[mesh]` needs `builtin` or `obj`".into(), "no mesh source");
                 d.help = Some(format!("add e.g. `builtin = \"uv_sphere\"`; builtins: {}", list(&BuiltinMesh::NAMES)));
                 return None;
             }
@@ -102,7 +108,7 @@ impl Ctx<'_> {
             [(_, first), (_, second), ..] => {
                 let file = self.file;
                 let (first, second) = (first.clone(), second.clone());
-                let d = self.error(E_CONFLICT, second, "`[mesh]` has both `builtin` and `obj`".into(), "second source");
+                let d = self.report(Code::ManifestConflict, second, "`[mesh]` has both `builtin` and `obj`".into(), "second source");
                 d.labels.push(crate::diag::Label { file, span: first, message: "first source".into() });
                 d.help = Some("keep one of `builtin` and `obj`".into());
                 return None;
@@ -112,8 +118,8 @@ impl Ctx<'_> {
         let is = |n: &str| builtin_name == Some(n);
         let mut misplaced = |key: &str, span: &Option<(u32, Range<usize>)>, owner: &str, applies: bool| {
             if let (Some((_, span)), false) = (span, applies) {
-                let d = self.error(
-                    E_CONFLICT,
+                let d = self.report(
+                    Code::ManifestConflict,
                     span.clone(),
                     format!("`{key}` only applies to `builtin = \"{owner}\"`"),
                     "not used by this mesh",

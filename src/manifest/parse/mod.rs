@@ -15,7 +15,7 @@ use toml::de::{DeTable, DeValue};
 use toml::Spanned;
 
 use super::*;
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 
 mod knobs;
 mod mesh;
@@ -72,7 +72,7 @@ fn sort(diags: &mut [Diagnostic]) {
 
 fn syntax_error(e: &toml::de::Error, file: FileId, len: usize) -> Diagnostic {
     let message = e.message().trim();
-    let d = Diagnostic::error(E_SYNTAX, format!("TOML syntax error: {message}"));
+    let d = Diagnostic::new(Code::ManifestSyntax, format!("TOML syntax error: {message}"));
     match e.span() {
         Some(span) => {
             let start = span.start.min(len);
@@ -127,21 +127,16 @@ struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    fn error(&mut self, code: &'static str, span: Range<usize>, msg: String, label: impl Into<String>) -> &mut Diagnostic {
-        let d = Diagnostic::error(code, msg).at(self.file, span, label);
-        self.diags.push(d);
-        self.diags.last_mut().expect("just pushed")
-    }
-
-    fn warning(&mut self, code: &'static str, span: Range<usize>, msg: String, label: impl Into<String>) -> &mut Diagnostic {
-        let d = Diagnostic::warning(code, msg).at(self.file, span, label);
+    /// Reports `code` at `span` of the manifest (its severity from the code).
+    fn report(&mut self, code: Code, span: Range<usize>, msg: String, label: impl Into<String>) -> &mut Diagnostic {
+        let d = Diagnostic::new(code, msg).at(self.file, span, label);
         self.diags.push(d);
         self.diags.last_mut().expect("just pushed")
     }
 
     fn unknown_key(&mut self, name: &str, span: Range<usize>, place: &str, valid: &[&str]) {
         let suggestion = did_you_mean(name, valid);
-        let d = self.error(E_UNKNOWN_KEY, span, format!("unknown key `{name}` {place}"), "unknown key");
+        let d = self.report(Code::ManifestUnknownKey, span, format!("unknown key `{name}` {place}"), "unknown key");
         d.notes.push(format!("valid keys: {}", list(valid)));
         if let Some(s) = suggestion {
             d.help = Some(format!("did you mean `{s}`?"));
@@ -150,7 +145,7 @@ impl Ctx<'_> {
 
     fn wrong_type(&mut self, v: &Val<'_>, what: &str, expected: &str) {
         let found = type_name(v.get_ref());
-        self.error(E_TYPE, v.span(), format!("{what} must be {expected}, found {found}"), format!("expected {expected}"));
+        self.report(Code::ManifestType, v.span(), format!("{what} must be {expected}, found {found}"), format!("expected {expected}"));
     }
 
     fn root(&mut self, root: &DeTable<'_>) -> Effect {
@@ -221,7 +216,7 @@ impl Ctx<'_> {
         }
         self.check_pass_keys(&passes, stages_key, &output, targets_key, passes_key.clone());
         if !saw_stages && passes_key.is_none() {
-            let d = Diagnostic::error(E_MISSING, "the manifest has no `[stages]` table")
+            let d = Diagnostic::new(Code::ManifestMissing, "the manifest has no `[stages]` table")
                 .in_file(self.file)
                 .with_help("add a `[stages]` table, e.g. `[stages]` / `vertex = \"effect.vert\"` / `fragment = \"effect.frag\"`");
             self.diags.push(d);
@@ -255,7 +250,7 @@ impl Ctx<'_> {
     fn effect_name(&mut self, v: &Val<'_>) -> Option<(String, Range<usize>)> {
         let s = self.string(v, "`name`")?;
         if s.trim().is_empty() {
-            self.error(E_VALUE, v.span(), "`name` is empty".into(), "empty name");
+            self.report(Code::ManifestValue, v.span(), "`name` is empty".into(), "empty name");
             return None;
         }
         Some((s.to_owned(), v.span()))
@@ -266,8 +261,8 @@ impl Ctx<'_> {
         let file = self.file;
         for t in textures {
             if let Some(u) = uniforms.iter().find(|u: &&UniformDefault| u.name == t.name) {
-                let d = self.error(
-                    E_CONFLICT,
+                let d = self.report(
+                    Code::ManifestConflict,
                     t.name_span.clone(),
                     format!("`{}` is listed both in [uniforms] and in [textures]", t.name),
                     "bound to a texture here",
@@ -282,8 +277,8 @@ impl Ctx<'_> {
     fn check_knobs_are_numbers(&mut self, knobs: &[KnobDecl], uniforms: &[UniformDefault]) {
         for k in knobs {
             if !uniforms.iter().any(|u| u.name == k.name && u.value.as_ref().and_then(UniformValue::as_f64).is_some()) {
-                let d = self.error(
-                    E_VALUE,
+                let d = self.report(
+                    Code::ManifestValue,
                     k.name_span.clone(),
                     format!("knob `{}` is not a number in [uniforms]", k.name),
                     "no numeric [uniforms] entry of this name",

@@ -10,10 +10,8 @@ use toml::de::{DeTable, DeValue};
 
 use super::scene::{BLEND_CHOICES, CULL_CHOICES};
 use super::{entries, key, list, Ctx, Val};
-use crate::manifest::{
-    Filter, PassClear, PassDecl, PassDraw, SampleDecl, TargetDecl, TargetFormat, TargetRef, TargetSize, E_ASSET_NOT_FOUND, E_CONFLICT,
-    E_MISSING, E_VALUE, MAX_FRAME_SIDE,
-};
+use crate::diag::Code;
+use crate::manifest::{Filter, PassClear, PassDecl, PassDraw, SampleDecl, TargetDecl, TargetFormat, TargetRef, TargetSize, MAX_FRAME_SIDE};
 
 const TARGET_KEYS: &[&str] = &["format", "scale", "size"];
 const PASS_KEYS: &[&str] = &[
@@ -45,7 +43,7 @@ impl Ctx<'_> {
         for (k, v) in entries(t) {
             let name = key(k);
             if !super::is_ident(name) {
-                self.error(E_VALUE, k.span(), format!("`{name}` is not a valid target name"), "use letters, digits and `_`");
+                self.report(Code::ManifestValue, k.span(), format!("`{name}` is not a valid target name"), "use letters, digits and `_`");
                 continue;
             }
             let Some(spec) = self.table(v, &format!("target `{name}`")) else { continue };
@@ -65,7 +63,12 @@ impl Ctx<'_> {
                         match self.float(v2, &what) {
                             Some(s) if s > 0.0 && s <= MAX_SCALE => size = TargetSize::Scale(s),
                             Some(_) => {
-                                self.error(E_VALUE, v2.span(), format!("{what} must be in (0, {MAX_SCALE}]"), "not a usable scale");
+                                self.report(
+                                    Code::ManifestValue,
+                                    v2.span(),
+                                    format!("{what} must be in (0, {MAX_SCALE}]"),
+                                    "not a usable scale",
+                                );
                                 ok = false;
                             }
                             None => ok = false,
@@ -93,7 +96,12 @@ impl Ctx<'_> {
                 }
             }
             if size_keys.len() > 1 {
-                let d = self.error(E_CONFLICT, size_keys[1].clone(), format!("target `{name}` has both `scale` and `size`"), "second size");
+                let d = self.report(
+                    Code::ManifestConflict,
+                    size_keys[1].clone(),
+                    format!("target `{name}` has both `scale` and `size`"),
+                    "second size",
+                );
                 d.help = Some("give either a scale of the output size or an absolute `size`".into());
                 ok = false;
             }
@@ -121,8 +129,8 @@ impl Ctx<'_> {
             let Some(pass) = self.pass(item, t, i) else { continue };
             if let Some(first) = out.iter().find(|p| p.name == pass.name) {
                 let file = self.file;
-                let d = self.error(
-                    E_VALUE,
+                let d = self.report(
+                    Code::ManifestValue,
                     pass.name_span.clone(),
                     format!("two passes are named `{}`", pass.name),
                     "second pass of this name",
@@ -151,7 +159,12 @@ impl Ctx<'_> {
                     }
                     Some(_) => {
                         let shown = self.string(v2, what).unwrap_or_default().to_owned();
-                        self.error(E_VALUE, v2.span(), format!("`{shown}` is not a valid pass name"), "use letters, digits, `_` and `-`");
+                        self.report(
+                            Code::ManifestValue,
+                            v2.span(),
+                            format!("`{shown}` is not a valid pass name"),
+                            "use letters, digits, `_` and `-`",
+                        );
                         ok = false;
                     }
                     None => ok = false,
@@ -240,26 +253,31 @@ impl Ctx<'_> {
         match (&pass.reuse, stages_key) {
             (Some((_, span)), Some(stages)) => {
                 let file = self.file;
-                let d = self.error(E_CONFLICT, span.clone(), format!("pass `{name}` has both `effect` and `stages`"), "reuses an effect");
+                let d = self.report(
+                    Code::ManifestConflict,
+                    span.clone(),
+                    format!("pass `{name}` has both `effect` and `stages`"),
+                    "reuses an effect",
+                );
                 d.labels.push(crate::diag::Label { file, span: stages, message: "and names stages".into() });
                 d.help = Some("a pass either reuses another effect's stages or names its own".into());
                 ok = false;
             }
             (None, None) => {
-                let d = self.error(E_MISSING, pass.name_span.clone(), format!("pass `{name}` names no stages"), "no stages");
+                let d = self.report(Code::ManifestMissing, pass.name_span.clone(), format!("pass `{name}` names no stages"), "no stages");
                 d.help = Some("add `stages = { vertex = \"a.vert\", fragment = \"a.frag\" }` or `effect = \"../other\"`".into());
                 ok = false;
             }
             _ => {}
         }
         if let (Some(_), Some(span)) = (&pass.reuse, uniforms_key) {
-            let d = self.error(E_CONFLICT, span, format!("pass `{name}` reuses an effect and sets uniforms"), "uniforms here");
+            let d = self.report(Code::ManifestConflict, span, format!("pass `{name}` reuses an effect and sets uniforms"), "uniforms here");
             d.notes.push("a reused effect keeps its own manifest's uniforms, textures and mesh".into());
             d.help = Some("change the values in the reused effect's manifest, or give this pass its own stages".into());
             ok = false;
         }
         if pass.targets.is_empty() && pass.depth.is_none() && ok {
-            let d = self.error(E_MISSING, pass.name_span.clone(), format!("pass `{name}` writes no target"), "no `targets`");
+            let d = self.report(Code::ManifestMissing, pass.name_span.clone(), format!("pass `{name}` writes no target"), "no `targets`");
             d.help = Some("add `targets = [\"name\"]` with names from [targets]".into());
             ok = false;
         }
@@ -274,7 +292,7 @@ impl Ctx<'_> {
             path = path.join("effect.toml");
         }
         if !path.is_file() {
-            let d = self.error(E_ASSET_NOT_FOUND, v.span(), format!("effect not found: `{rel}`"), "no effect.toml here");
+            let d = self.report(Code::AssetNotFound, v.span(), format!("effect not found: `{rel}`"), "no effect.toml here");
             d.notes.push(format!("looked for `{}`", path.display()));
             d.notes.push("give the directory of another effect (or its effect.toml), relative to this manifest".into());
             return None;
@@ -312,7 +330,7 @@ impl Ctx<'_> {
                         }
                     }
                     if target.is_none() {
-                        self.error(E_MISSING, v.span(), format!("{what} names no `target`"), "no target");
+                        self.report(Code::ManifestMissing, v.span(), format!("{what} names no `target`"), "no target");
                     }
                     (target, filter)
                 }
@@ -340,13 +358,13 @@ impl Ctx<'_> {
         match (passes_key, has_stages) {
             (Some(p), Some(s)) => {
                 let file = self.file;
-                let d = self.error(E_CONFLICT, s, "`[stages]` and `[[passes]]` in one manifest".into(), "top-level stages");
+                let d = self.report(Code::ManifestConflict, s, "`[stages]` and `[[passes]]` in one manifest".into(), "top-level stages");
                 d.labels.push(crate::diag::Label { file, span: p, message: "passes".into() });
                 d.help = Some("a multi-pass effect names the stages in each pass".into());
             }
             (Some(p), None) if output.is_none() && !passes.is_empty() => {
                 let names: Vec<&str> = passes.iter().flat_map(|p| p.targets.iter().map(|t| t.name.as_str())).collect();
-                let d = self.error(E_MISSING, p, "a multi-pass effect needs `output`".into(), "passes without an output");
+                let d = self.report(Code::ManifestMissing, p, "a multi-pass effect needs `output`".into(), "passes without an output");
                 d.help = Some(match names.last() {
                     Some(last) => format!("add `output = \"{last}\"` at the top level (targets written: {})", list(&names)),
                     None => "add `output = \"<target>\"` at the top level".into(),
@@ -354,10 +372,10 @@ impl Ctx<'_> {
             }
             (None, _) => {
                 if let Some(o) = output {
-                    self.error(E_CONFLICT, o.span.clone(), "`output` needs `[[passes]]`".into(), "no passes");
+                    self.report(Code::ManifestConflict, o.span.clone(), "`output` needs `[[passes]]`".into(), "no passes");
                 }
                 if let Some(t) = targets_key {
-                    self.error(E_CONFLICT, t, "`[targets]` needs `[[passes]]`".into(), "no passes");
+                    self.report(Code::ManifestConflict, t, "`[targets]` needs `[[passes]]`".into(), "no passes");
                 }
             }
             _ => {}

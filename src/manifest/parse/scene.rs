@@ -9,9 +9,10 @@ use std::ops::Range;
 use toml::de::{DeTable, DeValue};
 
 use super::{entries, key, Ctx, Val};
+use crate::diag::Code;
 use crate::manifest::{
     Blend, CameraDecl, CameraKey, Cull, DepthCompare, Ease, InstanceAttribute, InstanceSource, InstancesDecl, ModelDecl, RenderDecl,
-    E_CONFLICT, E_MISSING, E_VALUE, MAX_FRAMES, MAX_FRAME_SIDE, MAX_INSTANCES,
+    MAX_FRAMES, MAX_FRAME_SIDE, MAX_INSTANCES,
 };
 
 const CAMERA_KEYS: &[&str] = &["eye", "target", "up", "fov", "near", "far", "keys", "ease"];
@@ -33,7 +34,12 @@ impl Ctx<'_> {
             return None;
         };
         if items.len() != N {
-            self.error(E_VALUE, v.span(), format!("{what} must be {expected}, found {}", items.len()), format!("expected {N} numbers"));
+            self.report(
+                Code::ManifestValue,
+                v.span(),
+                format!("{what} must be {expected}, found {}", items.len()),
+                format!("expected {N} numbers"),
+            );
             return None;
         }
         let mut out = [0.0f32; N];
@@ -53,7 +59,7 @@ impl Ctx<'_> {
         if (x as f32).is_finite() {
             Some(x as f32)
         } else {
-            self.error(E_VALUE, v.span(), format!("{what} is too large"), "beyond the f32 range");
+            self.report(Code::ManifestValue, v.span(), format!("{what} is too large"), "beyond the f32 range");
             None
         }
     }
@@ -64,7 +70,12 @@ impl Ctx<'_> {
         if x > lo && x < hi {
             Some(x)
         } else {
-            self.error(E_VALUE, v.span(), format!("{what} must be greater than {lo} and less than {hi}"), format!("not in ({lo}, {hi})"));
+            self.report(
+                Code::ManifestValue,
+                v.span(),
+                format!("{what} must be greater than {lo} and less than {hi}"),
+                format!("not in ({lo}, {hi})"),
+            );
             None
         }
     }
@@ -117,8 +128,8 @@ impl Ctx<'_> {
         }
         if ok && cam.near >= cam.far {
             let span = near_span.unwrap_or_else(|| v.span());
-            self.error(
-                E_VALUE,
+            self.report(
+                Code::ManifestValue,
                 span,
                 format!("`camera.near` ({}) must be less than `camera.far` ({})", cam.near, cam.far),
                 "near plane beyond the far plane",
@@ -126,8 +137,8 @@ impl Ctx<'_> {
             ok = false;
         }
         if ok && degenerate_view(cam.eye, cam.target, cam.up) {
-            let d = self.error(
-                E_VALUE,
+            let d = self.report(
+                Code::ManifestValue,
                 v.span(),
                 "the camera's `eye` equals its `target`, or `up` is parallel to the view direction".into(),
                 "no view direction",
@@ -146,7 +157,7 @@ impl Ctx<'_> {
             return None;
         };
         if items.is_empty() {
-            self.error(E_MISSING, v.span(), "`camera.keys` is empty".into(), "no keyframe");
+            self.report(Code::ManifestMissing, v.span(), "`camera.keys` is empty".into(), "no keyframe");
             return None;
         }
         let mut keys: Vec<CameraKey> = Vec::new();
@@ -186,7 +197,7 @@ impl Ctx<'_> {
                         true
                     }
                     Some(_) => {
-                        self.error(E_VALUE, v.span(), format!("{what} must not be negative"), "negative time");
+                        self.report(Code::ManifestValue, v.span(), format!("{what} must not be negative"), "negative time");
                         false
                     }
                     None => false,
@@ -201,7 +212,7 @@ impl Ctx<'_> {
         }
         let (Some((time, time_span)), Some(eye)) = (time, eye) else {
             if ok {
-                let d = self.error(E_MISSING, item.span(), "a camera key needs `time` and `eye`".into(), "incomplete key");
+                let d = self.report(Code::ManifestMissing, item.span(), "a camera key needs `time` and `eye`".into(), "incomplete key");
                 d.help = Some("write e.g. `{ time = 2.0, eye = [0, 1, 4] }`".into());
             }
             return None;
@@ -209,8 +220,8 @@ impl Ctx<'_> {
         if let Some((prev, prev_span)) = last.clone() {
             if time <= prev {
                 let file = self.file;
-                let d = self.error(
-                    E_VALUE,
+                let d = self.report(
+                    Code::ManifestValue,
                     time_span.clone(),
                     format!("camera keys must have increasing times: {time} follows {prev}"),
                     "not after the previous key",
@@ -221,8 +232,8 @@ impl Ctx<'_> {
         }
         *last = Some((time, time_span));
         if ok && degenerate_view(eye, target, cam.up) {
-            self.error(
-                E_VALUE,
+            self.report(
+                Code::ManifestValue,
                 item.span(),
                 "this key's `eye` equals its `target`, or `up` is parallel to the view direction".into(),
                 "no view direction",
@@ -254,7 +265,7 @@ impl Ctx<'_> {
                             true
                         }
                         Some(_) => {
-                            self.error(E_VALUE, v2.span(), format!("{what} must not be zero"), "flattens the mesh");
+                            self.report(Code::ManifestValue, v2.span(), format!("{what} must not be zero"), "flattens the mesh");
                             false
                         }
                         None => false,
@@ -340,7 +351,7 @@ impl Ctx<'_> {
         }
         let Some(count) = count else {
             if ok {
-                let d = self.error(E_MISSING, v.span(), "`[instances]` needs `count`".into(), "no instance count");
+                let d = self.report(Code::ManifestMissing, v.span(), "`[instances]` needs `count`".into(), "no instance count");
                 d.help = Some("add e.g. `count = 100`".into());
             }
             return None;
@@ -363,7 +374,7 @@ impl Ctx<'_> {
     fn instance_attribute(&mut self, input: &str, input_span: Range<usize>, v: &Val<'_>, count: u32) -> Option<InstanceAttribute> {
         let what = format!("`instances.attributes.{input}`");
         if !super::is_ident(input) || input.starts_with("gl_") {
-            self.error(E_VALUE, input_span, format!("`{input}` is not a vertex shader input name"), "not a GLSL identifier");
+            self.report(Code::ManifestValue, input_span, format!("`{input}` is not a vertex shader input name"), "not a GLSL identifier");
             return None;
         }
         let t = self.table(v, &what)?;
@@ -383,8 +394,8 @@ impl Ctx<'_> {
                         continue;
                     };
                     if items.len() != count as usize {
-                        self.error(
-                            E_VALUE,
+                        self.report(
+                            Code::ManifestValue,
                             v2.span(),
                             format!("{w} has {} values for {count} instances", items.len()),
                             format!("expected {count} values"),
@@ -418,7 +429,12 @@ impl Ctx<'_> {
                         continue;
                     };
                     if na != nb {
-                        self.error(E_VALUE, v2.span(), format!("{w}: both ends need the same number of components"), "different sizes");
+                        self.report(
+                            Code::ManifestValue,
+                            v2.span(),
+                            format!("{w}: both ends need the same number of components"),
+                            "different sizes",
+                        );
                         ok = false;
                         continue;
                     }
@@ -442,18 +458,18 @@ impl Ctx<'_> {
         if sources != 1 {
             if ok {
                 let (code, msg) = if sources == 0 {
-                    (E_MISSING, format!("{what} needs one of `values`, `random`, `sequence`"))
+                    (Code::ManifestMissing, format!("{what} needs one of `values`, `random`, `sequence`"))
                 } else {
-                    (E_CONFLICT, format!("{what} has more than one of `values`, `random`, `sequence`"))
+                    (Code::ManifestConflict, format!("{what} has more than one of `values`, `random`, `sequence`"))
                 };
-                self.error(code, v.span(), msg, "one source needed");
+                self.report(code, v.span(), msg, "one source needed");
             }
             return None;
         }
         match (&mut source, seed) {
             (Some(InstanceSource::Random { seed: s, .. }), Some((n, _))) => *s = n,
             (_, Some((_, span))) => {
-                self.error(E_CONFLICT, span, format!("{what}: `seed` only applies to `random`"), "not random");
+                self.report(Code::ManifestConflict, span, format!("{what}: `seed` only applies to `random`"), "not random");
                 ok = false;
             }
             _ => {}

@@ -6,7 +6,8 @@ use std::ops::Range;
 use toml::de::DeTable;
 
 use super::{entries, key, Ctx, Key, Val};
-use crate::manifest::{StageRef, E_CONFLICT, E_MISSING, E_STAGE_NOT_FOUND, W_STAGE_EXTENSION};
+use crate::diag::Code;
+use crate::manifest::StageRef;
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -16,7 +17,7 @@ impl Ctx<'_> {
             return Vec::new();
         };
         if t.is_empty() {
-            let d = self.error(E_MISSING, k.span(), "`[stages]` lists no stage".into(), "no stage here");
+            let d = self.report(Code::ManifestMissing, k.span(), "`[stages]` lists no stage".into(), "no stage here");
             d.help = Some("add e.g. `vertex = \"effect.vert\"` and `fragment = \"effect.frag\"`".into());
         }
         self.stages(t)
@@ -31,13 +32,13 @@ impl Ctx<'_> {
                 continue;
             };
             let what = format!("`stages.{kind}`");
-            let Some(path) = self.file_path(v, &what, E_STAGE_NOT_FOUND, "stage file") else {
+            let Some(path) = self.file_path(v, &what, Code::StageFileNotFound, "stage file") else {
                 continue;
             };
             let implied = path.extension().and_then(|e| e.to_str()).and_then(StageKind::from_extension);
             if let Some(other) = implied.filter(|&o| o != kind) {
-                let d = self.warning(
-                    W_STAGE_EXTENSION,
+                let d = self.report(
+                    Code::StageExtension,
                     v.span(),
                     format!("the {kind} stage is a file whose extension means {other}"),
                     format!("looks like a {other} shader"),
@@ -52,7 +53,12 @@ impl Ctx<'_> {
             if !graphics.is_empty() {
                 let span = compute.key_span.clone();
                 let file = self.file;
-                let d = self.error(E_CONFLICT, span, "a compute stage cannot be combined with graphics stages".into(), "compute stage");
+                let d = self.report(
+                    Code::ManifestConflict,
+                    span,
+                    "a compute stage cannot be combined with graphics stages".into(),
+                    "compute stage",
+                );
                 for g in graphics {
                     d.labels.push(crate::diag::Label { file, span: g, message: "graphics stage".into() });
                 }

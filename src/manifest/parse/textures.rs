@@ -8,9 +8,9 @@ use std::path::PathBuf;
 use toml::de::{DeTable, DeValue};
 
 use super::{entries, key, Ctx, Key, Val};
+use crate::diag::Code;
 use crate::manifest::{
-    Filter, Generator, GeneratorParams, TextureDecl, TextureKind, TextureSource, Wrap, DEFAULT_TEXTURE_SIZE, E_ASSET_NOT_FOUND, E_CONFLICT,
-    E_MISSING, E_VALUE, MAX_TEXTURE_SIZE, W_UNUSED_PARAM,
+    Filter, Generator, GeneratorParams, TextureDecl, TextureKind, TextureSource, Wrap, DEFAULT_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
 };
 
 const TEXTURE_KEYS: &[&str] = &["file", "cube", "generate", "kind", "size", "colors", "cells", "seed", "octaves", "filter", "wrap"];
@@ -65,7 +65,7 @@ impl Ctx<'_> {
             let name_ok = self.check_uniform_name(name, k.span());
             let what = format!("texture `{name}`");
             let decl = match v.get_ref() {
-                DeValue::String(_) => self.file_path(v, &what, E_ASSET_NOT_FOUND, "texture file").map(|path| TextureDecl {
+                DeValue::String(_) => self.file_path(v, &what, Code::AssetNotFound, "texture file").map(|path| TextureDecl {
                     name: name.to_owned(),
                     name_span: k.span(),
                     kind: TextureKind::D2,
@@ -122,7 +122,7 @@ impl Ctx<'_> {
             match key(k2) {
                 "file" => {
                     f.sources.push(("file", k2.span()));
-                    f.file = self.file_path(v2, what, E_ASSET_NOT_FOUND, "texture file");
+                    f.file = self.file_path(v2, what, Code::AssetNotFound, "texture file");
                     f.ok &= f.file.is_some();
                 }
                 "cube" => {
@@ -182,7 +182,12 @@ impl Ctx<'_> {
     fn texture_source(&mut self, name: &str, v: &Val<'_>, sources: &[(&'static str, Range<usize>)]) -> Option<&'static str> {
         match sources {
             [] => {
-                let d = self.error(E_MISSING, v.span(), format!("texture `{name}` has no source"), "no `file`, `cube` or `generate`");
+                let d = self.report(
+                    Code::ManifestMissing,
+                    v.span(),
+                    format!("texture `{name}` has no source"),
+                    "no `file`, `cube` or `generate`",
+                );
                 d.help = Some("add `file = \"image.png\"`, `cube = [six images]` or `generate = \"checker\"`".into());
                 None
             }
@@ -190,7 +195,7 @@ impl Ctx<'_> {
             [(_, first), (_, second), ..] => {
                 let file_id = self.file;
                 let (first, second) = (first.clone(), second.clone());
-                let d = self.error(E_CONFLICT, second, format!("texture `{name}` has more than one source"), "second source");
+                let d = self.report(Code::ManifestConflict, second, format!("texture `{name}` has more than one source"), "second source");
                 d.labels.push(crate::diag::Label { file: file_id, span: first, message: "first source".into() });
                 d.help = Some("keep exactly one of `file`, `cube` and `generate`".into());
                 None
@@ -210,7 +215,7 @@ impl Ctx<'_> {
                     }
                     _ => format!("texture `{name}` is a single image but says `kind = \"cube\"`"),
                 };
-                let d = self.error(E_CONFLICT, span, msg, "conflicts with the source");
+                let d = self.report(Code::ManifestConflict, span, msg, "conflicts with the source");
                 d.help = Some("a cube map comes from `cube = [six images]` or from `generate` with `kind = \"cube\"`".into());
                 None
             }
@@ -231,8 +236,8 @@ impl Ctx<'_> {
         let mut ok = true;
         if source_kind != "generate" {
             for (p, span) in params_given {
-                let d = self.error(
-                    E_CONFLICT,
+                let d = self.report(
+                    Code::ManifestConflict,
                     span.clone(),
                     format!("`{p}` only applies to generated textures"),
                     format!("texture `{name}` is loaded from {}", if source_kind == "cube" { "images" } else { "a file" }),
@@ -243,8 +248,8 @@ impl Ctx<'_> {
         } else if let Some(g) = generator {
             for (p, span) in params_given {
                 if *p != "size" && !g.params().contains(p) {
-                    let d = self.warning(
-                        W_UNUSED_PARAM,
+                    let d = self.report(
+                        Code::UnusedGeneratorParam,
                         span.clone(),
                         format!("`{p}` has no effect on the `{}` generator", g.name()),
                         "ignored",
@@ -264,12 +269,17 @@ impl Ctx<'_> {
             return None;
         };
         if items.len() != 6 {
-            let d = self.error(E_VALUE, v.span(), format!("{what} needs exactly six images, found {}", items.len()), "expected six paths");
+            let d = self.report(
+                Code::ManifestValue,
+                v.span(),
+                format!("{what} needs exactly six images, found {}", items.len()),
+                "expected six paths",
+            );
             d.notes.push(format!("faces are listed in the order {FACE_ORDER}"));
             return None;
         }
         let paths: Vec<Option<PathBuf>> =
-            items.iter().map(|item| self.file_path(item, what, E_ASSET_NOT_FOUND, "cube face image")).collect();
+            items.iter().map(|item| self.file_path(item, what, Code::AssetNotFound, "cube face image")).collect();
         let paths: Option<Vec<PathBuf>> = paths.into_iter().collect();
         paths?.try_into().ok()
     }
@@ -285,7 +295,7 @@ impl Ctx<'_> {
         let single = items.first().is_some_and(|i| !matches!(i.get_ref(), DeValue::Array(_)));
         let colours: Vec<&Val<'_>> = if single { vec![v] } else { items.iter().collect() };
         if colours.is_empty() || colours.len() > 2 {
-            self.error(E_VALUE, v.span(), format!("{what} must be {EXPECTED}"), format!("found {} colours", colours.len()));
+            self.report(Code::ManifestValue, v.span(), format!("{what} must be {EXPECTED}"), format!("found {} colours", colours.len()));
             return None;
         }
         let mut ok = true;
@@ -304,8 +314,8 @@ impl Ctx<'_> {
             return None;
         };
         if !(3..=4).contains(&items.len()) {
-            self.error(
-                E_VALUE,
+            self.report(
+                Code::ManifestValue,
                 v.span(),
                 format!("{what}: a colour has 3 or 4 components, found {}", items.len()),
                 "expected [r, g, b] or [r, g, b, a]",
@@ -318,7 +328,7 @@ impl Ctx<'_> {
             match self.number(item, what) {
                 Some(x) if (x as f32).is_finite() => rgba[i] = x as f32,
                 Some(_) => {
-                    self.error(E_VALUE, item.span(), format!("{what}: component is too large"), "beyond f32 range");
+                    self.report(Code::ManifestValue, item.span(), format!("{what}: component is too large"), "beyond f32 range");
                     ok = false;
                 }
                 None => ok = false,

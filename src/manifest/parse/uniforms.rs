@@ -7,7 +7,8 @@ use std::ops::Range;
 use toml::de::{DeTable, DeValue};
 
 use super::{entries, is_ident, key, parse_int, Ctx, Key, Val};
-use crate::manifest::{did_you_mean, Semantic, UniformDefault, UniformValue, E_CONFLICT, E_MISSING, E_VALUE, W_OUT_OF_RANGE};
+use crate::diag::Code;
+use crate::manifest::{did_you_mean, Semantic, UniformDefault, UniformValue};
 
 const UNIFORM_KEYS: &[&str] = &["value", "range", "semantic"];
 /// Uniform default lists nest at most this deep (an array of arrays of mat4 columns is 3).
@@ -46,11 +47,11 @@ impl Ctx<'_> {
     /// Names in `[uniforms]` / `[textures]` must be GLSL uniform names.
     pub(super) fn check_uniform_name(&mut self, name: &str, span: Range<usize>) -> bool {
         if name.starts_with("gl_") {
-            self.error(E_VALUE, span, format!("`{name}` is a reserved GLSL name"), "names starting with `gl_` are reserved");
+            self.report(Code::ManifestValue, span, format!("`{name}` is a reserved GLSL name"), "names starting with `gl_` are reserved");
             return false;
         }
         if !is_uniform_name(name) {
-            let d = self.error(E_VALUE, span, format!("`{name}` is not a valid GLSL uniform name"), "not a uniform name");
+            let d = self.report(Code::ManifestValue, span, format!("`{name}` is not a valid GLSL uniform name"), "not a uniform name");
             d.help = Some("use the name as the shader declares it: `tint`, `lights[0].color`".into());
             return false;
         }
@@ -122,8 +123,8 @@ impl Ctx<'_> {
         match (&value_key, &semantic_key) {
             (Some(vk), Some(sk)) => {
                 let file = self.file;
-                let d = self.error(
-                    E_CONFLICT,
+                let d = self.report(
+                    Code::ManifestConflict,
                     sk.clone(),
                     format!("uniform `{name}` has both a `value` and a `semantic`"),
                     "semantic given here",
@@ -133,8 +134,8 @@ impl Ctx<'_> {
                 ok = false;
             }
             (None, None) => {
-                let d = self.error(
-                    E_MISSING,
+                let d = self.report(
+                    Code::ManifestMissing,
                     v.span(),
                     format!("uniform `{name}` needs a `value` or a `semantic`"),
                     "neither `value` nor `semantic`",
@@ -150,8 +151,8 @@ impl Ctx<'_> {
             let outside: Vec<f64> = val.scalars().iter().filter_map(|s| s.as_f64()).filter(|x| x < lo || x > hi).collect();
             if let Some(first) = outside.first() {
                 let file = self.file;
-                let d = self.warning(
-                    W_OUT_OF_RANGE,
+                let d = self.report(
+                    Code::DefaultOutOfRange,
                     vspan.clone(),
                     format!("default of uniform `{name}` lies outside its range [{lo}, {hi}]"),
                     format!("{first} is outside the range"),
@@ -185,7 +186,7 @@ impl Ctx<'_> {
             DeValue::Integer(i) => match parse_int(i) {
                 Some(n) => Some(UniformValue::Int(n)),
                 None => {
-                    self.error(E_VALUE, v.span(), format!("{what}: integer does not fit in 64 bits"), "too large");
+                    self.report(Code::ManifestValue, v.span(), format!("{what}: integer does not fit in 64 bits"), "too large");
                     None
                 }
             },
@@ -208,11 +209,16 @@ impl Ctx<'_> {
             }
             DeValue::Array(items) => {
                 if depth >= MAX_LIST_DEPTH {
-                    self.error(E_VALUE, v.span(), format!("{what}: arrays nest deeper than {MAX_LIST_DEPTH} levels"), "nested too deeply");
+                    self.report(
+                        Code::ManifestValue,
+                        v.span(),
+                        format!("{what}: arrays nest deeper than {MAX_LIST_DEPTH} levels"),
+                        "nested too deeply",
+                    );
                     return None;
                 }
                 if items.is_empty() {
-                    self.error(E_VALUE, v.span(), format!("{what} is an empty array"), "empty array");
+                    self.report(Code::ManifestValue, v.span(), format!("{what} is an empty array"), "empty array");
                     return None;
                 }
                 let mut out = Vec::with_capacity(items.len());
@@ -244,8 +250,8 @@ impl Ctx<'_> {
                     };
                     let found = shape(&out[i]);
                     let file = self.file;
-                    let d = self.error(
-                        E_VALUE,
+                    let d = self.report(
+                        Code::ManifestValue,
                         items[i].span(),
                         format!("{what}: array elements must all have the same shape"),
                         format!("this is {}", describe(&found)),
@@ -269,15 +275,24 @@ impl Ctx<'_> {
             return None;
         };
         if items.len() != 2 {
-            self.error(E_VALUE, v.span(), format!("{what} must be {EXPECTED}, found {} element(s)", items.len()), "expected `[min, max]`");
+            self.report(
+                Code::ManifestValue,
+                v.span(),
+                format!("{what} must be {EXPECTED}, found {} element(s)", items.len()),
+                "expected `[min, max]`",
+            );
             return None;
         }
         let lo = self.number(&items[0], &format!("{what} lower bound"));
         let hi = self.number(&items[1], &format!("{what} upper bound"));
         let (lo, hi) = (lo?, hi?);
         if lo > hi {
-            let d =
-                self.error(E_VALUE, v.span(), format!("{what} is empty: lower bound {lo} is greater than upper bound {hi}"), "min > max");
+            let d = self.report(
+                Code::ManifestValue,
+                v.span(),
+                format!("{what} is empty: lower bound {lo} is greater than upper bound {hi}"),
+                "min > max",
+            );
             d.help = Some(format!("write the range as `[{hi}, {lo}]`"));
             return None;
         }

@@ -7,7 +7,8 @@ use std::path::PathBuf;
 use toml::de::{DeTable, DeValue};
 
 use super::{list, parse_int, Ctx, Val};
-use crate::manifest::{did_you_mean, E_VALUE};
+use crate::diag::Code;
+use crate::manifest::did_you_mean;
 
 impl Ctx<'_> {
     pub(super) fn string<'v>(&mut self, v: &'v Val<'_>, what: &str) -> Option<&'v str> {
@@ -43,7 +44,7 @@ impl Ctx<'_> {
             return Some(t);
         }
         let suggestion = did_you_mean(s, &names);
-        let d = self.error(E_VALUE, v.span(), format!("unknown {noun} `{s}` in {what}"), format!("unknown {noun}"));
+        let d = self.report(Code::ManifestValue, v.span(), format!("unknown {noun} `{s}` in {what}"), format!("unknown {noun}"));
         d.notes.push(format!("expected one of: {}", list(&names)));
         if let Some(sug) = suggestion {
             d.help = Some(format!("did you mean `{sug}`?"));
@@ -60,7 +61,12 @@ impl Ctx<'_> {
         match parse_int(i).and_then(|n| u32::try_from(n).ok()) {
             Some(n) if (min..=max).contains(&n) => Some(n),
             _ => {
-                self.error(E_VALUE, v.span(), format!("{what} must be between {min} and {max}"), format!("not in {min}..={max}"));
+                self.report(
+                    Code::ManifestValue,
+                    v.span(),
+                    format!("{what} must be between {min} and {max}"),
+                    format!("not in {min}..={max}"),
+                );
                 None
             }
         }
@@ -72,14 +78,14 @@ impl Ctx<'_> {
             DeValue::Integer(i) => match parse_int(i) {
                 Some(n) => Some(n as f64),
                 None => {
-                    self.error(E_VALUE, v.span(), format!("{what}: integer does not fit in 64 bits"), "too large");
+                    self.report(Code::ManifestValue, v.span(), format!("{what}: integer does not fit in 64 bits"), "too large");
                     None
                 }
             },
             DeValue::Float(f) => match f.as_str().parse::<f64>() {
                 Ok(x) if x.is_finite() => Some(x),
                 _ => {
-                    let d = self.error(E_VALUE, v.span(), format!("{what} must be a finite number"), "not a finite number");
+                    let d = self.report(Code::ManifestValue, v.span(), format!("{what} must be a finite number"), "not a finite number");
                     d.notes.push("`nan`, `inf` and numbers beyond the f64 range are not accepted".into());
                     None
                 }
@@ -92,15 +98,15 @@ impl Ctx<'_> {
     }
 
     /// A path relative to the manifest directory that must name an existing file.
-    pub(super) fn file_path(&mut self, v: &Val<'_>, what: &str, code: &'static str, noun: &str) -> Option<PathBuf> {
+    pub(super) fn file_path(&mut self, v: &Val<'_>, what: &str, code: Code, noun: &str) -> Option<PathBuf> {
         let rel = self.string(v, what)?;
         if rel.trim().is_empty() {
-            self.error(E_VALUE, v.span(), format!("{what} is an empty path"), "empty path");
+            self.report(Code::ManifestValue, v.span(), format!("{what} is an empty path"), "empty path");
             return None;
         }
         let path = self.dir.join(rel);
         if !path.is_file() {
-            let d = self.error(code, v.span(), format!("{noun} not found: `{rel}`"), "no file at this path");
+            let d = self.report(code, v.span(), format!("{noun} not found: `{rel}`"), "no file at this path");
             d.notes.push(format!("looked for `{}`", path.display()));
             d.notes.push("paths are relative to the directory holding effect.toml".into());
             return None;

@@ -2,14 +2,14 @@
 //! reads), and the warnings that point a guess at its declaration in the user's GLSL.
 
 use crate::assets::mesh::Mesh;
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
 use crate::manifest::{BuiltinMesh, Effect, MeshAttribute, MeshSource};
 use crate::render::attributes;
 use crate::stage::StageKind;
 
-use super::{SceneInput, E_ASSET, W_ATTRIBUTE_GUESSED, W_ATTRIBUTE_ZERO, W_MESH_GUESSED};
+use super::SceneInput;
 
 /// How the mesh was chosen.
 pub(super) enum MeshNote {
@@ -43,7 +43,7 @@ pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>
             MeshSource::Builtin(b) => Mesh::builtin(*b),
             MeshSource::Obj(path) => Mesh::load_obj(path).map_err(|e| {
                 let file = input.effect.map(|e| e.file).unwrap_or(FileId(0));
-                vec![Diagnostic::error(E_ASSET, format!("cannot load the mesh: {e}")).at(file, decl.span.clone(), "this mesh")]
+                vec![Diagnostic::new(Code::AssetLoad, format!("cannot load the mesh: {e}")).at(file, decl.span.clone(), "this mesh")]
             })?,
         };
         let note = if matches!(decl.source, MeshSource::Builtin(BuiltinMesh::FullscreenQuad | BuiltinMesh::FullscreenTriangle)) {
@@ -67,7 +67,7 @@ pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>
     };
     if input.effect.is_some() {
         warnings.push(
-            Diagnostic::warning(W_MESH_GUESSED, format!("the manifest has no [mesh]: drawing {what}"))
+            Diagnostic::new(Code::MeshGuessed, format!("the manifest has no [mesh]: drawing {what}"))
                 .in_file(input.effect.map(|e| e.file).unwrap_or(file))
                 .with_help("add e.g. `mesh = \"uv_sphere\"`"),
         );
@@ -85,10 +85,10 @@ pub(super) fn report_attributes(
         let (code, message) = match (c.attribute, c.guessed) {
             (Some(_), None) => continue,
             (Some(_), Some(_)) if fullscreen_pass => continue,
-            (Some(a), Some(why)) => (W_ATTRIBUTE_GUESSED, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input)),
-            (None, _) => (W_ATTRIBUTE_ZERO, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),
+            (Some(a), Some(why)) => (Code::AttributeGuessed, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input)),
+            (None, _) => (Code::AttributeZero, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),
         };
-        let d = at_declaration(Diagnostic::warning(code, message), program, &c.input, Storage::In, "this input");
+        let d = at_declaration(Diagnostic::new(code, message), program, &c.input, Storage::In, "this input");
         let example = c.attribute.unwrap_or(MeshAttribute::Position);
         warnings.push(d.with_help(format!(
             "map it in the manifest: [mesh.attributes] `{} = \"{example}\"` (attributes: position, normal, uv, tangent, bitangent, color)",

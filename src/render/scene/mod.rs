@@ -18,30 +18,13 @@ use std::collections::BTreeMap;
 use crate::assets::degenerate::Degenerate;
 use crate::assets::mesh::Mesh;
 use crate::back::Translation;
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
 use crate::manifest::{Blend, CameraDecl, Cull, Effect, Filter, MeshAttribute, ModelDecl};
 use crate::render::attributes;
 use crate::render::device::{color_formats, Gpu, PipelineSpec};
 use crate::render::uniforms::{self, UniformBuffer};
-
-/// A vertex input was matched to a mesh attribute by a guess.
-pub const W_ATTRIBUTE_GUESSED: &str = "W0401";
-/// A vertex input no mesh attribute fits: it reads zeros.
-pub const W_ATTRIBUTE_ZERO: &str = "W0402";
-/// A uniform the manifest does not give a value: it got a guessed one.
-pub const W_UNIFORM_GUESSED: &str = "W0403";
-/// A sampler the manifest binds no texture to: it reads a placeholder.
-pub const W_TEXTURE_PLACEHOLDER: &str = "W0404";
-/// The mesh was chosen by effectc (no `[mesh]`).
-pub const W_MESH_GUESSED: &str = "W0405";
-/// wgpu refused the pipeline or a resource (a validation error).
-pub const E_PIPELINE: &str = "E0402";
-/// A texture image or mesh file could not be loaded.
-pub const E_ASSET: &str = "E0406";
-/// The program cannot be rendered (no vertex stage, a stage WebGPU lacks, …).
-pub const E_UNRENDERABLE: &str = "E0408";
 
 /// The colour format frames are rendered into.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -141,14 +124,14 @@ impl Scene {
         let first_file = input.program.stages[0].syntax.file;
         let mut warnings = Vec::new();
         if !r.entry_points.iter().any(|e| e.name == "vs_main") {
-            return Err(vec![Diagnostic::error(E_UNRENDERABLE, "the program has no vertex stage to draw with")
+            return Err(vec![Diagnostic::new(Code::Unrenderable, "the program has no vertex stage to draw with")
                 .in_file(first_file)
                 .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)")]);
         }
         if let Some(first) = r.fragment_outputs.first().filter(|o| input.pass.is_none() && o.location == 0 && !o.wgsl_type.contains("f32"))
         {
-            return Err(vec![Diagnostic::error(
-                E_UNRENDERABLE,
+            return Err(vec![Diagnostic::new(
+                Code::Unrenderable,
                 format!("fragment output `{}` is an integer; frames can only show float colours", first.name),
             )
             .in_file(first_file)]);
@@ -285,7 +268,7 @@ fn blend_state(blend: Blend) -> Option<wgpu::BlendState> {
 }
 
 fn pipeline_error(file: FileId, message: &str) -> Diagnostic {
-    Diagnostic::error(E_PIPELINE, "wgpu rejected the translated program")
+    Diagnostic::new(Code::PipelineRejected, "wgpu rejected the translated program")
         .in_file(file)
         .with_note(message.trim().to_string())
         .with_note("the WGSL effectc renders is what `effectc translate --to wgsl` writes")
@@ -300,9 +283,9 @@ fn uniform_buffers(
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
     let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect)
-        .map_err(|e| vec![Diagnostic::error(E_PIPELINE, e).in_file(first_file)])?;
+        .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
-        let mut d = Diagnostic::warning(W_UNIFORM_GUESSED, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
+        let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
         d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
         let help = if g.aggregate {
             format!("give its members values in [uniforms]: `\"{}.<member>\" = …` (arrays: `\"{}[0]\"`)", g.name, g.name)

@@ -6,13 +6,13 @@ use std::collections::BTreeMap;
 
 use crate::assets::texture::{self, TexelImage};
 use crate::back::reflect::BindingInfo;
-use crate::diag::{Diagnostic, FileId};
+use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::syntax::Storage;
 use crate::manifest::{Filter, TextureKind, TextureSource, Wrap};
 use crate::render::device::Gpu;
 
 use super::mesh_choice::at_declaration;
-use super::{toml_key, SceneInput, E_ASSET, W_TEXTURE_PLACEHOLDER};
+use super::{toml_key, SceneInput};
 
 /// Textures and samplers by binding name.
 pub(super) struct Textures {
@@ -41,7 +41,7 @@ impl Textures {
                         (Some(decl), _) => {
                             let image = load(decl).map_err(|e| {
                                 let file = input.effect.map(|e| e.file).unwrap_or(FileId(0));
-                                vec![Diagnostic::error(E_ASSET, format!("cannot load texture `{}`: {e}", decl.name)).at(
+                                vec![Diagnostic::new(Code::AssetLoad, format!("cannot load texture `{}`: {e}", decl.name)).at(
                                     file,
                                     decl.span.clone(),
                                     "this texture",
@@ -52,8 +52,8 @@ impl Textures {
                         (None, _) => {
                             let kind = if b.dimension == Some("cube") { TextureKind::Cube } else { TextureKind::D2 };
                             let name = user.clone().unwrap_or_else(|| b.name.clone());
-                            let d = Diagnostic::warning(
-                                W_TEXTURE_PLACEHOLDER,
+                            let d = Diagnostic::new(
+                                Code::TexturePlaceholder,
                                 format!(
                                     "sampler `{name}` has no texture in the manifest: it reads a placeholder {}",
                                     match kind {
