@@ -12,7 +12,7 @@ use crate::back::{Target, TranslateOptions};
 use crate::check::InputSpec;
 use crate::front::program::FrontOptions;
 use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
-use crate::render::command::Step;
+use crate::render::command::TimeStep;
 use crate::stage::StageKind;
 use crate::{bench, render, stress, translate};
 
@@ -337,9 +337,9 @@ impl RenderArgs {
     /// to the first frame).
     pub fn request(&self, started: Instant) -> render::command::Request {
         let step = match (self.fps, self.time_step) {
-            (Some(f), _) => Step::Fps(f),
-            (None, Some(s)) => Step::Seconds(s),
-            (None, None) => Step::Default,
+            (Some(f), _) => TimeStep::Fps(f),
+            (None, Some(s)) => TimeStep::Seconds(s),
+            (None, None) => TimeStep::Default,
         };
         render::command::Request {
             input: self.common.input_spec(),

@@ -314,11 +314,11 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
         }
     }
     if all_declared {
-        out.diagnostics.extend(crate::link::passes::unused_entries(effect, &used_uniforms, &used_textures));
+        out.diagnostics.extend(crate::link::graph_rules::unused_entries(effect, &used_uniforms, &used_textures));
     }
-    let shaders: Vec<crate::link::passes::PassShaders<'_>> =
-        syntaxes_of.iter().map(|s| crate::link::passes::PassShaders { stages: s.as_deref() }).collect();
-    let (diags, plan) = crate::link::passes::check(effect, &shaders);
+    let shaders: Vec<crate::link::graph_rules::PassShaders<'_>> =
+        syntaxes_of.iter().map(|s| crate::link::graph_rules::PassShaders { stages: s.as_deref() }).collect();
+    let (diags, plan) = crate::link::graph_rules::check(effect, &shaders);
     out.diagnostics.extend(diags);
     if let Some(plan) = &plan {
         for unit in &mut units {

@@ -56,9 +56,9 @@ pub mod attributes;
 pub mod blocks;
 pub mod declared;
 pub mod effect_uniforms;
+pub mod graph_rules;
 pub mod interface;
 pub mod names;
-pub mod passes;
 pub mod uniforms;
 pub mod values;
 
@@ -66,7 +66,7 @@ pub mod values;
 mod tests;
 
 use crate::diag::{Code, Diagnostic, Files};
-use crate::front::syntax::{Global, GlslType, Interp, StageSyntax, Target};
+use crate::front::syntax::{Global, GlslType, Interp, Referent, StageSyntax};
 use crate::stage::StageKind;
 
 /// OpenGL link rules between consecutive stages of one program, plus the program-wide
@@ -195,12 +195,12 @@ pub(crate) fn is_sampler_like(ty: &GlslType) -> bool {
 
 /// Some use in the stage refers to global `index` (for a block: any member or the instance).
 pub(crate) fn is_read(s: &StageSyntax, index: usize) -> bool {
-    s.uses.iter().any(|u| u.target == Target::Global(index))
+    s.uses.iter().any(|u| u.target == Referent::Global(index))
 }
 
 /// Some use reads member `member` of the anonymous block `index` (by its bare name).
 pub(crate) fn member_read(s: &StageSyntax, index: usize, member: &str) -> bool {
-    s.uses.iter().any(|u| u.target == Target::Global(index) && u.name == member)
+    s.uses.iter().any(|u| u.target == Referent::Global(index) && u.name == member)
 }
 
 /// `a`, `b` and `c` — names in backticks joined for prose; long lists are cut.

@@ -12,7 +12,7 @@ use std::ops::Range;
 use super::interface::{direction, Dir};
 use super::{stage_title, type_text};
 use crate::diag::{Code, Diagnostic};
-use crate::front::syntax::{BlockInfo, Global, StageSyntax, Storage, Target};
+use crate::front::syntax::{BlockInfo, Global, Referent, StageSyntax, Storage};
 
 /// Use sites of one name: span and the field accessed (`name.field`), if any.
 type Sites = Vec<(Range<usize>, Option<String>)>;
@@ -32,7 +32,7 @@ pub fn check(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
         let mut order: Vec<String> = Vec::new();
         let mut uses: HashMap<String, Sites> = HashMap::new();
         for u in &s.uses {
-            if u.target != Target::Unresolved {
+            if u.target != Referent::Unresolved {
                 continue;
             }
             let name = s.original_name(&u.name).to_string();

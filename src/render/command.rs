@@ -18,9 +18,9 @@ use crate::diag::{Code, Diagnostic, FileId};
 use crate::output::{self, write_atomic};
 use crate::render::device::Gpu;
 pub use crate::render::drawer::DEFAULT_SIZE;
-use crate::render::drawer::{build, frame_state, prepare, BuildSettings, Drawer, Variant};
+use crate::render::drawer::{build, frame_state, prepare, BuildSettings, BuildVariant, Drawer};
 use crate::render::encode;
-use crate::render::frames::{Dump, Frame, FrameError, GpuClock, Pixels, Target};
+use crate::render::frames::{Dump, Frame, FrameError, FrameTarget, GpuClock, Pixels};
 use crate::render::scene::ColorMode;
 
 /// Frames kept in memory for `--contact-sheet` / `--gif` may use at most this much.
@@ -30,7 +30,7 @@ pub const DEFAULT_FPS: f64 = 30.0;
 
 /// How time advances between frames.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Step {
+pub enum TimeStep {
     /// The manifest's `[render] fps`, else [`DEFAULT_FPS`].
     Default,
     Fps(f64),
@@ -44,7 +44,7 @@ pub struct Request {
     pub back: TranslateOptions,
     /// `None`: the manifest's `[render] frames`, else 1.
     pub frames: Option<u32>,
-    pub step: Step,
+    pub step: TimeStep,
     pub start: f64,
     /// `None`: the manifest's `[render] size`, else [`DEFAULT_SIZE`].
     pub size: Option<(u32, u32)>,
@@ -70,7 +70,7 @@ impl Request {
             input,
             back: TranslateOptions::for_rendering(true),
             frames: None,
-            step: Step::Default,
+            step: TimeStep::Default,
             start: 0.0,
             size: None,
             out: None,
@@ -147,7 +147,7 @@ pub fn run(request: &Request) -> RunResult {
             continue;
         }
         let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        let (mut drawer, file) = match build(gpu, &prepared, c, (size, mode), &request.build_settings(), Variant::default()) {
+        let (mut drawer, file) = match build(gpu, &prepared, c, (size, mode), &request.build_settings(), BuildVariant::default()) {
             Ok(d) => d,
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
@@ -156,9 +156,9 @@ pub fn run(request: &Request) -> RunResult {
         };
         outcome.diagnostics.append(drawer.warnings());
         let step = match request.step {
-            Step::Fps(f) => 1.0 / f,
-            Step::Seconds(s) => s,
-            Step::Default => 1.0 / render.fps.unwrap_or(DEFAULT_FPS),
+            TimeStep::Fps(f) => 1.0 / f,
+            TimeStep::Seconds(s) => s,
+            TimeStep::Default => 1.0 / render.fps.unwrap_or(DEFAULT_FPS),
         };
         let dir = request.out.clone().unwrap_or_else(|| Path::new("out").join(drawer.name()).join("frames"));
         let plan = FramePlan { frames, size, step, start: request.start, dir };
@@ -214,7 +214,7 @@ fn device_limit_error(gpu: &Gpu, (w, h): (u32, u32), frames: u32, request: &Requ
         return Some(Diagnostic::new(Code::RenderLimit, format!("a {w}x{h} frame exceeds the adapter's limit of {max_side} per side")));
     }
     let mode = if request.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-    let needed = Target::readback_size(w, h, mode);
+    let needed = FrameTarget::readback_size(w, h, mode);
     if needed > limits.max_buffer_size {
         return Some(Diagnostic::new(
             Code::RenderLimit,

@@ -13,8 +13,8 @@ use crate::check::{self, Outcome, Unit};
 use crate::diag::{Diagnostic, FileId};
 use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
 use crate::render::device::Gpu;
-use crate::render::frames::{self, Frame, FrameError, GpuClock, Target};
-use crate::render::passes::{GraphOptions, PassGraph, PassProgram};
+use crate::render::frames::{self, Frame, FrameError, FrameTarget, GpuClock};
+use crate::render::pass_graph::{GraphOptions, PassGraph, PassProgram};
 use crate::render::scene::{ColorMode, Scene, SceneInput};
 use crate::render::semantics::FrameState;
 
@@ -37,7 +37,7 @@ pub type Instrument<'a> = &'a dyn Fn(&Unit, &mut Translation) -> Result<(), Stri
 
 /// A checked program translated to WGSL: one unit for a single-pass program, one per
 /// running pass for a multi-pass effect.
-pub(crate) struct Prepared {
+pub(crate) struct Translated {
     /// (pass index, translation, WGSL); the index is 0 for a single-pass program.
     pub(crate) units: Vec<(usize, Translation, String)>,
     /// The pass plan of a multi-pass effect, at the frame size.
@@ -51,7 +51,7 @@ pub(crate) fn prepare(
     outcome: &mut Outcome,
     settings: &BuildSettings,
     instrument: Option<Instrument<'_>>,
-) -> Option<Prepared> {
+) -> Option<Translated> {
     if c.failed {
         return None;
     }
@@ -86,12 +86,12 @@ pub(crate) fn prepare(
         };
         units.push((unit.pass, translation, wgsl));
     }
-    (!units.is_empty()).then_some(Prepared { units, plan })
+    (!units.is_empty()).then_some(Translated { units, plan })
 }
 
 /// What draws the frames of one program.
 pub(crate) enum Drawer {
-    Single { scene: Box<Scene>, target: Box<Target> },
+    Single { scene: Box<Scene>, target: Box<FrameTarget> },
     Graph(Box<PassGraph>),
 }
 
@@ -155,7 +155,7 @@ impl Drawer {
 
 /// What a build changes from the manifest (`effectc bench`, `effectc stress`).
 #[derive(Default, Clone, Copy)]
-pub(crate) struct Variant<'a> {
+pub(crate) struct BuildVariant<'a> {
     /// Uniform values in place of the manifest's.
     pub overrides: &'a [(String, UniformValue)],
     /// A degenerate variant of the mesh.
@@ -166,13 +166,13 @@ pub(crate) struct Variant<'a> {
 /// program-wide diagnostics point at.
 pub(crate) fn build(
     gpu: &Gpu,
-    prepared: &Prepared,
+    prepared: &Translated,
     c: &check::Checked,
     (size, mode): ((u32, u32), ColorMode),
     settings: &BuildSettings,
-    variant: Variant<'_>,
+    variant: BuildVariant<'_>,
 ) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
-    let Variant { overrides, degenerate } = variant;
+    let BuildVariant { overrides, degenerate } = variant;
     let flipped_y = settings.back.flip_y;
     let with_overrides = |e: &Effect| with_overrides(e, overrides);
     match (&prepared.plan, c.multi_pass()) {
@@ -198,7 +198,7 @@ pub(crate) fn build(
             let input =
                 SceneInput { translation, wgsl, program: &unit.program, effect: effect.as_ref(), mode, flipped_y, pass: None, degenerate };
             let scene = Scene::new(gpu, &input)?;
-            let target = Target::new(gpu, &scene, size.0, size.1, mode);
+            let target = FrameTarget::new(gpu, &scene, size.0, size.1, mode);
             Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))
         }
     }

@@ -102,7 +102,7 @@ impl Timestamps {
 }
 
 /// The offscreen target frames are drawn into.
-pub struct Target {
+pub struct FrameTarget {
     pub width: u32,
     pub height: u32,
     pub mode: ColorMode,
@@ -116,8 +116,8 @@ pub struct Target {
     timestamps: Option<Timestamps>,
 }
 
-impl Target {
-    pub fn new(gpu: &Gpu, scene: &Scene, width: u32, height: u32, mode: ColorMode) -> Target {
+impl FrameTarget {
+    pub fn new(gpu: &Gpu, scene: &Scene, width: u32, height: u32, mode: ColorMode) -> FrameTarget {
         let texture = |format: wgpu::TextureFormat, usage: wgpu::TextureUsages, label: &str| {
             gpu.device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
@@ -144,12 +144,12 @@ impl Target {
         let padded_row = padded_row(width, mode);
         let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
-            size: Target::readback_size(width, height, mode),
+            size: FrameTarget::readback_size(width, height, mode),
             usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
             mapped_at_creation: false,
         });
         let timestamps = Timestamps::new(gpu);
-        Target { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps }
+        FrameTarget { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps }
     }
 
     /// How [`Frame::gpu_ms`] is measured on this target.
@@ -199,7 +199,7 @@ pub fn color_attachments(views: &[Option<wgpu::TextureView>], clear: Option<[f32
 }
 
 /// Renders one frame of `scene` for `state` into `target` and reads it back.
-pub fn render(gpu: &Gpu, scene: &mut Scene, target: &Target, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
+pub fn render(gpu: &Gpu, scene: &mut Scene, target: &FrameTarget, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
     let cpu_start = Instant::now();
     let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
     if let Err(e) = write_uniforms(gpu, scene, state) {
@@ -335,7 +335,7 @@ pub fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError>
 }
 
 /// Drops the row padding of the readback and returns the rows top first.
-fn unpad(bytes: &[u8], target: &Target) -> Pixels {
+fn unpad(bytes: &[u8], target: &FrameTarget) -> Pixels {
     let bpp = target.mode.format().block_copy_size(None).unwrap_or(4) as usize;
     let row = target.width as usize * bpp;
     let height = target.height as usize;

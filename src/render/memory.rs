@@ -3,8 +3,8 @@
 //! other uniform values, the pixels and probe counts returned in memory.
 //!
 //! Building is the expensive part on lavapipe (every pipeline is compiled by LLVM), so a
-//! caller that only changes uniform values between runs keeps one [`InMemory`] and calls
-//! [`InMemory::set_overrides`]; a changed mesh needs a new one.
+//! caller that only changes uniform values between runs keeps one [`MemoryDrawer`] and calls
+//! [`MemoryDrawer::set_overrides`]; a changed mesh needs a new one.
 
 use std::time::Duration;
 
@@ -14,12 +14,12 @@ use crate::check::{self, Outcome};
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::manifest::UniformValue;
 use crate::render::device::Gpu;
-use crate::render::drawer::{build, frame_state, prepare, with_overrides, BuildSettings, Drawer, Instrument, Variant};
+use crate::render::drawer::{build, frame_state, prepare, with_overrides, BuildSettings, BuildVariant, Drawer, Instrument};
 use crate::render::frames::{self, Frame, FrameError, GpuClock, Pixels};
 use crate::render::scene::ColorMode;
 use crate::render::uniforms;
 
-/// Frames rendered in memory by [`InMemory::render`].
+/// Frames rendered in memory by [`MemoryDrawer::render`].
 pub struct MemoryRun {
     /// Pixels per frame, top row first (RGBA8, or RGBA32F with `float`).
     pub frames: Vec<Pixels>,
@@ -33,7 +33,7 @@ pub struct MemoryRun {
     pub degenerate: Vec<(usize, String)>,
 }
 
-/// What an [`InMemory`] draws: `frames` frames at times `start + i × step`.
+/// What an [`MemoryDrawer`] draws: `frames` frames at times `start + i × step`.
 #[derive(Debug, Clone, Copy)]
 pub struct MemoryRequest {
     pub size: (u32, u32),
@@ -51,7 +51,7 @@ pub struct MemoryRequest {
 }
 
 /// A program ready to draw in memory.
-pub struct InMemory<'c> {
+pub struct MemoryDrawer<'c> {
     c: &'c check::Checked,
     m: MemoryRequest,
     /// `None` after a frame timed out: the device may still be busy with it.
@@ -69,10 +69,10 @@ pub fn render_in_memory(
     overrides: &[(String, UniformValue)],
     m: MemoryRequest,
 ) -> Option<MemoryRun> {
-    InMemory::new(gpu, c, outcome, overrides, m, None)?.render(gpu, outcome, m.start)
+    MemoryDrawer::new(gpu, c, outcome, overrides, m, None)?.render(gpu, outcome, m.start)
 }
 
-impl<'c> InMemory<'c> {
+impl<'c> MemoryDrawer<'c> {
     /// Translates and builds the program with `overrides`, the translations changed by
     /// `instrument` first. Problems go to `outcome`.
     pub fn new(
@@ -86,8 +86,8 @@ impl<'c> InMemory<'c> {
         let settings = BuildSettings { back: TranslateOptions::for_rendering(true), size: Some(m.size), dump_targets: false };
         let prepared = prepare(c, outcome, &settings, instrument)?;
         let mode = if m.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
-        match build(gpu, &prepared, c, (m.size, mode), &settings, Variant { overrides, degenerate: m.degenerate }) {
-            Ok((drawer, file)) => Some(InMemory { c, m, drawer: Some(drawer), file }),
+        match build(gpu, &prepared, c, (m.size, mode), &settings, BuildVariant { overrides, degenerate: m.degenerate }) {
+            Ok((drawer, file)) => Some(MemoryDrawer { c, m, drawer: Some(drawer), file }),
             Err(diags) => {
                 outcome.diagnostics.extend(diags);
                 None

@@ -11,7 +11,7 @@
 //! - [`scene`]: everything one effect needs on the GPU.
 //! - [`frames`]: drawing one frame into an offscreen target and reading it back, with a
 //!   timeout.
-//! - [`passes`]: a multi-pass effect: one scene per pass that reaches the output, targets
+//! - [`pass_graph`]: a multi-pass effect: one scene per pass that reaches the output, targets
 //!   shared when lifetimes allow, all passes in one submission per frame.
 //! - [`encode`], [`compare`]: PNG, contact sheet, GIF, NaN/Inf masks; reference-image
 //!   comparison for pixel tests.
@@ -27,7 +27,7 @@ pub mod drawer;
 pub mod encode;
 pub mod frames;
 pub mod memory;
-pub mod passes;
+pub mod pass_graph;
 pub mod scene;
 pub mod semantics;
 pub mod uniforms;

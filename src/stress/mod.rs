@@ -30,7 +30,7 @@ use crate::render::command;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::Pixels;
-use crate::render::memory::{InMemory, MemoryRequest, MemoryRun};
+use crate::render::memory::{MemoryDrawer, MemoryRequest, MemoryRun};
 use crate::stage::StageKind;
 use crate::stress::culprit::{Instrumented, Probe, StageCounts, COUNTS_BUFFER};
 
@@ -206,14 +206,14 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
     // Built once for every case that only changes uniform values or time. The pixels come
     // from the plain program: the instrumented one computes the same values, but the
     // driver compiles it differently and may fold a NaN another way.
-    let mut plain = InMemory::new(gpu, c, outcome, &[], plain_request, None)?;
+    let mut plain = MemoryDrawer::new(gpu, c, outcome, &[], plain_request, None)?;
     let (mut instrumented, probes) = Probed::build(gpu, c, outcome, &[], plain_request)?;
     for case in cases(effect, request.samples, request.seed) {
         // A case that cannot render (a timeout, a device error) is reported by the render path.
         let (run, probed) = match case.degenerate {
             Some(d) => {
                 let m = MemoryRequest { degenerate: Some(d), ..plain_request };
-                let run = InMemory::new(gpu, c, outcome, &case.overrides, m, None)?.render(gpu, outcome, case.time)?;
+                let run = MemoryDrawer::new(gpu, c, outcome, &case.overrides, m, None)?.render(gpu, outcome, case.time)?;
                 if run.degenerate.is_empty() {
                     // No mesh the program reads is changed by this variant: nothing to learn.
                     continue;
@@ -286,7 +286,7 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
 }
 
 /// One frame of a built program with the case's uniform values, at its time.
-fn render_case(gpu: &Gpu, program: &mut InMemory<'_>, case: &Case, outcome: &mut Outcome) -> Option<MemoryRun> {
+fn render_case(gpu: &Gpu, program: &mut MemoryDrawer<'_>, case: &Case, outcome: &mut Outcome) -> Option<MemoryRun> {
     if let Err(e) = program.set_overrides(&case.overrides) {
         outcome.diagnostics.push(Diagnostic::new(Code::PipelineRejected, e));
         return None;
@@ -393,7 +393,7 @@ impl Probed {
         outcome: &mut Outcome,
         overrides: &[(String, UniformValue)],
         m: MemoryRequest,
-    ) -> Option<(InMemory<'c>, Probed)> {
+    ) -> Option<(MemoryDrawer<'c>, Probed)> {
         let probes = std::cell::RefCell::new(Vec::new());
         let vertex = gpu.vertex_storage();
         let instrument = |unit: &check::Unit, t: &mut crate::back::Translation| {
@@ -401,7 +401,7 @@ impl Probed {
             Ok(())
         };
         let m = MemoryRequest { read_back: Some(COUNTS_BUFFER), ..m };
-        let program = InMemory::new(gpu, c, outcome, overrides, m, Some(&instrument))?;
+        let program = MemoryDrawer::new(gpu, c, outcome, overrides, m, Some(&instrument))?;
         Some((program, Probed(probes.into_inner())))
     }
 

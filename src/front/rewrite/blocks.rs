@@ -9,7 +9,7 @@ use super::varyings::matrix_shape;
 use super::Ctx;
 use crate::front::limitation::Limitation;
 use crate::front::plan::STRUCT_ALIGN_FILLER;
-use crate::front::syntax::{Storage, Target};
+use crate::front::syntax::{Referent, Storage};
 
 impl Ctx<'_> {
     /// Sampler members leave struct definitions (they became their own bindings); structs
@@ -179,7 +179,7 @@ impl Ctx<'_> {
             return;
         }
         for u in &s.uses {
-            let Target::Global(gi) = u.target else { continue };
+            let Referent::Global(gi) = u.target else { continue };
             let b = s.globals[gi].block.as_ref();
             let span = match (&u.field, b.and_then(|b| b.instance.as_ref())) {
                 (Some((field, dot)), Some(_)) if row_major.iter().any(|(g, m)| *g == gi && m == field) => dot.clone(),

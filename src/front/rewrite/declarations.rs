@@ -10,7 +10,7 @@ use super::varyings::{is_fragment_output, is_vertex_input, LocationAllocator};
 use super::{Ctx, USER_BUFFER_SET, USER_COUNTER_SET, USER_IMAGE_SET, USER_UNIFORM_SET};
 use crate::diag::{Code, Diagnostic};
 use crate::front::plan::{is_unblocked_opaque, location_slots, struct_text};
-use crate::front::syntax::{Storage, Target};
+use crate::front::syntax::{Referent, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -28,7 +28,7 @@ impl Ctx<'_> {
         let mut fragment_outputs = LocationAllocator::new(
             s.globals.iter().filter(|g| is_fragment_output(s, g.storage)).filter_map(|g| g.location.map(|l| (l, location_slots(&g.ty, s)))),
         );
-        if s.stage == StageKind::Fragment && s.uses.iter().any(|u| u.name == "gl_FragColor" && u.target == Target::Unresolved) {
+        if s.stage == StageKind::Fragment && s.uses.iter().any(|u| u.name == "gl_FragColor" && u.target == Referent::Unresolved) {
             fragment_outputs.reserve(0, 1);
         }
         for (_, idxs) in by_decl {

@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use super::{Ctx, OTHER_STAGE_PREFIX};
 use crate::front::plan::{block_size_align, UNIFORM_BLOCK};
-use crate::front::syntax::{dims_text, Storage, Target};
+use crate::front::syntax::{dims_text, Referent, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -67,7 +67,7 @@ impl Ctx<'_> {
                 }
             }
         }
-        let unresolved = |n: &str| s.uses.iter().any(|u| u.name == n && u.target == Target::Unresolved);
+        let unresolved = |n: &str| s.uses.iter().any(|u| u.name == n && u.target == Referent::Unresolved);
         if s.stage == StageKind::Fragment && unresolved("gl_FragColor") {
             h.push_str("layout(location = 0) out vec4 effectc_FragColor;\n");
         }
@@ -75,7 +75,7 @@ impl Ctx<'_> {
             let mut ks: Vec<i64> = s
                 .uses
                 .iter()
-                .filter(|u| u.name == "gl_FragData" && u.target == Target::Unresolved)
+                .filter(|u| u.name == "gl_FragData" && u.target == Referent::Unresolved)
                 .filter_map(|u| u.index.as_ref().and_then(|i| i.2))
                 .collect();
             ks.sort();

@@ -8,7 +8,7 @@ use super::Ctx;
 use crate::diag::{Code, Diagnostic};
 use crate::front::limitation::Limitation;
 use crate::front::plan::Repr;
-use crate::front::syntax::{GlslType, Storage, Target};
+use crate::front::syntax::{GlslType, Referent, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -16,7 +16,7 @@ impl Ctx<'_> {
         let s = self.s;
         for u in &s.uses {
             match &u.target {
-                Target::Global(gi) => {
+                Referent::Global(gi) => {
                     let g = &s.globals[*gi];
                     if g.storage != Storage::Uniform || g.block.is_some() {
                         continue;
@@ -52,7 +52,7 @@ impl Ctx<'_> {
                         self.member_use(u, &g.name);
                     }
                 }
-                Target::Param(fi, pi) => {
+                Referent::Param(fi, pi) => {
                     let p = &s.functions[*fi].params[*pi];
                     let name = p.name.clone().unwrap_or_default();
                     let text = if u.user_call_arg {
@@ -62,7 +62,7 @@ impl Ctx<'_> {
                     };
                     self.edits.replace(u.span.clone(), text);
                 }
-                Target::Unresolved => {
+                Referent::Unresolved => {
                     if self.limitation.is_none() && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version) {
                         // naga reports these unevenly ("unknown variable", or a field
                         // lookup failing on `gl_BaryCoordEXT.x`): decide before asking it.
@@ -101,7 +101,7 @@ impl Ctx<'_> {
             }
         }
         for u in &s.uses {
-            let Target::Global(gi) = u.target else { continue };
+            let Referent::Global(gi) = u.target else { continue };
             let Some((field, dot)) = &u.field else { continue };
             if let Some((_, _, new)) = renamed.iter().find(|(g, m, _)| *g == gi && m == field) {
                 if s.text.get(dot.clone()).is_some_and(|t| t.ends_with(field.as_str())) {

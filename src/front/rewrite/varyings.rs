@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use super::Ctx;
 use crate::front::plan::location_slots;
-use crate::front::syntax::{dims_text, StageSyntax, Storage, Target};
+use crate::front::syntax::{dims_text, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -102,7 +102,7 @@ impl Ctx<'_> {
     pub(super) fn insert_main_hooks(&mut self) {
         let Some(body) = self.s.main_body.clone() else { return };
         let s = self.s;
-        if s.stage == StageKind::Vertex && !s.uses.iter().any(|u| u.name == "gl_Position" && u.target == Target::Unresolved) {
+        if s.stage == StageKind::Vertex && !s.uses.iter().any(|u| u.name == "gl_Position" && u.target == Referent::Unresolved) {
             // A vertex stage may leave `gl_Position` unwritten (a geometry stage or transform
             // feedback follows); naga's entry point needs the output.
             self.prologue.push_str(" gl_Position = vec4(0.0);");

@@ -17,7 +17,7 @@ mod nodes;
 mod parse;
 mod types;
 
-pub use model::{BlockInfo, Call, DefaultDecl, Function, Global, Member, Param, StageSyntax, StructDef, Swizzle, Target, Use};
+pub use model::{BlockInfo, Call, DefaultDecl, Function, Global, Member, Param, Referent, StageSyntax, StructDef, Swizzle, Use};
 pub use nodes::expr_text;
 pub use parse::analyse;
 pub use types::{dims_text, sampler_parts, GlslType, Interp, Storage};

@@ -99,7 +99,7 @@ pub struct Param {
 
 /// What an identifier use refers to.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub enum Target {
+pub enum Referent {
     /// Index into [`StageSyntax::globals`].
     Global(usize),
     /// An opaque (sampler) parameter: function index, parameter index.
@@ -112,7 +112,7 @@ pub enum Target {
 #[derive(Debug, Clone)]
 pub struct Use {
     pub name: String,
-    pub target: Target,
+    pub target: Referent,
     pub span: Range<usize>,
     /// `name[index]`: span of the whole bracket expression, of the index, and its value
     /// when it is an integer literal.

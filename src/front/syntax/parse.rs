@@ -10,7 +10,7 @@ use glsl_lang::parse::DefaultParse;
 
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::syntax::collect::Collector;
-use crate::front::syntax::model::{StageSyntax, Target};
+use crate::front::syntax::model::{Referent, StageSyntax};
 use crate::front::syntax::types::Storage;
 use crate::front::version::{self, Renames};
 use crate::stage::StageKind;
@@ -222,6 +222,6 @@ fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
     });
     layout_vulkan
         || separate
-        || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Target::Unresolved)
+        || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Referent::Unresolved)
         || original.contains("GL_KHR_vulkan_glsl")
 }

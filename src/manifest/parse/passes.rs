@@ -2,7 +2,7 @@
 //!
 //! Only the shape of each entry is checked here. Whether the graph holds together (targets
 //! that exist, read after written, no cycles, formats that fit the samplers and outputs)
-//! needs the shaders too and is checked in `link::passes`.
+//! needs the shaders too and is checked in `link::graph_rules`.
 
 use std::ops::Range;
 

@@ -7,7 +7,7 @@ use std::ops::Range;
 use glsl_lang::ast;
 
 use super::Collector;
-use crate::front::syntax::model::{Call, Swizzle, Target, Use};
+use crate::front::syntax::model::{Call, Referent, Swizzle, Use};
 use crate::front::syntax::nodes::span_of;
 
 impl Collector<'_> {
@@ -26,7 +26,7 @@ impl Collector<'_> {
         }
     }
 
-    fn resolve(&self, name: &str) -> Target {
+    fn resolve(&self, name: &str) -> Referent {
         for scope in self.scopes.iter().rev() {
             if scope.contains_key(name) {
                 // Locals and parameters: only opaque parameters matter to the rewrite.
@@ -36,16 +36,16 @@ impl Collector<'_> {
                         // A parameter is only visible from the function's outermost scope;
                         // an inner local of the same name shadows it.
                         if std::ptr::eq(scope, &self.scopes[0]) && func.params[pi].ty.is_sampler() {
-                            return Target::Param(*f, pi);
+                            return Referent::Param(*f, pi);
                         }
                     }
                 }
-                return Target::Unresolved;
+                return Referent::Unresolved;
             }
         }
         // Globals: the last declaration of that name (redeclaration is an error naga reports).
         if let Some(i) = self.s.globals.iter().rposition(|g| g.name == name && g.block.is_none()) {
-            return Target::Global(i);
+            return Referent::Global(i);
         }
         // Members of anonymous blocks are globals too.
         if let Some(i) = self
@@ -54,13 +54,13 @@ impl Collector<'_> {
             .iter()
             .rposition(|g| g.block.as_ref().is_some_and(|b| b.instance.is_none() && b.members.iter().any(|m| m.name == name)))
         {
-            return Target::Global(i);
+            return Referent::Global(i);
         }
         // Instance names of blocks.
         if let Some(i) = self.s.globals.iter().rposition(|g| g.block.as_ref().is_some_and(|b| b.instance.as_deref() == Some(name))) {
-            return Target::Global(i);
+            return Referent::Global(i);
         }
-        Target::Unresolved
+        Referent::Unresolved
     }
 
     fn record(
@@ -75,7 +75,7 @@ impl Collector<'_> {
         let in_function = self.current_function.as_ref().map(|(n, _)| n.clone());
         // Locals are resolved (Unresolved with a scope hit) — only record what matters.
         let is_local = self.scopes.iter().any(|s| s.contains_key(&name));
-        if is_local && !matches!(target, Target::Param(..)) {
+        if is_local && !matches!(target, Referent::Param(..)) {
             return;
         }
         let span = span_of(id);
