@@ -87,6 +87,7 @@ codes! {
     InterfaceBlockMismatch => "E0211", "interface blocks of the same name differ",
     GeometryInputNotArray => "E0212", "geometry input is not an array",
     EsOutputLocation => "E0213", "GLSL ES fragment output without a location beside others",
+    GeometryLayout => "E0214", "geometry stage layout missing, conflicting or out of range",
     UniformUndeclared => "E0220", "manifest uniform is not declared by any stage",
     UniformDefaultType => "E0221", "manifest default does not fit the declared type",
     SemanticType => "E0222", "semantic does not fit the declared type",

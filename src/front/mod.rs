@@ -8,6 +8,7 @@
 //!   `debugPrintfEXT`, explicit arithmetic types, buffer references).
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
 //! - [`edits`]: text edits with an offset map back to the user's file.
+//! - [`geometry_layout`]: a geometry stage's primitives, `max_vertices` and invocations.
 //! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
 //! - [`limitation`]: a legal construct naga cannot take (the stage is checked, not translated).
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
@@ -16,6 +17,7 @@
 pub mod builtins;
 pub mod conditionals;
 pub mod edits;
+pub mod geometry_layout;
 pub mod includes;
 pub mod lexical;
 pub mod limitation;

@@ -34,6 +34,7 @@
 //! | `E0211` | error    | interface blocks of the same block name differ (members, order, types, qualifiers, array size, location) |
 //! | `E0212` | error    | a geometry-stage input is not an array |
 //! | `E0213` | error    | GLSL ES 3.00+: a fragment stage with several outputs leaves one without `layout(location)` |
+//! | `E0214` | error    | a geometry stage without its input primitive, output primitive or `max_vertices`, or with two different ones |
 //! | `E0220` | error    | a `[uniforms]` entry names no declared uniform |
 //! | `E0221` | error    | a `[uniforms]` default does not fit the declared type |
 //! | `E0222` | error    | a `semantic` provides a type the uniform is not declared with |
@@ -80,10 +81,31 @@ pub fn check_interface(stages: &[StageSyntax]) -> Vec<Diagnostic> {
     }
     for s in &graphics {
         es_fragment_output_locations(s, &mut out);
+        geometry_layout(s, &mut out);
     }
     names::check(&graphics, &mut out);
     uniforms::check(&graphics, &mut out);
     out
+}
+
+/// GLSL §4.4.1.2/§4.4.2.2: a geometry stage declares its input primitive, its output
+/// primitive and `max_vertices` (once, or the same each time); glslang refuses to link
+/// without them, and effectc's lowering needs them.
+fn geometry_layout(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
+    if s.stage != StageKind::Geometry {
+        return;
+    }
+    if let Err(problem) = crate::front::geometry_layout::geometry_layout(s) {
+        let mut d = Diagnostic::new(Code::GeometryLayout, problem.message);
+        d = match problem.span {
+            Some(span) => d.at(s.file, span, "this declaration"),
+            None => d.in_file(s.file),
+        };
+        if let Some(example) = problem.example {
+            d = d.with_help(format!("declare it before `main`, e.g. `{example}`"));
+        }
+        out.push(d.with_note("a geometry stage says what primitive it takes, what it emits, and at most how many vertices"));
+    }
 }
 
 /// GLSL ES 3.00 §4.3.8.2: with more than one fragment output, every one needs a location
