@@ -76,7 +76,15 @@ pub fn compile(
                     .in_file(s.file)
                     .with_note("naga and WGSL have no geometry or tessellation stages, so it is not validated by naga"),
             );
-            compiled.push(CompiledStage { syntax: s, rewritten: None, naga: None, limitation: None });
+            // A geometry stage is still rewritten to 4.50 (the shared uniform block, the
+            // plan's locations, sampler splits): it is what the geometry lowering starts from.
+            let rewritten = (s.stage == StageKind::Geometry).then(|| {
+                let (rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
+                diags.extend(rdiags);
+                dump_rewrite(files, &s, &rewritten);
+                rewritten
+            });
+            compiled.push(CompiledStage { syntax: s, rewritten, naga: None, limitation: None });
             continue;
         };
         let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
@@ -102,11 +110,7 @@ pub fn compile(
                 outcome = run(&rewritten, &rdiags);
             }
         }
-        if let Some(dir) = std::env::var_os("EFFECTC_DUMP_REWRITE") {
-            // Debugging aid: the 4.50 text naga sees.
-            let name = std::path::Path::new(files.path(s.file)).file_name().map(|n| n.to_os_string()).unwrap_or_default();
-            let _ = std::fs::write(std::path::Path::new(&dir).join(name), &rewritten.text);
-        }
+        dump_rewrite(files, &s, &rewritten);
         diags.extend(rdiags);
         let mut limitation = None;
         let naga = match outcome {
@@ -137,6 +141,15 @@ pub fn compile(
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation });
     }
     Some(CompiledProgram { stages: compiled, plan })
+}
+
+/// Debugging aid: with `EFFECTC_DUMP_REWRITE=DIR`, the 4.50 text of each stage is written
+/// to DIR under the stage file's name.
+fn dump_rewrite(files: &Files, s: &StageSyntax, rewritten: &Rewritten) {
+    if let Some(dir) = std::env::var_os("EFFECTC_DUMP_REWRITE") {
+        let name = std::path::Path::new(files.path(s.file)).file_name().map(|n| n.to_os_string()).unwrap_or_default();
+        let _ = std::fs::write(std::path::Path::new(&dir).join(name), &rewritten.text);
+    }
 }
 
 /// Scalar swizzles are GLSL 4.20 (and Vulkan GLSL, which is 4.50).
