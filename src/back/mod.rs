@@ -4,6 +4,8 @@
 //! the stages into one module ([`merge`]) → make interpolation explicit and map GL clip
 //! depth to WebGPU's ([`fixes`]) → leave out what nothing uses ([`prune`]) → validate →
 //! reflect ([`reflect`]). Each target writer takes only the validated module.
+//! [`geometry`] folds a geometry stage into the vertex stage (a vertex-stage text naga
+//! parses); it is not yet wired into translation, which still stops at E0303.
 //!
 //! | code  | meaning |
 //! |-------|---------|
@@ -15,6 +17,7 @@
 //! | E0306 | a target cannot express the program (e.g. `noperspective` in GLSL ES 3.00) |
 
 pub mod fixes;
+pub mod geometry;
 mod glsl_es;
 mod hlsl;
 pub mod ir_text;

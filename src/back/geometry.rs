@@ -1,0 +1,400 @@
+//! Geometry stages folded into the vertex stage: the vertex and geometry stages' 4.50 texts
+//! become one vertex-stage text that naga parses like any other (naga and WebGPU have no
+//! geometry stage).
+//!
+//! The draw has [`GeometryLayout::slots_per_primitive`] vertices per input primitive. Each
+//! invocation finds its primitive and the corner of the output primitive it draws from
+//! `gl_VertexIndex`, pulls the primitive's vertices from two read-only storage buffers
+//! ([`INDEX_BUFFER`], [`VERTEX_BUFFER`]: one `vec4` per vertex input per vertex), runs the
+//! vertex stage once per corner of the input primitive, then the geometry stage, whose
+//! `EmitVertex()` keeps the last three emitted vertices and captures the invocation's own.
+//! Strips become lists in GL's order (odd triangles keep GL's winding); a slot no strip
+//! fills lies outside the clip volume and draws nothing, so `max_vertices` holds and the
+//! primitives rasterize in input order.
+//!
+//! Every global and function of the two stages is renamed apart (`effectc_vs_…`,
+//! `effectc_gs_…`); uniforms, textures and samplers keep their names and the vertex stage's
+//! declarations (the front gave both stages the same ones).
+//!
+//! Not lowered yet (an error naming the construct): adjacency inputs, output blocks without
+//! an instance name, array or matrix varyings, integer vertex inputs, `gl_Layer` and
+//! `gl_ViewportIndex`.
+
+use std::fmt::Write as _;
+use std::ops::Range;
+
+use crate::diag::FileId;
+use crate::front::edits::Edits;
+use crate::front::geometry_layout::{GeometryLayout, InputPrimitive, OutputPrimitive};
+use crate::front::syntax::{self, Global, GlslType, Referent, StageSyntax, Storage};
+use crate::stage::StageKind;
+
+/// Name of the storage buffer of vertex indices (three, two or one per input primitive).
+pub const INDEX_BUFFER: &str = "EffectcIndices";
+/// Name of the storage buffer of vertex inputs: `vec4` per input (in location order) per vertex.
+pub const VERTEX_BUFFER: &str = "EffectcVertices";
+
+/// The lowered vertex stage and what drawing it needs.
+#[derive(Debug, Clone)]
+pub struct Lowered {
+    /// GLSL 4.50 vertex-stage text.
+    pub text: String,
+    pub layout: GeometryLayout,
+    /// The vertex stage's inputs in the order of their `vec4`s in [`VERTEX_BUFFER`]:
+    /// (location, name as the user wrote it, components).
+    pub vertex_inputs: Vec<(u32, String, u32)>,
+}
+
+/// Folds `gs` (a geometry stage's 4.50 text) into `vs` (the vertex stage's).
+pub fn lower(vs: &str, gs: &str, layout: GeometryLayout) -> Result<Lowered, String> {
+    if matches!(layout.input, InputPrimitive::LinesAdjacency | InputPrimitive::TrianglesAdjacency) {
+        return Err(format!("a `{}` geometry input (adjacency is not lowered)", layout.input.name()));
+    }
+    let v = syntax::analyse(FileId(0), vs, StageKind::Vertex).map_err(|_| "the rewritten vertex stage does not parse".to_string())?;
+    let g = syntax::analyse(FileId(0), gs, StageKind::Geometry).map_err(|_| "the rewritten geometry stage does not parse".to_string())?;
+    let corners = layout.input.vertices();
+    let mut header = String::from("#version 450\n");
+    let vs_part = Part::new(&v, "effectc_vs_", None)?;
+    let shared: Vec<&str> = v.globals.iter().filter(|x| is_shared(x)).map(|x| x.name.as_str()).collect();
+    let gs_part = Part::new(&g, "effectc_gs_", Some((&shared, corners)))?;
+    let vertex_inputs = vs_part.inputs.clone();
+    writeln!(header, "layout(std430, set = 0, binding = 14) readonly buffer {INDEX_BUFFER} {{ uint effectc_index[]; }};").unwrap();
+    writeln!(header, "layout(std430, set = 0, binding = 15) readonly buffer {VERTEX_BUFFER} {{ vec4 effectc_vertex[]; }};").unwrap();
+    header.push_str("struct effectc_PerVertex { vec4 gl_Position; float gl_PointSize; };\n");
+    writeln!(header, "effectc_PerVertex effectc_gl_in[{corners}];").unwrap();
+    header.push_str("vec4 effectc_vs_Position; float effectc_vs_PointSize; vec4 effectc_gs_Position; float effectc_gs_PointSize;\n");
+    header.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
+    header.push_str(&vs_part.declarations);
+    header.push_str(&gs_part.declarations);
+    let mut text = header;
+    text.push_str(&vs_part.body);
+    text.push('\n');
+    text.push_str(&capture(&gs_part, layout.output));
+    text.push_str(&gs_part.body);
+    text.push('\n');
+    text.push_str(&driver(&vs_part, &gs_part, layout)?);
+    Ok(Lowered { text, layout, vertex_inputs })
+}
+
+/// One stage's text with its interface made private and its names prefixed.
+struct Part {
+    prefix: &'static str,
+    /// Private declarations of the interface (and struct types for its blocks).
+    declarations: String,
+    /// The stage's text after the edits (without `#version`).
+    body: String,
+    /// Vertex stage: its inputs (location, user name, components).
+    inputs: Vec<(u32, String, u32)>,
+    /// Outputs: (location, prefixed name, type, interpolation qualifier, block members).
+    outputs: Vec<Varying>,
+    /// Geometry stage: its inputs, as `outputs`.
+    ins: Vec<Varying>,
+}
+
+/// A varying made private: where it was, what it is now called, its type.
+#[derive(Clone)]
+struct Varying {
+    location: u32,
+    name: String,
+    ty: GlslType,
+    interp: String,
+    /// For a block: its members (name, type, interpolation qualifier).
+    members: Vec<(String, GlslType, String)>,
+}
+
+impl Part {
+    /// `geometry`: the vertex stage's shared declarations (dropped here) and `gl_in`'s length.
+    fn new(s: &StageSyntax, prefix: &'static str, geometry: Option<(&[&str], u32)>) -> Result<Part, String> {
+        let text = &s.text;
+        let mut edits = Edits::new();
+        let mut part =
+            Part { prefix, declarations: String::new(), body: String::new(), inputs: Vec::new(), outputs: Vec::new(), ins: Vec::new() };
+        if let Some(start) = text.find("#version") {
+            let end = text[start..].find('\n').map_or(text.len(), |e| start + e);
+            edits.delete(start..end);
+        }
+        for d in &s.defaults {
+            if geometry.is_some() && matches!(d.storage, Some(Storage::In | Storage::Out)) {
+                edits.delete(d.span.clone());
+            }
+        }
+        let mut deleted: Vec<Range<usize>> = Vec::new();
+        let mut delete = |edits: &mut Edits, span: &Range<usize>| {
+            if !deleted.iter().any(|d| d.start < span.end && span.start < d.end) {
+                edits.delete(span.clone());
+                deleted.push(span.clone());
+            }
+        };
+        for g in &s.globals {
+            let renamed = format!("{prefix}{}", g.name);
+            match g.storage {
+                _ if is_shared(g) => {
+                    if geometry.is_some_and(|(shared, _)| shared.contains(&g.name.as_str())) {
+                        delete(&mut edits, &g.decl_span);
+                    }
+                    continue;
+                }
+                Storage::In | Storage::Attribute if geometry.is_none() => {
+                    let components = components(&g.ty).ok_or_else(|| format!("vertex input `{}` of type `{}`", g.name, g.ty.base))?;
+                    part.inputs.push((g.location.unwrap_or(u32::MAX), g.name.clone(), components));
+                    writeln!(part.declarations, "{} {renamed};", g.ty.base).unwrap();
+                    delete(&mut edits, &g.decl_span);
+                }
+                Storage::In | Storage::Out | Storage::Varying => {
+                    let varying = private_varying(g, &renamed, geometry.map(|(_, n)| n), &mut part.declarations)?;
+                    if g.storage == Storage::Out || (g.storage == Storage::Varying && geometry.is_none()) {
+                        part.outputs.push(varying);
+                    } else {
+                        part.ins.push(varying);
+                    }
+                    delete(&mut edits, &g.decl_span);
+                }
+                _ => edits.replace(g.name_span.clone(), renamed),
+            }
+        }
+        part.inputs.sort_by_key(|(location, _, _)| *location);
+        let stage_word = if geometry.is_some() { "gs" } else { "vs" };
+        for u in &s.uses {
+            match &u.target {
+                Referent::Global(i) if !is_shared(&s.globals[*i]) => edits.replace(u.span.clone(), format!("{prefix}{}", u.name)),
+                Referent::Unresolved => match u.name.as_str() {
+                    "gl_Position" | "gl_PointSize" => edits.replace(u.span.clone(), format!("effectc_{stage_word}_{}", &u.name[3..])),
+                    "gl_in" => edits.replace(u.span.clone(), "effectc_gl_in"),
+                    "gl_PrimitiveIDIn" | "gl_InvocationID" => edits.replace(u.span.clone(), format!("effectc_{}", &u.name[3..])),
+                    "gl_VertexID" | "gl_VertexIndex" => edits.replace(u.span.clone(), "effectc_VertexID"),
+                    "gl_InstanceID" | "gl_InstanceIndex" => edits.replace(u.span.clone(), "effectc_InstanceID"),
+                    "gl_Layer" | "gl_ViewportIndex" | "gl_PrimitiveID" => return Err(format!("`{}` written by a geometry stage", u.name)),
+                    _ => {}
+                },
+                _ => {}
+            }
+        }
+        let user_functions: Vec<&str> = s.functions.iter().map(|f| f.name.as_str()).collect();
+        for f in s.functions.iter().filter(|f| f.is_definition || f.name != "main") {
+            let name_at = find_name(text, &f.span, &f.name).ok_or_else(|| format!("the definition of `{}`", f.name))?;
+            edits.replace(name_at..name_at + f.name.len(), format!("{prefix}{}", f.name));
+        }
+        for c in &s.calls {
+            match c.name.as_str() {
+                "EmitVertex" if geometry.is_some() => edits.replace(c.span.clone(), "effectc_emit()"),
+                "EndPrimitive" if geometry.is_some() => edits.replace(c.span.clone(), "effectc_end_primitive()"),
+                name if user_functions.contains(&name) => edits.replace(c.name_span.clone(), format!("{prefix}{name}")),
+                _ => {}
+            }
+        }
+        part.body = edits.apply(text).0;
+        Ok(part)
+    }
+}
+
+/// Uniforms, textures and samplers: shared by the stages, kept under their names.
+fn is_shared(g: &Global) -> bool {
+    matches!(g.storage, Storage::Uniform | Storage::Buffer)
+}
+
+/// Components of a float vertex input (`float` 1 … `vec4` 4).
+fn components(ty: &GlslType) -> Option<u32> {
+    if ty.is_array() {
+        return None;
+    }
+    match ty.base.as_str() {
+        "float" => Some(1),
+        "vec2" => Some(2),
+        "vec3" => Some(3),
+        "vec4" => Some(4),
+        _ => None,
+    }
+}
+
+/// Declares a varying as a private global (a struct for a block; an array of `corners` for
+/// a geometry input) and describes it.
+fn private_varying(g: &Global, renamed: &str, corners: Option<u32>, out: &mut String) -> Result<Varying, String> {
+    let interp = g.interp.map(|i| format!("{i:?}").to_lowercase()).unwrap_or_default();
+    let array = match (corners, g.storage) {
+        (Some(n), Storage::In) => format!("[{n}]"),
+        _ if g.ty.is_array() || g.block.as_ref().is_some_and(|b| !b.instance_dims.is_empty()) => {
+            return Err(format!("the array varying `{}`", g.name))
+        }
+        _ => String::new(),
+    };
+    let location = g.location.ok_or_else(|| format!("the varying `{}` without a location", g.name))?;
+    match &g.block {
+        None => {
+            let ty = if corners.is_some() && g.storage == Storage::In { g.ty.element() } else { g.ty.clone() };
+            if components(&ty).is_none()
+                && !matches!(ty.base.as_str(), "int" | "uint" | "ivec2" | "ivec3" | "ivec4" | "uvec2" | "uvec3" | "uvec4")
+            {
+                return Err(format!("the varying `{}` of type `{}`", g.name, ty.base));
+            }
+            writeln!(out, "{} {renamed}{array};", ty.base).unwrap();
+            Ok(Varying { location, name: renamed.to_string(), ty, interp, members: Vec::new() })
+        }
+        Some(b) => {
+            let Some(instance) = &b.instance else { return Err(format!("the block `{}` without an instance name", b.block_name)) };
+            // Uses name the instance; the struct takes the block's name, both prefixed.
+            let prefix = &renamed[..renamed.len() - g.name.len()];
+            let (struct_name, renamed) = (format!("{prefix}{}", b.block_name), format!("{prefix}{instance}"));
+            let mut members = Vec::new();
+            write!(out, "struct {struct_name} {{").unwrap();
+            for m in &b.members {
+                if m.ty.is_array() || m.ty.base.starts_with("mat") {
+                    return Err(format!("the block member `{}.{}`", b.block_name, m.name));
+                }
+                write!(out, " {} {};", m.ty.base, m.name).unwrap();
+                members.push((m.name.clone(), m.ty.clone(), m.interp.map(|i| format!("{i:?}").to_lowercase()).unwrap_or_default()));
+            }
+            writeln!(out, " }};\n{struct_name} {renamed}{array};").unwrap();
+            Ok(Varying { location, name: renamed.to_string(), ty: GlslType::scalar(&struct_name), interp, members })
+        }
+    }
+}
+
+/// Where `name` is written in the definition at `span`: the first `name` followed by `(`.
+fn find_name(text: &str, span: &Range<usize>, name: &str) -> Option<usize> {
+    let body = &text[span.clone()];
+    let mut from = 0;
+    while let Some(i) = body[from..].find(name) {
+        let at = from + i;
+        let before_ok = at == 0 || !body.as_bytes()[at - 1].is_ascii_alphanumeric() && body.as_bytes()[at - 1] != b'_';
+        let after = body[at + name.len()..].trim_start();
+        if before_ok && after.starts_with('(') {
+            return Some(span.start + at);
+        }
+        from = at + name.len();
+    }
+    None
+}
+
+/// `effectc_emit()` and `effectc_end_primitive()`: a ring of the last three emitted vertices
+/// and the capture of the vertex this invocation draws.
+fn capture(gs: &Part, output: OutputPrimitive) -> String {
+    let mut t = String::new();
+    t.push_str("uint effectc_want_primitive; uint effectc_want_corner; bool effectc_found;\n");
+    t.push_str("uint effectc_strip; uint effectc_made;\n");
+    t.push_str("vec4 effectc_ring_Position[3]; vec4 effectc_cap_Position;\n");
+    for o in &gs.outputs {
+        writeln!(t, "{0} effectc_ring_{1}[3]; {0} effectc_cap_{1};", o.ty.base, o.name).unwrap();
+    }
+    let n = output.list_vertices();
+    t.push_str("void effectc_emit() {\n    uint slot = effectc_strip % 3u;\n    effectc_ring_Position[slot] = effectc_gs_Position;\n");
+    for o in &gs.outputs {
+        writeln!(t, "    effectc_ring_{0}[slot] = {0};", o.name).unwrap();
+    }
+    writeln!(t, "    effectc_strip += 1u;\n    if (effectc_strip >= {n}u) {{").unwrap();
+    t.push_str("        if (effectc_made == effectc_want_primitive && !effectc_found) {\n");
+    writeln!(t, "            uint first = effectc_strip - {n}u;").unwrap();
+    t.push_str("            uint k = effectc_want_corner;\n");
+    if output == OutputPrimitive::TriangleStrip {
+        t.push_str("            if ((first & 1u) == 1u && k < 2u) { k = 1u - k; }\n");
+    }
+    t.push_str("            uint at = (first + k) % 3u;\n            effectc_cap_Position = effectc_ring_Position[at];\n");
+    for o in &gs.outputs {
+        writeln!(t, "            effectc_cap_{0} = effectc_ring_{0}[at];", o.name).unwrap();
+    }
+    t.push_str("            effectc_found = true;\n        }\n        effectc_made += 1u;\n    }\n}\n");
+    t.push_str("void effectc_end_primitive() { effectc_strip = 0u; }\n");
+    t
+}
+
+/// The real outputs (the geometry stage's, flattened at their locations) and `main`.
+fn driver(vs: &Part, gs: &Part, layout: GeometryLayout) -> Result<String, String> {
+    let mut t = String::new();
+    let mut assign = String::new();
+    for o in &gs.outputs {
+        if o.members.is_empty() {
+            writeln!(t, "layout(location = {}) {} out {} effectc_out_{};", o.location, o.interp, o.ty.base, o.location).unwrap();
+            writeln!(assign, "        effectc_out_{} = effectc_cap_{};", o.location, o.name).unwrap();
+        } else {
+            for (k, (m, ty, interp)) in o.members.iter().enumerate() {
+                let location = o.location + k as u32;
+                writeln!(t, "layout(location = {location}) {interp} out {} effectc_out_{location};", ty.base).unwrap();
+                writeln!(assign, "        effectc_out_{location} = effectc_cap_{}.{m};", o.name).unwrap();
+            }
+        }
+    }
+    let corners = layout.input.vertices();
+    let per_invocation = layout.output.max_primitives(layout.max_vertices) * layout.output.list_vertices();
+    let per_primitive = layout.slots_per_primitive();
+    writeln!(t, "void main() {{\n    uint v = uint(gl_VertexIndex);\n    uint primitive = v / {per_primitive}u;").unwrap();
+    writeln!(t, "    uint slot = v % {per_primitive}u;\n    effectc_InvocationID = int(slot / {per_invocation}u);").unwrap();
+    writeln!(
+        t,
+        "    effectc_want_primitive = (slot % {per_invocation}u) / {0}u;\n    effectc_want_corner = slot % {0}u;",
+        layout.output.list_vertices()
+    )
+    .unwrap();
+    t.push_str("    effectc_found = false; effectc_strip = 0u; effectc_made = 0u;\n");
+    t.push_str("    effectc_PrimitiveIDIn = int(primitive); effectc_InstanceID = int(gl_InstanceIndex);\n");
+    let stride = vs.inputs.len();
+    writeln!(t, "    for (uint k = 0u; k < {corners}u; k++) {{\n        uint index = effectc_index[primitive * {corners}u + k];").unwrap();
+    t.push_str("        effectc_VertexID = int(index);\n");
+    for (i, (_, name, components)) in vs.inputs.iter().enumerate() {
+        let swizzle = ["x", "xy", "xyz", "xyzw"][*components as usize - 1];
+        writeln!(t, "        {}{name} = effectc_vertex[index * {stride}u + {i}u].{swizzle};", vs.prefix).unwrap();
+    }
+    writeln!(t, "        {}main();", vs.prefix).unwrap();
+    t.push_str(
+        "        effectc_gl_in[k].gl_Position = effectc_vs_Position;\n        effectc_gl_in[k].gl_PointSize = effectc_vs_PointSize;\n",
+    );
+    for i in &gs.ins {
+        let o = vs
+            .outputs
+            .iter()
+            .find(|o| o.location == i.location)
+            .ok_or_else(|| format!("geometry input `{}` that no vertex output feeds", i.name))?;
+        if i.members.is_empty() {
+            writeln!(t, "        {}[k] = {};", i.name, o.name).unwrap();
+        } else {
+            for ((m, _, _), (vm, _, _)) in i.members.iter().zip(&o.members) {
+                writeln!(t, "        {}[k].{m} = {}.{vm};", i.name, o.name).unwrap();
+            }
+        }
+    }
+    writeln!(t, "    }}\n    {}main();\n    if (effectc_found) {{\n        gl_Position = effectc_cap_Position;", gs.prefix).unwrap();
+    t.push_str(&assign);
+    t.push_str("    } else {\n        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n    }\n}\n");
+    Ok(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fixture's vertex and geometry stages as the front rewrote them.
+    fn rewritten(dir: &str) -> (String, String, GeometryLayout) {
+        let (_, checked) = crate::check::check_inputs(&[dir.into()], None, Default::default());
+        let program = &checked[0].units[0].program;
+        let text =
+            |kind: StageKind| program.stages.iter().find(|s| s.syntax.stage == kind).unwrap().rewritten.as_ref().unwrap().text.clone();
+        let g = program.stages.iter().find(|s| s.syntax.stage == StageKind::Geometry).unwrap();
+        let layout = crate::front::geometry_layout::geometry_layout(&g.syntax).unwrap();
+        (text(StageKind::Vertex), text(StageKind::Geometry), layout)
+    }
+
+    #[test]
+    fn a_textured_explode_lowers_to_a_vertex_stage_naga_validates() {
+        let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
+        let lowered = lower(&vs, &gs, layout).unwrap_or_else(|e| panic!("{e}"));
+        let module = naga::front::glsl::Frontend::default()
+            .parse(&naga::front::glsl::Options::from(naga::ShaderStage::Vertex), &lowered.text)
+            .unwrap_or_else(|e| panic!("{}\n{}", e.emit_to_string(&lowered.text), lowered.text));
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
+            .validate(&module)
+            .unwrap_or_else(|e| panic!("{e:?}\n{}", lowered.text));
+        assert_eq!(
+            lowered.vertex_inputs.iter().map(|(l, n, c)| (*l, n.as_str(), *c)).collect::<Vec<_>>(),
+            [(0, "position", 3), (1, "uv", 2), (2, "normal", 3)]
+        );
+        let ep = &module.entry_points[0];
+        assert_eq!(ep.stage, naga::ShaderStage::Vertex);
+    }
+
+    #[test]
+    fn what_is_not_lowered_is_named() {
+        let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
+        let adjacency = GeometryLayout { input: InputPrimitive::TrianglesAdjacency, ..layout };
+        assert_eq!(lower(&vs, &gs, adjacency).unwrap_err(), "a `triangles_adjacency` geometry input (adjacency is not lowered)");
+        let layered = gs.replace("EmitVertex();", "gl_Layer = 1; EmitVertex();");
+        assert_eq!(lower(&vs, &layered, layout).unwrap_err(), "`gl_Layer` written by a geometry stage");
+    }
+}
