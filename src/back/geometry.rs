@@ -371,22 +371,35 @@ mod tests {
         (text(StageKind::Vertex), text(StageKind::Geometry), layout)
     }
 
-    #[test]
-    fn a_textured_explode_lowers_to_a_vertex_stage_naga_validates() {
-        let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
-        let lowered = lower(&vs, &gs, layout).unwrap_or_else(|e| panic!("{e}"));
+    /// naga parses and validates a lowered text as a vertex stage.
+    fn validates(name: &str, lowered: &Lowered) -> naga::Module {
         let module = naga::front::glsl::Frontend::default()
             .parse(&naga::front::glsl::Options::from(naga::ShaderStage::Vertex), &lowered.text)
-            .unwrap_or_else(|e| panic!("{}\n{}", e.emit_to_string(&lowered.text), lowered.text));
+            .unwrap_or_else(|e| panic!("{name}: {}\n{}", e.emit_to_string(&lowered.text), lowered.text));
         naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
             .validate(&module)
-            .unwrap_or_else(|e| panic!("{e:?}\n{}", lowered.text));
-        assert_eq!(
-            lowered.vertex_inputs.iter().map(|(l, n, c)| (*l, n.as_str(), *c)).collect::<Vec<_>>(),
-            [(0, "position", 3), (1, "uv", 2), (2, "normal", 3)]
-        );
-        let ep = &module.entry_points[0];
-        assert_eq!(ep.stage, naga::ShaderStage::Vertex);
+            .unwrap_or_else(|e| panic!("{name}: {e:?}\n{}", lowered.text));
+        module
+    }
+
+    #[test]
+    fn every_geometry_fixture_lowers_to_a_vertex_stage_naga_validates() {
+        // (fixture, vertex inputs (location, name, components), draw slots per input primitive)
+        type Inputs = &'static [(u32, &'static str, u32)];
+        let expected: [(&str, Inputs, u32); 3] = [
+            ("01-explode-textured", &[(0, "position", 3), (1, "uv", 2), (2, "normal", 3)], 3),
+            ("02-points-to-quads", &[(0, "position", 3), (1, "color", 4)], 6),
+            ("03-normal-lines", &[(0, "position", 3), (1, "normal", 3)], 10),
+        ];
+        for (name, inputs, slots) in expected {
+            let (vs, gs, layout) = rewritten(&format!("tests/geometry/{name}"));
+            let lowered = lower(&vs, &gs, layout).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let module = validates(name, &lowered);
+            assert_eq!(module.entry_points[0].stage, naga::ShaderStage::Vertex, "{name}");
+            let got: Vec<(u32, &str, u32)> = lowered.vertex_inputs.iter().map(|(l, n, c)| (*l, n.as_str(), *c)).collect();
+            assert_eq!(got, inputs, "{name}");
+            assert_eq!(lowered.layout.slots_per_primitive(), slots, "{name}");
+        }
     }
 
     #[test]
