@@ -115,6 +115,9 @@ pub struct LayoutProblem {
     pub span: Option<Range<usize>>,
     /// The declaration to add, for a missing item.
     pub example: Option<&'static str>,
+    /// The layout is legal GLSL, but a count is an expression effectc cannot evaluate: only
+    /// the lowering cannot proceed (the link rules have nothing to report).
+    pub unreadable: bool,
 }
 
 /// Reads the layout of geometry stage `s`. Repeated declarations must agree (GLSL).
@@ -123,11 +126,17 @@ pub fn geometry_layout(s: &StageSyntax) -> Result<GeometryLayout, LayoutProblem>
     let mut output: Option<(OutputPrimitive, Range<usize>)> = None;
     let mut max_vertices: Option<(u32, Range<usize>)> = None;
     let mut invocations: Option<(u32, Range<usize>)> = None;
+    // A count given as an expression effectc cannot evaluate: legal, but not lowerable.
+    let mut unreadable: Option<LayoutProblem> = None;
     for d in &s.defaults {
         let span = d.span.clone();
         for (name, value) in &d.layout {
-            let problem = |message: String| LayoutProblem { message, span: Some(span.clone()), example: None };
+            let problem = |message: String| LayoutProblem { message, span: Some(span.clone()), example: None, unreadable: false };
             match (d.storage, name.as_str(), value) {
+                (_, "max_vertices" | "invocations", None) => {
+                    let message = format!("`{name}` is an expression effectc cannot evaluate (write the number)");
+                    unreadable.get_or_insert(LayoutProblem { unreadable: true, ..problem(message) });
+                }
                 (Some(Storage::In), "invocations", Some(n)) => {
                     set(&mut invocations, positive(*n, "invocations", &problem)?, &span, "invocations")?
                 }
@@ -142,9 +151,6 @@ pub fn geometry_layout(s: &StageSyntax) -> Result<GeometryLayout, LayoutProblem>
                     Some(p) => set(&mut output, p, &span, "output primitive")?,
                     None => continue,
                 },
-                (_, "max_vertices" | "invocations", None) => {
-                    return Err(problem(format!("`{name}` must be a constant integer effectc can read (write the number)")))
-                }
                 _ => continue,
             }
         }
@@ -153,13 +159,15 @@ pub fn geometry_layout(s: &StageSyntax) -> Result<GeometryLayout, LayoutProblem>
         message: format!("the geometry stage declares no {what}"),
         span: None,
         example: Some(example),
+        unreadable: false,
     };
-    Ok(GeometryLayout {
-        input: input.ok_or_else(|| missing("input primitive", "layout(triangles) in;"))?.0,
-        output: output.ok_or_else(|| missing("output primitive", "layout(triangle_strip, max_vertices = 3) out;"))?.0,
-        max_vertices: max_vertices.ok_or_else(|| missing("`max_vertices`", "layout(triangle_strip, max_vertices = 3) out;"))?.0,
-        invocations: invocations.map_or(1, |(n, _)| n),
-    })
+    let input = input.ok_or_else(|| missing("input primitive", "layout(triangles) in;"))?.0;
+    let output = output.ok_or_else(|| missing("output primitive", "layout(triangle_strip, max_vertices = 3) out;"))?.0;
+    if let Some(problem) = unreadable {
+        return Err(problem);
+    }
+    let max_vertices = max_vertices.ok_or_else(|| missing("`max_vertices`", "layout(triangle_strip, max_vertices = 3) out;"))?.0;
+    Ok(GeometryLayout { input, output, max_vertices, invocations: invocations.map_or(1, |(n, _)| n) })
 }
 
 /// Records `value` for a layout item, or the conflict with an earlier declaration.
@@ -169,6 +177,7 @@ fn set<T: PartialEq + Copy>(slot: &mut Option<(T, Range<usize>)>, value: T, span
             message: format!("the {what} is declared twice with different values"),
             span: Some(span.clone()),
             example: None,
+            unreadable: false,
         }),
         _ => {
             *slot = Some((value, span.clone()));
@@ -228,6 +237,11 @@ mod tests {
             layout(&format!("#version 330\nlayout(triangles) in;\nlayout(lines) in;\nlayout(points, max_vertices = 1) out;\n{BODY}"))
                 .unwrap_err();
         assert!(twice.message.contains("declared twice") && twice.span.is_some(), "{twice:?}");
+        // A count effectc cannot evaluate is legal GLSL: marked so link leaves it alone.
+        let expr =
+            layout(&format!("#version 440\nlayout(triangles) in;\nlayout(points, max_vertices = int(4.0)) out;\n{BODY}")).unwrap_err();
+        assert!(expr.unreadable && expr.message.contains("cannot evaluate"), "{expr:?}");
+        assert!(!no_max.unreadable && !twice.unreadable, "missing and conflicting items are link errors");
         let zero = layout(&format!("#version 330\nlayout(triangles) in;\nlayout(points, max_vertices = 0) out;\n{BODY}")).unwrap_err();
         assert!(zero.message.contains("at least 1"), "{zero:?}");
     }

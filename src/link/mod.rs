@@ -95,17 +95,20 @@ fn geometry_layout(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
     if s.stage != StageKind::Geometry {
         return;
     }
-    if let Err(problem) = crate::front::geometry_layout::geometry_layout(s) {
-        let mut d = Diagnostic::new(Code::GeometryLayout, problem.message);
-        d = match problem.span {
-            Some(span) => d.at(s.file, span, "this declaration"),
-            None => d.in_file(s.file),
-        };
-        if let Some(example) = problem.example {
-            d = d.with_help(format!("declare it before `main`, e.g. `{example}`"));
-        }
-        out.push(d.with_note("a geometry stage says what primitive it takes, what it emits, and at most how many vertices"));
+    let problem = match crate::front::geometry_layout::geometry_layout(s) {
+        // A count effectc cannot evaluate is legal: only the lowering reports it.
+        Err(problem) if !problem.unreadable => problem,
+        _ => return,
+    };
+    let mut d = Diagnostic::new(Code::GeometryLayout, problem.message);
+    d = match problem.span {
+        Some(span) => d.at(s.file, span, "this declaration"),
+        None => d.in_file(s.file),
+    };
+    if let Some(example) = problem.example {
+        d = d.with_help(format!("declare it before `main`, e.g. `{example}`"));
     }
+    out.push(d.with_note("a geometry stage says what primitive it takes, what it emits, and at most how many vertices"));
 }
 
 /// GLSL ES 3.00 §4.3.8.2: with more than one fragment output, every one needs a location
