@@ -209,7 +209,7 @@ fn components(ty: &GlslType) -> Option<u32> {
 /// Declares a varying as a private global (a struct for a block; an array of `corners` for
 /// a geometry input) and describes it.
 fn private_varying(g: &Global, renamed: &str, corners: Option<u32>, out: &mut String) -> Result<Varying, String> {
-    let interp = g.interp.map(|i| format!("{i:?}").to_lowercase()).unwrap_or_default();
+    let interp = g.interp.map(|i| i.keyword().to_string()).unwrap_or_default();
     let array = match (corners, g.storage) {
         (Some(n), Storage::In) => format!("[{n}]"),
         _ if g.ty.is_array() || g.block.as_ref().is_some_and(|b| !b.instance_dims.is_empty()) => {
@@ -241,7 +241,7 @@ fn private_varying(g: &Global, renamed: &str, corners: Option<u32>, out: &mut St
                     return Err(format!("the block member `{}.{}`", b.block_name, m.name));
                 }
                 write!(out, " {} {};", m.ty.base, m.name).unwrap();
-                members.push((m.name.clone(), m.ty.clone(), m.interp.map(|i| format!("{i:?}").to_lowercase()).unwrap_or_default()));
+                members.push((m.name.clone(), m.ty.clone(), m.interp.map(|i| i.keyword().to_string()).unwrap_or_default()));
             }
             writeln!(out, " }};\n{struct_name} {renamed}{array};").unwrap();
             Ok(Varying { location, name: renamed.to_string(), ty: GlslType::scalar(&struct_name), interp, members })

@@ -8,7 +8,7 @@
 use std::collections::HashSet;
 use std::ops::Range;
 
-use super::{interp_text, same_type, stage_title, type_text};
+use super::{same_type, stage_title, type_text};
 use crate::front::syntax::{Interp, Member, StageSyntax};
 
 /// One side of a comparison: a stage and a block's (or struct's) members.
@@ -136,11 +136,11 @@ pub fn diff(a: Side, b: Side, qualifiers: bool) -> Vec<MemberDiff> {
                 qualifier: true,
                 note: format!(
                     "member `{name}` is `{}` in the {at} stage but `{}` in the {bt} stage (no qualifier means `smooth`)",
-                    interp_text(ia),
-                    interp_text(ib)
+                    ia.keyword(),
+                    ib.keyword()
                 ),
-                a: Some((ma.span.clone(), format!("`{}` here", interp_text(ia)))),
-                b: Some((mb.span.clone(), format!("`{}` here", interp_text(ib)))),
+                a: Some((ma.span.clone(), format!("`{}` here", ia.keyword()))),
+                b: Some((mb.span.clone(), format!("`{}` here", ib.keyword()))),
             });
         }
         let (ca, cb) = (a.centroid(ma), b.centroid(mb));

@@ -67,7 +67,7 @@ pub mod values;
 mod tests;
 
 use crate::diag::{Code, Diagnostic, Files};
-use crate::front::syntax::{Global, GlslType, Interp, Referent, StageSyntax};
+use crate::front::syntax::{Global, GlslType, Referent, StageSyntax};
 use crate::stage::StageKind;
 
 /// OpenGL link rules between consecutive stages of one program, plus the program-wide
@@ -195,15 +195,6 @@ pub(crate) fn same_type(a: &StageSyntax, at: &GlslType, b: &StageSyntax, bt: &Gl
     a.original_name(&at.base) == b.original_name(&bt.base)
         && at.dims.len() == bt.dims.len()
         && at.dims.iter().zip(&bt.dims).all(|(x, y)| x.is_none() || y.is_none() || x == y)
-}
-
-/// The qualifier as written in GLSL.
-pub(crate) fn interp_text(i: Interp) -> &'static str {
-    match i {
-        Interp::Smooth => "smooth",
-        Interp::Flat => "flat",
-        Interp::NoPerspective => "noperspective",
-    }
 }
 
 /// Opaque types (samplers, separate textures, images, atomic counters): not settable by

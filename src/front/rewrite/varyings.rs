@@ -67,7 +67,7 @@ impl Ctx<'_> {
                     (None, None) => self.plan.varyings.get(&g.name).copied().unwrap_or(0),
                 };
                 let interp = match g.interp {
-                    Some(i) => format!("{} ", interp_word(i)),
+                    Some(i) => format!("{} ", i.keyword()),
                     None if self.needs_flat(g) => "flat ".to_string(),
                     None => String::new(),
                 };
@@ -82,7 +82,7 @@ impl Ctx<'_> {
     fn split_matrix(&mut self, g: &crate::front::syntax::Global, loc: u32) {
         let (cols, rows) = matrix_shape(&g.ty.base).expect("matrix");
         let dir = storage_word(self.s.stage, g.storage);
-        let interp = g.interp.map(|i| format!("{} ", interp_word(i))).unwrap_or_default();
+        let interp = g.interp.map(|i| format!("{} ", i.keyword())).unwrap_or_default();
         let mut text = String::new();
         let names: Vec<String> = (0..cols).map(|c| format!("{}_effectc_col{c}", g.name)).collect();
         for (c, n) in names.iter().enumerate() {
@@ -177,14 +177,6 @@ fn storage_word(stage: StageKind, storage: Storage) -> &'static str {
         (Storage::Varying, StageKind::Vertex) => "out",
         (Storage::Varying, _) => "in",
         _ => "out",
-    }
-}
-
-fn interp_word(i: crate::front::syntax::Interp) -> &'static str {
-    match i {
-        crate::front::syntax::Interp::Smooth => "smooth",
-        crate::front::syntax::Interp::Flat => "flat",
-        crate::front::syntax::Interp::NoPerspective => "noperspective",
     }
 }
 

@@ -26,6 +26,17 @@ pub enum Interp {
     NoPerspective,
 }
 
+impl Interp {
+    /// The qualifier as written in GLSL.
+    pub const fn keyword(self) -> &'static str {
+        match self {
+            Interp::Smooth => "smooth",
+            Interp::Flat => "flat",
+            Interp::NoPerspective => "noperspective",
+        }
+    }
+}
+
 /// A GLSL type as written: base name plus array dimensions (None = unsized).
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct GlslType {

@@ -6,7 +6,7 @@ use std::collections::HashSet;
 use super::{arrayed_inputs, arrayed_outputs, dims_text, input_arrayed, per_vertex, qualifiers_relaxed, Pair};
 use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{Global, GlslType, Interp};
-use crate::link::{interp_text, is_read, list, same_type, type_text};
+use crate::link::{is_read, list, same_type, type_text};
 use crate::manifest::did_you_mean;
 
 impl Pair<'_> {
@@ -123,15 +123,15 @@ impl Pair<'_> {
         let (ia, ib) = (effective(ga), effective(gb));
         if ia != ib {
             let shown = |g: &Global, i: Interp| match g.interp {
-                Some(_) => format!("`{}`", interp_text(i)),
-                None => format!("`{}` (no qualifier)", interp_text(i)),
+                Some(_) => format!("`{}`", i.keyword()),
+                None => format!("`{}` (no qualifier)", i.keyword()),
             };
-            let message = format!("`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage", interp_text(ia), interp_text(ib));
+            let message = format!("`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage", ia.keyword(), ib.keyword());
             let d = if relaxed {
                 Diagnostic::new(Code::InterpolationDiffers, message).with_note(format!(
                     "since GLSL 4.30 the qualifiers may differ and the {bt} stage's `{}` is used; the {at} stage's `{}` has no effect",
-                    interp_text(ib),
-                    interp_text(ia)
+                    ib.keyword(),
+                    ia.keyword()
                 ))
             } else {
                 Diagnostic::new(Code::InterpolationMismatch, message).with_note(
