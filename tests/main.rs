@@ -5,6 +5,8 @@
 //!
 //! - [`fail`]: every directory under `tests/fail/` produces its expected diagnostic;
 //!   the human rendering is snapshotted under `snapshots/fail/`.
+//! - [`geometry`]: geometry stages fold into the vertex stage, and the folded draws
+//!   render what the same triangles drawn directly render.
 //! - [`hazards`]: guarded hazards under `tests/safe/` and the shipped effects check with
 //!   no hazard warning.
 //! - [`rewrite`]: legal desktop GLSL under `tests/rewrite/` checks clean; the 4.50 text
@@ -34,6 +36,8 @@ mod codes;
 mod common;
 #[path = "suite/fail.rs"]
 mod fail;
+#[path = "suite/geometry.rs"]
+mod geometry;
 #[path = "suite/hazards.rs"]
 mod hazards;
 #[path = "suite/layout.rs"]

@@ -4,20 +4,20 @@
 //! the stages into one module ([`merge`]) → make interpolation explicit and map GL clip
 //! depth to WebGPU's ([`fixes`]) → leave out what nothing uses ([`prune`]) → validate →
 //! reflect ([`reflect`]). Each target writer takes only the validated module.
-//! [`geometry`] folds a geometry stage into the vertex stage (a vertex-stage text naga
-//! parses); it is not yet wired into translation, which still stops at E0303.
+//! A program with a geometry stage arrives folded ([`crate::front::geometry_fold`]): its
+//! vertex and geometry stages are one vertex module that pulls its vertices from two
+//! storage buffers; the reflection says how to draw it.
 //!
 //! | code  | meaning |
 //! |-------|---------|
 //! | E0301 | two stages bind different resources at the same (group, binding) |
 //! | E0302 | a `switch` case falls through into the next case's code (WGSL cannot say it) |
-//! | E0303 | a stage naga cannot translate (geometry, tessellation) |
+//! | E0303 | a stage naga cannot translate (tessellation, a geometry stage effectc cannot fold) |
 //! | E0304 | a stage did not validate, so the program cannot be translated |
 //! | E0305 | internal: the translated module failed validation or a writer failed |
 //! | E0306 | a target cannot express the program (e.g. `noperspective` in GLSL ES 3.00) |
 
 pub mod fixes;
-pub mod geometry;
 mod glsl_es;
 mod hlsl;
 pub mod ir_text;
@@ -133,17 +133,83 @@ pub fn translate(
         return Err(vec![Diagnostic::new(Code::StageNotValid, "the program has no stages to translate")]);
     };
     let file = first.syntax.file;
+    let modules = stage_modules(program)?;
+    let refs: Vec<(StageKind, &Module)> = modules.iter().map(|(k, m)| (*k, m)).collect();
+    let mut module = merge::merge(&refs).map_err(|c| {
+        vec![Diagnostic::new(Code::BindingConflict, format!("the stages cannot share one module: {}", c.0))
+            .in_file(file)
+            .with_help("give each resource its own binding in every stage")]
+    })?;
+    fixes::normalize_interpolation(&mut module);
+    fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
+    fixes::adjust_clip_position(&mut module, options.gl_depth, options.flip_y);
+    if options.widen_outputs {
+        fixes::widen_fragment_outputs(&mut module);
+    }
+    // Compaction assumes a valid module; prove it first.
+    crate::front::naga_run::validator()
+        .validate(&module)
+        .map_err(|e| vec![internal_error(file, format!("the merged module does not validate: {}", e.as_inner()))])?;
+    let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
+    fixes::read_only_unwritten_storage(&mut module);
+    let info = crate::front::naga_run::validator()
+        .validate(&module)
+        .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
+    let mut reflection = reflect::reflect(name, &module, &program.plan, effect, left_out);
+    if let Some((draw, inputs)) = program.fold().and_then(|f| reflect::geometry_draw(&f.drawn)) {
+        reflection.geometry = Some(draw);
+        reflection.vertex_inputs = inputs;
+    }
+    Ok(Translation {
+        name: name.to_string(),
+        module,
+        info,
+        stages: modules.iter().map(|(k, _)| *k).collect(),
+        reflection,
+        file: program.stages[0].syntax.file,
+    })
+}
+
+/// Each stage's validated module, fixed per stage, in pipeline order (the vertex stage's
+/// is the fold of the vertex and geometry stages when there is a geometry stage); or why
+/// a stage cannot be translated.
+fn stage_modules(program: &CompiledProgram) -> Result<Vec<(StageKind, Module)>, Vec<Diagnostic>> {
     let mut diags = Vec::new();
     let mut modules = Vec::new();
     for stage in &program.stages {
         let kind = stage.syntax.stage;
-        if kind.naga().is_none() {
-            diags.push(
-                Diagnostic::new(Code::StageNotTranslatable, format!("the {kind} stage cannot be translated"))
-                    .in_file(stage.syntax.file)
-                    .with_note("naga, WGSL and the WebGPU pipeline have no geometry or tessellation stages"),
-            );
-            continue;
+        match (kind, &program.folded) {
+            // Folded into the vertex stage's module (below).
+            (StageKind::Geometry, Some(Ok(_))) => continue,
+            (StageKind::Vertex, Some(Ok(folded))) => {
+                let mut module = folded.naga.module.clone();
+                for span in fixes::fix_switch_fallthrough(&mut module) {
+                    // The span is in the folded text: back to the stage it came from.
+                    let at = span.to_range().and_then(|r| program.user_span_in(&folded.drawn, r));
+                    diags.push(fall_through(at.map_or((stage.syntax.file, None), |(f, r)| (f, Some(r)))));
+                }
+                modules.push((kind, module));
+                continue;
+            }
+            (StageKind::Geometry, Some(Err(why))) => {
+                diags.push(
+                    Diagnostic::new(Code::StageNotTranslatable, "the geometry stage cannot be translated")
+                        .in_file(stage.syntax.file)
+                        .with_note(format!(
+                            "effectc runs a geometry stage on WebGPU by folding it into the vertex stage; this one it cannot fold: {why}"
+                        )),
+                );
+                continue;
+            }
+            _ if kind.naga().is_none() => {
+                diags.push(
+                    Diagnostic::new(Code::StageNotTranslatable, format!("the {kind} stage cannot be translated"))
+                        .in_file(stage.syntax.file)
+                        .with_note("naga, WGSL and the WebGPU pipeline have no tessellation stages"),
+                );
+                continue;
+            }
+            _ => {}
         }
         if let Some(limit) = &stage.limitation {
             let d = Diagnostic::new(
@@ -183,50 +249,26 @@ pub fn translate(
         let mut module = validated.module.clone();
         fixes::block_member_interpolation(&mut module, &stage.syntax);
         for span in fixes::fix_switch_fallthrough(&mut module) {
-            let mut d = Diagnostic::new(Code::SwitchFallThrough, "a `switch` case falls through into the next case's code")
-                .with_note("WGSL has no fall-through between cases, so this cannot be translated")
-                .with_help("end each case with `break` (repeat the shared code in each case if needed)");
-            d = match span.to_range() {
-                Some(r) => d.at(stage.syntax.file, rewritten.map.range_to_original(r), "this switch"),
-                None => d.in_file(stage.syntax.file),
-            };
-            diags.push(d);
+            diags.push(fall_through((stage.syntax.file, span.to_range().map(|r| rewritten.map.range_to_original(r)))));
         }
         modules.push((kind, module));
     }
-    if !diags.is_empty() {
-        return Err(diags);
+    if diags.is_empty() {
+        Ok(modules)
+    } else {
+        Err(diags)
     }
-    let refs: Vec<(StageKind, &Module)> = modules.iter().map(|(k, m)| (*k, m)).collect();
-    let mut module = merge::merge(&refs).map_err(|c| {
-        vec![Diagnostic::new(Code::BindingConflict, format!("the stages cannot share one module: {}", c.0))
-            .in_file(file)
-            .with_help("give each resource its own binding in every stage")]
-    })?;
-    fixes::normalize_interpolation(&mut module);
-    fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
-    fixes::adjust_clip_position(&mut module, options.gl_depth, options.flip_y);
-    if options.widen_outputs {
-        fixes::widen_fragment_outputs(&mut module);
+}
+
+/// E0302 at the `switch` (or in its file).
+fn fall_through((file, span): (crate::diag::FileId, Option<std::ops::Range<usize>>)) -> Diagnostic {
+    let d = Diagnostic::new(Code::SwitchFallThrough, "a `switch` case falls through into the next case's code")
+        .with_note("WGSL has no fall-through between cases, so this cannot be translated")
+        .with_help("end each case with `break` (repeat the shared code in each case if needed)");
+    match span {
+        Some(r) => d.at(file, r, "this switch"),
+        None => d.in_file(file),
     }
-    // Compaction assumes a valid module; prove it first.
-    crate::front::naga_run::validator()
-        .validate(&module)
-        .map_err(|e| vec![internal_error(file, format!("the merged module does not validate: {}", e.as_inner()))])?;
-    let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
-    fixes::read_only_unwritten_storage(&mut module);
-    let info = crate::front::naga_run::validator()
-        .validate(&module)
-        .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
-    let reflection = reflect::reflect(name, &module, &program.plan, effect, left_out);
-    Ok(Translation {
-        name: name.to_string(),
-        module,
-        info,
-        stages: modules.iter().map(|(k, _)| *k).collect(),
-        reflection,
-        file: program.stages[0].syntax.file,
-    })
 }
 
 /// What the GLSL construct behind each naga capability is.
@@ -278,6 +320,9 @@ pub fn emit(t: &Translation, target: Target) -> Result<Vec<Output>, String> {
             let words = spirv::write(m, info, stage, entry)?;
             Ok(text(stage_file(kind, "spvasm"), spirv::disassemble(&words)?))
         })?,
+        Target::Glsl if t.reflection.geometry.is_some() => {
+            return Err("GLSL ES 3.00 (WebGL2) doesn't support storage buffers, which a geometry stage folded into the vertex stage pulls its vertices from".into())
+        }
         Target::Glsl => per_stage(&|kind, stage, entry| Ok(text(stage_file(kind, "glsl"), glsl_es::write(m, info, stage, entry)?)))?,
         Target::Msl => vec![text(format!("{}.metal", t.name), msl::write(m, info)?)],
         Target::Hlsl => vec![text(format!("{}.hlsl", t.name), hlsl::write(m, info)?)],

@@ -30,6 +30,78 @@ pub struct Reflection {
     pub varyings: Vec<InterfaceVar>,
     pub fragment_outputs: Vec<InterfaceVar>,
     pub left_out: Vec<LeftOut>,
+    /// A program with a geometry stage: how to draw its folded vertex stage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub geometry: Option<GeometryDraw>,
+}
+
+/// How to draw a program whose geometry stage is folded into the vertex stage: no vertex
+/// buffers; the index and vertex data in two storage buffers; a non-indexed draw of
+/// `vertices_per_primitive` vertices per input primitive (× instances) with `topology`.
+#[derive(Debug, Clone, Serialize)]
+pub struct GeometryDraw {
+    /// `points`, `lines` or `triangles`: what one input primitive is.
+    pub input_primitive: &'static str,
+    /// `points`, `line_strip` or `triangle_strip`, as the geometry stage declared.
+    pub output_primitive: &'static str,
+    pub max_vertices: u32,
+    pub invocations: u32,
+    /// The pipeline's primitive topology: `point-list`, `line-list` or `triangle-list`.
+    pub topology: &'static str,
+    /// Vertices to draw per input primitive: `draw(primitives × this, instances)`.
+    pub vertices_per_primitive: u32,
+    /// `u32` vertex indices, `corners` per input primitive, in draw order.
+    pub index_buffer: PulledBuffer,
+    /// Per vertex, one `vec4<f32>` per entry of `inputs` (unused components ignored).
+    pub vertex_buffer: PulledBuffer,
+    /// The vertex stage's inputs in their `vec4` order within a vertex (the first is at
+    /// `vertex * inputs.len()`); also listed in `vertex_inputs`.
+    pub inputs: Vec<String>,
+}
+
+/// A storage buffer the folded stage reads.
+#[derive(Debug, Clone, Serialize)]
+pub struct PulledBuffer {
+    pub name: &'static str,
+    pub group: u32,
+    pub binding: u32,
+    /// Elements per input primitive (index buffer) or per vertex (vertex buffer).
+    pub stride: u32,
+}
+
+/// The draw plan of a folded geometry program, and its pulled inputs as vertex inputs.
+pub fn geometry_draw(lowered: &crate::front::geometry_fold::Lowered) -> Option<(GeometryDraw, Vec<InterfaceVar>)> {
+    use crate::front::geometry_fold::{Pulling, INDEX_BUFFER, VERTEX_BUFFER};
+    use crate::front::geometry_layout::OutputPrimitive;
+    let Pulling::Storage { index_binding, vertex_binding } = lowered.pulling else { return None };
+    let l = lowered.layout;
+    let inputs: Vec<InterfaceVar> = lowered
+        .vertex_inputs
+        .iter()
+        .map(|(location, name, components)| InterfaceVar {
+            location: *location,
+            name: name.clone(),
+            wgsl_type: if *components == 1 { "f32".to_string() } else { format!("vec{components}<f32>") },
+            format: Some(if *components == 1 { "float32".to_string() } else { format!("float32x{components}") }),
+            interpolation: None,
+        })
+        .collect();
+    let draw = GeometryDraw {
+        input_primitive: l.input.name(),
+        output_primitive: l.output.name(),
+        max_vertices: l.max_vertices,
+        invocations: l.invocations,
+        topology: match l.output {
+            OutputPrimitive::Points => "point-list",
+            OutputPrimitive::LineStrip => "line-list",
+            OutputPrimitive::TriangleStrip => "triangle-list",
+        },
+        vertices_per_primitive: l.slots_per_primitive(),
+        index_buffer: PulledBuffer { name: INDEX_BUFFER, group: 0, binding: index_binding, stride: l.input.vertices() },
+        vertex_buffer: PulledBuffer { name: VERTEX_BUFFER, group: 0, binding: vertex_binding, stride: inputs.len() as u32 },
+        inputs: inputs.iter().map(|i| i.name.clone()).collect(),
+    };
+    Some((draw, inputs))
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -354,6 +426,7 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
         varyings,
         fragment_outputs,
         left_out,
+        geometry: None,
     }
 }
 

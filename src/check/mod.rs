@@ -203,14 +203,15 @@ pub fn check_stages(
     options: FrontOptions,
 ) -> (Option<CompiledProgram>, Vec<Diagnostic>) {
     let mut diags = Vec::new();
-    let program = program::compile(files, stage_files, options, &mut diags);
-    if let Some(p) = &program {
+    let mut program = program::compile(files, stage_files, options, &mut diags);
+    if let Some(p) = &mut program {
         let syntaxes: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
         diags.extend(crate::link::check_interface(&syntaxes));
         if let Some(e) = effect {
             diags.extend(crate::link::check_manifest(e, &syntaxes, files));
         }
         if !diags.iter().any(Diagnostic::is_error) {
+            program::fold_geometry(p, &mut diags);
             diags.extend(hazards::analyse(effect, p));
         }
     }
@@ -287,7 +288,7 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
         if readable && !stage_files.is_empty() {
             let mut diags = Vec::new();
             program = program::compile(&out.files, &stage_files, options, &mut diags);
-            if let Some(p) = &program {
+            if let Some(p) = &mut program {
                 let s: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
                 diags.extend(crate::link::check_interface(&s));
                 if pass.reuse.is_none() {
@@ -301,6 +302,7 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
                 diags.extend(crate::link::check_pass_manifest(&view, &s, &out.files, &bound));
                 // Targets an earlier pass drew are unknown to the analysis: they raise nothing.
                 if !diags.iter().any(Diagnostic::is_error) {
+                    program::fold_geometry(p, &mut diags);
                     diags.extend(hazards::analyse(Some(&view), p));
                 }
                 syntaxes = Some(s);

@@ -107,7 +107,7 @@ codes! {
     // Translation (`back`).
     BindingConflict => "E0301", "stages bind different resources at one binding",
     SwitchFallThrough => "E0302", "`switch` case falls through, which WGSL cannot say",
-    StageNotTranslatable => "E0303", "stage naga cannot translate (geometry, tessellation)",
+    StageNotTranslatable => "E0303", "stage effectc cannot translate (tessellation, a geometry stage it cannot fold)",
     StageNotValid => "E0304", "stage did not validate, so the program cannot be translated",
     TranslateInternal => "E0305", "internal translation error",
     TargetCannotExpress => "E0306", "a target cannot express the program",

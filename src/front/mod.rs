@@ -17,6 +17,7 @@
 pub mod builtins;
 pub mod conditionals;
 pub mod edits;
+pub mod geometry_fold;
 pub mod geometry_layout;
 pub mod includes;
 pub mod lexical;

@@ -283,6 +283,19 @@ fn number_bindings(plan: &mut Plan, stages: &[StageSyntax]) {
     }
 }
 
+/// The first binding of set 0 after every binding the plan hands out and every `set = 0`
+/// binding the stages declare (where the geometry fold puts its storage buffers).
+pub fn first_free_binding(plan: &Plan, stages: &[StageSyntax]) -> u32 {
+    let declared = stages
+        .iter()
+        .flat_map(|s| &s.globals)
+        .filter(|g| g.layout.iter().any(|(k, v)| k == "set" && *v == Some(0)))
+        .filter_map(|g| g.layout.iter().find(|(k, _)| k == "binding").and_then(|(_, v)| *v))
+        .filter_map(|b| u32::try_from(b).ok());
+    let planned = plan.textures.iter().flat_map(|t| [t.texture_binding, t.sampler_binding]).chain(plan.user_blocks.values().copied());
+    planned.chain(plan.opaque.values().copied()).chain(declared).max().map_or(1, |b| b + 1)
+}
+
 /// For each struct the block needs: its non-opaque member types, a filler member when naga
 /// would align it below 16 bytes where std140 does not, and its text for stages that lack it.
 fn describe_block_structs(plan: &mut Plan, stages: &[StageSyntax]) {

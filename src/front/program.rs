@@ -1,10 +1,17 @@
 //! One GLSL program (the stages of an effect) through the whole front.
 //!
 //! analyse every stage → plan shared bindings and locations → rewrite each stage to 4.50 →
-//! naga parse + validate. Stages naga has no notion of (geometry, tessellation) are checked
-//! at the syntax and interface level only, and a note says so.
+//! naga parse + validate. A geometry stage is folded into the vertex stage
+//! ([`geometry_fold`]) and naga validates the fold; tessellation stages, and geometry
+//! stages effectc cannot fold, are checked at the syntax and interface level only, and a
+//! note says so.
+
+use std::ops::Range;
 
 use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::front::edits::OffsetMap;
+use crate::front::geometry_fold::{self, Folded, Pulling};
+use crate::front::geometry_layout;
 use crate::front::naga_run::{self, Limitation, Outcome, Validated};
 use crate::front::plan::{self, Plan};
 use crate::front::rewrite::{self, Rewritten};
@@ -33,6 +40,38 @@ pub struct CompiledStage {
 pub struct CompiledProgram {
     pub stages: Vec<CompiledStage>,
     pub plan: Plan,
+    /// A program with a geometry stage: its vertex and geometry stages folded into one
+    /// vertex module, or what kept them from being folded ([`fold_geometry`]; None before
+    /// it ran, or without a geometry stage).
+    pub folded: Option<Result<Folded, String>>,
+}
+
+impl CompiledProgram {
+    /// The compiled stage of `kind`.
+    pub fn stage(&self, kind: StageKind) -> Option<&CompiledStage> {
+        self.stages.iter().find(|s| s.syntax.stage == kind)
+    }
+    /// The folded vertex + geometry module, when there is a geometry stage and it folded.
+    pub fn fold(&self) -> Option<&Folded> {
+        self.folded.as_ref().and_then(|f| f.as_ref().ok())
+    }
+    /// Where a range of the text naga read for `stage` lies in the user's files: the stage's
+    /// rewritten text, or for the vertex stage of a folded program the drawn fold's text.
+    pub fn user_span(&self, stage: StageKind, range: Range<usize>) -> Option<(FileId, Range<usize>)> {
+        match self.fold() {
+            Some(f) if stage == StageKind::Vertex => self.user_span_in(&f.drawn, range),
+            _ => {
+                let s = self.stage(stage)?;
+                Some((s.syntax.file, s.rewritten.as_ref()?.map.range_to_original(range)))
+            }
+        }
+    }
+    /// Where a range of a folded text lies in the user's files (None in generated glue).
+    pub fn user_span_in(&self, lowered: &geometry_fold::Lowered, range: Range<usize>) -> Option<(FileId, Range<usize>)> {
+        let (kind, range) = lowered.locate(range)?;
+        let s = self.stage(kind)?;
+        Some((s.syntax.file, s.rewritten.as_ref()?.map.range_to_original(range)))
+    }
 }
 
 /// Runs the front over `stages` (file ids registered in `files`, any order).
@@ -71,13 +110,18 @@ pub fn compile(
     let mut compiled = Vec::new();
     for s in syntaxes {
         let Some(naga_stage) = s.stage.naga() else {
-            diags.push(
-                Diagnostic::new(Code::SyntaxAndInterfaceOnly, format!("the {} stage is checked for syntax and interface only", s.stage))
+            if s.stage != StageKind::Geometry {
+                diags.push(
+                    Diagnostic::new(
+                        Code::SyntaxAndInterfaceOnly,
+                        format!("the {} stage is checked for syntax and interface only", s.stage),
+                    )
                     .in_file(s.file)
-                    .with_note("naga and WGSL have no geometry or tessellation stages, so it is not validated by naga"),
-            );
-            // A geometry stage is still rewritten to 4.50 (the shared uniform block, the
-            // plan's locations, sampler splits): it is what the geometry lowering starts from.
+                    .with_note("naga and WGSL have no tessellation stages, so it is not validated by naga"),
+                );
+            }
+            // A geometry stage is rewritten to 4.50 like the others (the shared uniform
+            // block, the plan's locations, sampler splits): the text the fold starts from.
             let rewritten = (s.stage == StageKind::Geometry).then(|| {
                 let (rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
                 diags.extend(rdiags);
@@ -140,7 +184,54 @@ pub fn compile(
         };
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation });
     }
-    Some(CompiledProgram { stages: compiled, plan })
+    Some(CompiledProgram { stages: compiled, plan, folded: None })
+}
+
+/// Folds a program's geometry stage into its vertex stage (when it has one), for a program
+/// the link rules found no errors in; a note says why a geometry stage does not fold.
+pub fn fold_geometry(program: &mut CompiledProgram, diags: &mut Vec<Diagnostic>) {
+    let Some(g) = program.stage(StageKind::Geometry) else { return };
+    let syntaxes: Vec<StageSyntax> = program.stages.iter().map(|s| s.syntax.clone()).collect();
+    let folded = fold(program, plan::first_free_binding(&program.plan, &syntaxes));
+    if let Err(why) = &folded {
+        diags.push(
+            Diagnostic::new(Code::SyntaxAndInterfaceOnly, "the geometry stage is checked for syntax and interface only")
+                .in_file(g.syntax.file)
+                .with_note(format!("effectc cannot fold it into the vertex stage (how it runs on WebGPU): {why}")),
+        );
+    }
+    program.folded = Some(folded);
+}
+
+/// Folds the geometry stage into the vertex stage, twice: the stage that is drawn (vertices
+/// pulled from storage buffers at `free_binding` and the next) and the one the static
+/// analysis reads (vertices from the vertex inputs); naga validates both.
+fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> {
+    let rewritten = |kind: StageKind| -> Result<&Rewritten, String> {
+        let s = program.stage(kind).ok_or_else(|| format!("a geometry stage without a {kind} stage"))?;
+        if s.limitation.is_some() || (kind == StageKind::Vertex && s.naga.is_none()) {
+            return Err(format!("the {kind} stage, which naga did not validate"));
+        }
+        s.rewritten.as_ref().ok_or_else(|| format!("the {kind} stage, which was not rewritten"))
+    };
+    let (vs, gs) = (rewritten(StageKind::Vertex)?, rewritten(StageKind::Geometry)?);
+    let g = program.stage(StageKind::Geometry).expect("checked above");
+    let layout = geometry_layout::geometry_layout(&g.syntax).map_err(|p| p.message)?;
+    let validate = |pulling: Pulling| -> Result<(geometry_fold::Lowered, Validated), String> {
+        let lowered = geometry_fold::lower(&vs.text, &gs.text, layout, pulling)?;
+        let as_stage = Rewritten { text: lowered.text.clone(), map: OffsetMap::identity(lowered.text.len()), limitation: None };
+        match naga_run::parse_and_validate(g.syntax.file, &as_stage, naga::ShaderStage::Vertex, &g.syntax.version) {
+            Outcome::Valid(v) if v.needs.is_empty() => Ok((lowered, v)),
+            Outcome::Valid(v) => Err(format!("a construct WebGPU lacks ({})", v.needs.join(", "))),
+            Outcome::Limited(limit) => Err(format!("{}, which naga cannot take", limit.construct)),
+            Outcome::Invalid(errors) => {
+                Err(format!("naga rejects the folded stage: {}", errors.first().map(|d| d.message.as_str()).unwrap_or("no message")))
+            }
+        }
+    };
+    let (drawn, naga) = validate(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 })?;
+    let (analysed, analysis) = validate(Pulling::Attributes)?;
+    Ok(Folded { drawn, naga, analysed, analysis })
 }
 
 /// Debugging aid: with `EFFECTC_DUMP_REWRITE=DIR`, the 4.50 text of each stage is written

@@ -128,7 +128,10 @@ impl Gpu {
     /// fragment output (Rgba8Unorm, or 32-bit integer formats for integer outputs).
     pub fn build_pipeline(&self, wgsl: &str, reflection: &Reflection) -> Result<wgpu::RenderPipeline, String> {
         use crate::render::attributes::{input_format, packed_layout};
-        let (attributes, stride) = packed_layout(reflection.vertex_inputs.iter().map(|v| (v.location, input_format(v))));
+        // A folded geometry program pulls its vertices from storage buffers.
+        let pulled = reflection.geometry.is_some();
+        let (attributes, stride) =
+            packed_layout(reflection.vertex_inputs.iter().filter(|_| !pulled).map(|v| (v.location, input_format(v))));
         let spec = PipelineSpec {
             label: &reflection.effect,
             wgsl,
@@ -144,6 +147,7 @@ impl Gpu {
             cull: None,
             front_face: wgpu::FrontFace::Ccw,
             fragment: reflection.entry_points.iter().any(|e| e.name == "fs_main"),
+            topology: topology(reflection),
         };
         self.pipeline(&spec)
     }
@@ -191,7 +195,12 @@ impl Gpu {
                 compilation_options: Default::default(),
                 buffers: &buffers,
             },
-            primitive: wgpu::PrimitiveState { cull_mode: spec.cull, front_face: spec.front_face, ..Default::default() },
+            primitive: wgpu::PrimitiveState {
+                topology: spec.topology,
+                cull_mode: spec.cull,
+                front_face: spec.front_face,
+                ..Default::default()
+            },
             depth_stencil: spec.depth.map(|format| wgpu::DepthStencilState {
                 format,
                 depth_write_enabled: Some(spec.depth_write),
@@ -240,6 +249,18 @@ pub struct PipelineSpec<'a> {
     pub front_face: wgpu::FrontFace,
     /// The module has `fs_main`.
     pub fragment: bool,
+    /// Triangle lists, except for a folded geometry stage that emits lines or points.
+    pub topology: wgpu::PrimitiveTopology,
+}
+
+/// The pipeline topology: a triangle list, or for a folded geometry stage the list its
+/// output strips became.
+pub fn topology(r: &Reflection) -> wgpu::PrimitiveTopology {
+    match r.geometry.as_ref().map(|g| g.topology) {
+        Some("point-list") => wgpu::PrimitiveTopology::PointList,
+        Some("line-list") => wgpu::PrimitiveTopology::LineList,
+        _ => wgpu::PrimitiveTopology::TriangleList,
+    }
 }
 
 /// Colour target formats by fragment output location: `float` for floating-point outputs,

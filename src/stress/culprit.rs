@@ -99,14 +99,27 @@ pub fn instrument_translation(
     vertex: bool,
 ) -> Result<Instrumented, String> {
     let stages: &[StageKind] = if vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };
-    let texts: Vec<(StageKind, &str)> =
-        program.stages.iter().filter_map(|s| Some((s.syntax.stage, s.rewritten.as_ref()?.text.as_str()))).collect();
+    // The vertex stage of a folded program is the fold's text (spans index it).
+    let texts: Vec<(StageKind, &str)> = program
+        .stages
+        .iter()
+        .filter_map(|s| match (s.syntax.stage, program.fold()) {
+            (StageKind::Vertex, Some(f)) => Some((StageKind::Vertex, f.drawn.text.as_str())),
+            (kind, _) => Some((kind, s.rewritten.as_ref()?.text.as_str())),
+        })
+        .collect();
     let binding = free_binding(&t.module);
     let instrumented = instrument(&mut t.module, &t.info, &texts, stages, binding)?;
     t.info = crate::front::naga_run::validator()
         .validate(&t.module)
         .map_err(|e| format!("the translated module does not validate: {}", e.as_inner()))?;
-    t.reflection = reflect::reflect(&t.name, &t.module, &program.plan, effect, t.reflection.left_out.clone());
+    let before = std::mem::replace(&mut t.reflection, reflect::reflect(&t.name, &t.module, &program.plan, effect, Vec::new()));
+    t.reflection.left_out = before.left_out;
+    // A folded geometry program keeps its draw plan and pulled inputs.
+    if before.geometry.is_some() {
+        t.reflection.geometry = before.geometry;
+        t.reflection.vertex_inputs = before.vertex_inputs;
+    }
     Ok(instrumented)
 }
 

@@ -465,9 +465,8 @@ impl Culprit {
 /// begins) is the primary span when the diagnostic has none.
 fn with_culprits(mut d: Diagnostic, c: &check::Checked, culprits: &[Culprit]) -> Diagnostic {
     for (k, f) in culprits.iter().enumerate() {
-        let Some(stage) = c.unit(f.pass).and_then(|u| u.program.stages.iter().find(|s| s.syntax.stage == f.probe.stage)) else { continue };
-        let (Some(range), Some(rw)) = (f.probe.span.to_range(), &stage.rewritten) else { continue };
-        let span = rw.map.range_to_original(range);
+        let Some(program) = c.unit(f.pass).map(|u| &u.program) else { continue };
+        let Some((file, span)) = f.probe.span.to_range().and_then(|r| program.user_span(f.probe.stage, r)) else { continue };
         let stage_name = match f.invoked {
             StageKind::Vertex => "vertex",
             _ => "fragment",
@@ -478,7 +477,7 @@ fn with_culprits(mut d: Diagnostic, c: &check::Checked, culprits: &[Culprit]) ->
         };
         let lead = if k == 0 { "the first non-finite value" } else { "then non-finite" };
         let label = format!("{lead} ({}) in {} of {} {stage_name} invocations{pass}", f.probe.what, f.first_in, f.total);
-        d = if d.span.is_none() { d.at(stage.syntax.file, span, label) } else { d.with_label(stage.syntax.file, span, label) };
+        d = if d.span.is_none() { d.at(file, span, label) } else { d.with_label(file, span, label) };
         if f.others > 0 {
             let rest = f.bad - f.first_in;
             d = d.with_note(format!("{} other expressions come first in {rest} more {stage_name} invocations{pass}", f.others));

@@ -38,7 +38,7 @@ fn every_effect_matches_its_reference_frames() {
     let references = Path::new("snapshots/png");
     std::fs::create_dir_all(references).unwrap();
     let mut failures = Vec::new();
-    for effect in fixtures("effects", 20) {
+    for effect in fixtures("effects", 21) {
         let name = name_of(&effect);
         let out_dir = scratch("pixels", &name);
         let manifest = effect.join("effect.toml");

@@ -57,7 +57,7 @@ struct Program {
 
 fn programs() -> Vec<Program> {
     let mut dirs = common::fixtures("tests/rewrite", 42);
-    dirs.extend(common::fixtures("effects", 20));
+    dirs.extend(common::fixtures("effects", 21));
     dirs.into_iter()
         .map(|d| Program {
             stages: common::stage_files(&d)

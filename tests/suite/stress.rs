@@ -105,7 +105,28 @@ fn shipped_effects_are_clean_under_stress() {
     let out = effectc(&["stress", "effects", "--samples", "2", "--size", "64x64", "--out", dir.to_str().unwrap()]);
     let text = stdout(&out);
     assert_eq!(code(&out), 0, "{text}");
-    assert_eq!(text.matches(": no NaN or Inf").count(), 20, "{text}");
+    assert_eq!(text.matches(": no NaN or Inf").count(), 21, "{text}");
     // No intermediate value is non-finite either (W0702 would say where).
     assert!(!text.contains(Code::StressHiddenNonFinite.as_str()), "{text}");
+}
+
+#[test]
+fn degenerate_triangles_reach_the_geometry_stage() {
+    if !have_gpu() {
+        return;
+    }
+    // The exploding mesh normalizes each face's cross product in its geometry stage, which
+    // runs folded into the vertex stage. Statically, `check` finds the unguarded normalize…
+    let fixture = "tests/stress/explode-degenerate";
+    let checked = stdout(&effectc(&["check", fixture]));
+    let warning = diagnostic(&checked, "warning[W0715]: `normalize` of a vector that can be zero");
+    assert!(warning.contains("explode-degenerate/shards.geom:12:12"), "{checked}");
+    // …and dynamically, only the zero-area case computes it non-finite, at the same span.
+    let out = effectc(&["stress", fixture, "--samples", "1", "--size", "64x64", "--out", scratch("stress", "explode").to_str().unwrap()]);
+    let text = stdout(&out);
+    let case = diagnostic(&text, "warning[W0702]: explode-degenerate: case `zero-area tris`");
+    assert!(case.contains("explode-degenerate/shards.geom:12:12"), "{case}");
+    assert!(case.contains("the first non-finite value (normalize) in"), "{case}");
+    assert!(case.contains("degenerate geometry: 6 of 12 triangles collapsed to zero area"), "{case}");
+    assert_eq!(text.matches("warning[W0702]").count(), 1, "the intact cube is clean in every other case:\n{text}");
 }

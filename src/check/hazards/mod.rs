@@ -182,10 +182,15 @@ fn big(x: f64) -> String {
 /// Runs the analysis over a compiled program; warnings at the user's spans.
 pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagnostic> {
     let find = |kind: StageKind| program.stages.iter().find(|s| s.syntax.stage == kind);
-    let vertex = find(StageKind::Vertex);
-    let names: Vec<(u32, String)> = vertex
-        .and_then(|s| s.naga.as_ref())
-        .and_then(|v| v.module.entry_points.iter().find(|e| e.stage == naga::ShaderStage::Vertex))
+    // The vertex stage as analysed: its own module, or the fold of the vertex and geometry
+    // stages (each corner of a primitive reads the vertex inputs), whose spans lead back
+    // to either stage.
+    let vertex_module = match program.fold() {
+        Some(f) => Some(&f.analysis.module),
+        None => find(StageKind::Vertex).and_then(|s| s.naga.as_ref()).map(|v| &v.module),
+    };
+    let names: Vec<(u32, String)> = vertex_module
+        .and_then(|m| m.entry_points.iter().find(|e| e.stage == naga::ShaderStage::Vertex))
         .map(|ep| {
             ep.function
                 .arguments
@@ -201,6 +206,18 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
     let mut out = Vec::new();
     for (kind, stage) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
         let Some(s) = find(kind) else { continue };
+        if let (StageKind::Vertex, Some(folded)) = (kind, program.fold()) {
+            let (v, text) = (&folded.analysis, &folded.analysed.text);
+            let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, text);
+                a.run_entry();
+                (a.hazards, a.outputs)
+            }));
+            let Ok((hazards, outputs)) = run else { continue };
+            f.varyings = outputs.into_iter().filter_map(|(l, v)| v.num().cloned().map(|n| (l, varying(n)))).collect();
+            out.extend(hazards.iter().map(|h| folded_diagnostic(h, program, folded)));
+            continue;
+        }
         let (Some(v), Some(rw)) = (&s.naga, &s.rewritten) else { continue };
         let hazards = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, &rw.text);
@@ -232,12 +249,26 @@ fn varying(mut n: Num) -> Num {
 }
 
 fn diagnostic(h: &Hazard, file: FileId, rw: &crate::front::rewrite::Rewritten) -> Diagnostic {
-    let mut d = Diagnostic::new(h.code, h.message.clone());
-    if let Some(r) = h.span.to_range() {
-        d = d.at(file, rw.map.range_to_original(r), h.label.clone());
-    } else {
-        d = d.in_file(file);
+    located(h, file, h.span.to_range().map(|r| rw.map.range_to_original(r)))
+}
+
+/// A hazard in the fold of the vertex and geometry stages, at the stage it came from (the
+/// geometry stage's file when it lies in generated glue).
+fn folded_diagnostic(h: &Hazard, program: &CompiledProgram, folded: &crate::front::geometry_fold::Folded) -> Diagnostic {
+    let geometry = program.stage(StageKind::Geometry).map(|s| s.syntax.file).unwrap_or(program.stages[0].syntax.file);
+    let at = h.span.to_range().and_then(|r| program.user_span_in(&folded.analysed, r));
+    match at {
+        Some((file, range)) => located(h, file, Some(range)),
+        None => located(h, geometry, None),
     }
+}
+
+fn located(h: &Hazard, file: FileId, range: Option<std::ops::Range<usize>>) -> Diagnostic {
+    let mut d = Diagnostic::new(h.code, h.message.clone());
+    d = match range {
+        Some(r) => d.at(file, r, h.label.clone()),
+        None => d.in_file(file),
+    };
     for n in &h.notes {
         d = d.with_note(n.clone());
     }

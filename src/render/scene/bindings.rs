@@ -18,13 +18,22 @@ pub(super) fn bind_groups(
     r: &Reflection,
     uniforms: &[(UniformBuffer, wgpu::Buffer)],
     textures: &Textures,
+    filled: &[(u32, &[u8])],
 ) -> (Vec<(u32, wgpu::BindGroup)>, StorageBuffers) {
     let mut by_group: BTreeMap<u32, Vec<&BindingInfo>> = BTreeMap::new();
     for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
         by_group.entry(b.group).or_default().push(b);
     }
     let mut storage = Vec::new();
+    // (group, binding) of each storage buffer made (names can be empty: an unnamed block).
+    let mut at = Vec::new();
     for b in by_group.values().flatten().filter(|b| b.kind == "storage_buffer") {
+        // Group 0's storage buffers with data of their own: a folded geometry stage's vertices.
+        if let Some((_, bytes)) = filled.iter().find(|(binding, _)| b.group == 0 && *binding == b.binding) {
+            storage.push((b.name.clone(), buffer_init(gpu, "pulled", bytes, wgpu::BufferUsages::STORAGE)));
+            at.push((b.group, b.binding));
+            continue;
+        }
         let size = u64::from(b.size.unwrap_or(16)).max(16) + 65536;
         storage.push((
             b.name.clone(),
@@ -36,6 +45,7 @@ pub(super) fn bind_groups(
                 mapped_at_creation: false,
             }),
         ));
+        at.push((b.group, b.binding));
     }
     let mut groups = Vec::new();
     for (group, bindings) in by_group {
@@ -45,7 +55,7 @@ pub(super) fn bind_groups(
                 "uniform_buffer" => {
                     uniforms.iter().find(|(u, _)| u.group == b.group && u.binding == b.binding).map(|(_, buf)| buf.as_entire_binding())
                 }
-                "storage_buffer" => storage.iter().find(|(n, _)| *n == b.name).map(|(_, buf)| buf.as_entire_binding()),
+                "storage_buffer" => at.iter().position(|a| *a == (b.group, b.binding)).map(|i| storage[i].1.as_entire_binding()),
                 "texture" => textures.views.get(&b.name).map(wgpu::BindingResource::TextureView),
                 "sampler" | "comparison_sampler" => textures.samplers.get(&b.name).map(wgpu::BindingResource::Sampler),
                 _ => None,

@@ -7,6 +7,7 @@
 
 mod bindings;
 mod mesh_choice;
+mod pulled;
 mod textures;
 
 use bindings::{bind_groups, buffer_init};
@@ -23,7 +24,7 @@ use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
 use crate::manifest::{Blend, CameraDecl, Cull, Effect, Filter, MeshAttribute, ModelDecl};
 use crate::render::attributes;
-use crate::render::device::{color_formats, Gpu, PipelineSpec};
+use crate::render::device::{color_formats, topology, Gpu, PipelineSpec};
 use crate::render::uniforms::{self, UniformBuffer};
 
 /// The colour format frames are rendered into.
@@ -41,6 +42,22 @@ impl ColorMode {
             ColorMode::Unorm8 => wgpu::TextureFormat::Rgba8Unorm,
             ColorMode::Float32 => wgpu::TextureFormat::Rgba32Float,
         }
+    }
+}
+
+/// Refuses what cannot be drawn into frames: no vertex stage, or (outside a pass) an
+/// integer colour output.
+fn drawable(r: &crate::back::reflect::Reflection, in_pass: bool) -> Result<(), Diagnostic> {
+    if !r.entry_points.iter().any(|e| e.name == "vs_main") {
+        return Err(Diagnostic::new(Code::Unrenderable, "the program has no vertex stage to draw with")
+            .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)"));
+    }
+    match r.fragment_outputs.first().filter(|o| !in_pass && o.location == 0 && !o.wgsl_type.contains("f32")) {
+        Some(first) => Err(Diagnostic::new(
+            Code::Unrenderable,
+            format!("fragment output `{}` is an integer; frames can only show float colours", first.name),
+        )),
+        None => Ok(()),
     }
 }
 
@@ -123,19 +140,7 @@ impl Scene {
         let r = &t.reflection;
         let first_file = input.program.stages[0].syntax.file;
         let mut warnings = Vec::new();
-        if !r.entry_points.iter().any(|e| e.name == "vs_main") {
-            return Err(vec![Diagnostic::new(Code::Unrenderable, "the program has no vertex stage to draw with")
-                .in_file(first_file)
-                .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)")]);
-        }
-        if let Some(first) = r.fragment_outputs.first().filter(|o| input.pass.is_none() && o.location == 0 && !o.wgsl_type.contains("f32"))
-        {
-            return Err(vec![Diagnostic::new(
-                Code::Unrenderable,
-                format!("fragment output `{}` is an integer; frames can only show float colours", first.name),
-            )
-            .in_file(first_file)]);
-        }
+        drawable(r, input.pass.is_some()).map_err(|d| vec![d.in_file(first_file)])?;
         let (mesh, mesh_note) = choose_mesh(input, &mut warnings)?;
         let explicit = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.attributes.clone()).unwrap_or_default();
         let instances = input.effect.and_then(|e| e.instances.as_ref());
@@ -154,8 +159,15 @@ impl Scene {
         // documented: matching them by name is the contract, not a guess worth a warning.
         let fullscreen_pass = input.pass.is_some() && matches!(mesh_note, MeshNote::Fullscreen);
         report_attributes(input.program, &choices, fullscreen_pass, &mut warnings);
-        let interleaved = attributes::interleave(&choices, &mesh);
+        let mut interleaved = attributes::interleave(&choices, &mesh);
         let instanced = instances.and_then(|d| attributes::instance_buffer(&r.vertex_inputs, d));
+        // A folded geometry program pulls its primitives from two storage buffers instead.
+        let own_vertices = matches!(mesh_note, MeshNote::OwnVertices);
+        let pulled =
+            pulled::for_geometry(r, &choices, &mesh, own_vertices, instanced.is_some()).map_err(|d| vec![d.in_file(first_file)])?;
+        if pulled.is_some() {
+            interleaved.attributes.clear();
+        }
 
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let render = input.effect.map(|e| e.render.clone()).unwrap_or_default();
@@ -188,14 +200,16 @@ impl Scene {
             // clockwise in the framebuffer.
             front_face: if input.flipped_y { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
             fragment: r.entry_points.iter().any(|e| e.name == "fs_main"),
+            topology: topology(r),
         };
         let pipeline = gpu.pipeline(&spec).map_err(|e| vec![pipeline_error(first_file, &e)])?;
 
         let vertex_buffer =
             (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));
         let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
-        let draw = match mesh_note {
-            MeshNote::OwnVertices => Draw::Vertices(3),
+        let draw = match (&pulled, &mesh_note) {
+            (Some(p), _) => Draw::Vertices(p.count),
+            (None, MeshNote::OwnVertices) => Draw::Vertices(3),
             _ => {
                 let bytes: Vec<u8> = mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
                 Draw::Indexed { buffer: buffer_init(gpu, "indices", &bytes, wgpu::BufferUsages::INDEX), count: mesh.indices.len() as u32 }
@@ -203,7 +217,8 @@ impl Scene {
         };
         let uniforms = uniform_buffers(gpu, input, first_file, &mut warnings)?;
         let textures = Textures::create(gpu, input, &mut warnings)?;
-        let (bind_groups, storage) = bind_groups(gpu, &pipeline, r, &uniforms, &textures);
+        let filled = pulled.as_ref().map(|p| p.buffers()).unwrap_or_default();
+        let (bind_groups, storage) = bind_groups(gpu, &pipeline, r, &uniforms, &textures, &filled);
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }

@@ -1,6 +1,8 @@
 //! Geometry stages folded into the vertex stage: the vertex and geometry stages' 4.50 texts
 //! become one vertex-stage text that naga parses like any other (naga and WebGPU have no
-//! geometry stage).
+//! geometry stage). The fold is a text-to-text pass before naga, so it lives in the front:
+//! `check` validates the folded stage with naga and looks for hazards in it, and `translate`,
+//! `render`, `stress` and `bench` receive a plain vertex + fragment program.
 //!
 //! The draw has [`GeometryLayout::slots_per_primitive`] vertices per input primitive. Each
 //! invocation finds its primitive and the corner of the output primitive it draws from
@@ -16,7 +18,7 @@
 //! `effectc_gs_…`); uniforms, textures and samplers keep their names and the vertex stage's
 //! declarations (the front gave both stages the same ones).
 //!
-//! Not lowered yet (an error naming the construct): adjacency inputs, output blocks without
+//! Not folded (an error naming the construct): adjacency inputs, output blocks without
 //! an instance name, array or matrix varyings, integer vertex inputs, `gl_Layer` and
 //! `gl_ViewportIndex`.
 
@@ -24,15 +26,29 @@ use std::fmt::Write as _;
 use std::ops::Range;
 
 use crate::diag::FileId;
-use crate::front::edits::Edits;
+use crate::front::edits::{Edits, OffsetMap};
 use crate::front::geometry_layout::{GeometryLayout, InputPrimitive, OutputPrimitive};
+use crate::front::naga_run::Validated;
 use crate::front::syntax::{self, Global, GlslType, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
 
-/// Name of the storage buffer of vertex indices (three, two or one per input primitive).
-pub const INDEX_BUFFER: &str = "EffectcIndices";
-/// Name of the storage buffer of vertex inputs: `vec4` per input (in location order) per vertex.
-pub const VERTEX_BUFFER: &str = "EffectcVertices";
+/// Name of the storage buffer of vertex indices (three, two or one per input primitive),
+/// as the translated code names it (its block type is `EffectcIndices`).
+pub const INDEX_BUFFER: &str = "effectc_indices";
+/// Name of the storage buffer of vertex inputs, `vec4` per input (in location order) per
+/// vertex, as the translated code names it (its block type is `EffectcVertices`).
+pub const VERTEX_BUFFER: &str = "effectc_vertices";
+
+/// Where the folded stage reads its primitives' vertices.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pulling {
+    /// From [`INDEX_BUFFER`] and [`VERTEX_BUFFER`] at these bindings of group 0: the stage
+    /// that is drawn.
+    Storage { index_binding: u32, vertex_binding: u32 },
+    /// Every corner from the vertex inputs, as declared (location and name): a stage for the
+    /// static analysis, whose facts about vertex inputs are known by location and name.
+    Attributes,
+}
 
 /// The lowered vertex stage and what drawing it needs.
 #[derive(Debug, Clone)]
@@ -40,40 +56,96 @@ pub struct Lowered {
     /// GLSL 4.50 vertex-stage text.
     pub text: String,
     pub layout: GeometryLayout,
+    pub pulling: Pulling,
     /// The vertex stage's inputs in the order of their `vec4`s in [`VERTEX_BUFFER`]:
     /// (location, name as the user wrote it, components).
     pub vertex_inputs: Vec<(u32, String, u32)>,
+    /// The parts of `text` copied from the two rewritten stages, with their offset maps.
+    pieces: Vec<Piece>,
+}
+
+/// A range of the lowered text that came from one stage's rewritten text.
+#[derive(Debug, Clone)]
+struct Piece {
+    range: Range<usize>,
+    stage: StageKind,
+    map: OffsetMap,
+}
+
+impl Lowered {
+    /// The stage and the range of its rewritten text a range of the lowered text came from
+    /// (None for the generated glue).
+    pub fn locate(&self, range: Range<usize>) -> Option<(StageKind, Range<usize>)> {
+        let p = self.pieces.iter().find(|p| p.range.start <= range.start && range.end <= p.range.end)?;
+        Some((p.stage, p.map.range_to_original(range.start - p.range.start..range.end - p.range.start)))
+    }
+}
+
+/// A folded program: the lowered text that is drawn, with its validated module, and the
+/// analysis variant (vertex inputs as attributes) with its module.
+#[derive(Debug)]
+pub struct Folded {
+    pub drawn: Lowered,
+    pub naga: Validated,
+    pub analysed: Lowered,
+    pub analysis: Validated,
 }
 
 /// Folds `gs` (a geometry stage's 4.50 text) into `vs` (the vertex stage's).
-pub fn lower(vs: &str, gs: &str, layout: GeometryLayout) -> Result<Lowered, String> {
+pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling) -> Result<Lowered, String> {
     if matches!(layout.input, InputPrimitive::LinesAdjacency | InputPrimitive::TrianglesAdjacency) {
         return Err(format!("a `{}` geometry input (adjacency is not lowered)", layout.input.name()));
     }
     let v = syntax::analyse(FileId(0), vs, StageKind::Vertex).map_err(|_| "the rewritten vertex stage does not parse".to_string())?;
     let g = syntax::analyse(FileId(0), gs, StageKind::Geometry).map_err(|_| "the rewritten geometry stage does not parse".to_string())?;
     let corners = layout.input.vertices();
-    let mut header = String::from("#version 450\n");
+    let mut text = String::from("#version 450\n");
     let vs_part = Part::new(&v, "effectc_vs_", None)?;
     let shared: Vec<&str> = v.globals.iter().filter(|x| is_shared(x)).map(|x| x.name.as_str()).collect();
     let gs_part = Part::new(&g, "effectc_gs_", Some((&shared, corners)))?;
     let vertex_inputs = vs_part.inputs.clone();
-    writeln!(header, "layout(std430, set = 0, binding = 14) readonly buffer {INDEX_BUFFER} {{ uint effectc_index[]; }};").unwrap();
-    writeln!(header, "layout(std430, set = 0, binding = 15) readonly buffer {VERTEX_BUFFER} {{ vec4 effectc_vertex[]; }};").unwrap();
-    header.push_str("struct effectc_PerVertex { vec4 gl_Position; float gl_PointSize; };\n");
-    writeln!(header, "effectc_PerVertex effectc_gl_in[{corners}];").unwrap();
-    header.push_str("vec4 effectc_vs_Position; float effectc_vs_PointSize; vec4 effectc_gs_Position; float effectc_gs_PointSize;\n");
-    header.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
-    header.push_str(&vs_part.declarations);
-    header.push_str(&gs_part.declarations);
-    let mut text = header;
-    text.push_str(&vs_part.body);
-    text.push('\n');
+    match pulling {
+        Pulling::Storage { index_binding, vertex_binding } => {
+            writeln!(
+                text,
+                "layout(std430, set = 0, binding = {index_binding}) readonly buffer EffectcIndices {{ uint index[]; }} {INDEX_BUFFER};"
+            )
+            .unwrap();
+            writeln!(
+                text,
+                "layout(std430, set = 0, binding = {vertex_binding}) readonly buffer EffectcVertices {{ vec4 vertex[]; }} {VERTEX_BUFFER};"
+            )
+            .unwrap();
+        }
+        Pulling::Attributes => {
+            for (location, name, components) in &vertex_inputs {
+                writeln!(text, "layout(location = {location}) in {} {name};", vector_type(*components)).unwrap();
+            }
+        }
+    }
+    text.push_str("struct effectc_PerVertex { vec4 gl_Position; float gl_PointSize; };\n");
+    writeln!(text, "effectc_PerVertex effectc_gl_in[{corners}];").unwrap();
+    text.push_str("vec4 effectc_vs_Position; float effectc_vs_PointSize; vec4 effectc_gs_Position; float effectc_gs_PointSize;\n");
+    text.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
+    text.push_str(&vs_part.declarations);
+    text.push_str(&gs_part.declarations);
+    let mut pieces = Vec::new();
+    let mut append = |text: &mut String, part: &Part, stage: StageKind| {
+        let start = text.len();
+        text.push_str(&part.body);
+        pieces.push(Piece { range: start..text.len(), stage, map: part.map.clone() });
+        text.push('\n');
+    };
+    append(&mut text, &vs_part, StageKind::Vertex);
     text.push_str(&capture(&gs_part, layout.output));
-    text.push_str(&gs_part.body);
-    text.push('\n');
-    text.push_str(&driver(&vs_part, &gs_part, layout)?);
-    Ok(Lowered { text, layout, vertex_inputs })
+    append(&mut text, &gs_part, StageKind::Geometry);
+    text.push_str(&driver(&vs_part, &gs_part, layout, pulling)?);
+    Ok(Lowered { text, layout, pulling, vertex_inputs, pieces })
+}
+
+/// `float`, `vec2` … `vec4` by component count.
+fn vector_type(components: u32) -> &'static str {
+    ["float", "vec2", "vec3", "vec4"][components as usize - 1]
 }
 
 /// One stage's text with its interface made private and its names prefixed.
@@ -81,8 +153,9 @@ struct Part {
     prefix: &'static str,
     /// Private declarations of the interface (and struct types for its blocks).
     declarations: String,
-    /// The stage's text after the edits (without `#version`).
+    /// The stage's text after the edits (without `#version`), and its map back.
     body: String,
+    map: OffsetMap,
     /// Vertex stage: its inputs (location, user name, components).
     inputs: Vec<(u32, String, u32)>,
     /// Outputs: (location, prefixed name, type, interpolation qualifier, block members).
@@ -107,8 +180,15 @@ impl Part {
     fn new(s: &StageSyntax, prefix: &'static str, geometry: Option<(&[&str], u32)>) -> Result<Part, String> {
         let text = &s.text;
         let mut edits = Edits::new();
-        let mut part =
-            Part { prefix, declarations: String::new(), body: String::new(), inputs: Vec::new(), outputs: Vec::new(), ins: Vec::new() };
+        let mut part = Part {
+            prefix,
+            declarations: String::new(),
+            body: String::new(),
+            map: OffsetMap::default(),
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+            ins: Vec::new(),
+        };
         if let Some(start) = text.find("#version") {
             let end = text[start..].find('\n').map_or(text.len(), |e| start + e);
             edits.delete(start..end);
@@ -182,7 +262,7 @@ impl Part {
                 _ => {}
             }
         }
-        part.body = edits.apply(text).0;
+        (part.body, part.map, _) = edits.apply(text);
         Ok(part)
     }
 }
@@ -297,7 +377,7 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
 }
 
 /// The real outputs (the geometry stage's, flattened at their locations) and `main`.
-fn driver(vs: &Part, gs: &Part, layout: GeometryLayout) -> Result<String, String> {
+fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Result<String, String> {
     let mut t = String::new();
     let mut assign = String::new();
     for o in &gs.outputs {
@@ -326,11 +406,22 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout) -> Result<String, String
     t.push_str("    effectc_found = false; effectc_strip = 0u; effectc_made = 0u;\n");
     t.push_str("    effectc_PrimitiveIDIn = int(primitive); effectc_InstanceID = int(gl_InstanceIndex);\n");
     let stride = vs.inputs.len();
-    writeln!(t, "    for (uint k = 0u; k < {corners}u; k++) {{\n        uint index = effectc_index[primitive * {corners}u + k];").unwrap();
-    t.push_str("        effectc_VertexID = int(index);\n");
-    for (i, (_, name, components)) in vs.inputs.iter().enumerate() {
-        let swizzle = ["x", "xy", "xyz", "xyzw"][*components as usize - 1];
-        writeln!(t, "        {}{name} = effectc_vertex[index * {stride}u + {i}u].{swizzle};", vs.prefix).unwrap();
+    writeln!(t, "    for (uint k = 0u; k < {corners}u; k++) {{").unwrap();
+    match pulling {
+        Pulling::Storage { .. } => {
+            writeln!(t, "        uint index = {INDEX_BUFFER}.index[primitive * {corners}u + k];\n        effectc_VertexID = int(index);")
+                .unwrap();
+            for (i, (_, name, components)) in vs.inputs.iter().enumerate() {
+                let swizzle = ["x", "xy", "xyz", "xyzw"][*components as usize - 1];
+                writeln!(t, "        {}{name} = {VERTEX_BUFFER}.vertex[index * {stride}u + {i}u].{swizzle};", vs.prefix).unwrap();
+            }
+        }
+        Pulling::Attributes => {
+            t.push_str("        effectc_VertexID = int(gl_VertexIndex);\n");
+            for (_, name, _) in &vs.inputs {
+                writeln!(t, "        {}{name} = {name};", vs.prefix).unwrap();
+            }
+        }
     }
     writeln!(t, "        {}main();", vs.prefix).unwrap();
     t.push_str(
@@ -354,60 +445,4 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout) -> Result<String, String
     t.push_str(&assign);
     t.push_str("    } else {\n        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n    }\n}\n");
     Ok(t)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The fixture's vertex and geometry stages as the front rewrote them.
-    fn rewritten(dir: &str) -> (String, String, GeometryLayout) {
-        let (_, checked) = crate::check::check_inputs(&[dir.into()], None, Default::default());
-        let program = &checked[0].units[0].program;
-        let text =
-            |kind: StageKind| program.stages.iter().find(|s| s.syntax.stage == kind).unwrap().rewritten.as_ref().unwrap().text.clone();
-        let g = program.stages.iter().find(|s| s.syntax.stage == StageKind::Geometry).unwrap();
-        let layout = crate::front::geometry_layout::geometry_layout(&g.syntax).unwrap();
-        (text(StageKind::Vertex), text(StageKind::Geometry), layout)
-    }
-
-    /// naga parses and validates a lowered text as a vertex stage.
-    fn validates(name: &str, lowered: &Lowered) -> naga::Module {
-        let module = naga::front::glsl::Frontend::default()
-            .parse(&naga::front::glsl::Options::from(naga::ShaderStage::Vertex), &lowered.text)
-            .unwrap_or_else(|e| panic!("{name}: {}\n{}", e.emit_to_string(&lowered.text), lowered.text));
-        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::all())
-            .validate(&module)
-            .unwrap_or_else(|e| panic!("{name}: {e:?}\n{}", lowered.text));
-        module
-    }
-
-    #[test]
-    fn every_geometry_fixture_lowers_to_a_vertex_stage_naga_validates() {
-        // (fixture, vertex inputs (location, name, components), draw slots per input primitive)
-        type Inputs = &'static [(u32, &'static str, u32)];
-        let expected: [(&str, Inputs, u32); 3] = [
-            ("01-explode-textured", &[(0, "position", 3), (1, "uv", 2), (2, "normal", 3)], 3),
-            ("02-points-to-quads", &[(0, "position", 3), (1, "color", 4)], 6),
-            ("03-normal-lines", &[(0, "position", 3), (1, "normal", 3)], 10),
-        ];
-        for (name, inputs, slots) in expected {
-            let (vs, gs, layout) = rewritten(&format!("tests/geometry/{name}"));
-            let lowered = lower(&vs, &gs, layout).unwrap_or_else(|e| panic!("{name}: {e}"));
-            let module = validates(name, &lowered);
-            assert_eq!(module.entry_points[0].stage, naga::ShaderStage::Vertex, "{name}");
-            let got: Vec<(u32, &str, u32)> = lowered.vertex_inputs.iter().map(|(l, n, c)| (*l, n.as_str(), *c)).collect();
-            assert_eq!(got, inputs, "{name}");
-            assert_eq!(lowered.layout.slots_per_primitive(), slots, "{name}");
-        }
-    }
-
-    #[test]
-    fn what_is_not_lowered_is_named() {
-        let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
-        let adjacency = GeometryLayout { input: InputPrimitive::TrianglesAdjacency, ..layout };
-        assert_eq!(lower(&vs, &gs, adjacency).unwrap_err(), "a `triangles_adjacency` geometry input (adjacency is not lowered)");
-        let layered = gs.replace("EmitVertex();", "gl_Layer = 1; EmitVertex();");
-        assert_eq!(lower(&vs, &layered, layout).unwrap_err(), "`gl_Layer` written by a geometry stage");
-    }
 }

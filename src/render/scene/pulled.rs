@@ -1,0 +1,122 @@
+//! The data a folded geometry program pulls instead of vertex buffers: the vertex indices
+//! of every input primitive and one `vec4` per vertex input per vertex (the reflection's
+//! [`GeometryDraw`] says where they are bound and how many vertices to draw).
+//!
+//! A triangle mesh feeds the geometry stage's input primitive as GL would with the matching
+//! draw mode: `triangles` its triangles, `lines` each triangle's three edges (as a wireframe
+//! drawn with `GL_LINES`), `points` each vertex once.
+
+use crate::assets::mesh::Mesh;
+use crate::back::reflect::{GeometryDraw, Reflection};
+use crate::diag::{Code, Diagnostic};
+use crate::render::attributes::Choice;
+
+/// Bytes of the two storage buffers and the draw's vertex count.
+pub(super) struct Pulled {
+    pub indices: Vec<u8>,
+    pub vertices: Vec<u8>,
+    /// Vertices to draw: input primitives × vertices per primitive.
+    pub count: u32,
+    /// Bindings (group 0) of the index and the vertex buffer.
+    bindings: [u32; 2],
+}
+
+impl Pulled {
+    /// (binding in group 0, contents) of the two storage buffers.
+    pub fn buffers(&self) -> Vec<(u32, &[u8])> {
+        vec![(self.bindings[0], &self.indices[..]), (self.bindings[1], &self.vertices[..])]
+    }
+}
+
+/// The pulled data when the program is a folded geometry program (None otherwise).
+pub(super) fn for_geometry(
+    r: &Reflection,
+    choices: &[Choice],
+    mesh: &Mesh,
+    own_vertices: bool,
+    instance_attributes: bool,
+) -> Result<Option<Pulled>, Diagnostic> {
+    let Some(g) = &r.geometry else { return Ok(None) };
+    if instance_attributes {
+        return Err(Diagnostic::new(
+            Code::Unrenderable,
+            "per-instance attributes ([instances] attributes) cannot feed a geometry stage yet",
+        )
+        .with_help("read `gl_InstanceID` in the vertex stage and index a uniform array instead"));
+    }
+    Ok(Some(pulled(g, choices, mesh, own_vertices)))
+}
+
+/// The pulled data of `mesh` (`own_vertices`: the program draws three vertices of its own).
+pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_vertices: bool) -> Pulled {
+    let triangles: Vec<u32> = if own_vertices { vec![0, 1, 2] } else { mesh.indices.clone() };
+    let vertex_count = if own_vertices { 3 } else { mesh.vertex_count() };
+    let indices: Vec<u32> = match draw.input_primitive {
+        "points" => (0..vertex_count as u32).collect(),
+        "lines" => triangles.chunks_exact(3).flat_map(|t| [t[0], t[1], t[1], t[2], t[2], t[0]]).collect(),
+        _ => triangles,
+    };
+    let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.map(|a| mesh.attribute(a))).collect();
+    let mut vertices = Vec::with_capacity(vertex_count * choices.len() * 16);
+    for v in 0..vertex_count {
+        for column in &columns {
+            let value = column.as_ref().and_then(|col| col.get(v)).copied().unwrap_or([0.0; 4]);
+            vertices.extend(value.iter().flat_map(|x| x.to_le_bytes()));
+        }
+    }
+    let primitives = indices.len() as u32 / draw.index_buffer.stride.max(1);
+    Pulled {
+        indices: indices.iter().flat_map(|i| i.to_le_bytes()).collect(),
+        vertices,
+        count: primitives * draw.vertices_per_primitive,
+        bindings: [draw.index_buffer.binding, draw.vertex_buffer.binding],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::back::reflect::PulledBuffer;
+    use crate::manifest::MeshAttribute;
+
+    fn draw(input: &'static str, corners: u32, slots: u32) -> GeometryDraw {
+        let buffer = |stride| PulledBuffer { name: "b", group: 0, binding: 9, stride };
+        GeometryDraw {
+            input_primitive: input,
+            output_primitive: "triangle_strip",
+            max_vertices: 3,
+            invocations: 1,
+            topology: "triangle-list",
+            vertices_per_primitive: slots,
+            index_buffer: buffer(corners),
+            vertex_buffer: buffer(1),
+            inputs: vec!["position".into()],
+        }
+    }
+
+    fn words(bytes: &[u8]) -> Vec<u32> {
+        bytes.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect()
+    }
+
+    #[test]
+    fn a_mesh_feeds_triangles_edges_or_points() {
+        let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Quad);
+        let position = Choice {
+            location: 0,
+            input: "position".into(),
+            format: wgpu::VertexFormat::Float32x3,
+            attribute: Some(MeshAttribute::Position),
+            guessed: None,
+        };
+        let t = pulled(&draw("triangles", 3, 3), std::slice::from_ref(&position), &mesh, false);
+        assert_eq!(words(&t.indices), mesh.indices);
+        assert_eq!(t.count, mesh.indices.len() as u32);
+        assert_eq!(t.vertices.len(), mesh.vertex_count() * 16, "one vec4 per input per vertex");
+        let l = pulled(&draw("lines", 2, 8), std::slice::from_ref(&position), &mesh, false);
+        let i = &mesh.indices;
+        assert_eq!(words(&l.indices)[..6], [i[0], i[1], i[1], i[2], i[2], i[0]]);
+        assert_eq!(l.count, mesh.indices.len() as u32 * 8);
+        let p = pulled(&draw("points", 1, 6), &[position], &mesh, true);
+        assert_eq!((words(&p.indices), p.count), (vec![0, 1, 2], 18));
+    }
+}
