@@ -1,6 +1,11 @@
 //! Geometry stages on WebGPU: the fold of the vertex and geometry stages
 //! (`effectc::front::geometry_fold`) validates, maps back to the user's files and names
-//! what it cannot fold.
+//! what it cannot fold; a folded draw renders what the same triangles drawn directly
+//! render, feature by feature (`tests/geometry/*/direct/`).
+//!
+//! Tolerance (stated): [`TOLERANCE`], a channel may differ by 2 of 255 in at most 0.1% of
+//! the pixels. The two draws rasterize the same triangles, so they agree to the bit on
+//! lavapipe; the allowance absorbs another rasterizer's rounding, not a missing triangle.
 
 use std::path::Path;
 
@@ -9,7 +14,13 @@ use effectc::front::geometry_fold::{lower, Pulling};
 use effectc::front::geometry_layout::{geometry_layout, GeometryLayout, InputPrimitive};
 use effectc::stage::StageKind;
 
-use crate::common::check;
+use effectc::render::compare::{self, Tolerance};
+
+use crate::common::{self, check, code, effectc, stdout};
+use crate::render::have_gpu;
+
+/// Per-channel difference allowed, and the share of pixels that may exceed it.
+const TOLERANCE: Tolerance = Tolerance { channel: 2, max_differing: 0.001 };
 
 /// The checked program of a fixture directory.
 fn checked(dir: &str) -> Checked {
@@ -83,4 +94,55 @@ fn what_is_not_folded_is_named() {
     );
     let layered = gs.replace("EmitVertex();", "gl_Layer = 1; EmitVertex();");
     assert_eq!(lower(&vs, &layered, layout, Pulling::Attributes).unwrap_err(), "`gl_Layer` written by a geometry stage");
+}
+
+/// The fixtures with a manifest (`effect.toml`) and the expected image's manifest
+/// (`direct/effect.toml`: the triangles the geometry stage emits, drawn without one).
+fn compared_fixtures() -> Vec<std::path::PathBuf> {
+    common::fixtures("tests/geometry", 9).into_iter().filter(|d| d.join("direct/effect.toml").is_file()).collect()
+}
+
+#[test]
+fn folded_draws_render_what_the_same_triangles_drawn_directly_render() {
+    if !have_gpu() {
+        return;
+    }
+    // Per feature: strips with EndPrimitive (back faces culled, so a strip's odd triangles
+    // must keep GL's winding) and unused slots; amplification to max_vertices; points →
+    // quads; lines (a triangle mesh's edges) → bands; gl_PrimitiveIDIn; instancing.
+    let fixtures = compared_fixtures();
+    if std::env::var("EFFECTC_FIXTURE").is_err() {
+        assert_eq!(fixtures.len(), 6, "{fixtures:?}");
+    }
+    let mut failures = Vec::new();
+    for dir in fixtures {
+        let name = common::name_of(&dir);
+        let frame = |manifest: &Path, what: &str| -> Result<(Vec<u8>, (u32, u32)), String> {
+            let out_dir = common::scratch("geometry", &format!("{name}-{what}"));
+            let out = effectc(&["render", manifest.to_str().unwrap(), "--frames", "1", "--out", out_dir.to_str().unwrap()]);
+            if code(&out) != 0 {
+                return Err(format!("{name} ({what}) does not render:\n{}", stdout(&out)));
+            }
+            let png = std::fs::read_dir(&out_dir).unwrap().map(|e| e.unwrap().path()).find(|p| p.extension().is_some_and(|e| e == "png"));
+            let (rgba, w, h) = compare::read_png(&png.ok_or(format!("{name} ({what}): no frame"))?)?;
+            Ok((rgba, (w, h)))
+        };
+        let (lowered, expected) = match (frame(&dir.join("effect.toml"), "folded"), frame(&dir.join("direct/effect.toml"), "direct")) {
+            (Ok(a), Ok(b)) => (a, b),
+            (a, b) => {
+                failures.extend(a.err().into_iter().chain(b.err()));
+                continue;
+            }
+        };
+        // Not two black frames: the expected triangles cover part of the frame.
+        let lit = expected.0.chunks_exact(4).filter(|p| p[..3] != [0, 0, 0]).count();
+        let pixels = (expected.1 .0 * expected.1 .1) as usize;
+        assert!(lit > pixels / 50 && lit < pixels, "{name}: the expected frame covers {lit} of {pixels} pixels");
+        match compare::compare_sized(&expected.0, expected.1, &lowered.0, lowered.1, TOLERANCE) {
+            Ok(r) if r.passed => {}
+            Ok(r) => failures.push(format!("{name}: the folded draw differs from the direct one: {r:?}")),
+            Err(e) => failures.push(format!("{name}: {e}")),
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
