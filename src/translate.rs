@@ -78,6 +78,9 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
 pub fn summary(w: &Written, explain: bool) -> String {
     let names: Vec<String> = w.files.iter().map(|f| f.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default()).collect();
     let mut text = format!("translated {} → {}: {}\n", w.translation.name, w.dir.display(), names.join(", "));
+    if let Some(g) = &w.translation.reflection.geometry {
+        text.push_str(&geometry_plan(g, explain));
+    }
     let left = w.translation.left_out();
     if !left.is_empty() {
         if explain {
@@ -97,4 +100,45 @@ pub fn summary(w: &Written, explain: bool) -> String {
         }
     }
     text
+}
+
+/// How to run a folded geometry program: one line, or with `--explain` the whole plan.
+fn geometry_plan(g: &crate::back::reflect::GeometryDraw, explain: bool) -> String {
+    let per = format!("{} vertices per input {}", g.vertices_per_primitive, g.input_primitive.trim_end_matches('s'));
+    if !explain {
+        return format!("  geometry stage folded into the vertex stage: draw {per} as a {}; --explain shows the plan\n", g.topology);
+    }
+    let (i, v) = (&g.index_buffer, &g.vertex_buffer);
+    let list = match g.topology {
+        "point-list" => "point",
+        "line-list" => "line",
+        _ => "triangle",
+    };
+    let per_invocation = g.vertices_per_primitive / g.invocations.max(1);
+    let mut t = String::from("  geometry stage folded into the vertex stage (WebGPU has no geometry stage):\n");
+    t.push_str(&format!(
+        "    indices: storage buffer `{}` (group {}, binding {}): {} u32 per input primitive ({}), in draw order\n",
+        i.name, i.group, i.binding, i.stride, g.input_primitive
+    ));
+    t.push_str(&format!(
+        "    vertices: storage buffer `{}` (group {}, binding {}): {} vec4<f32> per vertex ({})\n",
+        v.name,
+        v.group,
+        v.binding,
+        v.stride,
+        if g.inputs.is_empty() { "no inputs".to_string() } else { g.inputs.join(", ") }
+    ));
+    t.push_str(&format!(
+        "    draw: no vertex buffers, non-indexed, primitives × {} vertices (× instances), topology {}\n",
+        g.vertices_per_primitive, g.topology
+    ));
+    t.push_str(&format!(
+        "    per input primitive: {} invocation{} × {} {list} vertices ({} max_vertices = {} as {list} lists); slots not emitted lie outside the clip volume\n",
+        g.invocations,
+        if g.invocations == 1 { "" } else { "s" },
+        per_invocation,
+        g.output_primitive,
+        g.max_vertices
+    ));
+    t
 }

@@ -150,7 +150,19 @@ pub fn translate(
     crate::front::naga_run::validator()
         .validate(&module)
         .map_err(|e| vec![internal_error(file, format!("the merged module does not validate: {}", e.as_inner()))])?;
-    let left_out = prune::prune(&mut module, UNIFORM_BLOCK);
+    let mut left_out = prune::prune(&mut module, UNIFORM_BLOCK);
+    if program.fold().is_some() {
+        // The fold renamed the stages' globals apart and added glue of its own: report the
+        // user's names, and none of the glue.
+        left_out.retain_mut(|l| match ["effectc_vs_", "effectc_gs_"].iter().find_map(|p| l.name.strip_prefix(p)) {
+            Some(user) if !user.starts_with("gl_") => {
+                l.name = user.to_string();
+                true
+            }
+            Some(_) => false,
+            None => !l.name.starts_with("effectc_"),
+        });
+    }
     fixes::read_only_unwritten_storage(&mut module);
     let info = crate::front::naga_run::validator()
         .validate(&module)

@@ -125,7 +125,9 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling) -> Re
     }
     text.push_str("struct effectc_PerVertex { vec4 gl_Position; float gl_PointSize; };\n");
     writeln!(text, "effectc_PerVertex effectc_gl_in[{corners}];").unwrap();
-    text.push_str("vec4 effectc_vs_Position; float effectc_vs_PointSize; vec4 effectc_gs_Position; float effectc_gs_PointSize;\n");
+    text.push_str(
+        "vec4 effectc_vs_gl_Position; float effectc_vs_gl_PointSize; vec4 effectc_gs_gl_Position; float effectc_gs_gl_PointSize;\n",
+    );
     text.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
     text.push_str(&vs_part.declarations);
     text.push_str(&gs_part.declarations);
@@ -238,7 +240,7 @@ impl Part {
             match &u.target {
                 Referent::Global(i) if !is_shared(&s.globals[*i]) => edits.replace(u.span.clone(), format!("{prefix}{}", u.name)),
                 Referent::Unresolved => match u.name.as_str() {
-                    "gl_Position" | "gl_PointSize" => edits.replace(u.span.clone(), format!("effectc_{stage_word}_{}", &u.name[3..])),
+                    "gl_Position" | "gl_PointSize" => edits.replace(u.span.clone(), format!("effectc_{stage_word}_{}", u.name)),
                     "gl_in" => edits.replace(u.span.clone(), "effectc_gl_in"),
                     "gl_PrimitiveIDIn" | "gl_InvocationID" => edits.replace(u.span.clone(), format!("effectc_{}", &u.name[3..])),
                     "gl_VertexID" | "gl_VertexIndex" => edits.replace(u.span.clone(), "effectc_VertexID"),
@@ -345,34 +347,37 @@ fn find_name(text: &str, span: &Range<usize>, name: &str) -> Option<usize> {
     None
 }
 
-/// `effectc_emit()` and `effectc_end_primitive()`: a ring of the last three emitted vertices
-/// and the capture of the vertex this invocation draws.
+/// `effectc_emit()` and `effectc_end_primitive()`: the capture of the vertex this invocation
+/// draws, without keeping the strip (no arrays indexed at run time, which a GPU compiler
+/// keeps in memory): the wanted list primitive is the `f`-th of the strip that started when
+/// `effectc_made` primitives were complete, and its corner is the strip's vertex `f + k`
+/// (corners 0 and 1 swapped for odd triangles, GL's winding). The vertex is held when
+/// emitted and kept when the primitive completes; a strip ended earlier drops it.
 fn capture(gs: &Part, output: OutputPrimitive) -> String {
     let mut t = String::new();
-    t.push_str("uint effectc_want_primitive; uint effectc_want_corner; bool effectc_found;\n");
-    t.push_str("uint effectc_strip; uint effectc_made;\n");
-    t.push_str("vec4 effectc_ring_Position[3]; vec4 effectc_cap_Position;\n");
+    t.push_str("uint effectc_want_primitive; uint effectc_want_corner; bool effectc_found; bool effectc_held;\n");
+    t.push_str("uint effectc_strip; uint effectc_made; uint effectc_strip_start;\n");
+    t.push_str("vec4 effectc_cap_Position;\n");
     for o in &gs.outputs {
-        writeln!(t, "{0} effectc_ring_{1}[3]; {0} effectc_cap_{1};", o.ty.base, o.name).unwrap();
+        writeln!(t, "{} effectc_cap_{};", o.ty.base, o.name).unwrap();
     }
     let n = output.list_vertices();
-    t.push_str("void effectc_emit() {\n    uint slot = effectc_strip % 3u;\n    effectc_ring_Position[slot] = effectc_gs_Position;\n");
-    for o in &gs.outputs {
-        writeln!(t, "    effectc_ring_{0}[slot] = {0};", o.name).unwrap();
-    }
-    writeln!(t, "    effectc_strip += 1u;\n    if (effectc_strip >= {n}u) {{").unwrap();
-    t.push_str("        if (effectc_made == effectc_want_primitive && !effectc_found) {\n");
-    writeln!(t, "            uint first = effectc_strip - {n}u;").unwrap();
-    t.push_str("            uint k = effectc_want_corner;\n");
+    t.push_str("void effectc_emit() {\n    if (effectc_found) {\n        return;\n    }\n");
+    t.push_str("    if (effectc_want_primitive >= effectc_strip_start) {\n");
+    t.push_str("        uint f = effectc_want_primitive - effectc_strip_start;\n        uint k = effectc_want_corner;\n");
     if output == OutputPrimitive::TriangleStrip {
-        t.push_str("            if ((first & 1u) == 1u && k < 2u) { k = 1u - k; }\n");
+        t.push_str("        if ((f & 1u) == 1u && k < 2u) {\n            k = 1u - k;\n        }\n");
     }
-    t.push_str("            uint at = (first + k) % 3u;\n            effectc_cap_Position = effectc_ring_Position[at];\n");
+    t.push_str("        if (effectc_strip == f + k) {\n            effectc_cap_Position = effectc_gs_gl_Position;\n");
     for o in &gs.outputs {
-        writeln!(t, "            effectc_cap_{0} = effectc_ring_{0}[at];", o.name).unwrap();
+        writeln!(t, "            effectc_cap_{0} = {0};", o.name).unwrap();
     }
-    t.push_str("            effectc_found = true;\n        }\n        effectc_made += 1u;\n    }\n}\n");
-    t.push_str("void effectc_end_primitive() { effectc_strip = 0u; }\n");
+    t.push_str("            effectc_held = true;\n        }\n    }\n");
+    writeln!(t, "    effectc_strip += 1u;\n    if (effectc_strip >= {n}u) {{\n        effectc_made += 1u;\n    }}").unwrap();
+    t.push_str("    effectc_found = effectc_held && effectc_made > effectc_want_primitive;\n}\n");
+    t.push_str(
+        "void effectc_end_primitive() {\n    effectc_strip = 0u;\n    effectc_strip_start = effectc_made;\n    effectc_held = false;\n}\n",
+    );
     t
 }
 
@@ -403,45 +408,52 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
         layout.output.list_vertices()
     )
     .unwrap();
-    t.push_str("    effectc_found = false; effectc_strip = 0u; effectc_made = 0u;\n");
+    t.push_str("    effectc_found = false; effectc_held = false; effectc_strip = 0u; effectc_made = 0u; effectc_strip_start = 0u;\n");
     t.push_str("    effectc_PrimitiveIDIn = int(primitive); effectc_InstanceID = int(gl_InstanceIndex);\n");
     let stride = vs.inputs.len();
-    writeln!(t, "    for (uint k = 0u; k < {corners}u; k++) {{").unwrap();
-    match pulling {
-        Pulling::Storage { .. } => {
-            writeln!(t, "        uint index = {INDEX_BUFFER}.index[primitive * {corners}u + k];\n        effectc_VertexID = int(index);")
+    // One block per corner with constant indices (no loop): the arrays stay in registers.
+    for k in 0..corners {
+        match pulling {
+            Pulling::Storage { .. } => {
+                writeln!(
+                    t,
+                    "    uint index{k} = {INDEX_BUFFER}.index[primitive * {corners}u + {k}u];\n    effectc_VertexID = int(index{k});"
+                )
                 .unwrap();
-            for (i, (_, name, components)) in vs.inputs.iter().enumerate() {
-                let swizzle = ["x", "xy", "xyz", "xyzw"][*components as usize - 1];
-                writeln!(t, "        {}{name} = {VERTEX_BUFFER}.vertex[index * {stride}u + {i}u].{swizzle};", vs.prefix).unwrap();
+                for (i, (_, name, components)) in vs.inputs.iter().enumerate() {
+                    let swizzle = ["x", "xy", "xyz", "xyzw"][*components as usize - 1];
+                    writeln!(t, "    {}{name} = {VERTEX_BUFFER}.vertex[index{k} * {stride}u + {i}u].{swizzle};", vs.prefix).unwrap();
+                }
+            }
+            Pulling::Attributes => {
+                t.push_str("    effectc_VertexID = int(gl_VertexIndex);\n");
+                for (_, name, _) in &vs.inputs {
+                    writeln!(t, "    {}{name} = {name};", vs.prefix).unwrap();
+                }
             }
         }
-        Pulling::Attributes => {
-            t.push_str("        effectc_VertexID = int(gl_VertexIndex);\n");
-            for (_, name, _) in &vs.inputs {
-                writeln!(t, "        {}{name} = {name};", vs.prefix).unwrap();
+        writeln!(t, "    {}main();", vs.prefix).unwrap();
+        writeln!(
+            t,
+            "    effectc_gl_in[{k}].gl_Position = effectc_vs_gl_Position;\n    effectc_gl_in[{k}].gl_PointSize = effectc_vs_gl_PointSize;"
+        )
+        .unwrap();
+        for i in &gs.ins {
+            let o = vs
+                .outputs
+                .iter()
+                .find(|o| o.location == i.location)
+                .ok_or_else(|| format!("geometry input `{}` that no vertex output feeds", i.name))?;
+            if i.members.is_empty() {
+                writeln!(t, "    {}[{k}] = {};", i.name, o.name).unwrap();
+            } else {
+                for ((m, _, _), (vm, _, _)) in i.members.iter().zip(&o.members) {
+                    writeln!(t, "    {}[{k}].{m} = {}.{vm};", i.name, o.name).unwrap();
+                }
             }
         }
     }
-    writeln!(t, "        {}main();", vs.prefix).unwrap();
-    t.push_str(
-        "        effectc_gl_in[k].gl_Position = effectc_vs_Position;\n        effectc_gl_in[k].gl_PointSize = effectc_vs_PointSize;\n",
-    );
-    for i in &gs.ins {
-        let o = vs
-            .outputs
-            .iter()
-            .find(|o| o.location == i.location)
-            .ok_or_else(|| format!("geometry input `{}` that no vertex output feeds", i.name))?;
-        if i.members.is_empty() {
-            writeln!(t, "        {}[k] = {};", i.name, o.name).unwrap();
-        } else {
-            for ((m, _, _), (vm, _, _)) in i.members.iter().zip(&o.members) {
-                writeln!(t, "        {}[k].{m} = {}.{vm};", i.name, o.name).unwrap();
-            }
-        }
-    }
-    writeln!(t, "    }}\n    {}main();\n    if (effectc_found) {{\n        gl_Position = effectc_cap_Position;", gs.prefix).unwrap();
+    writeln!(t, "    {}main();\n    if (effectc_found) {{\n        gl_Position = effectc_cap_Position;", gs.prefix).unwrap();
     t.push_str(&assign);
     t.push_str("    } else {\n        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n    }\n}\n");
     Ok(t)

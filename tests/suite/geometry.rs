@@ -78,8 +78,8 @@ fn the_folded_text_maps_back_to_each_stage() {
     let (stage, range) = lowered.locate(at..at + "effectc_emit()".len()).unwrap();
     assert_eq!((stage, &gs[range]), (StageKind::Geometry, "EmitVertex()"));
     // The vertex stage's `gl_Position = …`, renamed apart.
-    let write = lowered.text.find("effectc_vs_Position = ").unwrap();
-    let (stage, range) = lowered.locate(write..write + "effectc_vs_Position".len()).unwrap();
+    let write = lowered.text.find("effectc_vs_gl_Position = ").unwrap();
+    let (stage, range) = lowered.locate(write..write + "effectc_vs_gl_Position".len()).unwrap();
     assert_eq!((stage, &vs[range]), (StageKind::Vertex, "gl_Position"));
     assert_eq!(lowered.locate(0..5), None, "the generated header maps nowhere");
 }
