@@ -117,7 +117,7 @@ fn geometry_plan(g: &crate::back::reflect::GeometryDraw, explain: bool) -> Strin
     let per_invocation = g.vertices_per_primitive / g.invocations.max(1);
     let mut t = String::from("  geometry stage folded into the vertex stage (WebGPU has no geometry stage):\n");
     t.push_str(&format!(
-        "    indices: storage buffer `{}` (group {}, binding {}): {} u32 per input primitive ({}), in draw order\n",
+        "    indices: storage buffer `{}` (group {}, binding {}): a header (i32 layer, i32 viewport to draw, -1 for all; 2 unused words), then {} u32 per input primitive ({}), in draw order\n",
         i.name, i.group, i.binding, i.stride, g.input_primitive
     ));
     t.push_str(&format!(
@@ -128,6 +128,13 @@ fn geometry_plan(g: &crate::back::reflect::GeometryDraw, explain: bool) -> Strin
         v.stride,
         if g.inputs.is_empty() { "no inputs".to_string() } else { g.inputs.join(", ") }
     ));
+    if !g.selects.is_empty() {
+        t.push_str(&format!(
+            "    the geometry stage selects the {} of each primitive: WebGPU cannot route it, so draw once per {} with the header naming it\n",
+            g.selects.join(" and "),
+            g.selects.join(" and ")
+        ));
+    }
     t.push_str(&format!(
         "    draw: no vertex buffers, non-indexed, primitives × {} vertices (× instances), topology {}\n",
         g.vertices_per_primitive, g.topology

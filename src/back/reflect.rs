@@ -50,13 +50,19 @@ pub struct GeometryDraw {
     pub topology: &'static str,
     /// Vertices to draw per input primitive: `draw(primitives × this, instances)`.
     pub vertices_per_primitive: u32,
-    /// `u32` vertex indices, `corners` per input primitive, in draw order.
+    /// A 16-byte header (`i32` layer, `i32` viewport: the draw keeps only the primitives the
+    /// geometry stage sends to that layer and viewport, −1 for all; two unused words), then
+    /// `u32` vertex indices, `stride` per input primitive, in draw order.
     pub index_buffer: PulledBuffer,
     /// Per vertex, one `vec4<f32>` per entry of `inputs` (unused components ignored).
     pub vertex_buffer: PulledBuffer,
     /// The vertex stage's inputs in their `vec4` order within a vertex (the first is at
     /// `vertex * inputs.len()`); also listed in `vertex_inputs`.
     pub inputs: Vec<String>,
+    /// `layer` and/or `viewport` when the geometry stage writes `gl_Layer` /
+    /// `gl_ViewportIndex` (WebGPU cannot route a primitive: draw once per layer or viewport
+    /// with the header naming it).
+    pub selects: Vec<&'static str>,
 }
 
 /// A storage buffer the folded stage reads.
@@ -100,6 +106,11 @@ pub fn geometry_draw(lowered: &crate::front::geometry_fold::Lowered) -> Option<(
         index_buffer: PulledBuffer { name: INDEX_BUFFER, group: 0, binding: index_binding, stride: l.input.vertices() },
         vertex_buffer: PulledBuffer { name: VERTEX_BUFFER, group: 0, binding: vertex_binding, stride: inputs.len() as u32 },
         inputs: inputs.iter().map(|i| i.name.clone()).collect(),
+        selects: [(lowered.selects_layer, "layer"), (lowered.selects_viewport, "viewport")]
+            .into_iter()
+            .filter(|(s, _)| *s)
+            .map(|(_, n)| n)
+            .collect(),
     };
     Some((draw, inputs))
 }

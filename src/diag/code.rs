@@ -131,6 +131,7 @@ codes! {
     NagaCannotTake => "N0102", "a legal construct naga cannot take: stage checked for syntax and interface only",
     ShadowBiasDropped => "N0103", "the bias of a shadow lookup is dropped",
     PointCoordConstant => "N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU points are one pixel wide",
+    LayerSelected => "N0105", "`gl_Layer`/`gl_ViewportIndex` select which primitives a draw keeps (WebGPU cannot route them)",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
     // Warnings.
     StageExtension => "W0001", "stage file extension names another stage",

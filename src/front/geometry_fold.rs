@@ -18,9 +18,13 @@
 //! `effectc_gs_…`); uniforms, textures and samplers keep their names and the vertex stage's
 //! declarations (the front gave both stages the same ones).
 //!
-//! Not folded (an error naming the construct): adjacency inputs, output blocks without
-//! an instance name, array or matrix varyings, integer vertex inputs, `gl_Layer` and
-//! `gl_ViewportIndex`.
+//! `gl_Layer` and `gl_ViewportIndex` cannot route a primitive in WebGPU: the draw keeps the
+//! primitives of the layer and viewport [`INDEX_BUFFER`]'s header names (−1: all), so a
+//! layered target is drawn one layer per draw.
+//!
+//! Not folded (an error naming the construct): output blocks without
+//! an instance name, array or matrix varyings, integer vertex inputs, `gl_PrimitiveID`
+//! written for the fragment stage.
 
 use std::fmt::Write as _;
 use std::ops::Range;
@@ -35,6 +39,9 @@ use crate::stage::StageKind;
 /// Name of the storage buffer of vertex indices (three, two or one per input primitive),
 /// as the translated code names it (its block type is `EffectcIndices`).
 pub const INDEX_BUFFER: &str = "effectc_indices";
+/// Words before the indices in [`INDEX_BUFFER`]: the layer and the viewport a draw keeps
+/// (as `i32`, −1 for all), two unused.
+pub const HEADER_WORDS: u32 = 4;
 /// Name of the storage buffer of vertex inputs, `vec4` per input (in location order) per
 /// vertex, as the translated code names it (its block type is `EffectcVertices`).
 pub const VERTEX_BUFFER: &str = "effectc_vertices";
@@ -62,6 +69,10 @@ pub struct Lowered {
     pub vertex_inputs: Vec<(u32, String, u32)>,
     /// The parts of `text` copied from the two rewritten stages, with their offset maps.
     pieces: Vec<Piece>,
+    /// The geometry stage writes `gl_Layer` / `gl_ViewportIndex`: the draw keeps only the
+    /// primitives of the layer and viewport named in [`INDEX_BUFFER`]'s header.
+    pub selects_layer: bool,
+    pub selects_viewport: bool,
 }
 
 /// A range of the lowered text that came from one stage's rewritten text.
@@ -91,18 +102,17 @@ pub struct Folded {
     pub analysis: Validated,
 }
 
-/// Folds `gs` (a geometry stage's 4.50 text) into `vs` (the vertex stage's).
-pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling) -> Result<Lowered, String> {
-    if matches!(layout.input, InputPrimitive::LinesAdjacency | InputPrimitive::TrianglesAdjacency) {
-        return Err(format!("a `{}` geometry input (adjacency is not lowered)", layout.input.name()));
-    }
+/// Folds `gs` (a geometry stage's 4.50 text) into `vs` (the vertex stage's). `original` is
+/// the geometry stage as the user wrote it, when known: the interpolation qualifiers of its
+/// output block members (the 4.50 text leaves them out, as naga ignores them there).
+pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, original: Option<&StageSyntax>) -> Result<Lowered, String> {
     let v = syntax::analyse(FileId(0), vs, StageKind::Vertex).map_err(|_| "the rewritten vertex stage does not parse".to_string())?;
     let g = syntax::analyse(FileId(0), gs, StageKind::Geometry).map_err(|_| "the rewritten geometry stage does not parse".to_string())?;
     let corners = layout.input.vertices();
     let mut text = String::from("#version 450\n");
-    let vs_part = Part::new(&v, "effectc_vs_", None)?;
+    let vs_part = Part::new(&v, "effectc_vs_", None, None)?;
     let shared: Vec<&str> = v.globals.iter().filter(|x| is_shared(x)).map(|x| x.name.as_str()).collect();
-    let gs_part = Part::new(&g, "effectc_gs_", Some((&shared, corners)))?;
+    let gs_part = Part::new(&g, "effectc_gs_", Some((&shared, corners)), original)?;
     let vertex_inputs = vs_part.inputs.clone();
     match pulling {
         Pulling::Storage { index_binding, vertex_binding } => {
@@ -129,6 +139,7 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling) -> Re
         "vec4 effectc_vs_gl_Position; float effectc_vs_gl_PointSize; vec4 effectc_gs_gl_Position; float effectc_gs_gl_PointSize;\n",
     );
     text.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
+    text.push_str("int effectc_gs_gl_Layer; int effectc_gs_gl_ViewportIndex;\n");
     text.push_str(&vs_part.declarations);
     text.push_str(&gs_part.declarations);
     let mut pieces = Vec::new();
@@ -142,7 +153,8 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling) -> Re
     text.push_str(&capture(&gs_part, layout.output));
     append(&mut text, &gs_part, StageKind::Geometry);
     text.push_str(&driver(&vs_part, &gs_part, layout, pulling)?);
-    Ok(Lowered { text, layout, pulling, vertex_inputs, pieces })
+    let (selects_layer, selects_viewport) = (gs_part.selects.contains("gl_Layer"), gs_part.selects.contains("gl_ViewportIndex"));
+    Ok(Lowered { text, layout, pulling, vertex_inputs, pieces, selects_layer, selects_viewport })
 }
 
 /// `float`, `vec2` … `vec4` by component count.
@@ -164,6 +176,8 @@ struct Part {
     outputs: Vec<Varying>,
     /// Geometry stage: its inputs, as `outputs`.
     ins: Vec<Varying>,
+    /// Geometry stage: which of `gl_Layer` and `gl_ViewportIndex` it uses.
+    selects: std::collections::BTreeSet<String>,
 }
 
 /// A varying made private: where it was, what it is now called, its type.
@@ -179,7 +193,12 @@ struct Varying {
 
 impl Part {
     /// `geometry`: the vertex stage's shared declarations (dropped here) and `gl_in`'s length.
-    fn new(s: &StageSyntax, prefix: &'static str, geometry: Option<(&[&str], u32)>) -> Result<Part, String> {
+    fn new(
+        s: &StageSyntax,
+        prefix: &'static str,
+        geometry: Option<(&[&str], u32)>,
+        original: Option<&StageSyntax>,
+    ) -> Result<Part, String> {
         let text = &s.text;
         let mut edits = Edits::new();
         let mut part = Part {
@@ -187,6 +206,7 @@ impl Part {
             declarations: String::new(),
             body: String::new(),
             map: OffsetMap::default(),
+            selects: Default::default(),
             inputs: Vec::new(),
             outputs: Vec::new(),
             ins: Vec::new(),
@@ -223,7 +243,8 @@ impl Part {
                     delete(&mut edits, &g.decl_span);
                 }
                 Storage::In | Storage::Out | Storage::Varying => {
-                    let varying = private_varying(g, &renamed, geometry.map(|(_, n)| n), &mut part.declarations)?;
+                    let as_written = original.and_then(|o| o.globals.iter().find(|x| x.name == g.name && x.storage == g.storage));
+                    let varying = private_varying(g, as_written, &renamed, geometry.map(|(_, n)| n), &mut part.declarations)?;
                     if g.storage == Storage::Out || (g.storage == Storage::Varying && geometry.is_none()) {
                         part.outputs.push(varying);
                     } else {
@@ -245,6 +266,10 @@ impl Part {
                     "gl_PrimitiveIDIn" | "gl_InvocationID" => edits.replace(u.span.clone(), format!("effectc_{}", &u.name[3..])),
                     "gl_VertexID" | "gl_VertexIndex" => edits.replace(u.span.clone(), "effectc_VertexID"),
                     "gl_InstanceID" | "gl_InstanceIndex" => edits.replace(u.span.clone(), "effectc_InstanceID"),
+                    "gl_Layer" | "gl_ViewportIndex" if geometry.is_some() => {
+                        part.selects.insert(u.name.clone());
+                        edits.replace(u.span.clone(), format!("effectc_gs_{}", u.name))
+                    }
                     "gl_Layer" | "gl_ViewportIndex" | "gl_PrimitiveID" => return Err(format!("`{}` written by a geometry stage", u.name)),
                     _ => {}
                 },
@@ -289,8 +314,14 @@ fn components(ty: &GlslType) -> Option<u32> {
 }
 
 /// Declares a varying as a private global (a struct for a block; an array of `corners` for
-/// a geometry input) and describes it.
-fn private_varying(g: &Global, renamed: &str, corners: Option<u32>, out: &mut String) -> Result<Varying, String> {
+/// a geometry input) and describes it; `as_written` is the declaration in the user's text.
+fn private_varying(
+    g: &Global,
+    as_written: Option<&Global>,
+    renamed: &str,
+    corners: Option<u32>,
+    out: &mut String,
+) -> Result<Varying, String> {
     let interp = g.interp.map(|i| i.keyword().to_string()).unwrap_or_default();
     let array = match (corners, g.storage) {
         (Some(n), Storage::In) => format!("[{n}]"),
@@ -313,9 +344,12 @@ fn private_varying(g: &Global, renamed: &str, corners: Option<u32>, out: &mut St
         }
         Some(b) => {
             let Some(instance) = &b.instance else { return Err(format!("the block `{}` without an instance name", b.block_name)) };
-            // Uses name the instance; the struct takes the block's name, both prefixed.
+            // Uses name the instance; the struct is named after it too (an input and an
+            // output block may share a block name), both prefixed.
             let prefix = &renamed[..renamed.len() - g.name.len()];
-            let (struct_name, renamed) = (format!("{prefix}{}", b.block_name), format!("{prefix}{instance}"));
+            let (struct_name, renamed) = (format!("{prefix}{instance}_block"), format!("{prefix}{instance}"));
+            let written = as_written.and_then(|w| w.block.as_ref());
+            let block_interp = as_written.and_then(|w| w.interp).or(g.interp);
             let mut members = Vec::new();
             write!(out, "struct {struct_name} {{").unwrap();
             for m in &b.members {
@@ -323,7 +357,9 @@ fn private_varying(g: &Global, renamed: &str, corners: Option<u32>, out: &mut St
                     return Err(format!("the block member `{}.{}`", b.block_name, m.name));
                 }
                 write!(out, " {} {};", m.ty.base, m.name).unwrap();
-                members.push((m.name.clone(), m.ty.clone(), m.interp.map(|i| i.keyword().to_string()).unwrap_or_default()));
+                let interp =
+                    written.and_then(|w| w.members.iter().find(|x| x.name == m.name)).and_then(|x| x.interp).or(m.interp).or(block_interp);
+                members.push((m.name.clone(), m.ty.clone(), interp.map(|i| i.keyword().to_string()).unwrap_or_default()));
             }
             writeln!(out, " }};\n{struct_name} {renamed}{array};").unwrap();
             Ok(Varying { location, name: renamed.to_string(), ty: GlslType::scalar(&struct_name), interp, members })
@@ -357,7 +393,7 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
     let mut t = String::new();
     t.push_str("uint effectc_want_primitive; uint effectc_want_corner; bool effectc_found; bool effectc_held;\n");
     t.push_str("uint effectc_strip; uint effectc_made; uint effectc_strip_start;\n");
-    t.push_str("vec4 effectc_cap_Position;\n");
+    t.push_str("vec4 effectc_cap_Position; int effectc_cap_Layer; int effectc_cap_ViewportIndex;\n");
     for o in &gs.outputs {
         writeln!(t, "{} effectc_cap_{};", o.ty.base, o.name).unwrap();
     }
@@ -369,6 +405,9 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
         t.push_str("        if ((f & 1u) == 1u && k < 2u) {\n            k = 1u - k;\n        }\n");
     }
     t.push_str("        if (effectc_strip == f + k) {\n            effectc_cap_Position = effectc_gs_gl_Position;\n");
+    t.push_str(
+        "            effectc_cap_Layer = effectc_gs_gl_Layer;\n            effectc_cap_ViewportIndex = effectc_gs_gl_ViewportIndex;\n",
+    );
     for o in &gs.outputs {
         writeln!(t, "            effectc_cap_{0} = {0};", o.name).unwrap();
     }
@@ -409,6 +448,7 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
     )
     .unwrap();
     t.push_str("    effectc_found = false; effectc_held = false; effectc_strip = 0u; effectc_made = 0u; effectc_strip_start = 0u;\n");
+    t.push_str("    effectc_gs_gl_Layer = 0; effectc_gs_gl_ViewportIndex = 0;\n");
     t.push_str("    effectc_PrimitiveIDIn = int(primitive); effectc_InstanceID = int(gl_InstanceIndex);\n");
     let stride = vs.inputs.len();
     // One block per corner with constant indices (no loop): the arrays stay in registers.
@@ -417,7 +457,7 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
             Pulling::Storage { .. } => {
                 writeln!(
                     t,
-                    "    uint index{k} = {INDEX_BUFFER}.index[primitive * {corners}u + {k}u];\n    effectc_VertexID = int(index{k});"
+                    "    uint index{k} = {INDEX_BUFFER}.index[{HEADER_WORDS}u + primitive * {corners}u + {k}u];\n    effectc_VertexID = int(index{k});"
                 )
                 .unwrap();
                 for (i, (_, name, components)) in vs.inputs.iter().enumerate() {
@@ -453,7 +493,22 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
             }
         }
     }
-    writeln!(t, "    {}main();\n    if (effectc_found) {{\n        gl_Position = effectc_cap_Position;", gs.prefix).unwrap();
+    writeln!(t, "    {}main();", gs.prefix).unwrap();
+    // The layer and viewport the draw keeps (−1: every one), from the index buffer's header.
+    // The header is the buffer's first words (naga cannot load a member beside a
+    // runtime-sized array).
+    let mut keep = String::from("effectc_found");
+    if let Pulling::Storage { .. } = pulling {
+        for (word, (written, field, cap)) in
+            [("gl_Layer", "layer", "Layer"), ("gl_ViewportIndex", "viewport", "ViewportIndex")].into_iter().enumerate()
+        {
+            if gs.selects.contains(written) {
+                writeln!(t, "    int effectc_keep_{field} = int({INDEX_BUFFER}.index[{word}u]);").unwrap();
+                write!(keep, " && (effectc_keep_{field} < 0 || effectc_cap_{cap} == effectc_keep_{field})").unwrap();
+            }
+        }
+    }
+    writeln!(t, "    if ({keep}) {{\n        gl_Position = effectc_cap_Position;").unwrap();
     t.push_str(&assign);
     t.push_str("    } else {\n        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n    }\n}\n");
     Ok(t)

@@ -193,6 +193,20 @@ pub fn fold_geometry(program: &mut CompiledProgram, diags: &mut Vec<Diagnostic>)
     let Some(g) = program.stage(StageKind::Geometry) else { return };
     let syntaxes: Vec<StageSyntax> = program.stages.iter().map(|s| s.syntax.clone()).collect();
     let folded = fold(program, plan::first_free_binding(&program.plan, &syntaxes));
+    if let Ok(f) = &folded {
+        let selected: Vec<&str> = [(f.drawn.selects_layer, "`gl_Layer`"), (f.drawn.selects_viewport, "`gl_ViewportIndex`")]
+            .into_iter()
+            .filter(|(s, _)| *s)
+            .map(|(_, n)| n)
+            .collect();
+        if !selected.is_empty() {
+            diags.push(
+                Diagnostic::new(Code::LayerSelected, format!("the geometry stage writes {}: WebGPU cannot route a primitive to a layer or viewport", selected.join(" and ")))
+                    .in_file(g.syntax.file)
+                    .with_note("the translation draws the primitives of one layer and viewport per draw (named in the index buffer's header; `render` draws layer 0, viewport 0)"),
+            );
+        }
+    }
     if let Err(why) = &folded {
         diags.push(
             Diagnostic::new(Code::SyntaxAndInterfaceOnly, "the geometry stage is checked for syntax and interface only")
@@ -218,7 +232,7 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
     let g = program.stage(StageKind::Geometry).expect("checked above");
     let layout = geometry_layout::geometry_layout(&g.syntax).map_err(|p| p.message)?;
     let validate = |pulling: Pulling| -> Result<(geometry_fold::Lowered, Validated), String> {
-        let lowered = geometry_fold::lower(&vs.text, &gs.text, layout, pulling)?;
+        let lowered = geometry_fold::lower(&vs.text, &gs.text, layout, pulling, Some(&g.syntax))?;
         let as_stage = Rewritten { text: lowered.text.clone(), map: OffsetMap::identity(lowered.text.len()), limitation: None };
         match naga_run::parse_and_validate(g.syntax.file, &as_stage, naga::ShaderStage::Vertex, &g.syntax.version) {
             Outcome::Valid(v) if v.needs.is_empty() => Ok((lowered, v)),
@@ -229,6 +243,18 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
             }
         }
     };
+    if let Some(dir) = std::env::var_os("EFFECTC_DUMP_REWRITE") {
+        // Debugging aid: the drawn fold, next to the stages' rewritten texts.
+        if let Ok(l) = geometry_fold::lower(
+            &vs.text,
+            &gs.text,
+            layout,
+            Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 },
+            Some(&g.syntax),
+        ) {
+            let _ = std::fs::write(std::path::Path::new(&dir).join("folded.vert"), l.text);
+        }
+    }
     let (drawn, naga) = validate(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 })?;
     let (analysed, analysis) = validate(Pulling::Attributes)?;
     Ok(Folded { drawn, naga, analysed, analysis })

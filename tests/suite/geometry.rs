@@ -71,7 +71,7 @@ fn every_geometry_program_folds_into_a_vertex_stage_naga_validates() {
 #[test]
 fn the_folded_text_maps_back_to_each_stage() {
     let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
-    let lowered = lower(&vs, &gs, layout, Pulling::Attributes).unwrap();
+    let lowered = lower(&vs, &gs, layout, Pulling::Attributes, None).unwrap();
     // The first `effectc_emit()` defines it; the second is the geometry stage's EmitVertex().
     let first = lowered.text.find("effectc_emit()").unwrap();
     let at = lowered.text[first + 1..].find("effectc_emit()").unwrap() + first + 1;
@@ -85,15 +85,19 @@ fn the_folded_text_maps_back_to_each_stage() {
 }
 
 #[test]
-fn what_is_not_folded_is_named() {
+fn what_is_not_folded_is_named_and_what_folds_differently_is_marked() {
     let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
+    // Adjacency folds: gl_in[] has the six vertices GL_TRIANGLES_ADJACENCY gives.
     let adjacency = GeometryLayout { input: InputPrimitive::TrianglesAdjacency, ..layout };
-    assert_eq!(
-        lower(&vs, &gs, adjacency, Pulling::Attributes).unwrap_err(),
-        "a `triangles_adjacency` geometry input (adjacency is not lowered)"
-    );
+    assert!(lower(&vs, &gs, adjacency, Pulling::Attributes, None).unwrap().text.contains("effectc_gl_in[6];"));
+    let primitive_id = gs.replace("EmitVertex();", "gl_PrimitiveID = 1; EmitVertex();");
+    assert_eq!(lower(&vs, &primitive_id, layout, Pulling::Attributes, None).unwrap_err(), "`gl_PrimitiveID` written by a geometry stage");
+    // A layer is not routed but selected: the draw keeps the primitives of one layer.
     let layered = gs.replace("EmitVertex();", "gl_Layer = 1; EmitVertex();");
-    assert_eq!(lower(&vs, &layered, layout, Pulling::Attributes).unwrap_err(), "`gl_Layer` written by a geometry stage");
+    let storage = Pulling::Storage { index_binding: 8, vertex_binding: 9 };
+    let folded = lower(&vs, &layered, layout, storage, None).unwrap();
+    assert!(folded.selects_layer && !folded.selects_viewport);
+    assert!(folded.text.contains("effectc_cap_Layer == effectc_keep_layer"), "{}", folded.text);
 }
 
 /// The fixtures with a manifest (`effect.toml`) and the expected image's manifest

@@ -4,7 +4,12 @@
 //!
 //! A triangle mesh feeds the geometry stage's input primitive as GL would with the matching
 //! draw mode: `triangles` its triangles, `lines` each triangle's three edges (as a wireframe
-//! drawn with `GL_LINES`), `points` each vertex once.
+//! drawn with `GL_LINES`), `points` each vertex once; `triangles_adjacency` each triangle
+//! with the far corner of the triangle across each edge (matched by position, so seams of
+//! split vertices count as shared; across a border edge, the triangle's own third corner);
+//! `lines_adjacency` each triangle edge with the triangle's third corner before and after.
+
+use std::collections::HashMap;
 
 use crate::assets::mesh::Mesh;
 use crate::back::reflect::{GeometryDraw, Reflection};
@@ -54,6 +59,10 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
     let indices: Vec<u32> = match draw.input_primitive {
         "points" => (0..vertex_count as u32).collect(),
         "lines" => triangles.chunks_exact(3).flat_map(|t| [t[0], t[1], t[1], t[2], t[2], t[0]]).collect(),
+        "lines_adjacency" => {
+            triangles.chunks_exact(3).flat_map(|t| [t[2], t[0], t[1], t[2], t[0], t[1], t[2], t[0], t[1], t[2], t[0], t[1]]).collect()
+        }
+        "triangles_adjacency" => with_adjacency(&triangles, &mesh.attribute(crate::manifest::MeshAttribute::Position)),
         _ => triangles,
     };
     let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.map(|a| mesh.attribute(a))).collect();
@@ -65,12 +74,36 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
         }
     }
     let primitives = indices.len() as u32 / draw.index_buffer.stride.max(1);
+    // The header: layer 0 and viewport 0 are drawn (the frame is one 2D target).
+    let header = [0u32; 4];
     Pulled {
-        indices: indices.iter().flat_map(|i| i.to_le_bytes()).collect(),
+        indices: header.iter().chain(&indices).flat_map(|i| i.to_le_bytes()).collect(),
         vertices,
         count: primitives * draw.vertices_per_primitive,
         bindings: [draw.index_buffer.binding, draw.vertex_buffer.binding],
     }
+}
+
+/// GL's `GL_TRIANGLES_ADJACENCY` order for each triangle (a, b, c): a, across ab, b, across
+/// bc, c, across ca, where "across" is the third corner of the triangle on the other side
+/// of that edge (found by the edge's positions), or the triangle's own third corner.
+fn with_adjacency(triangles: &[u32], positions: &[[f32; 4]]) -> Vec<u32> {
+    let key = |i: u32| positions.get(i as usize).map_or([0; 3], |p| [p[0].to_bits(), p[1].to_bits(), p[2].to_bits()]);
+    let mut third: HashMap<([u32; 3], [u32; 3]), u32> = HashMap::new();
+    for t in triangles.chunks_exact(3) {
+        for k in 0..3 {
+            third.entry((key(t[k]), key(t[(k + 1) % 3]))).or_insert(t[(k + 2) % 3]);
+        }
+    }
+    let mut out = Vec::with_capacity(triangles.len() * 2);
+    for t in triangles.chunks_exact(3) {
+        for k in 0..3 {
+            let (a, b, own) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
+            // The neighbour runs along the shared edge the other way round.
+            out.extend([a, third.get(&(key(b), key(a))).copied().unwrap_or(own)]);
+        }
+    }
+    out
 }
 
 #[cfg(test)]
@@ -91,11 +124,15 @@ mod tests {
             index_buffer: buffer(corners),
             vertex_buffer: buffer(1),
             inputs: vec!["position".into()],
+            selects: Vec::new(),
         }
     }
 
+    /// The indices after the 4-word header (which must name layer 0 and viewport 0).
     fn words(bytes: &[u8]) -> Vec<u32> {
-        bytes.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect()
+        let all: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
+        assert_eq!(all[..4], [0, 0, 0, 0]);
+        all[4..].to_vec()
     }
 
     #[test]
@@ -116,7 +153,22 @@ mod tests {
         let i = &mesh.indices;
         assert_eq!(words(&l.indices)[..6], [i[0], i[1], i[1], i[2], i[2], i[0]]);
         assert_eq!(l.count, mesh.indices.len() as u32 * 8);
-        let p = pulled(&draw("points", 1, 6), &[position], &mesh, true);
+        let p = pulled(&draw("points", 1, 6), std::slice::from_ref(&position), &mesh, true);
         assert_eq!((words(&p.indices), p.count), (vec![0, 1, 2], 18));
+        // The quad's two triangles share their diagonal: each sees the other's far corner
+        // across it, and its own third corner across the border edges.
+        let a = pulled(&draw("triangles_adjacency", 6, 3), &[position], &mesh, false);
+        let adjacency = words(&a.indices);
+        assert_eq!(adjacency.len(), 12);
+        let (t0, t1) = (&i[0..3], &i[3..6]);
+        let across = |t: &[u32], k: usize| adjacency[if t == t0 { 0 } else { 6 } + 2 * k + 1];
+        for (t, other) in [(t0, t1), (t1, t0)] {
+            for k in 0..3 {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                let shared = other.contains(&a) && other.contains(&b);
+                let far = other.iter().copied().find(|v| *v != a && *v != b).unwrap();
+                assert_eq!(across(t, k), if shared { far } else { t[(k + 2) % 3] }, "edge {a}-{b}");
+            }
+        }
     }
 }
