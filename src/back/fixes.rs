@@ -467,3 +467,22 @@ mod tests {
         wgsl(&m).unwrap();
     }
 }
+
+/// A fragment stage behind a folded geometry stage reads `gl_PrimitiveID` from the flat
+/// `uint` varying at `location` (the fold writes it there) instead of the built-in, which
+/// WebGPU has only as an optional feature.
+pub fn primitive_id_from_location(module: &mut Module, location: u32) {
+    for ep in module.entry_points.iter_mut().filter(|e| e.stage == naga::ShaderStage::Fragment) {
+        for arg in &mut ep.function.arguments {
+            if arg.binding == Some(naga::Binding::BuiltIn(naga::BuiltIn::PrimitiveIndex)) {
+                arg.binding = Some(naga::Binding::Location {
+                    location,
+                    interpolation: Some(naga::Interpolation::Flat),
+                    sampling: None,
+                    blend_src: None,
+                    per_primitive: false,
+                });
+            }
+        }
+    }
+}

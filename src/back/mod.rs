@@ -237,17 +237,22 @@ fn stage_modules(program: &CompiledProgram) -> Result<Vec<(StageKind, Module)>, 
             });
             continue;
         }
-        if let Some(validated) = stage.naga.as_ref().filter(|v| !v.needs.is_empty()) {
+        // A folded geometry stage hands `gl_PrimitiveID` to the fragment stage as a varying.
+        let folded_primitive = program.fold().map(|f| f.drawn.primitive_location).filter(|_| kind == StageKind::Fragment);
+        let needs_of = |v: &crate::front::naga_run::Validated| -> Vec<String> {
+            v.needs.iter().filter(|n| !(folded_primitive.is_some() && n.as_str() == "PRIMITIVE_INDEX")).cloned().collect()
+        };
+        if let Some(validated) = stage.naga.as_ref().filter(|v| !needs_of(v).is_empty()) {
             diags.push(
                 Diagnostic::new(
                     Code::TargetCannotExpress,
-                    format!("the {kind} stage needs {} , which WebGPU does not have", validated.needs.join(", ")),
+                    format!("the {kind} stage needs {} , which WebGPU does not have", needs_of(validated).join(", ")),
                 )
                 .in_file(stage.syntax.file)
                 .with_note(
                     "legal in desktop GL; WebGPU has these only as optional features (or not at all), so effectc does not translate them",
                 )
-                .with_help(capability_help(&validated.needs)),
+                .with_help(capability_help(&needs_of(validated))),
             );
             continue;
         }
@@ -259,6 +264,9 @@ fn stage_modules(program: &CompiledProgram) -> Result<Vec<(StageKind, Module)>, 
             continue;
         };
         let mut module = validated.module.clone();
+        if let Some(location) = folded_primitive {
+            fixes::primitive_id_from_location(&mut module, location);
+        }
         fixes::block_member_interpolation(&mut module, &stage.syntax);
         for span in fixes::fix_switch_fallthrough(&mut module) {
             diags.push(fall_through((stage.syntax.file, span.to_range().map(|r| rewritten.map.range_to_original(r)))));

@@ -84,12 +84,20 @@ pub fn geometry_draw(lowered: &crate::front::geometry_fold::Lowered) -> Option<(
     let inputs: Vec<InterfaceVar> = lowered
         .vertex_inputs
         .iter()
-        .map(|(location, name, components)| InterfaceVar {
-            location: *location,
-            name: name.clone(),
-            wgsl_type: if *components == 1 { "f32".to_string() } else { format!("vec{components}<f32>") },
-            format: Some(if *components == 1 { "float32".to_string() } else { format!("float32x{components}") }),
-            interpolation: None,
+        .zip(&lowered.input_types)
+        .map(|((location, name, components), ty)| {
+            let (scalar, format) = match ty.chars().next() {
+                Some('i') => ("i32", "sint32"),
+                Some('u') => ("u32", "uint32"),
+                _ => ("f32", "float32"),
+            };
+            InterfaceVar {
+                location: *location,
+                name: name.clone(),
+                wgsl_type: if *components == 1 { scalar.to_string() } else { format!("vec{components}<{scalar}>") },
+                format: Some(if *components == 1 { format.to_string() } else { format!("{format}x{components}") }),
+                interpolation: None,
+            }
         })
         .collect();
     let draw = GeometryDraw {

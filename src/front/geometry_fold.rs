@@ -22,16 +22,19 @@
 //! primitives of the layer and viewport [`INDEX_BUFFER`]'s header names (−1: all), so a
 //! layered target is drawn one layer per draw.
 //!
-//! Not folded (an error naming the construct): output blocks without
-//! an instance name, array or matrix varyings, integer vertex inputs, `gl_PrimitiveID`
-//! written for the fragment stage.
+//! The `gl_PrimitiveID` the geometry stage writes reaches a fragment stage that reads it as a
+//! flat varying ([`Lowered::primitive_location`]; WebGPU has the built-in only as a feature).
+//!
+//! Not folded (an error naming the construct): output blocks without an instance name,
+//! array or matrix varyings, vertex inputs other than scalars and vectors, `gl_Layer`/`gl_ViewportIndex`/
+//! `gl_PrimitiveID` in the vertex stage of a geometry program.
 
 use std::fmt::Write as _;
 use std::ops::Range;
 
 use crate::diag::FileId;
 use crate::front::edits::{Edits, OffsetMap};
-use crate::front::geometry_layout::{GeometryLayout, InputPrimitive, OutputPrimitive};
+use crate::front::geometry_layout::{GeometryLayout, OutputPrimitive};
 use crate::front::naga_run::Validated;
 use crate::front::syntax::{self, Global, GlslType, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
@@ -45,6 +48,10 @@ pub const HEADER_WORDS: u32 = 4;
 /// Name of the storage buffer of vertex inputs, `vec4` per input (in location order) per
 /// vertex, as the translated code names it (its block type is `EffectcVertices`).
 pub const VERTEX_BUFFER: &str = "effectc_vertices";
+
+/// Prefix of the vertex inputs of the [`Pulling::Attributes`] fold (the user's names could
+/// clash with the geometry stage's globals); the input is the user's input of that name.
+pub const ATTRIBUTE_PREFIX: &str = "effectc_in_";
 
 /// Where the folded stage reads its primitives' vertices.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -67,8 +74,15 @@ pub struct Lowered {
     /// The vertex stage's inputs in the order of their `vec4`s in [`VERTEX_BUFFER`]:
     /// (location, name as the user wrote it, components).
     pub vertex_inputs: Vec<(u32, String, u32)>,
+    /// The GLSL type of each of `vertex_inputs` (`vec3`, `uvec2`, `int`): an integer input
+    /// travels as its bit pattern in the `vec4`.
+    pub input_types: Vec<String>,
     /// The parts of `text` copied from the two rewritten stages, with their offset maps.
     pieces: Vec<Piece>,
+    /// The flat `uint` output at this location carries the `gl_PrimitiveID` the geometry stage
+    /// wrote (its input primitive's number when it wrote none) to a fragment stage that reads
+    /// `gl_PrimitiveID` (WebGPU has it only as an optional feature).
+    pub primitive_location: u32,
     /// The geometry stage writes `gl_Layer` / `gl_ViewportIndex`: the draw keeps only the
     /// primitives of the layer and viewport named in [`INDEX_BUFFER`]'s header.
     pub selects_layer: bool,
@@ -113,7 +127,8 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, origi
     let vs_part = Part::new(&v, "effectc_vs_", None, None)?;
     let shared: Vec<&str> = v.globals.iter().filter(|x| is_shared(x)).map(|x| x.name.as_str()).collect();
     let gs_part = Part::new(&g, "effectc_gs_", Some((&shared, corners)), original)?;
-    let vertex_inputs = vs_part.inputs.clone();
+    let vertex_inputs: Vec<(u32, String, u32)> = vs_part.inputs.iter().map(|(l, n, c, _)| (*l, n.clone(), *c)).collect();
+    let input_types: Vec<String> = vs_part.inputs.iter().map(|(_, _, _, t)| t.clone()).collect();
     match pulling {
         Pulling::Storage { index_binding, vertex_binding } => {
             writeln!(
@@ -128,8 +143,8 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, origi
             .unwrap();
         }
         Pulling::Attributes => {
-            for (location, name, components) in &vertex_inputs {
-                writeln!(text, "layout(location = {location}) in {} {name};", vector_type(*components)).unwrap();
+            for ((location, name, _), ty) in vertex_inputs.iter().zip(&input_types) {
+                writeln!(text, "layout(location = {location}) in {ty} {ATTRIBUTE_PREFIX}{name};").unwrap();
             }
         }
     }
@@ -139,7 +154,7 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, origi
         "vec4 effectc_vs_gl_Position; float effectc_vs_gl_PointSize; vec4 effectc_gs_gl_Position; float effectc_gs_gl_PointSize;\n",
     );
     text.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
-    text.push_str("int effectc_gs_gl_Layer; int effectc_gs_gl_ViewportIndex;\n");
+    text.push_str("int effectc_gs_gl_Layer; int effectc_gs_gl_ViewportIndex; int effectc_gs_gl_PrimitiveID;\n");
     text.push_str(&vs_part.declarations);
     text.push_str(&gs_part.declarations);
     let mut pieces = Vec::new();
@@ -154,12 +169,13 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, origi
     append(&mut text, &gs_part, StageKind::Geometry);
     text.push_str(&driver(&vs_part, &gs_part, layout, pulling)?);
     let (selects_layer, selects_viewport) = (gs_part.selects.contains("gl_Layer"), gs_part.selects.contains("gl_ViewportIndex"));
-    Ok(Lowered { text, layout, pulling, vertex_inputs, pieces, selects_layer, selects_viewport })
+    let primitive_location = next_location(&gs_part.outputs);
+    Ok(Lowered { text, layout, pulling, vertex_inputs, input_types, pieces, primitive_location, selects_layer, selects_viewport })
 }
 
-/// `float`, `vec2` … `vec4` by component count.
-fn vector_type(components: u32) -> &'static str {
-    ["float", "vec2", "vec3", "vec4"][components as usize - 1]
+/// The first location after every output's (a block takes one per member).
+fn next_location(outputs: &[Varying]) -> u32 {
+    outputs.iter().map(|o| o.location + (o.members.len() as u32).max(1)).max().unwrap_or(0)
 }
 
 /// One stage's text with its interface made private and its names prefixed.
@@ -170,8 +186,8 @@ struct Part {
     /// The stage's text after the edits (without `#version`), and its map back.
     body: String,
     map: OffsetMap,
-    /// Vertex stage: its inputs (location, user name, components).
-    inputs: Vec<(u32, String, u32)>,
+    /// Vertex stage: its inputs (location, user name, components, GLSL type).
+    inputs: Vec<(u32, String, u32, String)>,
     /// Outputs: (location, prefixed name, type, interpolation qualifier, block members).
     outputs: Vec<Varying>,
     /// Geometry stage: its inputs, as `outputs`.
@@ -238,7 +254,7 @@ impl Part {
                 }
                 Storage::In | Storage::Attribute if geometry.is_none() => {
                     let components = components(&g.ty).ok_or_else(|| format!("vertex input `{}` of type `{}`", g.name, g.ty.base))?;
-                    part.inputs.push((g.location.unwrap_or(u32::MAX), g.name.clone(), components));
+                    part.inputs.push((g.location.unwrap_or(u32::MAX), g.name.clone(), components, g.ty.base.clone()));
                     writeln!(part.declarations, "{} {renamed};", g.ty.base).unwrap();
                     delete(&mut edits, &g.decl_span);
                 }
@@ -255,7 +271,7 @@ impl Part {
                 _ => edits.replace(g.name_span.clone(), renamed),
             }
         }
-        part.inputs.sort_by_key(|(location, _, _)| *location);
+        part.inputs.sort_by_key(|(location, _, _, _)| *location);
         let stage_word = if geometry.is_some() { "gs" } else { "vs" };
         for u in &s.uses {
             match &u.target {
@@ -270,7 +286,10 @@ impl Part {
                         part.selects.insert(u.name.clone());
                         edits.replace(u.span.clone(), format!("effectc_gs_{}", u.name))
                     }
-                    "gl_Layer" | "gl_ViewportIndex" | "gl_PrimitiveID" => return Err(format!("`{}` written by a geometry stage", u.name)),
+                    "gl_PrimitiveID" if geometry.is_some() => edits.replace(u.span.clone(), "effectc_gs_gl_PrimitiveID"),
+                    "gl_Layer" | "gl_ViewportIndex" | "gl_PrimitiveID" => {
+                        return Err(format!("`{}` in the vertex stage of a geometry program", u.name))
+                    }
                     _ => {}
                 },
                 _ => {}
@@ -299,16 +318,17 @@ fn is_shared(g: &Global) -> bool {
     matches!(g.storage, Storage::Uniform | Storage::Buffer)
 }
 
-/// Components of a float vertex input (`float` 1 … `vec4` 4).
+/// Components of a float or integer vector (`float`, `int`, `uint` 1 … `vec4`, `ivec4`,
+/// `uvec4` 4).
 fn components(ty: &GlslType) -> Option<u32> {
     if ty.is_array() {
         return None;
     }
     match ty.base.as_str() {
-        "float" => Some(1),
-        "vec2" => Some(2),
-        "vec3" => Some(3),
-        "vec4" => Some(4),
+        "float" | "int" | "uint" => Some(1),
+        "vec2" | "ivec2" | "uvec2" => Some(2),
+        "vec3" | "ivec3" | "uvec3" => Some(3),
+        "vec4" | "ivec4" | "uvec4" => Some(4),
         _ => None,
     }
 }
@@ -393,7 +413,7 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
     let mut t = String::new();
     t.push_str("uint effectc_want_primitive; uint effectc_want_corner; bool effectc_found; bool effectc_held;\n");
     t.push_str("uint effectc_strip; uint effectc_made; uint effectc_strip_start;\n");
-    t.push_str("vec4 effectc_cap_Position; int effectc_cap_Layer; int effectc_cap_ViewportIndex;\n");
+    t.push_str("vec4 effectc_cap_Position; int effectc_cap_Layer; int effectc_cap_ViewportIndex; int effectc_cap_PrimitiveID;\n");
     for o in &gs.outputs {
         writeln!(t, "{} effectc_cap_{};", o.ty.base, o.name).unwrap();
     }
@@ -406,7 +426,7 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
     }
     t.push_str("        if (effectc_strip == f + k) {\n            effectc_cap_Position = effectc_gs_gl_Position;\n");
     t.push_str(
-        "            effectc_cap_Layer = effectc_gs_gl_Layer;\n            effectc_cap_ViewportIndex = effectc_gs_gl_ViewportIndex;\n",
+        "            effectc_cap_Layer = effectc_gs_gl_Layer;\n            effectc_cap_ViewportIndex = effectc_gs_gl_ViewportIndex;\n            effectc_cap_PrimitiveID = effectc_gs_gl_PrimitiveID;\n",
     );
     for o in &gs.outputs {
         writeln!(t, "            effectc_cap_{0} = {0};", o.name).unwrap();
@@ -436,6 +456,8 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
             }
         }
     }
+    writeln!(t, "layout(location = {}) flat out uint effectc_out_primitive;", next_location(&gs.outputs)).unwrap();
+    writeln!(assign, "        effectc_out_primitive = uint(effectc_cap_PrimitiveID);").unwrap();
     let corners = layout.input.vertices();
     let per_invocation = layout.output.max_primitives(layout.max_vertices) * layout.output.list_vertices();
     let per_primitive = layout.slots_per_primitive();
@@ -450,6 +472,7 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
     t.push_str("    effectc_found = false; effectc_held = false; effectc_strip = 0u; effectc_made = 0u; effectc_strip_start = 0u;\n");
     t.push_str("    effectc_gs_gl_Layer = 0; effectc_gs_gl_ViewportIndex = 0;\n");
     t.push_str("    effectc_PrimitiveIDIn = int(primitive); effectc_InstanceID = int(gl_InstanceIndex);\n");
+    t.push_str("    effectc_gs_gl_PrimitiveID = effectc_PrimitiveIDIn;\n");
     let stride = vs.inputs.len();
     // One block per corner with constant indices (no loop): the arrays stay in registers.
     for k in 0..corners {
@@ -460,15 +483,22 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
                     "    uint index{k} = {INDEX_BUFFER}.index[{HEADER_WORDS}u + primitive * {corners}u + {k}u];\n    effectc_VertexID = int(index{k});"
                 )
                 .unwrap();
-                for (i, (_, name, components)) in vs.inputs.iter().enumerate() {
+                for (i, (_, name, components, ty)) in vs.inputs.iter().enumerate() {
                     let swizzle = ["x", "xy", "xyz", "xyzw"][*components as usize - 1];
-                    writeln!(t, "    {}{name} = {VERTEX_BUFFER}.vertex[index{k} * {stride}u + {i}u].{swizzle};", vs.prefix).unwrap();
+                    // Integers travel as their bit patterns.
+                    let bits = match ty.chars().next() {
+                        Some('i') => "floatBitsToInt",
+                        Some('u') => "floatBitsToUint",
+                        _ => "",
+                    };
+                    writeln!(t, "    {}{name} = {bits}({VERTEX_BUFFER}.vertex[index{k} * {stride}u + {i}u]).{swizzle};", vs.prefix)
+                        .unwrap();
                 }
             }
             Pulling::Attributes => {
                 t.push_str("    effectc_VertexID = int(gl_VertexIndex);\n");
-                for (_, name, _) in &vs.inputs {
-                    writeln!(t, "    {}{name} = {name};", vs.prefix).unwrap();
+                for (_, name, _, _) in &vs.inputs {
+                    writeln!(t, "    {}{name} = {ATTRIBUTE_PREFIX}{name};", vs.prefix).unwrap();
                 }
             }
         }
@@ -479,11 +509,8 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
         )
         .unwrap();
         for i in &gs.ins {
-            let o = vs
-                .outputs
-                .iter()
-                .find(|o| o.location == i.location)
-                .ok_or_else(|| format!("geometry input `{}` that no vertex output feeds", i.name))?;
+            // An input no vertex output feeds is undefined in GL: it stays zero here.
+            let Some(o) = vs.outputs.iter().find(|o| o.location == i.location) else { continue };
             if i.members.is_empty() {
                 writeln!(t, "    {}[{k}] = {};", i.name, o.name).unwrap();
             } else {

@@ -254,6 +254,9 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
         ) {
             let _ = std::fs::write(std::path::Path::new(&dir).join("folded.vert"), l.text);
         }
+        if let Ok(l) = geometry_fold::lower(&vs.text, &gs.text, layout, Pulling::Attributes, Some(&g.syntax)) {
+            let _ = std::fs::write(std::path::Path::new(&dir).join("folded-analysis.vert"), l.text);
+        }
     }
     let (drawn, naga) = validate(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 })?;
     let (analysed, analysis) = validate(Pulling::Attributes)?;

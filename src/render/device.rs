@@ -148,6 +148,7 @@ impl Gpu {
             front_face: wgpu::FrontFace::Ccw,
             fragment: reflection.entry_points.iter().any(|e| e.name == "fs_main"),
             topology: topology(reflection),
+            layout: None,
         };
         self.pipeline(&spec)
     }
@@ -188,7 +189,7 @@ impl Gpu {
             .collect();
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(spec.label),
-            layout: None,
+            layout: spec.layout,
             vertex: wgpu::VertexState {
                 module: &module,
                 entry_point: Some("vs_main"),
@@ -251,6 +252,8 @@ pub struct PipelineSpec<'a> {
     pub fragment: bool,
     /// Triangle lists, except for a folded geometry stage that emits lines or points.
     pub topology: wgpu::PrimitiveTopology,
+    /// An explicit pipeline layout; `None` derives it from the shader.
+    pub layout: Option<&'a wgpu::PipelineLayout>,
 }
 
 /// The pipeline topology: a triangle list, or for a folded geometry stage the list its

@@ -90,8 +90,18 @@ fn what_is_not_folded_is_named_and_what_folds_differently_is_marked() {
     // Adjacency folds: gl_in[] has the six vertices GL_TRIANGLES_ADJACENCY gives.
     let adjacency = GeometryLayout { input: InputPrimitive::TrianglesAdjacency, ..layout };
     assert!(lower(&vs, &gs, adjacency, Pulling::Attributes, None).unwrap().text.contains("effectc_gl_in[6];"));
-    let primitive_id = gs.replace("EmitVertex();", "gl_PrimitiveID = 1; EmitVertex();");
-    assert_eq!(lower(&vs, &primitive_id, layout, Pulling::Attributes, None).unwrap_err(), "`gl_PrimitiveID` written by a geometry stage");
+    // gl_PrimitiveID written by the geometry stage travels to the fragment stage as a flat
+    // varying after the stage's outputs (shaded: locations 2 and 3).
+    let primitive_id = gs.replace("EmitVertex();", "gl_PrimitiveID = 7; EmitVertex();");
+    let folded = lower(&vs, &primitive_id, layout, Pulling::Attributes, None).unwrap();
+    assert_eq!(folded.primitive_location, 4);
+    assert!(folded.text.contains("layout(location = 4) flat out uint effectc_out_primitive;"), "{}", folded.text);
+    // In the vertex stage of a geometry program it is named.
+    let in_vertex = vs.replace("void main() {", "void main() {\n    gl_Layer = 1;");
+    assert_eq!(
+        lower(&in_vertex, &gs, layout, Pulling::Attributes, None).unwrap_err(),
+        "`gl_Layer` in the vertex stage of a geometry program"
+    );
     // A layer is not routed but selected: the draw keeps the primitives of one layer.
     let layered = gs.replace("EmitVertex();", "gl_Layer = 1; EmitVertex();");
     let storage = Pulling::Storage { index_binding: 8, vertex_binding: 9 };

@@ -196,7 +196,11 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
                 .arguments
                 .iter()
                 .filter_map(|a| match a.binding {
-                    Some(naga::Binding::Location { location, .. }) => Some((location, a.name.clone().unwrap_or_default())),
+                    Some(naga::Binding::Location { location, .. }) => {
+                        let name = a.name.clone().unwrap_or_default();
+                        let user = name.strip_prefix(crate::front::geometry_fold::ATTRIBUTE_PREFIX).unwrap_or(&name).to_string();
+                        Some((location, user))
+                    }
                     _ => None,
                 })
                 .collect()

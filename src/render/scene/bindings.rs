@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 
 use crate::back::reflect::{BindingInfo, Reflection};
-use crate::render::device::Gpu;
+use crate::render::device::{Gpu, PipelineSpec};
 use crate::render::uniforms::UniformBuffer;
 
 use super::textures::Textures;
@@ -69,6 +69,72 @@ pub(super) fn bind_groups(
         groups.push((group, bg));
     }
     (groups, storage)
+}
+
+/// The scene's pipeline. wgpu derives the layout from the shader stage by stage, and refuses
+/// a texture one stage only loads or measures (non-filterable) and another samples
+/// (filterable): then the layout is built from the reflection and the pipeline made again.
+pub(super) fn pipeline(gpu: &Gpu, spec: &PipelineSpec<'_>, r: &Reflection) -> Result<wgpu::RenderPipeline, String> {
+    match gpu.pipeline(spec) {
+        Err(e) if e.contains("not consistent between stages") => {
+            let Some(layout) = explicit_layout(gpu, r) else { return Err(e) };
+            gpu.pipeline(&PipelineSpec { layout: Some(&layout), colors: spec.colors.clone(), ..*spec })
+        }
+        other => other,
+    }
+}
+
+/// A pipeline layout from the reflection's bindings (None when a binding's kind needs what
+/// the reflection does not say: a storage texture's format, a fragment storage buffer's access).
+fn explicit_layout(gpu: &Gpu, r: &Reflection) -> Option<wgpu::PipelineLayout> {
+    let mut groups: BTreeMap<u32, Vec<wgpu::BindGroupLayoutEntry>> = BTreeMap::new();
+    for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
+        let mut visibility = wgpu::ShaderStages::NONE;
+        for stage in &b.visibility {
+            visibility |= if *stage == "vertex" { wgpu::ShaderStages::VERTEX } else { wgpu::ShaderStages::FRAGMENT };
+        }
+        let ty = match b.kind {
+            "uniform_buffer" => {
+                wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None }
+            }
+            // Vertex-stage storage is read-only in WebGPU.
+            "storage_buffer" if visibility == wgpu::ShaderStages::VERTEX => wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only: true },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            "texture" => wgpu::BindingType::Texture {
+                sample_type: match b.sample_type {
+                    Some("sint") => wgpu::TextureSampleType::Sint,
+                    Some("uint") => wgpu::TextureSampleType::Uint,
+                    Some("depth") => wgpu::TextureSampleType::Depth,
+                    _ => wgpu::TextureSampleType::Float { filterable: true },
+                },
+                view_dimension: match b.dimension {
+                    Some("1d") => wgpu::TextureViewDimension::D1,
+                    Some("2d_array") => wgpu::TextureViewDimension::D2Array,
+                    Some("3d") => wgpu::TextureViewDimension::D3,
+                    Some("cube") => wgpu::TextureViewDimension::Cube,
+                    Some("cube_array") => wgpu::TextureViewDimension::CubeArray,
+                    _ => wgpu::TextureViewDimension::D2,
+                },
+                multisampled: b.multisampled,
+            },
+            "sampler" => wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+            "comparison_sampler" => wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+            _ => return None,
+        };
+        groups.entry(b.group).or_default().push(wgpu::BindGroupLayoutEntry { binding: b.binding, visibility, ty, count: None });
+    }
+    let last = groups.keys().copied().max().map_or(0, |g| g + 1);
+    let layouts: Vec<wgpu::BindGroupLayout> = (0..last)
+        .map(|g| {
+            let entries = groups.get(&g).map_or(&[][..], |e| &e[..]);
+            gpu.device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: None, entries })
+        })
+        .collect();
+    let refs: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(Some).collect();
+    Some(gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: None, bind_group_layouts: &refs, immediate_size: 0 }))
 }
 
 pub(super) fn buffer_init(gpu: &Gpu, label: &str, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {

@@ -201,8 +201,9 @@ impl Scene {
             front_face: if input.flipped_y { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
             fragment: r.entry_points.iter().any(|e| e.name == "fs_main"),
             topology: topology(r),
+            layout: None,
         };
-        let pipeline = gpu.pipeline(&spec).map_err(|e| vec![pipeline_error(first_file, &e)])?;
+        let pipeline = bindings::pipeline(gpu, &spec, r).map_err(|e| vec![pipeline_error(first_file, &e)])?;
 
         let vertex_buffer =
             (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));

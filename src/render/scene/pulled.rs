@@ -54,6 +54,7 @@ pub(super) fn for_geometry(
 
 /// The pulled data of `mesh` (`own_vertices`: the program draws three vertices of its own).
 pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_vertices: bool) -> Pulled {
+    use wgpu::VertexFormat as F;
     let triangles: Vec<u32> = if own_vertices { vec![0, 1, 2] } else { mesh.indices.clone() };
     let vertex_count = if own_vertices { 3 } else { mesh.vertex_count() };
     let indices: Vec<u32> = match draw.input_primitive {
@@ -68,9 +69,15 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
     let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.map(|a| mesh.attribute(a))).collect();
     let mut vertices = Vec::with_capacity(vertex_count * choices.len() * 16);
     for v in 0..vertex_count {
-        for column in &columns {
+        for (column, choice) in columns.iter().zip(choices) {
             let value = column.as_ref().and_then(|col| col.get(v)).copied().unwrap_or([0.0; 4]);
-            vertices.extend(value.iter().flat_map(|x| x.to_le_bytes()));
+            // Integer inputs travel as their bit patterns (the stage reads floatBitsTo*Int).
+            let bits = |x: f32| match choice.format {
+                F::Uint32 | F::Uint32x2 | F::Uint32x3 | F::Uint32x4 => (x.max(0.0) as u32).to_le_bytes(),
+                F::Sint32 | F::Sint32x2 | F::Sint32x3 | F::Sint32x4 => (x as i32).to_le_bytes(),
+                _ => x.to_le_bytes(),
+            };
+            vertices.extend(value.iter().flat_map(|x| bits(*x)));
         }
     }
     let primitives = indices.len() as u32 / draw.index_buffer.stride.max(1);
