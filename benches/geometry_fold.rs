@@ -12,6 +12,8 @@
 //!
 //! Run: `cargo bench --bench geometry_fold` (options: `-- --size 512 --frames 24`).
 
+#[path = "support/args.rs"]
+mod args;
 #[path = "support/bare_loop.rs"]
 mod bare_loop;
 
@@ -33,12 +35,8 @@ void main() {
 ";
 
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let arg = |name: &str, default: u32| {
-        args.iter().position(|a| a == name).and_then(|i| args.get(i + 1)).and_then(|v| v.parse().ok()).unwrap_or(default)
-    };
-    let size = arg("--size", 512);
-    let frames = arg("--frames", 24);
+    let size = args::number("--size", 512);
+    let frames = args::number("--frames", 24);
     let gpu = Gpu::new().expect("a Vulkan adapter (run ./setup.sh)");
     println!("adapter: {}", gpu.describe());
     println!("{size}x{size}, ms/frame of a minimal draw + readback loop, best of 3 runs of {frames} frames\n");

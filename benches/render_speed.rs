@@ -16,6 +16,8 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+#[path = "support/args.rs"]
+mod args;
 #[path = "support/bare_loop.rs"]
 mod bare_loop;
 
@@ -28,12 +30,8 @@ const PROGRAMS: &[(&str, &str)] =
     &[("sun (169-tap in-shader blur)", "effects/sun/effect.toml"), ("obj triangle (cheap shader)", "tests/render/obj/effect.toml")];
 
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let arg = |name: &str, default: u32| {
-        args.iter().position(|a| a == name).and_then(|i| args.get(i + 1)).and_then(|v| v.parse().ok()).unwrap_or(default)
-    };
-    let size = arg("--size", 512);
-    let frames = arg("--frames", 24);
+    let size = args::number("--size", 512);
+    let frames = args::number("--frames", 24);
     let gpu = Gpu::new().expect("a Vulkan adapter (run ./setup.sh)");
     println!("adapter: {}", gpu.describe());
     println!("{size}x{size}, {frames} frames steady state (difference of a {frames}+4 and a 4 frame run)\n");

@@ -386,6 +386,25 @@ pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::sy
     });
 }
 
+/// A fragment stage behind a folded geometry stage reads `gl_PrimitiveID` from the flat
+/// `uint` varying at `location` (the fold writes it there) instead of the built-in, which
+/// WebGPU has only as an optional feature.
+pub fn primitive_id_from_location(module: &mut Module, location: u32) {
+    for ep in module.entry_points.iter_mut().filter(|e| e.stage == naga::ShaderStage::Fragment) {
+        for arg in &mut ep.function.arguments {
+            if arg.binding == Some(naga::Binding::BuiltIn(naga::BuiltIn::PrimitiveIndex)) {
+                arg.binding = Some(naga::Binding::Location {
+                    location,
+                    interpolation: Some(naga::Interpolation::Flat),
+                    sampling: None,
+                    blend_src: None,
+                    per_primitive: false,
+                });
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -465,24 +484,5 @@ mod tests {
         assert!(out.contains("@location(2) full: vec4<f32>"), "{out}");
         naga::compact::compact(&mut m, naga::compact::KeepUnused::No);
         wgsl(&m).unwrap();
-    }
-}
-
-/// A fragment stage behind a folded geometry stage reads `gl_PrimitiveID` from the flat
-/// `uint` varying at `location` (the fold writes it there) instead of the built-in, which
-/// WebGPU has only as an optional feature.
-pub fn primitive_id_from_location(module: &mut Module, location: u32) {
-    for ep in module.entry_points.iter_mut().filter(|e| e.stage == naga::ShaderStage::Fragment) {
-        for arg in &mut ep.function.arguments {
-            if arg.binding == Some(naga::Binding::BuiltIn(naga::BuiltIn::PrimitiveIndex)) {
-                arg.binding = Some(naga::Binding::Location {
-                    location,
-                    interpolation: Some(naga::Interpolation::Flat),
-                    sampling: None,
-                    blend_src: None,
-                    per_primitive: false,
-                });
-            }
-        }
     }
 }

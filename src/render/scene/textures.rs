@@ -98,7 +98,7 @@ fn load(decl: &crate::manifest::TextureDecl) -> Result<TexelImage, String> {
     }
 }
 
-fn view_dimension(b: &BindingInfo) -> wgpu::TextureViewDimension {
+pub(super) fn view_dimension(b: &BindingInfo) -> wgpu::TextureViewDimension {
     match b.dimension {
         Some("1d") => wgpu::TextureViewDimension::D1,
         Some("2d_array") => wgpu::TextureViewDimension::D2Array,
