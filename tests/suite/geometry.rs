@@ -113,7 +113,7 @@ fn what_is_not_folded_is_named_and_what_folds_differently_is_marked() {
 /// The fixtures with a manifest (`effect.toml`) and the expected image's manifest
 /// (`direct/effect.toml`: the triangles the geometry stage emits, drawn without one).
 fn compared_fixtures() -> Vec<std::path::PathBuf> {
-    common::fixtures("tests/geometry", 11).into_iter().filter(|d| d.join("direct/effect.toml").is_file()).collect()
+    common::fixtures("tests/geometry", 12).into_iter().filter(|d| d.join("direct/effect.toml").is_file()).collect()
 }
 
 #[test]
@@ -124,10 +124,11 @@ fn folded_draws_render_what_the_same_triangles_drawn_directly_render() {
     // Per feature: strips with EndPrimitive (back faces culled, so a strip's odd triangles
     // must keep GL's winding) and unused slots; amplification to max_vertices; points →
     // quads; lines (a triangle mesh's edges) → bands; gl_PrimitiveIDIn; instancing;
-    // gl_PrimitiveID written for the fragment stage; gl_Layer (the frame shows layer 0).
+    // gl_PrimitiveID written for the fragment stage; gl_Layer (the frame shows layer 0);
+    // invocations = 3 (gl_InvocationID).
     let fixtures = compared_fixtures();
     if std::env::var("EFFECTC_FIXTURE").is_err() {
-        assert_eq!(fixtures.len(), 8, "{fixtures:?}");
+        assert_eq!(fixtures.len(), 9, "{fixtures:?}");
     }
     let mut failures = Vec::new();
     for dir in fixtures {
