@@ -129,10 +129,9 @@ fn geometry_plan(g: &crate::back::reflect::GeometryDraw, explain: bool) -> Strin
         if g.inputs.is_empty() { "no inputs".to_string() } else { g.inputs.join(", ") }
     ));
     if !g.selects.is_empty() {
+        let selected = g.selects.join(" and ");
         t.push_str(&format!(
-            "    the geometry stage selects the {} of each primitive: WebGPU cannot route it, so draw once per {} with the header naming it\n",
-            g.selects.join(" and "),
-            g.selects.join(" and ")
+            "    the geometry stage selects the {selected} of each primitive: WebGPU cannot route it, so draw once per {selected} with the header naming it\n"
         ));
     }
     t.push_str(&format!(

@@ -167,11 +167,7 @@ pub fn translate(
     let info = crate::front::naga_run::validator()
         .validate(&module)
         .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
-    let mut reflection = reflect::reflect(name, &module, &program.plan, effect, left_out);
-    if let Some((draw, inputs)) = program.fold().and_then(|f| reflect::geometry_draw(&f.drawn)) {
-        reflection.geometry = Some(draw);
-        reflection.vertex_inputs = inputs;
-    }
+    let reflection = reflect::reflect_program(name, &module, program, effect, left_out);
     Ok(Translation {
         name: name.to_string(),
         module,

@@ -75,6 +75,23 @@ pub struct PulledBuffer {
     pub stride: u32,
 }
 
+/// The reflection of a translated program: [`reflect`], and for a folded geometry stage its
+/// draw plan, with the pulled inputs as the vertex inputs.
+pub fn reflect_program(
+    name: &str,
+    module: &Module,
+    program: &crate::front::program::CompiledProgram,
+    effect: Option<&Effect>,
+    left_out: Vec<LeftOut>,
+) -> Reflection {
+    let mut reflection = reflect(name, module, &program.plan, effect, left_out);
+    if let Some((draw, inputs)) = program.fold().and_then(|f| geometry_draw(&f.drawn)) {
+        reflection.geometry = Some(draw);
+        reflection.vertex_inputs = inputs;
+    }
+    reflection
+}
+
 /// The draw plan of a folded geometry program, and its pulled inputs as vertex inputs.
 pub fn geometry_draw(lowered: &crate::front::geometry_fold::Lowered) -> Option<(GeometryDraw, Vec<InterfaceVar>)> {
     use crate::front::geometry_fold::{Pulling, INDEX_BUFFER, VERTEX_BUFFER};

@@ -231,8 +231,17 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
     let (vs, gs) = (rewritten(StageKind::Vertex)?, rewritten(StageKind::Geometry)?);
     let g = program.stage(StageKind::Geometry).expect("checked above");
     let layout = geometry_layout::geometry_layout(&g.syntax).map_err(|p| p.message)?;
-    let validate = |pulling: Pulling| -> Result<(geometry_fold::Lowered, Validated), String> {
+    // Debugging aid: with `EFFECTC_DUMP_REWRITE=DIR`, each fold is written next to the
+    // stages' rewritten texts (before naga sees it).
+    let dump = std::env::var_os("EFFECTC_DUMP_REWRITE");
+    let lower = |pulling: Pulling, dump_name: &str| -> Result<geometry_fold::Lowered, String> {
         let lowered = geometry_fold::lower(&vs.text, &gs.text, layout, pulling, Some(&g.syntax))?;
+        if let Some(dir) = &dump {
+            let _ = std::fs::write(std::path::Path::new(dir).join(dump_name), &lowered.text);
+        }
+        Ok(lowered)
+    };
+    let validate = |lowered: geometry_fold::Lowered| -> Result<(geometry_fold::Lowered, Validated), String> {
         let as_stage = Rewritten { text: lowered.text.clone(), map: OffsetMap::identity(lowered.text.len()), limitation: None };
         match naga_run::parse_and_validate(g.syntax.file, &as_stage, naga::ShaderStage::Vertex, &g.syntax.version) {
             Outcome::Valid(v) if v.needs.is_empty() => Ok((lowered, v)),
@@ -243,23 +252,10 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
             }
         }
     };
-    if let Some(dir) = std::env::var_os("EFFECTC_DUMP_REWRITE") {
-        // Debugging aid: the drawn fold, next to the stages' rewritten texts.
-        if let Ok(l) = geometry_fold::lower(
-            &vs.text,
-            &gs.text,
-            layout,
-            Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 },
-            Some(&g.syntax),
-        ) {
-            let _ = std::fs::write(std::path::Path::new(&dir).join("folded.vert"), l.text);
-        }
-        if let Ok(l) = geometry_fold::lower(&vs.text, &gs.text, layout, Pulling::Attributes, Some(&g.syntax)) {
-            let _ = std::fs::write(std::path::Path::new(&dir).join("folded-analysis.vert"), l.text);
-        }
-    }
-    let (drawn, naga) = validate(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 })?;
-    let (analysed, analysis) = validate(Pulling::Attributes)?;
+    let drawn = lower(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 }, "folded.vert");
+    let analysed = lower(Pulling::Attributes, "folded-analysis.vert");
+    let (drawn, naga) = validate(drawn?)?;
+    let (analysed, analysis) = validate(analysed?)?;
     Ok(Folded { drawn, naga, analysed, analysis })
 }
 

@@ -113,13 +113,8 @@ pub fn instrument_translation(
     t.info = crate::front::naga_run::validator()
         .validate(&t.module)
         .map_err(|e| format!("the translated module does not validate: {}", e.as_inner()))?;
-    let before = std::mem::replace(&mut t.reflection, reflect::reflect(&t.name, &t.module, &program.plan, effect, Vec::new()));
-    t.reflection.left_out = before.left_out;
-    // A folded geometry program keeps its draw plan and pulled inputs.
-    if before.geometry.is_some() {
-        t.reflection.geometry = before.geometry;
-        t.reflection.vertex_inputs = before.vertex_inputs;
-    }
+    let left_out = std::mem::take(&mut t.reflection.left_out);
+    t.reflection = reflect::reflect_program(&t.name, &t.module, program, effect, left_out);
     Ok(instrumented)
 }
 

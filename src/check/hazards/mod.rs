@@ -210,21 +210,22 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
     let mut out = Vec::new();
     for (kind, stage) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
         let Some(s) = find(kind) else { continue };
-        if let (StageKind::Vertex, Some(folded)) = (kind, program.fold()) {
-            let (v, text) = (&folded.analysis, &folded.analysed.text);
-            let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, text);
-                a.run_entry();
-                (a.hazards, a.outputs)
-            }));
-            let Ok((hazards, outputs)) = run else { continue };
-            f.varyings = outputs.into_iter().filter_map(|(l, v)| v.num().cloned().map(|n| (l, varying(n)))).collect();
-            out.extend(hazards.iter().map(|h| folded_diagnostic(h, program, folded)));
-            continue;
-        }
-        let (Some(v), Some(rw)) = (&s.naga, &s.rewritten) else { continue };
+        // The vertex stage of a folded program is analysed as the fold (spans lead back to
+        // either stage); every other stage as its own module.
+        let at_user: Box<dyn Fn(&Hazard) -> Diagnostic>;
+        let (v, text) = match (program.fold().filter(|_| kind == StageKind::Vertex), &s.naga, &s.rewritten) {
+            (Some(fd), _, _) => {
+                at_user = Box::new(move |h| folded_diagnostic(h, program, fd));
+                (&fd.analysis, fd.analysed.text.as_str())
+            }
+            (None, Some(v), Some(rw)) => {
+                at_user = Box::new(move |h| diagnostic(h, s.syntax.file, rw));
+                (v, rw.text.as_str())
+            }
+            _ => continue,
+        };
         let hazards = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, &rw.text);
+            let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, text);
             a.run_entry();
             (a.hazards, a.outputs)
         }));
@@ -233,9 +234,7 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
         if kind == StageKind::Vertex {
             f.varyings = outputs.into_iter().filter_map(|(l, v)| v.num().cloned().map(|n| (l, varying(n)))).collect();
         }
-        for h in hazards {
-            out.push(diagnostic(&h, s.syntax.file, rw));
-        }
+        out.extend(hazards.iter().map(&at_user));
     }
     out
 }
