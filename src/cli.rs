@@ -10,6 +10,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::back::{Target, TranslateOptions};
 use crate::check::InputSpec;
+use crate::config::{Config, TargetEnv};
 use crate::front::program::FrontOptions;
 use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
 use crate::render::command::TimeStep;
@@ -126,6 +127,27 @@ pub struct CommonArgs {
     /// Colour for human output.
     #[arg(long, value_enum, default_value = "auto")]
     pub color: ColorChoice,
+    /// Settings file (default: the nearest `effectc.toml` upward from the first input).
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// GLSL dialect of the stages (default: `target-env` in effectc.toml, else auto: Vulkan
+    /// GLSL when the text shows it).
+    #[arg(long, value_enum)]
+    pub target_env: Option<TargetEnvArg>,
+    /// Programs analysed at once (default: one per core).
+    #[arg(long, short = 'j', value_parser = clap::value_parser!(u32).range(1..=256))]
+    pub jobs: Option<u32>,
+}
+
+/// GLSL dialects accepted by `--target-env`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TargetEnvArg {
+    /// Vulkan GLSL when the text shows it (descriptor sets, push constants, separate samplers).
+    Auto,
+    /// OpenGL GLSL.
+    Opengl,
+    /// Vulkan GLSL (as glslangValidator -V).
+    Vulkan,
 }
 
 #[derive(Debug, clap::Args)]
@@ -145,6 +167,10 @@ pub struct TranslateArgs {
     /// Keep GL clip-space depth (z in [-w, w]) instead of mapping it to WebGPU's [0, w].
     #[arg(long)]
     pub keep_gl_depth: bool,
+    /// Run again whenever an input changes (stage files, manifests, included files,
+    /// textures, meshes, new files below input directories), until interrupted.
+    #[arg(long)]
+    pub watch: bool,
 }
 
 #[derive(Debug, clap::Args)]
@@ -154,12 +180,24 @@ pub struct CheckArgs {
     /// Exit with 1 when there are warnings.
     #[arg(long)]
     pub deny_warnings: bool,
+    /// List every uniform each program lets you set (type, default, range, semantic, guess)
+    /// before the diagnostics; with `--format json`, under `programs`.
+    #[arg(long)]
+    pub list_uniforms: bool,
+    /// Run again whenever an input changes (stage files, manifests, included files,
+    /// textures, meshes, new files below input directories), until interrupted.
+    #[arg(long)]
+    pub watch: bool,
 }
 
 #[derive(Debug, clap::Args)]
 pub struct RenderArgs {
     #[command(flatten)]
     pub common: CommonArgs,
+    /// `NAME=VALUE`: a uniform's value (`0.5`, `3`, `true`, `1,0.5,0`), checked against the
+    /// declarations like a manifest default; wins over the manifest (repeatable).
+    #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parse_set)]
+    pub set: Vec<(String, String)>,
     /// Number of frames (default: the manifest's `[render] frames`, else 1).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
     pub frames: Option<u32>,
@@ -207,12 +245,20 @@ pub struct RenderArgs {
     /// targets share a texture.
     #[arg(long)]
     pub explain: bool,
+    /// Run again whenever an input changes (stage files, manifests, included files,
+    /// textures, meshes, new files below input directories), until interrupted.
+    #[arg(long)]
+    pub watch: bool,
 }
 
 #[derive(Debug, clap::Args)]
 pub struct BenchArgs {
     #[command(flatten)]
     pub common: CommonArgs,
+    /// `NAME=VALUE`: a uniform's value (`0.5`, `3`, `true`, `1,0.5,0`), checked against the
+    /// declarations like a manifest default; wins over the manifest (repeatable).
+    #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parse_set)]
+    pub set: Vec<(String, String)>,
     /// `NAME=v1,v2,…`: sweep the uniform NAME over these values, the last being the reference
     /// (repeatable; default: the manifest's [knobs]).
     #[arg(long = "knob", value_parser = crate::bench::parse_knob)]
@@ -238,6 +284,10 @@ pub struct BenchArgs {
 pub struct StressArgs {
     #[command(flatten)]
     pub common: CommonArgs,
+    /// `NAME=VALUE`: a uniform's value (`0.5`, `3`, `true`, `1,0.5,0`), checked against the
+    /// declarations like a manifest default; wins over the manifest (repeatable).
+    #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parse_set)]
+    pub set: Vec<(String, String)>,
     /// Random points of the uniform ranges, besides their ends.
     #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u32).range(0..=10_000))]
     pub samples: u32,
@@ -253,6 +303,14 @@ pub struct StressArgs {
     /// Seconds a frame may take before the run stops.
     #[arg(long, default_value = "10", value_parser = parse_timeout, allow_negative_numbers = true)]
     pub timeout: Duration,
+}
+
+/// `NAME=VALUE` → (NAME, VALUE); the value is checked once the programs are read.
+fn parse_set(s: &str) -> Result<(String, String), String> {
+    match s.split_once('=') {
+        Some((n, v)) if !n.trim().is_empty() && !v.trim().is_empty() => Ok((n.trim().to_string(), v.trim().to_string())),
+        _ => Err(format!("`{s}` is not NAME=VALUE (e.g. `speed=0.5`, `tint=1,0.5,0`)")),
+    }
 }
 
 /// `512x512` → (512, 512), each side within 1..=[`MAX_FRAME_SIDE`].
@@ -289,15 +347,28 @@ fn parse_timeout(s: &str) -> Result<Duration, String> {
 }
 
 impl CommonArgs {
-    /// What the command reads.
-    pub fn input_spec(&self) -> InputSpec {
-        InputSpec { paths: self.inputs.clone(), stage: self.stage.map(Into::into), front: FrontOptions { strict: self.strict } }
+    /// What the command reads, with the repository's settings (flags win over them).
+    pub fn input_spec(&self, config: &Config) -> InputSpec {
+        let env = match self.target_env {
+            None => config.target_env,
+            Some(TargetEnvArg::Auto) => TargetEnv::Auto,
+            Some(TargetEnvArg::Opengl) => TargetEnv::OpenGl,
+            Some(TargetEnvArg::Vulkan) => TargetEnv::Vulkan,
+        };
+        InputSpec {
+            paths: self.inputs.clone(),
+            stage: self.stage.map(Into::into),
+            front: FrontOptions { strict: self.strict || config.strict, env },
+            selection: config.selection.clone(),
+            jobs: self.jobs.map(|j| j as usize),
+            values: Vec::new(),
+        }
     }
 }
 
 impl TranslateArgs {
     /// The request these flags make.
-    pub fn request(&self) -> translate::Request {
+    pub fn request(&self, config: &Config) -> translate::Request {
         let mut targets: Vec<Target> = Vec::new();
         for t in &self.to {
             match t {
@@ -308,7 +379,7 @@ impl TranslateArgs {
         targets.sort();
         targets.dedup();
         translate::Request {
-            input: self.common.input_spec(),
+            input: self.common.input_spec(config),
             back: TranslateOptions { gl_depth: !self.keep_gl_depth, ..TranslateOptions::default() },
             targets,
             out: self.out.clone(),
@@ -335,14 +406,14 @@ impl TargetArg {
 impl RenderArgs {
     /// The request these flags make; `started` is when the process started (for the time
     /// to the first frame).
-    pub fn request(&self, started: Instant) -> render::command::Request {
+    pub fn request(&self, config: &Config, started: Instant) -> render::command::Request {
         let step = match (self.fps, self.time_step) {
             (Some(f), _) => TimeStep::Fps(f),
             (None, Some(s)) => TimeStep::Seconds(s),
             (None, None) => TimeStep::Default,
         };
         render::command::Request {
-            input: self.common.input_spec(),
+            input: InputSpec { values: self.set.clone(), ..self.common.input_spec(config) },
             back: TranslateOptions::for_rendering(!self.keep_gl_depth),
             frames: self.frames,
             step,
@@ -356,15 +427,16 @@ impl RenderArgs {
             progress: std::io::stderr().is_terminal() && std::env::var_os("CI").is_none(),
             started,
             dump_targets: self.dump_targets,
+            only: None,
         }
     }
 }
 
 impl BenchArgs {
     /// The request these flags make.
-    pub fn request(&self) -> bench::Request {
+    pub fn request(&self, config: &Config) -> bench::Request {
         bench::Request {
-            input: self.common.input_spec(),
+            input: InputSpec { values: self.set.clone(), ..self.common.input_spec(config) },
             knobs: self.knobs.clone(),
             frames: self.frames,
             size: self.size,
@@ -377,9 +449,9 @@ impl BenchArgs {
 
 impl StressArgs {
     /// The request these flags make (masks go to `out/stress/` unless `--out` says otherwise).
-    pub fn request(&self) -> stress::Request {
+    pub fn request(&self, config: &Config) -> stress::Request {
         stress::Request {
-            input: self.common.input_spec(),
+            input: InputSpec { values: self.set.clone(), ..self.common.input_spec(config) },
             samples: self.samples,
             seed: self.seed,
             size: self.size,

@@ -14,7 +14,9 @@ mod code;
 mod github;
 mod human;
 mod json;
+pub mod paths;
 mod sarif;
+pub mod suppress;
 
 pub use code::{Code, UnknownCode};
 pub use github::render_github;
@@ -58,6 +60,8 @@ pub struct Diagnostic {
     pub labels: Vec<Label>,
     pub notes: Vec<String>,
     pub help: Option<String>,
+    /// Raised to an error by the repository's policy (`deny` in `effectc.toml`).
+    pub raised: bool,
 }
 
 impl Diagnostic {
@@ -72,6 +76,7 @@ impl Diagnostic {
             labels: Vec::new(),
             notes: Vec::new(),
             help: None,
+            raised: false,
         }
     }
     /// Set the primary location and its label.
@@ -98,8 +103,11 @@ impl Diagnostic {
         self.help = Some(help.into());
         self
     }
-    /// How bad it is: from the code ([`Code::severity`]).
+    /// How bad it is: from the code ([`Code::severity`]), or an error when raised.
     pub fn severity(&self) -> Severity {
+        if self.raised {
+            return Severity::Error;
+        }
         self.code.severity()
     }
     pub fn is_error(&self) -> bool {
@@ -135,8 +143,11 @@ impl Files {
     pub fn new() -> Self {
         Self::default()
     }
+    /// Registers a file; its path is shown as [`paths::display_path`] makes it (cleaned,
+    /// relative to the working directory).
     pub fn add(&mut self, path: impl Into<String>, text: impl Into<String>) -> FileId {
-        self.files.push(SourceFile { path: path.into(), text: text.into() });
+        let path = paths::display_path(&path.into(), std::env::current_dir().ok().as_deref());
+        self.files.push(SourceFile { path, text: text.into() });
         FileId(self.files.len() - 1)
     }
     /// Registers the expanded text of `origin` (its `#include`s inlined). The front reads
@@ -187,6 +198,10 @@ impl Files {
             }
         }
         out
+    }
+    /// `id` is an expanded text ([`Files::add_expanded`]), not a file of the user's.
+    pub fn is_expanded(&self, id: FileId) -> bool {
+        self.expansions.contains_key(&id)
     }
     pub fn get(&self, id: FileId) -> &SourceFile {
         &self.files[id.0]

@@ -5,10 +5,14 @@
 //!   there names, grouped by directory and file stem (`sun.vert` + `sun.frag`);
 //! - stage files named on the command line form one program together (grouped by stem
 //!   when two of them are the same stage).
+//!
+//! The repository's [`Selection`] (`effectc.toml`) leaves out paths its globs exclude and
+//! names the stage of extensions effectc does not know.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
+use crate::config::Selection;
 use crate::diag::{Code, Diagnostic};
 use crate::stage::StageKind;
 
@@ -39,7 +43,7 @@ fn is_manifest(path: &Path) -> bool {
 
 /// Expands inputs into programs. Problems (missing paths, unknown extensions) come back as
 /// diagnostics; the remaining inputs still produce programs.
-pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
+pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Selection) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
     let mut programs = Vec::new();
     let mut diags = Vec::new();
     let mut loose: Vec<(PathBuf, StageKind)> = Vec::new();
@@ -51,14 +55,18 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>) -> (Vec<ProgramInp
                 continue;
             }
         };
+        let selected = if meta.is_dir() { selection.enters(input) } else { selection.admits(input) };
+        if !selected {
+            continue;
+        }
         if meta.is_dir() {
-            let (p, d) = collect_dir(input);
+            let (p, d) = collect_dir(input, selection);
             programs.extend(p);
             diags.extend(d);
         } else if is_manifest(input) {
             programs.push(ProgramInput::Manifest(input.clone()));
         } else {
-            match stage_of(input, forced) {
+            match stage_of(input, forced).or_else(|| selection.stage_of(input)) {
                 Some(kind) => loose.push((input.clone(), kind)),
                 None => diags.push(
                     Diagnostic::new(Code::UnknownStage, format!("cannot tell the stage of `{}` from its extension", input.display()))
@@ -103,7 +111,7 @@ fn group_by_stem(files: Vec<(PathBuf, StageKind)>) -> Vec<ProgramInput> {
         .collect()
 }
 
-fn collect_dir(dir: &Path) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
+fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
     let mut manifests = Vec::new();
     let mut stage_files = Vec::new();
     let mut diags = Vec::new();
@@ -120,10 +128,17 @@ fn collect_dir(dir: &Path) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
         entries.sort();
         for p in entries {
             if p.is_dir() {
-                stack.push(p);
-            } else if p.file_name().is_some_and(|n| n == "effect.toml") {
+                if selection.enters(&p) {
+                    stack.push(p);
+                }
+                continue;
+            }
+            if !selection.admits(&p) {
+                continue;
+            }
+            if p.file_name().is_some_and(|n| n == "effect.toml") {
                 manifests.push(p);
-            } else if let Some(kind) = stage_of(&p, None) {
+            } else if let Some(kind) = stage_of(&p, None).or_else(|| selection.stage_of(&p)) {
                 stage_files.push((p, kind));
             }
         }
@@ -149,14 +164,15 @@ mod tests {
         let f = dir.join("b.frag");
         std::fs::write(&v, "void main(){}").unwrap();
         std::fs::write(&f, "void main(){}").unwrap();
-        let (progs, diags) = collect(&[v.clone(), f.clone()], None);
+        let all = Selection::default();
+        let (progs, diags) = collect(&[v.clone(), f.clone()], None, &all);
         assert!(diags.is_empty());
         assert_eq!(progs.len(), 1);
-        let (progs, _) = collect(std::slice::from_ref(&dir), None);
+        let (progs, _) = collect(std::slice::from_ref(&dir), None, &all);
         assert_eq!(progs.len(), 2, "directory groups by stem: a and b");
-        let (_, diags) = collect(&[dir.join("missing.frag")], None);
+        let (_, diags) = collect(&[dir.join("missing.frag")], None, &all);
         assert_eq!(diags[0].code, Code::InputIo);
-        let (_, diags) = collect(&[dir.join("a.vert").with_extension("txt")], None);
+        let (_, diags) = collect(&[dir.join("a.vert").with_extension("txt")], None, &all);
         assert_eq!(diags.len(), 1);
         std::fs::remove_dir_all(&dir).unwrap();
     }

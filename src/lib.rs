@@ -6,36 +6,41 @@
 //! module's own submodules import each other in a cycle).
 //!
 //! 1. [`diag`], [`stage`]: every finding is a [`diag::Diagnostic`] with a typed code,
-//!    rendered by one emitter (human, JSON, GitHub annotations, SARIF); stage kinds.
-//! 2. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures,
+//!    rendered by one emitter (human, JSON, GitHub annotations, SARIF), silenced by
+//!    suppressions (`diag::suppress`); stage kinds.
+//! 2. [`config`]: the repository's `effectc.toml` (paths read, dialect, codes allowed or
+//!    denied).
+//! 3. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures,
 //!    mesh, passes).
-//! 3. [`graph`]: the pass graph of a multi-pass effect: reads/writes, what reaches the
+//! 4. [`graph`]: the pass graph of a multi-pass effect: reads/writes, what reaches the
 //!    output, target lifetimes and sharing.
-//! 4. [`inputs`]: command-line paths → programs (manifests, directories, stage files).
-//! 5. [`assets`]: CPU-side scene data: meshes, textures, the camera over time, degenerate
+//! 5. [`inputs`]: command-line paths → programs (manifests, directories, stage files).
+//! 6. [`assets`]: CPU-side scene data: meshes, textures, the camera over time, degenerate
 //!    mesh variants (no GPU; shared by the static analysis and the renderer).
-//! 6. [`front`]: each GLSL stage → `#include`s inlined → syntax facts (glsl-lang, spans) →
+//! 7. [`front`]: each GLSL stage → `#include`s inlined → syntax facts (glsl-lang, spans) →
 //!    GLSL 4.50 rewrite with an offset map → naga parse + validate.
-//! 7. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader
+//! 8. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader
 //!    declarations; the pass graph's rules.
-//! 8. [`check`]: all of the above per program, one bad program never stopping the others;
+//! 9. [`check`]: all of the above per program, one bad program never stopping the others;
 //!    its static hazard analysis (`check::hazards`, interval analysis on the IR).
-//! 9. [`back`]: a clean program's stage modules → one merged, fixed, pruned module →
-//!    WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection (`back::units`: one unit per program or
-//!    per pass that reaches the output).
-//! 10. [`output`]: atomic file writes that never replace an input.
-//! 11. [`translate`]: `effectc translate`: check, translate, write the targets.
-//! 12. [`render`]: wgpu headless: one drawer per program (scene or pass graph), frames, PNG.
-//! 13. [`stress`]: renders under extreme inputs counting NaN/Inf, the culprit expression
+//! 10. [`back`]: a clean program's stage modules → one merged, fixed, pruned module →
+//!     WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection (`back::units`: one unit per program or
+//!     per pass that reaches the output).
+//! 11. [`output`]: atomic file writes that never replace an input.
+//! 12. [`translate`]: `effectc translate`: check, translate, write the targets.
+//! 13. [`render`]: wgpu headless: one drawer per program (scene or pass graph), frames, PNG.
+//! 14. [`stress`]: renders under extreme inputs counting NaN/Inf, the culprit expression
 //!     located by instrumenting the translation (`stress::culprit`).
-//! 14. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
-//! 15. [`cli`]: the command line (clap), above every command it configures.
+//! 15. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
+//! 16. [`cli`], [`watch`]: the command line (clap), above every command it configures;
+//!     `--watch` running a command again when a file it read changes.
 
 pub mod assets;
 pub mod back;
 pub mod bench;
 pub mod check;
 pub mod cli;
+pub mod config;
 pub mod diag;
 pub mod front;
 pub mod graph;
@@ -47,3 +52,4 @@ pub mod render;
 pub mod stage;
 pub mod stress;
 pub mod translate;
+pub mod watch;

@@ -21,10 +21,13 @@
 //! - [`passes`]: multi-pass effects: skipped passes, dropped attachments, shared
 //!   textures, `--dump-targets`, per-pass translation.
 //! - [`pixels`]: every effect's frames against reference PNGs under `snapshots/png/`.
+//! - [`settings`]: `effectc: allow(…)` suppressions, `effectc.toml` (globs, allow, deny,
+//!   `--config`), paths in diagnostics relative to the working directory.
 //! - [`stress`]: `effectc stress` finds seed hazards at the ends of ranges; shipped effects
 //!   are clean.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
+//! - [`watch`]: `--watch` reports again after a change; `render` renders only what changed.
 
 #[path = "suite/bench.rs"]
 mod bench;
@@ -52,7 +55,11 @@ mod render;
 mod rewrite;
 #[path = "suite/robust.rs"]
 mod robust;
+#[path = "suite/settings.rs"]
+mod settings;
 #[path = "suite/stress.rs"]
 mod stress;
 #[path = "suite/translate.rs"]
 mod translate;
+#[path = "suite/watch.rs"]
+mod watch;

@@ -4,15 +4,19 @@
 //! be read (exit 2) and holds every diagnostic for the emitters.
 
 pub mod hazards;
+pub mod listing;
+mod load;
+mod set_values;
 
-use std::collections::{HashMap, HashSet};
-use std::path::Path;
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
 
+use crate::config::Selection;
 use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::program::{self, CompiledProgram, FrontOptions};
 use crate::graph::PassPlan;
-use crate::inputs::{self, ProgramInput};
-use crate::manifest::{self, Effect};
+use crate::inputs;
+use crate::manifest::Effect;
 use crate::stage::StageKind;
 
 /// The result of checking a set of inputs.
@@ -23,6 +27,8 @@ pub struct Outcome {
     pub programs: usize,
     /// Some input could not be read at all (usage / IO: exit code 2).
     pub io_error: bool,
+    /// Every file the programs read ([`Checked::read`] of all of them).
+    pub read: Vec<PathBuf>,
 }
 
 /// A checked program, kept for later steps (translate, render, stress, bench): the one
@@ -40,6 +46,11 @@ pub struct Checked {
     /// Multi-pass effects: the pass plan, computed once here (at output size 1×1; see
     /// [`crate::graph::PassPlan::sized`]).
     pub plan: Option<PassPlan>,
+    /// Every file the program reads, as registered (manifests, stage files, included
+    /// files) and as named by its manifest (textures, meshes): what `--watch` watches.
+    pub read: Vec<PathBuf>,
+    /// Uniform values set on the command line (`--set`) that this program declares, checked.
+    pub values: Vec<(String, crate::manifest::UniformValue)>,
 }
 
 /// One program of a checked input: what one translation is made from.
@@ -74,118 +85,130 @@ impl Checked {
     }
 }
 
-/// What a command reads: the paths named on the command line, the stage of files whose
-/// extension does not tell it, and the front's options. Every command starts from one.
+/// What a command reads: the paths named on the command line, the repository's selection
+/// of them, the stage of files whose extension does not tell it, the front's options, and
+/// how many programs are analysed at once. Every command starts from one.
 #[derive(Debug, Clone, Default)]
 pub struct InputSpec {
-    pub paths: Vec<std::path::PathBuf>,
+    pub paths: Vec<PathBuf>,
     pub stage: Option<StageKind>,
     pub front: FrontOptions,
+    pub selection: Selection,
+    /// Threads analysing programs (`None`: one per core; `Some(1)`: on the calling thread).
+    pub jobs: Option<usize>,
+    /// `--set NAME=VALUE` as typed: uniform values for every program that declares them.
+    pub values: Vec<(String, String)>,
 }
 
 impl InputSpec {
-    /// Checks every program the spec names.
+    /// Checks every program the spec names: files are read in input order, then the
+    /// programs are analysed in parallel; the report is the same for any number of jobs.
     pub fn check(&self) -> (Outcome, Vec<Checked>) {
-        check_inputs(&self.paths, self.stage, self.front)
+        let mut out = Outcome::default();
+        let (programs, diags) = inputs::collect(&self.paths, self.stage, &self.selection);
+        out.io_error |= diags.iter().any(|d| d.code == Code::InputIo);
+        out.diagnostics.extend(diags);
+        let mut loaded = Vec::with_capacity(programs.len());
+        let mut registered = Vec::with_capacity(programs.len());
+        for p in &programs {
+            let before = out.files.len();
+            loaded.push(load::load(p, &mut out.files));
+            registered.push(before..out.files.len());
+        }
+        out.programs = loaded.len();
+        let files = &out.files;
+        let options = self.front;
+        let analysed: Vec<(Checked, Vec<Diagnostic>, bool)> = self.on_threads(|| {
+            use rayon::prelude::*;
+            loaded.into_par_iter().map(|l| analyse(l, files, options)).collect()
+        });
+        let mut checked = Vec::with_capacity(analysed.len());
+        for ((mut c, diags, io_error), ids) in analysed.into_iter().zip(registered) {
+            out.io_error |= io_error;
+            out.diagnostics.extend(diags);
+            c.read = ids.map(FileId).filter(|id| !out.files.is_expanded(*id)).map(|id| PathBuf::from(out.files.path(id))).collect();
+            c.read.extend(c.effect.iter().chain(c.units.iter().filter_map(|u| u.effect.as_ref())).flat_map(assets));
+            c.read.sort();
+            c.read.dedup();
+            out.read.extend(c.read.iter().cloned());
+            checked.push(c);
+        }
+        out.read.sort();
+        out.read.dedup();
+        if !self.values.is_empty() {
+            set_values::apply(&self.values, &mut out, &mut checked);
+        }
+        crate::diag::sort(&mut out.diagnostics);
+        (out, checked)
     }
-}
 
-/// Checks every program named by `inputs`.
-pub fn check_inputs(inputs: &[std::path::PathBuf], forced: Option<StageKind>, options: FrontOptions) -> (Outcome, Vec<Checked>) {
-    let mut out = Outcome::default();
-    let (programs, diags) = inputs::collect(inputs, forced);
-    out.io_error |= diags.iter().any(|d| d.code == Code::InputIo);
-    out.diagnostics.extend(diags);
-    let mut checked = Vec::new();
-    for p in programs {
-        out.programs += 1;
-        checked.push(check_program(&p, options, &mut out));
-    }
-    crate::diag::sort(&mut out.diagnostics);
-    (out, checked)
-}
-
-fn read_stage(path: &Path, files: &mut Files, diags: &mut Vec<Diagnostic>, io_error: &mut bool) -> Option<FileId> {
-    match std::fs::read(path) {
-        Ok(bytes) => match String::from_utf8(bytes) {
-            Ok(text) => {
-                let id = files.add(path.display().to_string(), text);
-                crate::front::includes::expand(path, id, files, diags)
-            }
-            Err(e) => {
-                let valid = e.utf8_error().valid_up_to();
-                let text = String::from_utf8_lossy(e.as_bytes()).to_string();
-                let id = files.add(path.display().to_string(), text);
-                diags.push(
-                    Diagnostic::new(Code::NotText, "this stage file is not UTF-8 text")
-                        .at(id, valid..valid + 1, "invalid byte here")
-                        .with_note("GLSL sources are text; is this a binary file?"),
-                );
-                None
-            }
-        },
-        Err(e) => {
-            *io_error = true;
-            diags.push(Diagnostic::new(Code::InputIo, format!("cannot read `{}`: {e}", path.display())));
-            None
+    /// Runs `work` on a pool of [`InputSpec::jobs`] threads (on this thread for one job).
+    pub fn on_threads<T: Send>(&self, work: impl FnOnce() -> T + Send) -> T {
+        let threads = self.jobs.unwrap_or(0);
+        if threads == 1 {
+            return match rayon::ThreadPoolBuilder::new().num_threads(1).use_current_thread().build() {
+                Ok(pool) => pool.install(work),
+                Err(_) => work(),
+            };
+        }
+        match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+            Ok(pool) => pool.install(work),
+            Err(_) => work(),
         }
     }
 }
 
-/// Checks one program; diagnostics go to `out`.
-pub fn check_program(input: &ProgramInput, options: FrontOptions, out: &mut Outcome) -> Checked {
-    let start = out.diagnostics.len();
-    let mut effect = None;
-    let mut stage_files: Vec<(FileId, StageKind)> = Vec::new();
-    let mut readable = true;
+/// Checks every program named by `inputs` (every path selected, one thread per core).
+pub fn check_inputs(inputs: &[PathBuf], forced: Option<StageKind>, options: FrontOptions) -> (Outcome, Vec<Checked>) {
+    InputSpec { paths: inputs.to_vec(), stage: forced, front: options, ..InputSpec::default() }.check()
+}
+
+/// Analyses one read program: its checked value, its diagnostics, whether a file could
+/// not be read.
+fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, Vec<Diagnostic>, bool) {
+    let mut diags = l.diagnostics;
+    let mut io_error = l.io_error;
     let mut units = Vec::new();
     let mut plan = None;
-    match input {
-        ProgramInput::Manifest(path) => match manifest::load(path, &mut out.files) {
-            Ok(e) if e.is_multi_pass() => {
-                out.diagnostics.extend(e.warnings.iter().cloned());
-                (units, plan) = check_passes(&e, options, out);
-                dedup_from(&mut out.diagnostics, start);
-                effect = Some(e);
-            }
-            Ok(e) => {
-                out.diagnostics.extend(e.warnings.iter().cloned());
-                for s in &e.stages {
-                    match read_stage(&s.path, &mut out.files, &mut out.diagnostics, &mut out.io_error) {
-                        Some(id) => stage_files.push((id, s.kind)),
-                        None => readable = false,
-                    }
-                }
-                effect = Some(e);
-            }
-            Err(diags) => {
-                out.io_error |= diags.iter().any(manifest::is_io_error);
-                out.diagnostics.extend(diags);
-                readable = false;
-            }
-        },
-        ProgramInput::Stages { files, .. } => {
-            for (path, kind) in files {
-                match read_stage(path, &mut out.files, &mut out.diagnostics, &mut out.io_error) {
-                    Some(id) => stage_files.push((id, *kind)),
-                    None => readable = false,
-                }
+    match l.body {
+        load::Body::Nothing => {}
+        load::Body::Single(stage_files) => {
+            let (program, d) = check_stages(files, &stage_files, l.effect.as_ref(), options);
+            diags.extend(d);
+            if let Some(program) = program {
+                let name = l.effect.as_ref().map_or_else(|| stem_of(files, &program), |e| e.name.clone());
+                units.push(Unit { pass: 0, name, effect: l.effect.clone(), program, runs: true });
             }
         }
-    }
-    if readable && !stage_files.is_empty() {
-        let (program, diags) = check_stages(&out.files, &stage_files, effect.as_ref(), options);
-        out.diagnostics.extend(diags);
-        if let Some(program) = program {
-            let name = effect.as_ref().map_or_else(|| stem_of(&out.files, &program), |e| e.name.clone());
-            units.push(Unit { pass: 0, name, effect: effect.clone(), program, runs: true });
+        load::Body::Passes(passes) => {
+            if let Some(effect) = &l.effect {
+                (units, plan) = check_passes(effect, passes, files, options, &mut diags);
+            }
+            dedup(&mut diags);
         }
     }
-    let failed = out.diagnostics[start..].iter().any(Diagnostic::is_error);
+    io_error |= diags.iter().any(|d| d.code == Code::InputIo);
+    let failed = diags.iter().any(Diagnostic::is_error);
     if failed {
         units.clear();
     }
-    Checked { name: input.display_name(), effect, failed, units, plan }
+    (Checked { name: l.name, effect: l.effect, failed, units, plan, read: Vec::new(), values: Vec::new() }, diags, io_error)
+}
+
+/// The image and mesh files an effect names.
+fn assets(effect: &Effect) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for t in &effect.textures {
+        match &t.source {
+            crate::manifest::TextureSource::File(p) => out.push(p.clone()),
+            crate::manifest::TextureSource::Faces(faces) => out.extend(faces.iter().cloned()),
+            _ => {}
+        }
+    }
+    if let Some(crate::manifest::MeshSource::Obj(p)) = effect.mesh.as_ref().map(|m| &m.source) {
+        out.push(p.clone());
+    }
+    out
 }
 
 /// The name of a program from bare stage files: its first file's stem.
@@ -218,76 +241,38 @@ pub fn check_stages(
     (program, diags)
 }
 
-/// Drops repeated diagnostics after `start` (two passes sharing a stage file report its
-/// findings once).
-fn dedup_from(diags: &mut Vec<Diagnostic>, start: usize) {
+/// Drops repeated diagnostics (two passes sharing a stage file report its findings once).
+fn dedup(diags: &mut Vec<Diagnostic>) {
     let mut seen: Vec<Diagnostic> = Vec::new();
-    let tail: Vec<Diagnostic> = diags.drain(start..).collect();
-    for d in tail {
+    for d in diags.drain(..) {
         if !seen.contains(&d) {
             seen.push(d);
         }
     }
-    diags.extend(seen);
+    *diags = seen;
 }
 
 /// Checks every pass of a multi-pass effect, then the graph they form: a unit per pass that
 /// compiled, and the pass plan when the graph has no errors.
-fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (Vec<Unit>, Option<PassPlan>) {
-    let mut read: HashMap<std::path::PathBuf, Option<FileId>> = HashMap::new();
+fn check_passes(
+    effect: &Effect,
+    passes: Vec<load::PassFiles>,
+    files: &Files,
+    options: FrontOptions,
+    out: &mut Vec<Diagnostic>,
+) -> (Vec<Unit>, Option<PassPlan>) {
     let mut units = Vec::new();
     let mut syntaxes_of: Vec<Option<Vec<crate::front::syntax::StageSyntax>>> = Vec::new();
     let mut used_uniforms: HashSet<String> = HashSet::new();
     let mut used_textures: HashSet<String> = HashSet::new();
     let mut all_declared = true;
-    for (i, pass) in effect.passes.iter().enumerate() {
-        let reused = match &pass.reuse {
-            None => None,
-            Some((path, span)) => match manifest::load(path, &mut out.files) {
-                Ok(r) if r.is_multi_pass() => {
-                    out.diagnostics.push(
-                        Diagnostic::new(Code::ManifestConflict, format!("pass `{}` reuses a multi-pass effect", pass.name))
-                            .at(effect.file, span.clone(), "has [[passes]] of its own")
-                            .with_help("reuse a single-pass effect, or copy its passes into this manifest"),
-                    );
-                    None
-                }
-                Ok(r) => Some(r),
-                Err(diags) => {
-                    out.io_error |= diags.iter().any(manifest::is_io_error);
-                    out.diagnostics.push(
-                        Diagnostic::new(Code::ManifestValue, format!("pass `{}` reuses an effect that has errors", pass.name)).at(
-                            effect.file,
-                            span.clone(),
-                            "this effect",
-                        ),
-                    );
-                    out.diagnostics.extend(diags);
-                    None
-                }
-            },
-        };
-        let mut view = effect.pass_view(pass, reused.as_ref());
-        if pass.reuse.is_some() && reused.is_none() {
-            syntaxes_of.push(None);
-            all_declared = false;
-            continue;
-        }
-        let mut stage_files = Vec::new();
-        let mut readable = true;
-        for s in &view.stages {
-            let id =
-                *read.entry(s.path.clone()).or_insert_with(|| read_stage(&s.path, &mut out.files, &mut out.diagnostics, &mut out.io_error));
-            match id {
-                Some(id) => stage_files.push((id, s.kind)),
-                None => readable = false,
-            }
-        }
+    for (i, (pass, read)) in effect.passes.iter().zip(passes).enumerate() {
+        let mut view = read.view;
         let mut program = None;
         let mut syntaxes = None;
-        if readable && !stage_files.is_empty() {
+        if let Some(stage_files) = &read.stages {
             let mut diags = Vec::new();
-            program = program::compile(&out.files, &stage_files, options, &mut diags);
+            program = program::compile(files, stage_files, options, &mut diags);
             if let Some(p) = &mut program {
                 let s: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
                 diags.extend(crate::link::check_interface(&s));
@@ -299,7 +284,7 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
                     used_textures.extend(view.textures.iter().map(|t| t.name.clone()));
                 }
                 let bound: HashSet<String> = pass.samples.iter().map(|s| s.sampler.clone()).collect();
-                diags.extend(crate::link::check_pass_manifest(&view, &s, &out.files, &bound));
+                diags.extend(crate::link::check_pass_manifest(&view, &s, files, &bound));
                 // Targets an earlier pass drew are unknown to the analysis: they raise nothing.
                 if !diags.iter().any(Diagnostic::is_error) {
                     program::fold_geometry(p, &mut diags);
@@ -307,7 +292,7 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
                 }
                 syntaxes = Some(s);
             }
-            out.diagnostics.extend(diags);
+            out.extend(diags);
         }
         all_declared &= syntaxes.is_some() || pass.reuse.is_some();
         syntaxes_of.push(syntaxes);
@@ -316,12 +301,12 @@ fn check_passes(effect: &Effect, options: FrontOptions, out: &mut Outcome) -> (V
         }
     }
     if all_declared {
-        out.diagnostics.extend(crate::link::graph_rules::unused_entries(effect, &used_uniforms, &used_textures));
+        out.extend(crate::link::graph_rules::unused_entries(effect, &used_uniforms, &used_textures));
     }
     let shaders: Vec<crate::link::graph_rules::PassShaders<'_>> =
         syntaxes_of.iter().map(|s| crate::link::graph_rules::PassShaders { stages: s.as_deref() }).collect();
     let (diags, plan) = crate::link::graph_rules::check(effect, &shaders);
-    out.diagnostics.extend(diags);
+    out.extend(diags);
     if let Some(plan) = &plan {
         for unit in &mut units {
             unit.runs = plan.runs[unit.pass];

@@ -62,6 +62,7 @@ codes! {
     UnknownStage => "E0011", "the stage of a file cannot be told from its extension",
     NotText => "E0012", "stage file is not UTF-8 text",
     OutputIo => "E0014", "output cannot be written",
+    ConfigInvalid => "E0015", "`effectc.toml` cannot be read or has an invalid setting",
     // The front: syntax, rewrite, naga (`front`).
     BadVersion => "E0101", "bad `#version` directive",
     SyntaxError => "E0102", "GLSL syntax error",
@@ -137,6 +138,8 @@ codes! {
     StageExtension => "W0001", "stage file extension names another stage",
     DefaultOutOfRange => "W0002", "uniform default outside its declared range",
     UnusedGeneratorParam => "W0003", "texture generator parameter has no effect",
+    SuppressionInvalid => "W0004", "suppression or config names an unknown code, an error, or is malformed",
+    SuppressionUnused => "W0005", "suppression that silences nothing",
     RemovedInVersion => "W0120", "construct removed from the declared version",
     UniformInitializerIgnored => "W0130", "uniform initializer ignored",
     RewriteFailed => "W0190", "effectc could not rewrite an expression for naga",

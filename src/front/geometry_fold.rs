@@ -32,6 +32,7 @@
 use std::fmt::Write as _;
 use std::ops::Range;
 
+use crate::config::TargetEnv;
 use crate::diag::FileId;
 use crate::front::edits::{Edits, OffsetMap};
 use crate::front::geometry_layout::{GeometryLayout, OutputPrimitive};
@@ -120,8 +121,10 @@ pub struct Folded {
 /// the geometry stage as the user wrote it, when known: the interpolation qualifiers of its
 /// output block members (the 4.50 text leaves them out, as naga ignores them there).
 pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, original: Option<&StageSyntax>) -> Result<Lowered, String> {
-    let v = syntax::analyse(FileId(0), vs, StageKind::Vertex).map_err(|_| "the rewritten vertex stage does not parse".to_string())?;
-    let g = syntax::analyse(FileId(0), gs, StageKind::Geometry).map_err(|_| "the rewritten geometry stage does not parse".to_string())?;
+    let v = syntax::analyse(FileId(0), vs, StageKind::Vertex, TargetEnv::Auto)
+        .map_err(|_| "the rewritten vertex stage does not parse".to_string())?;
+    let g = syntax::analyse(FileId(0), gs, StageKind::Geometry, TargetEnv::Auto)
+        .map_err(|_| "the rewritten geometry stage does not parse".to_string())?;
     let corners = layout.input.vertices();
     let mut text = String::from("#version 450\n");
     let vs_part = Part::new(&v, "effectc_vs_", None, None)?;

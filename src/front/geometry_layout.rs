@@ -198,7 +198,7 @@ mod tests {
     use crate::stage::StageKind;
 
     fn layout(src: &str) -> Result<GeometryLayout, LayoutProblem> {
-        let s = crate::front::syntax::analyse(FileId(0), src, StageKind::Geometry).expect("parses");
+        let s = crate::front::syntax::analyse(FileId(0), src, StageKind::Geometry, crate::config::TargetEnv::Auto).expect("parses");
         geometry_layout(&s)
     }
 

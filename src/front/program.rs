@@ -23,6 +23,8 @@ use crate::stage::StageKind;
 pub struct FrontOptions {
     /// Constructs the declared GLSL version forbids are errors, not warnings.
     pub strict: bool,
+    /// The GLSL dialect (OpenGL or Vulkan), or told by the text.
+    pub env: crate::config::TargetEnv,
 }
 
 /// A stage as compiled by the front.
@@ -86,7 +88,7 @@ pub fn compile(
     let mut syntaxes = Vec::new();
     let mut ok = true;
     for (file, kind) in &ordered {
-        match syntax::analyse(*file, files.text(*file), *kind) {
+        match syntax::analyse(*file, files.text(*file), *kind, options.env) {
             Ok(s) => syntaxes.push(s),
             Err(errs) => {
                 diags.extend(errs);

@@ -216,3 +216,25 @@ pub fn declared(stages: &[StageSyntax]) -> Declared {
         samplers: decls.samplers().into_iter().map(|(p, t, _)| (p, t)).collect(),
     }
 }
+
+/// A uniform the command line or a manifest can set, as `effectc check --list-uniforms`
+/// lists it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Settable {
+    pub name: String,
+    /// The GLSL type as written (`vec3`, `float[4]`, `Light`).
+    pub ty: String,
+    /// Some stage reads it.
+    pub read: bool,
+}
+
+/// The settable uniforms of a program's stages (loose uniforms and members of anonymous
+/// blocks; samplers and images left out), in declaration order.
+pub fn settable(stages: &[StageSyntax]) -> Vec<Settable> {
+    Decls::collect(stages)
+        .list
+        .iter()
+        .filter(|d| !super::is_opaque(d.ty))
+        .map(|d| Settable { name: d.name.clone(), ty: d.type_text(), read: d.read })
+        .collect()
+}

@@ -30,7 +30,7 @@ pub fn check_with_bound(effect: &Effect, stages: &[StageSyntax], files: &Files, 
     for u in &effect.uniforms {
         let base = parse_path(&u.name).map_or(u.name.clone(), |(b, _)| b);
         covered.insert(base);
-        default(effect, u, &decls, stages, files, &mut out);
+        default(effect.file, "`[uniforms]` entry", u, &decls, stages, files, &mut out);
     }
     textures(effect, &decls, &mut out);
     let mut textured: HashSet<String> = effect.textures.iter().map(|t| texture_path(&t.name)).collect();
@@ -39,14 +39,26 @@ pub fn check_with_bound(effect: &Effect, stages: &[StageSyntax], files: &Files, 
     out
 }
 
-/// Checks one `[uniforms]` entry.
-fn default(effect: &Effect, u: &UniformDefault, decls: &Decls, stages: &[StageSyntax], files: &Files, out: &mut Vec<Diagnostic>) {
+/// Values set on the command line (`--set NAME=VALUE`, spans into `mf`, the registered
+/// command line) against the declarations, as `[uniforms]` defaults are: unknown names
+/// (with the nearest declared one), values that do not fit the type.
+pub fn check_values(mf: FileId, values: &[UniformDefault], stages: &[StageSyntax], files: &Files) -> Vec<Diagnostic> {
+    let decls = Decls::collect(stages);
+    let mut out = Vec::new();
+    for u in values {
+        default(mf, "`--set`", u, &decls, stages, files, &mut out);
+    }
+    out
+}
+
+/// Checks one `[uniforms]` entry (`what` names where it was written) of the file `mf`.
+fn default(mf: FileId, what: &str, u: &UniformDefault, decls: &Decls, stages: &[StageSyntax], files: &Files, out: &mut Vec<Diagnostic>) {
     let (base, steps) = parse_path(&u.name).unwrap_or_else(|| (u.name.clone(), Vec::new()));
     let Some(decl) = decls.get(&base) else {
-        out.push(unknown(effect, u, &base, decls, stages, files));
+        out.push(unknown(mf, what, u, &base, decls, stages, files));
         return;
     };
-    let (ty, shown) = match follow_path(effect.file, u, decl, &steps) {
+    let (ty, shown) = match follow_path(mf, u, decl, &steps) {
         Ok(found) => found,
         Err(d) => {
             out.push(d);
@@ -56,7 +68,7 @@ fn default(effect: &Effect, u: &UniformDefault, decls: &Decls, stages: &[StageSy
     let shape = decl.shape(&ty);
     let tt = type_text(decl.stage, &ty);
     let decl_label = format!("`{}` is declared as `{}` here", decl.name, decl.type_text());
-    let entry = Entry { mf: effect.file, u, decl, ty, shown, shape, tt, decl_label };
+    let entry = Entry { mf, u, decl, ty, shown, shape, tt, decl_label };
     entry.check_value(out);
     entry.check_semantic(out);
     entry.check_range(out);
@@ -237,12 +249,12 @@ impl Entry<'_> {
 }
 
 /// A `[uniforms]` entry whose base name no stage declares as a settable uniform.
-fn unknown(effect: &Effect, u: &UniformDefault, base: &str, decls: &Decls, stages: &[StageSyntax], files: &Files) -> Diagnostic {
-    let mut d = Diagnostic::new(
-        Code::UniformUndeclared,
-        format!("`[uniforms]` entry `{}` names no uniform declared by the shaders", u.name),
-    )
-    .at(effect.file, u.name_span.clone(), format!("no stage declares a uniform `{base}`"));
+fn unknown(mf: FileId, what: &str, u: &UniformDefault, base: &str, decls: &Decls, stages: &[StageSyntax], files: &Files) -> Diagnostic {
+    let mut d = Diagnostic::new(Code::UniformUndeclared, format!("{what} `{}` names no uniform declared by the shaders", u.name)).at(
+        mf,
+        u.name_span.clone(),
+        format!("no stage declares a uniform `{base}`"),
+    );
     // A member (or the instance / block name) of a named uniform block?
     for nb in &decls.named_blocks {
         let s = nb.stage;

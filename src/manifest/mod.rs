@@ -29,6 +29,7 @@
 //! | `W0003` | [`Code::UnusedGeneratorParam`] | a texture generator parameter the chosen generator ignores |
 
 mod effect;
+pub mod guess;
 mod instances;
 mod knobs;
 mod mesh;

@@ -60,6 +60,9 @@ pub struct Request {
     pub started: Instant,
     /// Multi-pass effects: write every intermediate target too (nothing pruned or shared).
     pub dump_targets: bool,
+    /// `--watch` after a change: render only the programs that read one of these files
+    /// (absolute paths); `None` renders every program.
+    pub only: Option<Vec<PathBuf>>,
 }
 
 impl Request {
@@ -81,7 +84,13 @@ impl Request {
             progress: false,
             started: Instant::now(),
             dump_targets: false,
+            only: None,
         }
+    }
+
+    /// Does this request render `c`? (Under `--watch`, only programs whose files changed.)
+    fn wants(&self, c: &check::Checked) -> bool {
+        self.only.as_ref().is_none_or(|changed| c.read.iter().any(|p| changed.contains(&crate::diag::paths::absolute(p))))
     }
 
     /// What building each program takes from these flags.
@@ -134,7 +143,7 @@ pub fn run(request: &Request) -> RunResult {
     let mut result = RunResult { outcome: Outcome::default(), rendered: Vec::new(), adapter: None, hung: false };
     let inputs = output::input_paths(&outcome, &request.input.paths);
     let mut gpu: Option<Gpu> = None;
-    for c in &checked {
+    for c in checked.iter().filter(|c| request.wants(c)) {
         let Some(prepared) = prepare(c, &mut outcome, &request.build_settings(), None) else { continue };
         let Some(gpu) = open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
         let effect = c.effect.as_ref();

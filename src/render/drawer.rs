@@ -173,6 +173,11 @@ pub(crate) fn build(
     variant: BuildVariant<'_>,
 ) -> Result<(Drawer, FileId), Vec<Diagnostic>> {
     let BuildVariant { overrides, degenerate } = variant;
+    // `--set` values first, the variant's (a bench knob, a stress case) over them.
+    let mut merged: Vec<(String, UniformValue)> =
+        c.values.iter().filter(|(n, _)| !overrides.iter().any(|(m, _)| m == n)).cloned().collect();
+    merged.extend(overrides.iter().cloned());
+    let overrides = &merged[..];
     let flipped_y = settings.back.flip_y;
     let with_overrides = |e: &Effect| with_overrides(e, overrides);
     match (&prepared.plan, c.multi_pass()) {
@@ -195,8 +200,17 @@ pub(crate) fn build(
             let (_, translation, wgsl) = &prepared.units[0];
             let unit = &c.units[0];
             let effect = unit.effect.as_ref().map(with_overrides);
-            let input =
-                SceneInput { translation, wgsl, program: &unit.program, effect: effect.as_ref(), mode, flipped_y, pass: None, degenerate };
+            let input = SceneInput {
+                translation,
+                wgsl,
+                program: &unit.program,
+                effect: effect.as_ref(),
+                mode,
+                flipped_y,
+                pass: None,
+                degenerate,
+                overrides,
+            };
             let scene = Scene::new(gpu, &input)?;
             let target = FrameTarget::new(gpu, &scene, size.0, size.1, mode);
             Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))

@@ -143,6 +143,7 @@ impl PassGraph {
                 flipped_y,
                 pass: Some(binding),
                 degenerate,
+                overrides: &[],
             };
             let mut scene = match Scene::new(gpu, &input) {
                 Ok(s) => s,

@@ -86,7 +86,7 @@ pub enum Guess {
 /// The guess for a uniform named `name` whose slot has `shape` and scalar type
 /// `is_float` (integers and booleans never take a semantic other than `frame`).
 pub fn guess(name: &str, shape: Shape, is_float: bool) -> Guess {
-    if let Some(s) = guess_semantic(name, shape, is_float) {
+    if let Some(s) = crate::manifest::guess::semantic_by_name(name, shape, is_float) {
         return Guess::Semantic(s);
     }
     let lower = name.to_ascii_lowercase();
@@ -111,65 +111,6 @@ pub fn guess(name: &str, shape: Shape, is_float: bool) -> Guess {
         );
     }
     Guess::Constant(UniformValue::Int(0), "zero")
-}
-
-/// The semantic a uniform's name suggests, if its type fits it.
-fn guess_semantic(name: &str, shape: Shape, is_float: bool) -> Option<Semantic> {
-    let key = normalised(name);
-    let candidates: &[(&[&str], Semantic)] = &[
-        (&["time", "globaltime", "elapsed", "elapsedtime", "seconds", "timevar"], Semantic::Time),
-        (&["deltatime", "timedelta", "dt", "frametime"], Semantic::DeltaTime),
-        (&["frame", "framecount", "framenumber", "frameindex"], Semantic::Frame),
-        (&["resolution", "screensize", "viewportsize", "viewport", "screenresolution"], Semantic::Resolution),
-        (&["mouse", "mousepos", "pointer"], Semantic::Mouse),
-        (&["model", "modelmatrix", "world", "worldmatrix", "modelmat"], Semantic::Model),
-        (&["view", "viewmatrix", "viewmat", "camera", "cameramatrix"], Semantic::View),
-        (&["projection", "proj", "projectionmatrix", "projmatrix", "projmat", "perspective"], Semantic::Projection),
-        (&["modelview", "mv", "modelviewmatrix", "mvmatrix"], Semantic::ModelView),
-        (&["viewprojection", "viewproj", "vp", "viewprojectionmatrix", "projview", "pv"], Semantic::ViewProjection),
-        (
-            &["mvp", "modelviewprojection", "mvpmatrix", "modelviewprojectionmatrix", "pvm", "wvp", "worldviewprojection"],
-            Semantic::ModelViewProjection,
-        ),
-        (&["normalmatrix", "normalmat", "nmatrix"], Semantic::NormalMatrix),
-        (
-            &["viewpos", "viewposition", "campos", "camerapos", "cameraposition", "eye", "eyepos", "eyeposition", "camerapositionworld"],
-            Semantic::CameraPosition,
-        ),
-    ];
-    let semantic = candidates.iter().find(|(names, _)| names.contains(&key.as_str()))?.1;
-    let ty = type_name(shape, is_float)?;
-    semantic.glsl_types().contains(&ty).then_some(semantic)
-}
-
-/// `u_Time`, `iTime`, `uTime`, `g_time`, `m_ProjectionMatrix` → `time`, `projectionmatrix`.
-fn normalised(name: &str) -> String {
-    let mut n = name;
-    for prefix in ["u_", "g_", "m_", "a_"] {
-        if let Some(rest) = n.strip_prefix(prefix) {
-            n = rest;
-        }
-    }
-    // Shadertoy's `iTime` and the common `uTime`: a lone lowercase prefix before a capital.
-    let bytes = n.as_bytes();
-    if bytes.len() > 2 && (bytes[0] == b'i' || bytes[0] == b'u') && bytes[1].is_ascii_uppercase() {
-        n = &n[1..];
-    }
-    n.replace('_', "").to_ascii_lowercase()
-}
-
-/// The GLSL type name of a slot shape, for [`Semantic::glsl_types`].
-fn type_name((columns, rows): Shape, is_float: bool) -> Option<&'static str> {
-    Some(match (columns, rows, is_float) {
-        (1, 1, true) => "float",
-        (1, 1, false) => "int",
-        (1, 2, true) => "vec2",
-        (1, 3, true) => "vec3",
-        (1, 4, true) => "vec4",
-        (3, 3, true) => "mat3",
-        (4, 4, true) => "mat4",
-        _ => return None,
-    })
 }
 
 #[cfg(test)]

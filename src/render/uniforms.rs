@@ -44,13 +44,28 @@ pub struct Guessed {
 }
 
 /// Builds the buffers of every uniform-address-space global that has a binding.
-pub fn buffers(module: &Module, effect: Option<&Effect>) -> Result<(Vec<UniformBuffer>, Vec<Guessed>), String> {
+/// `overrides` (`--set`, a bench knob, a stress case) win over the effect's values and
+/// over guesses.
+pub fn buffers(
+    module: &Module,
+    effect: Option<&Effect>,
+    overrides: &[(String, UniformValue)],
+) -> Result<(Vec<UniformBuffer>, Vec<Guessed>), String> {
     let mut out = Vec::new();
     let mut guessed = Vec::new();
     for (_, g) in module.global_variables.iter() {
         let (naga::AddressSpace::Uniform, Some(rb)) = (g.space, &g.binding) else { continue };
         let mut buffer = UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new() };
         fill_block(module, g.ty, effect, &mut buffer, &mut guessed)?;
+        for (name, value) in overrides {
+            if let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, g.ty, name) {
+                write_slot(module, slot_ty, offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
+                buffer.per_frame.retain(|s| s.offset != offset);
+                guessed.retain(|gu| {
+                    gu.name != name.as_str() && !name.starts_with(&format!("{}.", gu.name)) && !name.starts_with(&format!("{}[", gu.name))
+                });
+            }
+        }
         out.push(buffer);
     }
     Ok((out, guessed))

@@ -14,7 +14,7 @@ use naga::{Module, ScalarKind, TypeInner};
 use super::interval::Iv;
 use super::value::{singular_bounds, Num, Val};
 use crate::assets::mesh::Mesh;
-use crate::manifest::{Effect, MeshAttribute, MeshSource, Semantic, TextureSource, UniformDefault, UniformValue};
+use crate::manifest::{CameraDecl, Effect, MeshAttribute, MeshSource, ModelDecl, Semantic, TextureSource, UniformDefault, UniformValue};
 
 /// How long an effect is assumed to run when its time uniform has no `range`: a day.
 pub const DEFAULT_TIME_LIMIT: f64 = 86_400.0;
@@ -37,6 +37,9 @@ pub struct Facts {
     pub frame_size: (f64, f64),
     pub instances: u32,
     pub time_limit: f64,
+    /// Bare stage files: the value of each semantic, for uniforms whose name suggests one
+    /// (as the renderer guesses); empty for an effect.
+    pub guessed: HashMap<Semantic, Num>,
 }
 
 impl Facts {
@@ -51,7 +54,7 @@ impl Facts {
         if let Some(t) = e.uniforms.iter().find(|u| u.semantic == Some(Semantic::Time)).and_then(|u| u.range) {
             f.time_limit = t.1.max(0.0);
         }
-        let motion = Motion::sample(e);
+        let motion = Motion::sample(e.camera.clone().unwrap_or_default(), &e.model, e.render.size);
         for u in &e.uniforms {
             if let Some(n) = uniform_fact(u, &motion, f.time_limit) {
                 f.uniforms.insert(u.name.clone(), n);
@@ -62,17 +65,8 @@ impl Facts {
             MeshSource::Obj(p) => Mesh::load_obj(p).ok(),
         }) {
             let explicit = e.mesh.as_ref().map(|m| m.attributes.clone()).unwrap_or_default();
-            for (location, name) in attribute_names {
-                let per_instance = e.instances.as_ref().is_some_and(|d| d.attributes.iter().any(|a| a.input == *name));
-                if per_instance {
-                    continue;
-                }
-                let attr =
-                    explicit.iter().find(|(n, _)| n == name).map(|(_, a)| *a).or_else(|| crate::assets::attribute_names::by_name(name));
-                if let Some(a) = attr {
-                    f.attributes.insert(*location, attribute_fact(&mesh, a, &mesh.attribute(a)));
-                }
-            }
+            let per_instance = |name: &str| e.instances.as_ref().is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
+            f.mesh_attributes(&mesh, &explicit, attribute_names, &per_instance);
         }
         for t in &e.textures {
             if let Some(channels) = texture_channels(&t.source) {
@@ -80,6 +74,58 @@ impl Facts {
             }
         }
         f
+    }
+}
+
+impl Facts {
+    /// The facts of bare stage files: what the renderer guesses for them. A uniform named
+    /// like a semantic (`iTime`, `u_resolution`, `projection`) takes its values (time over
+    /// a day, the default camera's matrices). The vertex inputs stay unknown: the mesh the
+    /// renderer guesses (a unit cube, a full-screen quad) says little about the user's own
+    /// meshes, and its per-component hull made false positives (a cube's z spans 0 though
+    /// no corner has z = 0).
+    pub fn guessed() -> Facts {
+        let mut f = Facts { frame_size: (MAX_SIZE, MAX_SIZE), instances: 1, time_limit: DEFAULT_TIME_LIMIT, ..Facts::default() };
+        let motion = Motion::sample(Default::default(), &Default::default(), None);
+        for s in Semantic::ALL {
+            if let Some(n) = semantic_fact(s, &motion, f.time_limit, None) {
+                f.guessed.insert(s, Num { per_draw: true, ..n });
+            }
+        }
+        f
+    }
+
+    /// The fact of every vertex input the mesh feeds (by the manifest's mapping, else by
+    /// name), except those fed per instance.
+    fn mesh_attributes(
+        &mut self,
+        mesh: &Mesh,
+        explicit: &[(String, MeshAttribute)],
+        attribute_names: &[(u32, String)],
+        per_instance: &dyn Fn(&str) -> bool,
+    ) {
+        for (location, name) in attribute_names {
+            if per_instance(name) {
+                continue;
+            }
+            let attr = explicit.iter().find(|(n, _)| n == name).map(|(_, a)| *a).or_else(|| crate::assets::attribute_names::by_name(name));
+            if let Some(a) = attr {
+                self.attributes.insert(*location, attribute_fact(mesh, a, &mesh.attribute(a)));
+            }
+        }
+    }
+
+    /// The guessed semantic fact for the uniform at `path` whose unknown value is `u`.
+    fn guess(&self, path: &str, u: &Num) -> Option<&Num> {
+        if self.guessed.is_empty() {
+            return None;
+        }
+        let leaf = path.rsplit('.').next().unwrap_or(path);
+        let name = leaf.split('[').next().unwrap_or(leaf);
+        let cols = u.cols.max(1);
+        let shape = (cols as u8, (u.c.len() / cols) as u8);
+        let semantic = crate::manifest::guess::semantic_by_name(name, shape, u.kind == ScalarKind::Float)?;
+        self.guessed.get(&semantic)
     }
 }
 
@@ -151,18 +197,18 @@ struct Motion {
 }
 
 impl Motion {
-    fn sample(e: &Effect) -> Motion {
-        let camera = e.camera.clone().unwrap_or_default();
-        let (w, h) = e.render.size.unwrap_or((512, 512));
+    /// The camera and model over time, at frame size `size` (default 512²).
+    fn sample(camera: CameraDecl, model: &ModelDecl, size: Option<(u32, u32)>) -> Motion {
+        let (w, h) = size.unwrap_or((512, 512));
         let aspect = w as f32 / h.max(1) as f32;
-        let spin = e.model.spin.iter().map(|s| s.abs()).fold(0.0f32, f32::max);
+        let spin = model.spin.iter().map(|s| s.abs()).fold(0.0f32, f32::max);
         let mut span = camera.keys.last().map_or(0.0, |k| k.time);
         if spin > 0.0 {
             span = span.max(360.0 / f64::from(spin));
         }
         let times: Vec<f64> = (0..=256).map(|i| span * f64::from(i) / 256.0).collect();
         Motion {
-            models: times.iter().map(|&t| crate::assets::camera::model_at(&e.model, t)).collect(),
+            models: times.iter().map(|&t| crate::assets::camera::model_at(model, t)).collect(),
             views: times.iter().map(|&t| crate::assets::camera::view_at(&camera, t, aspect)).collect(),
         }
     }
@@ -282,7 +328,11 @@ pub fn uniform_value(module: &Module, ty: &TypeInner, path: &str, facts: &Facts)
         }
         _ => {
             let unknown = Val::unknown(module, ty);
-            match (facts.uniforms.get(path), unknown) {
+            let known = match &unknown {
+                Val::Num(u) => facts.uniforms.get(path).or_else(|| facts.guess(path, u)),
+                _ => facts.uniforms.get(path),
+            };
+            match (known, unknown) {
                 (Some(n), Val::Num(u)) if n.c.len() == u.c.len() => {
                     let mut n = n.clone();
                     n.kind = u.kind;

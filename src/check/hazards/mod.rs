@@ -206,7 +206,10 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
                 .collect()
         })
         .unwrap_or_default();
-    let mut f = facts::Facts::of(effect, &names);
+    let mut f = match effect {
+        Some(_) => facts::Facts::of(effect, &names),
+        None => facts::Facts::guessed(),
+    };
     let mut out = Vec::new();
     for (kind, stage) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
         let Some(s) = find(kind) else { continue };

@@ -8,6 +8,7 @@ use std::ops::Range;
 use glsl_lang::ast;
 use glsl_lang::parse::DefaultParse;
 
+use crate::config::TargetEnv;
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::syntax::collect::Collector;
 use crate::front::syntax::model::{Referent, StageSyntax};
@@ -16,7 +17,8 @@ use crate::front::version::{self, Renames};
 use crate::stage::StageKind;
 
 /// Parses one stage. Errors are syntax diagnostics at the user's spans.
-pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSyntax, Vec<Diagnostic>> {
+/// `env` forces the dialect, else the text tells it ([`TargetEnv::Auto`]).
+pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -> Result<StageSyntax, Vec<Diagnostic>> {
     let version = match version::parse_version(original) {
         Ok(v) => v,
         Err((msg, span)) => {
@@ -38,7 +40,11 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
     let opts = glsl_lang::parse::ParseOptions {
         default_version: 110,
         // Vulkan GLSL's types (`texture2D`, `sampler`, `subpassInput`) are keywords there only.
-        target_vulkan: vulkan_source(original),
+        target_vulkan: match env {
+            TargetEnv::Auto => vulkan_source(original),
+            TargetEnv::OpenGl => false,
+            TargetEnv::Vulkan => true,
+        },
         ..Default::default()
     };
     if opts.target_vulkan && version.number >= 400 && !version.is_es() {
@@ -106,7 +112,11 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind) -> Result<StageSy
         vulkan: false,
     };
     Collector::run(&mut syntax, &tu);
-    syntax.vulkan = looks_like_vulkan(&syntax, original);
+    syntax.vulkan = match env {
+        TargetEnv::Auto => looks_like_vulkan(&syntax, original),
+        TargetEnv::OpenGl => false,
+        TargetEnv::Vulkan => true,
+    };
     Ok(syntax)
 }
 

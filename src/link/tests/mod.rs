@@ -23,7 +23,7 @@ impl Program {
         let mut stages = Vec::new();
         for (kind, text) in sources {
             let id = files.add(format!("shader.{}", kind.short_name()), *text);
-            match analyse(id, text, *kind) {
+            match analyse(id, text, *kind, crate::config::TargetEnv::Auto) {
                 Ok(s) => stages.push(s),
                 Err(e) => panic!("{} does not parse: {e:?}", kind.short_name()),
             }

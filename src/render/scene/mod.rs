@@ -117,6 +117,9 @@ pub struct SceneInput<'a> {
     pub pass: Option<PassBinding<'a>>,
     /// `effectc stress`: draw a degenerate variant of the mesh.
     pub degenerate: Option<Degenerate>,
+    /// Uniform values over the effect's (`--set`, a bench knob, a stress case); they reach
+    /// bare stage files too, which have no effect.
+    pub overrides: &'a [(String, crate::manifest::UniformValue)],
 }
 
 /// What the pass graph decides for one pass's scene.
@@ -298,7 +301,7 @@ fn uniform_buffers(
     first_file: FileId,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
-    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect)
+    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect, input.overrides)
         .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
         let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));

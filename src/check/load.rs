@@ -1,0 +1,166 @@
+//! Reading a program's files before it is analysed: its manifest, the effects its passes
+//! reuse, its stage files with their `#include`s. Every file is registered in the run's
+//! one [`Files`], in input order, so file ids (and the report) do not depend on how many
+//! threads analyse the programs afterwards.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::inputs::ProgramInput;
+use crate::manifest::{self, Effect};
+use crate::stage::StageKind;
+
+/// A program whose files are read.
+#[derive(Debug)]
+pub struct Loaded {
+    pub name: String,
+    pub effect: Option<Effect>,
+    pub body: Body,
+    /// What reading found (missing files, manifest errors, manifest warnings).
+    pub diagnostics: Vec<Diagnostic>,
+    /// Some file could not be read at all (exit 2).
+    pub io_error: bool,
+}
+
+/// What there is to analyse.
+#[derive(Debug)]
+pub enum Body {
+    /// Nothing: the manifest or a stage file could not be read.
+    Nothing,
+    /// One program of these stage files.
+    Single(Vec<(FileId, StageKind)>),
+    /// A multi-pass effect, pass by pass.
+    Passes(Vec<PassFiles>),
+}
+
+/// One pass of a multi-pass effect, read.
+#[derive(Debug)]
+pub struct PassFiles {
+    /// The pass's view of the effect ([`Effect::pass_view`]).
+    pub view: Effect,
+    /// Its stage files, `None` when one could not be read or the effect it reuses failed.
+    pub stages: Option<Vec<(FileId, StageKind)>>,
+}
+
+/// Reads the files of `input` into `files`.
+pub fn load(input: &ProgramInput, files: &mut Files) -> Loaded {
+    let mut l = Loaded { name: input.display_name(), effect: None, body: Body::Nothing, diagnostics: Vec::new(), io_error: false };
+    match input {
+        ProgramInput::Manifest(path) => match manifest::load(path, files) {
+            Ok(e) => {
+                l.diagnostics.extend(e.warnings.iter().cloned());
+                l.body = if e.is_multi_pass() {
+                    Body::Passes(load_passes(&e, files, &mut l))
+                } else {
+                    let stages: Vec<(PathBuf, StageKind)> = e.stages.iter().map(|s| (s.path.clone(), s.kind)).collect();
+                    read_all(&stages, files, &mut l).map_or(Body::Nothing, Body::Single)
+                };
+                l.effect = Some(e);
+            }
+            Err(diags) => {
+                l.io_error |= diags.iter().any(manifest::is_io_error);
+                l.diagnostics.extend(diags);
+            }
+        },
+        ProgramInput::Stages { files: stages, .. } => {
+            l.body = read_all(stages, files, &mut l).map_or(Body::Nothing, Body::Single);
+        }
+    }
+    l
+}
+
+/// Every stage file, or `None` when one of them could not be read.
+fn read_all(stages: &[(PathBuf, StageKind)], files: &mut Files, l: &mut Loaded) -> Option<Vec<(FileId, StageKind)>> {
+    let read: Vec<Option<(FileId, StageKind)>> =
+        stages.iter().map(|(path, kind)| read_stage(path, files, l).map(|id| (id, *kind))).collect();
+    let read: Option<Vec<_>> = read.into_iter().collect();
+    read.filter(|r| !r.is_empty())
+}
+
+/// The passes of a multi-pass effect: each one's view and stage files (a file two passes
+/// share is read once).
+fn load_passes(effect: &Effect, files: &mut Files, l: &mut Loaded) -> Vec<PassFiles> {
+    let mut read: HashMap<PathBuf, Option<FileId>> = HashMap::new();
+    let mut passes = Vec::new();
+    for pass in &effect.passes {
+        let reused = match &pass.reuse {
+            None => None,
+            Some((path, span)) => match manifest::load(path, files) {
+                Ok(r) if r.is_multi_pass() => {
+                    l.diagnostics.push(
+                        Diagnostic::new(Code::ManifestConflict, format!("pass `{}` reuses a multi-pass effect", pass.name))
+                            .at(effect.file, span.clone(), "has [[passes]] of its own")
+                            .with_help("reuse a single-pass effect, or copy its passes into this manifest"),
+                    );
+                    None
+                }
+                Ok(r) => Some(r),
+                Err(diags) => {
+                    l.io_error |= diags.iter().any(manifest::is_io_error);
+                    l.diagnostics.push(
+                        Diagnostic::new(Code::ManifestValue, format!("pass `{}` reuses an effect that has errors", pass.name)).at(
+                            effect.file,
+                            span.clone(),
+                            "this effect",
+                        ),
+                    );
+                    l.diagnostics.extend(diags);
+                    None
+                }
+            },
+        };
+        let view = effect.pass_view(pass, reused.as_ref());
+        if pass.reuse.is_some() && reused.is_none() {
+            passes.push(PassFiles { view, stages: None });
+            continue;
+        }
+        let mut stages = Vec::new();
+        let mut readable = true;
+        for s in &view.stages {
+            let id = match read.get(&s.path) {
+                Some(id) => *id,
+                None => {
+                    let id = read_stage(&s.path, files, l);
+                    read.insert(s.path.clone(), id);
+                    id
+                }
+            };
+            match id {
+                Some(id) => stages.push((id, s.kind)),
+                None => readable = false,
+            }
+        }
+        let stages = (readable && !stages.is_empty()).then_some(stages);
+        passes.push(PassFiles { view, stages });
+    }
+    passes
+}
+
+/// Reads one stage file and inlines its `#include`s: the id of the text the front reads.
+fn read_stage(path: &Path, files: &mut Files, l: &mut Loaded) -> Option<FileId> {
+    match std::fs::read(path) {
+        Ok(bytes) => match String::from_utf8(bytes) {
+            Ok(text) => {
+                let id = files.add(path.display().to_string(), text);
+                crate::front::includes::expand(path, id, files, &mut l.diagnostics)
+            }
+            Err(e) => {
+                let valid = e.utf8_error().valid_up_to();
+                let text = String::from_utf8_lossy(e.as_bytes()).to_string();
+                let id = files.add(path.display().to_string(), text);
+                l.diagnostics.push(
+                    Diagnostic::new(Code::NotText, "this stage file is not UTF-8 text")
+                        .at(id, valid..valid + 1, "invalid byte here")
+                        .with_note("GLSL sources are text; is this a binary file?"),
+                );
+                None
+            }
+        },
+        Err(e) => {
+            l.io_error = true;
+            l.diagnostics.push(Diagnostic::new(Code::InputIo, format!("cannot read `{}`: {e}", path.display())));
+            None
+        }
+    }
+}

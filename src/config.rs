@@ -1,0 +1,336 @@
+//! The repository's settings: `effectc.toml`, found upward from the first input (or named
+//! with `--config`).
+//!
+//! ```toml
+//! include = ["shaders/**"]          # only these paths (relative to this file's directory)
+//! exclude = ["third_party/**"]      # never these
+//! target-env = "opengl"             # GLSL dialect: "auto" (default), "opengl", "vulkan"
+//! strict = true                     # like --strict
+//! deny-warnings = true              # like --deny-warnings
+//! allow = ["W0201"]                 # silenced everywhere
+//! deny = ["W0717"]                  # raised to errors
+//! [stages]                          # the stage of extensions effectc does not know
+//! glsl = "fragment"
+//! ```
+//!
+//! Globs follow `.gitignore` habits: `*` stays within a directory, `**` crosses them, and a
+//! pattern without `/` matches a file or directory name at any depth.
+
+use std::collections::BTreeMap;
+use std::ops::Range;
+use std::path::{Component, Path, PathBuf};
+
+use globset::{Glob, GlobBuilder, GlobSet, GlobSetBuilder};
+
+use crate::diag::suppress::{self, Policy};
+use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::stage::StageKind;
+
+/// The file name searched for.
+pub const FILE_NAME: &str = "effectc.toml";
+
+/// The GLSL dialect of the stages.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum TargetEnv {
+    /// Vulkan GLSL when the text shows it (descriptor sets, push constants, separate
+    /// samplers), else OpenGL GLSL.
+    #[default]
+    Auto,
+    OpenGl,
+    Vulkan,
+}
+
+/// Which paths a run reads, and the stage of extensions effectc does not know.
+#[derive(Debug, Clone, Default)]
+pub struct Selection {
+    /// The directory the globs are relative to (absolute).
+    pub root: PathBuf,
+    pub include: Option<GlobSet>,
+    pub exclude: Option<GlobSet>,
+    /// Extension (without the dot) → stage.
+    pub stages: BTreeMap<String, StageKind>,
+}
+
+impl Selection {
+    /// Does the run read the file `path`? It must match `include` (when given) and no
+    /// `exclude` pattern; paths outside the root are always read.
+    pub fn admits(&self, path: &Path) -> bool {
+        if self.include.is_none() && self.exclude.is_none() {
+            return true;
+        }
+        let Some(relative) = relative_to(&self.root, path) else { return true };
+        let excluded = self.exclude.as_ref().is_some_and(|g| matches_or_parent(g, &relative));
+        let included = self.include.as_ref().is_none_or(|g| matches_or_parent(g, &relative));
+        included && !excluded
+    }
+    /// Does the run look inside the directory `path`? Only `exclude` prunes directories
+    /// (the files below are matched against `include`).
+    pub fn enters(&self, path: &Path) -> bool {
+        let Some(exclude) = &self.exclude else { return true };
+        relative_to(&self.root, path).is_none_or(|r| !matches_or_parent(exclude, &r))
+    }
+    /// The stage configured for `path`'s extension.
+    pub fn stage_of(&self, path: &Path) -> Option<StageKind> {
+        path.extension().and_then(|e| e.to_str()).and_then(|e| self.stages.get(e)).copied()
+    }
+}
+
+/// A path or one of its parent directories matches (so `build` excludes `build/a.vert`).
+fn matches_or_parent(globs: &GlobSet, relative: &Path) -> bool {
+    relative.ancestors().filter(|a| !a.as_os_str().is_empty()).any(|a| globs.is_match(a))
+}
+
+/// `path` relative to `root`, both cleaned lexically; `None` when it lies elsewhere.
+fn relative_to(root: &Path, path: &Path) -> Option<PathBuf> {
+    let cwd = std::env::current_dir().ok()?;
+    let clean = |p: &Path| -> PathBuf {
+        let mut out = PathBuf::new();
+        for c in cwd.join(p).components() {
+            match c {
+                Component::CurDir => {}
+                Component::ParentDir => {
+                    out.pop();
+                }
+                other => out.push(other),
+            }
+        }
+        out
+    };
+    clean(path).strip_prefix(clean(root)).ok().map(Path::to_path_buf)
+}
+
+/// The settings of a run.
+#[derive(Debug, Clone, Default)]
+pub struct Config {
+    /// The file they came from (`None`: no `effectc.toml`, the defaults).
+    pub path: Option<PathBuf>,
+    pub selection: Selection,
+    pub target_env: TargetEnv,
+    pub strict: bool,
+    pub deny_warnings: bool,
+    pub policy: Policy,
+}
+
+/// A loaded configuration: the settings, and the file's text with the diagnostics about
+/// it (spans into that text, as file [`FileId`]`(0)` of their own [`Files`]).
+#[derive(Debug, Default)]
+pub struct Loaded {
+    pub config: Config,
+    pub files: Files,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Loaded {
+    /// The file could not be read or has an invalid setting (a usage error: exit 2).
+    pub fn failed(&self) -> bool {
+        self.diagnostics.iter().any(Diagnostic::is_error)
+    }
+    /// The diagnostics about the file, pointing into `files` (where the file is registered
+    /// when there are any).
+    pub fn attach(&self, files: &mut Files) -> Vec<Diagnostic> {
+        let Some(source) = self.files.try_get(FileId(0)).filter(|_| !self.diagnostics.is_empty()) else {
+            return self.diagnostics.clone();
+        };
+        let id = files.add(source.path.clone(), source.text.clone());
+        let moved = |f: FileId| if f == FileId(0) { id } else { f };
+        let mut out = self.diagnostics.clone();
+        for d in &mut out {
+            d.file = d.file.map(moved);
+            for l in &mut d.labels {
+                l.file = moved(l.file);
+            }
+        }
+        out
+    }
+}
+
+/// The nearest `effectc.toml` in the directory of `input` (or `input` itself, when it is a
+/// directory) and its ancestors.
+pub fn discover(input: &Path) -> Option<PathBuf> {
+    let absolute = std::env::current_dir().ok()?.join(input);
+    let start = if absolute.is_dir() { absolute.as_path() } else { absolute.parent()? };
+    start.ancestors().map(|d| d.join(FILE_NAME)).find(|p| p.is_file())
+}
+
+/// Loads `explicit` (`--config`), else the file [`discover`]ed from the first input, else
+/// the defaults.
+pub fn load(explicit: Option<&Path>, inputs: &[PathBuf]) -> Loaded {
+    let found = explicit.map(Path::to_path_buf).or_else(|| inputs.first().and_then(|i| discover(i)));
+    let Some(path) = found else {
+        let root = std::env::current_dir().unwrap_or_default();
+        return Loaded {
+            config: Config { selection: Selection { root, ..Selection::default() }, ..Config::default() },
+            ..Loaded::default()
+        };
+    };
+    let mut files = Files::new();
+    let text = match std::fs::read_to_string(&path) {
+        Ok(t) => t,
+        Err(e) => {
+            let d = Diagnostic::new(Code::ConfigInvalid, format!("cannot read `{}`: {e}", path.display()));
+            return Loaded { config: Config::default(), files, diagnostics: vec![d] };
+        }
+    };
+    let file = files.add(path.display().to_string(), text.clone());
+    let mut diagnostics = Vec::new();
+    let config = parse(&text, file, &path, &mut diagnostics);
+    Loaded { config, files, diagnostics }
+}
+
+/// The file's keys, as written.
+#[derive(Debug, serde::Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct Raw {
+    #[serde(default)]
+    include: Option<Vec<toml::Spanned<String>>>,
+    #[serde(default)]
+    exclude: Vec<toml::Spanned<String>>,
+    #[serde(default)]
+    stages: BTreeMap<String, toml::Spanned<String>>,
+    target_env: Option<toml::Spanned<String>>,
+    #[serde(default)]
+    strict: bool,
+    #[serde(default)]
+    deny_warnings: bool,
+    #[serde(default)]
+    allow: Vec<toml::Spanned<String>>,
+    #[serde(default)]
+    deny: Vec<toml::Spanned<String>>,
+}
+
+/// The settings of `text`; problems go to `diags` (errors for what cannot be used,
+/// W0004 for unknown codes).
+fn parse(text: &str, file: FileId, path: &Path, diags: &mut Vec<Diagnostic>) -> Config {
+    let root = std::env::current_dir().unwrap_or_default().join(path.parent().unwrap_or(Path::new("")));
+    let raw: Raw = match toml::from_str(text) {
+        Ok(r) => r,
+        Err(e) => {
+            let span = e.span().unwrap_or(0..0);
+            diags.push(
+                Diagnostic::new(Code::ConfigInvalid, format!("invalid {FILE_NAME}: {}", e.message()))
+                    .at(file, span, "here")
+                    .with_note("keys: include, exclude, target-env, strict, deny-warnings, allow, deny, [stages]"),
+            );
+            return Config { path: Some(path.to_path_buf()), ..Config::default() };
+        }
+    };
+    let bad = |span: Range<usize>, msg: String, label: &str| Diagnostic::new(Code::ConfigInvalid, msg).at(file, span, label);
+    let mut globs = |list: &[toml::Spanned<String>]| -> Option<GlobSet> {
+        let mut builder = GlobSetBuilder::new();
+        for g in list {
+            match glob(g.get_ref()) {
+                Ok(glob) => {
+                    builder.add(glob);
+                }
+                Err(e) => diags.push(bad(g.span(), format!("invalid glob `{}`: {e}", g.get_ref()), "this pattern")),
+            }
+        }
+        builder.build().ok()
+    };
+    let include = raw.include.as_deref().and_then(&mut globs);
+    let exclude = if raw.exclude.is_empty() { None } else { globs(&raw.exclude) };
+    let mut stages = BTreeMap::new();
+    for (ext, stage) in &raw.stages {
+        match StageKind::from_name(&stage.get_ref().replace('-', "_")) {
+            Some(k) => {
+                stages.insert(ext.trim_start_matches('.').to_string(), k);
+            }
+            None => {
+                let names: Vec<&str> = StageKind::ALL.iter().map(|k| k.name()).collect();
+                diags.push(
+                    bad(stage.span(), format!("unknown stage `{}`", stage.get_ref()), "not a stage")
+                        .with_help(format!("one of: {}", names.join(", "))),
+                );
+            }
+        }
+    }
+    let target_env = match raw.target_env.as_ref().map(|t| (t.get_ref().as_str(), t.span())) {
+        None | Some(("auto", _)) => TargetEnv::Auto,
+        Some(("opengl", _)) => TargetEnv::OpenGl,
+        Some(("vulkan", _)) => TargetEnv::Vulkan,
+        Some((other, span)) => {
+            diags.push(bad(span, format!("unknown target-env `{other}`"), "not a dialect").with_help("one of: auto, opengl, vulkan"));
+            TargetEnv::Auto
+        }
+    };
+    let mut codes = |list: &[toml::Spanned<String>], denying: bool| -> Vec<Code> {
+        let mut out = Vec::new();
+        for c in list {
+            match c.get_ref().parse::<Code>() {
+                Ok(code) if code.severity() == crate::diag::Severity::Error && !denying => {
+                    diags.push(Diagnostic::new(Code::SuppressionInvalid, format!("`{code}` is an error; errors cannot be allowed")).at(
+                        file,
+                        c.span(),
+                        "an error",
+                    ))
+                }
+                Ok(code) => out.push(code),
+                Err(_) => diags.push(suppress::unknown_code(file, c.span(), c.get_ref())),
+            }
+        }
+        out
+    };
+    let policy = Policy { allow: codes(&raw.allow, false), deny: codes(&raw.deny, true), origin: path.display().to_string() };
+    Config {
+        path: Some(path.to_path_buf()),
+        selection: Selection { root, include, exclude, stages },
+        target_env,
+        strict: raw.strict,
+        deny_warnings: raw.deny_warnings,
+        policy,
+    }
+}
+
+/// One pattern, `.gitignore`-style: without a `/` it matches a name at any depth.
+fn glob(pattern: &str) -> Result<Glob, globset::Error> {
+    let p = pattern.trim_start_matches("./");
+    let anchored = p.trim_end_matches('/');
+    let full = if anchored.contains('/') { anchored.trim_start_matches('/').to_string() } else { format!("**/{anchored}") };
+    GlobBuilder::new(&full).literal_separator(true).build()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parsed(text: &str) -> (Config, Vec<Diagnostic>) {
+        let mut files = Files::new();
+        let id = files.add("effectc.toml", text);
+        let mut diags = Vec::new();
+        let c = parse(text, id, Path::new("effectc.toml"), &mut diags);
+        (c, diags)
+    }
+
+    #[test]
+    fn globs_select_paths_relative_to_the_file() {
+        let (c, diags) = parsed("include = [\"shaders/**\", \"effects\"]\nexclude = [\"third_party\", \"*.gen.frag\"]\n");
+        assert!(diags.is_empty(), "{diags:?}");
+        let s = &c.selection;
+        assert!(s.admits(Path::new("shaders/a.vert")));
+        assert!(s.admits(Path::new("effects/sun/effect.toml")));
+        assert!(!s.admits(Path::new("tools/a.vert")), "not included");
+        assert!(!s.admits(Path::new("shaders/third_party/x.frag")), "a name without / excludes at any depth");
+        assert!(!s.admits(Path::new("shaders/b.gen.frag")));
+        assert!(s.admits(Path::new("/elsewhere/a.frag")), "outside the root: not filtered");
+        assert!(s.enters(Path::new(".")) && s.enters(Path::new("tools")), "include does not prune directories");
+        assert!(!s.enters(Path::new("a/third_party")));
+    }
+
+    #[test]
+    fn settings_and_their_mistakes() {
+        let (c, diags) = parsed(
+            "target-env = \"vulkan\"\nstrict = true\ndeny-warnings = true\nallow = [\"W0201\", \"w0718\", \"E0201\"]\ndeny = [\"W0717\"]\n[stages]\nglsl = \"fragment\"\nshd = \"pixel\"\n",
+        );
+        assert_eq!(c.target_env, TargetEnv::Vulkan);
+        assert!(c.strict && c.deny_warnings);
+        assert_eq!(c.policy.allow, [Code::UnreadOutput]);
+        assert_eq!(c.policy.deny, [Code::HazardTrig]);
+        assert_eq!(c.selection.stage_of(Path::new("a.glsl")), Some(StageKind::Fragment));
+        let codes: Vec<Code> = diags.iter().map(|d| d.code).collect();
+        assert_eq!(codes, [Code::ConfigInvalid, Code::SuppressionInvalid, Code::SuppressionInvalid], "{diags:#?}");
+        assert!(diags.iter().any(|d| d.help.as_deref().is_some_and(|h| h.contains("W0718"))), "lowercase w0718 suggests W0718");
+        let (_, diags) = parsed("colour = 1\n");
+        assert_eq!(diags[0].code, Code::ConfigInvalid);
+        assert!(diags[0].message.contains("colour"), "{}", diags[0].message);
+    }
+}
