@@ -4,7 +4,7 @@
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 
-use clap::Parser;
+use clap::{CommandFactory, Parser};
 use effectc::check::Outcome;
 use effectc::cli::{BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, StressArgs, TranslateArgs};
 use effectc::diag;
@@ -31,8 +31,28 @@ fn main() -> ExitCode {
     }
 }
 
+/// A usage error of `effectc render` the parser could not see, printed the way clap prints
+/// its own (exit 2).
+fn render_usage_error(message: String) -> ExitCode {
+    let mut command = Cli::command();
+    command.build();
+    let mut render = command.find_subcommand_mut("render").cloned().unwrap_or(command);
+    let _ = render.error(clap::error::ErrorKind::ArgumentConflict, message).print();
+    ExitCode::from(2)
+}
+
 fn render(args: RenderArgs) -> ExitCode {
-    let request = args.request(std::time::Instant::now());
+    let started = std::time::Instant::now();
+    if let Some(message) = args.usage_error() {
+        return render_usage_error(message);
+    }
+    let streams = args.streams();
+    if streams && std::io::stdout().is_terminal() {
+        return render_usage_error(
+            "`--out -` writes binary frames to stdout, which is a terminal here; pipe it (`| ffmpeg -f image2pipe -i - out.mp4`)".into(),
+        );
+    }
+    let request = args.request(started);
     let c = &args.common;
     let result = effectc::render::command::run(&request);
     let mut text = String::new();
@@ -44,8 +64,15 @@ fn render(args: RenderArgs) -> ExitCode {
             text.push_str(&effectc::render::command::summary(r, args.timings, args.verbose, args.explain));
         }
     }
-    text.push_str(&diagnostics_text(c, &result.outcome));
-    let printed = print(&text);
+    // With `--out -`, stdout carries only frame bytes: the report goes to stderr.
+    let printed = if streams {
+        text.push_str(&diagnostics_for(c, &result.outcome, std::io::stderr().is_terminal()));
+        let mut stderr = std::io::stderr().lock();
+        stderr.write_all(text.as_bytes()).and_then(|_| stderr.flush())
+    } else {
+        text.push_str(&diagnostics_text(c, &result.outcome));
+        print(&text)
+    };
     if result.hung {
         // The GPU is still running the stuck frame; leave without waiting for it.
         std::process::exit(1);
@@ -135,12 +162,17 @@ fn translate(args: TranslateArgs) -> ExitCode {
     exit_code(&outcome, false)
 }
 
-/// The diagnostics in the requested format (human: with the summary line).
+/// The diagnostics in the requested format for stdout (human: with the summary line).
 fn diagnostics_text(c: &CommonArgs, outcome: &Outcome) -> String {
+    diagnostics_for(c, outcome, std::io::stdout().is_terminal())
+}
+
+/// The diagnostics in the requested format, coloured in `auto` when they go to a terminal.
+fn diagnostics_for(c: &CommonArgs, outcome: &Outcome, terminal: bool) -> String {
     let color = match c.color {
         ColorChoice::Always => true,
         ColorChoice::Never => false,
-        ColorChoice::Auto => std::io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none(),
+        ColorChoice::Auto => terminal && std::env::var_os("NO_COLOR").is_none(),
     };
     let d = &outcome.diagnostics;
     match c.format {

@@ -21,6 +21,8 @@
 //! - [`passes`]: multi-pass effects: skipped passes, dropped attachments, shared
 //!   textures, `--dump-targets`, per-pass translation.
 //! - [`pixels`]: every effect's frames against reference PNGs under `snapshots/png/`.
+//! - [`stream`]: `effectc render --out -`: PNG and raw frames on stdout (ffmpeg reads
+//!   them), the report on stderr, misuse refused, a closed pipe.
 //! - [`stress`]: `effectc stress` finds seed hazards at the ends of ranges; shipped effects
 //!   are clean.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
@@ -52,6 +54,8 @@ mod render;
 mod rewrite;
 #[path = "suite/robust.rs"]
 mod robust;
+#[path = "suite/stream.rs"]
+mod stream;
 #[path = "suite/stress.rs"]
 mod stress;
 #[path = "suite/translate.rs"]
