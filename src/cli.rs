@@ -38,6 +38,10 @@ pub enum Command {
     /// Render into float targets at the ends and random points of the uniform ranges and at
     /// extreme times; count NaN/Inf pixels per case.
     Stress(StressArgs),
+    /// Print a shell completion script (e.g. `effectc completions bash > /etc/bash_completion.d/effectc`).
+    Completions(CompletionsArgs),
+    /// Print the man page (roff: `effectc man > effectc.1; man ./effectc.1`).
+    Man,
 }
 
 /// Output format for diagnostics.
@@ -262,6 +266,13 @@ pub struct StressArgs {
     pub timeout: Duration,
 }
 
+#[derive(Debug, clap::Args)]
+pub struct CompletionsArgs {
+    /// The shell to complete for.
+    #[arg(value_enum)]
+    pub shell: clap_complete::Shell,
+}
+
 /// `512x512` → (512, 512), each side within 1..=[`MAX_FRAME_SIDE`].
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or("expected WIDTHxHEIGHT, e.g. 512x512")?;
@@ -387,6 +398,20 @@ impl RenderArgs {
         let (flag, _) = file_flags.into_iter().find(|(_, on)| *on)?;
         Some(format!("`{flag}` writes files beside the frames and cannot be used with `--out -` (frames on stdout); use `--out DIR`"))
     }
+}
+
+/// The completion script of `shell` for the whole command line.
+pub fn completions(shell: clap_complete::Shell) -> Vec<u8> {
+    let mut out = Vec::new();
+    clap_complete::generate(shell, &mut <Cli as clap::CommandFactory>::command(), "effectc", &mut out);
+    out
+}
+
+/// The roff man page of `effectc` (the subcommands listed in it).
+pub fn man_page() -> std::io::Result<Vec<u8>> {
+    let mut out = Vec::new();
+    clap_mangen::Man::new(<Cli as clap::CommandFactory>::command()).render(&mut out)?;
+    Ok(out)
 }
 
 impl BenchArgs {

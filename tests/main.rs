@@ -13,6 +13,7 @@
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
 //! - [`bench`]: `effectc bench` knob sweeps (error to 0 at the reference, plot, mistakes).
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
+//! - [`completions`]: `effectc completions SHELL` and `effectc man`.
 //! - [`codes`]: the README's Diagnostics table lists every diagnostic code, and no stale one.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
 //! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
@@ -36,6 +37,8 @@ mod cli;
 mod codes;
 #[path = "suite/common.rs"]
 mod common;
+#[path = "suite/completions.rs"]
+mod completions;
 #[path = "suite/fail.rs"]
 mod fail;
 #[path = "suite/geometry.rs"]
