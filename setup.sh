@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Installs what effectc needs on a fresh Debian machine, then builds it (release).
 # System packages: glslang-tools and spirv-tools (peer tools for the benchmark and corpus
-# scripts), mesa-vulkan-drivers + libvulkan1 (lavapipe, the CPU Vulkan used for rendering).
+# scripts), mesa-vulkan-drivers + libvulkan1 (lavapipe, the CPU Vulkan used for rendering),
+# ffmpeg (ffmpeg and ffprobe: the test that pipes `effectc render --out -` into ffmpeg).
 set -euo pipefail
 cd "$(dirname "$0")"
 SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 if command -v apt-get >/dev/null; then
     missing=""
-    for pkg in glslang-tools spirv-tools mesa-vulkan-drivers libvulkan1; do
+    for pkg in glslang-tools spirv-tools mesa-vulkan-drivers libvulkan1 ffmpeg; do
         dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
     done
     if [ -n "$missing" ]; then

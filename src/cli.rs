@@ -3,7 +3,7 @@
 //! times), so a request built here is within the limits.
 
 use std::io::IsTerminal;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -31,13 +31,18 @@ pub enum Command {
     Check(CheckArgs),
     /// Check, then translate to WGSL, SPIR-V, GLSL ES, MSL, HLSL, reflection JSON or IR text.
     Translate(TranslateArgs),
-    /// Check, translate to WGSL and render frames headlessly with wgpu (PNG, contact sheet, GIF).
+    /// Check, translate to WGSL and render frames headlessly with wgpu (PNG, contact sheet,
+    /// GIF, or frames streamed to stdout with `--out -`).
     Render(RenderArgs),
     /// Sweep quality knobs: GPU ms/frame against the error from the reference value's frames.
     Bench(BenchArgs),
     /// Render into float targets at the ends and random points of the uniform ranges and at
     /// extreme times; count NaN/Inf pixels per case.
     Stress(StressArgs),
+    /// Print a shell completion script (e.g. `effectc completions bash > /etc/bash_completion.d/effectc`).
+    Completions(CompletionsArgs),
+    /// Print the man page (roff: `effectc man > effectc.1; man ./effectc.1`).
+    Man,
 }
 
 /// Output format for diagnostics.
@@ -214,8 +219,14 @@ pub struct RenderArgs {
     #[arg(long, value_parser = parse_size)]
     pub size: Option<(u32, u32)>,
     /// Output directory (default: `out/<effect>/frames/`); frames are `<effect>_NNNN.png`.
+    /// `-`: stream the frames to stdout instead, one PNG after another (for `ffmpeg -f
+    /// image2pipe -i -`); the report goes to stderr.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// With `--out -`: raw RGBA8 frames instead of PNGs (width × height × 4 bytes each,
+    /// rows top-down; `ffmpeg -f rawvideo -pix_fmt rgba -s WxH -i -`).
+    #[arg(long)]
+    pub raw: bool,
     /// Also tile every frame into `<effect>_sheet.png`.
     #[arg(long)]
     pub contact_sheet: bool,
@@ -311,6 +322,13 @@ fn parse_set(s: &str) -> Result<(String, String), String> {
         Some((n, v)) if !n.trim().is_empty() && !v.trim().is_empty() => Ok((n.trim().to_string(), v.trim().to_string())),
         _ => Err(format!("`{s}` is not NAME=VALUE (e.g. `speed=0.5`, `tint=1,0.5,0`)")),
     }
+}
+
+#[derive(Debug, clap::Args)]
+pub struct CompletionsArgs {
+    /// The shell to complete for.
+    #[arg(value_enum)]
+    pub shell: clap_complete::Shell,
 }
 
 /// `512x512` → (512, 512), each side within 1..=[`MAX_FRAME_SIDE`].
@@ -419,7 +437,12 @@ impl RenderArgs {
             step,
             start: self.start,
             size: self.size,
-            out: self.out.clone(),
+            out: self.out.clone().filter(|_| !self.streams()),
+            stream: self.streams().then_some(if self.raw {
+                render::command::StreamFormat::Raw
+            } else {
+                render::command::StreamFormat::Png
+            }),
             contact_sheet: self.contact_sheet,
             gif: self.gif,
             float: self.float,
@@ -430,6 +453,37 @@ impl RenderArgs {
             only: None,
         }
     }
+
+    /// The frames go to stdout (`--out -`).
+    pub fn streams(&self) -> bool {
+        self.out.as_deref() == Some(Path::new("-"))
+    }
+
+    /// Flag combinations clap cannot refuse by itself: `--raw` without `--out -`, and the
+    /// flags that write files beside the frames (which a stream has no place for) with it.
+    pub fn usage_error(&self) -> Option<String> {
+        if !self.streams() {
+            return self.raw.then(|| "`--raw` needs `--out -`: raw frames are only streamed to stdout".to_string());
+        }
+        let file_flags =
+            [("--contact-sheet", self.contact_sheet), ("--gif", self.gif), ("--float", self.float), ("--dump-targets", self.dump_targets)];
+        let (flag, _) = file_flags.into_iter().find(|(_, on)| *on)?;
+        Some(format!("`{flag}` writes files beside the frames and cannot be used with `--out -` (frames on stdout); use `--out DIR`"))
+    }
+}
+
+/// The completion script of `shell` for the whole command line.
+pub fn completions(shell: clap_complete::Shell) -> Vec<u8> {
+    let mut out = Vec::new();
+    clap_complete::generate(shell, &mut <Cli as clap::CommandFactory>::command(), "effectc", &mut out);
+    out
+}
+
+/// The roff man page of `effectc` (the subcommands listed in it).
+pub fn man_page() -> std::io::Result<Vec<u8>> {
+    let mut out = Vec::new();
+    clap_mangen::Man::new(<Cli as clap::CommandFactory>::command()).render(&mut out)?;
+    Ok(out)
 }
 
 impl BenchArgs {

@@ -13,6 +13,7 @@
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
 //! - [`bench`]: `effectc bench` knob sweeps (error to 0 at the reference, plot, mistakes).
 //! - [`cli`]: the `effectc` binary's exit codes, formats and input handling.
+//! - [`completions`]: `effectc completions SHELL` and `effectc man`.
 //! - [`codes`]: the README's Diagnostics table lists every diagnostic code, and no stale one.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
 //! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
@@ -23,6 +24,8 @@
 //! - [`pixels`]: every effect's frames against reference PNGs under `snapshots/png/`.
 //! - [`settings`]: `effectc: allow(…)` suppressions, `effectc.toml` (globs, allow, deny,
 //!   `--config`), paths in diagnostics relative to the working directory.
+//! - [`stream`]: `effectc render --out -`: PNG and raw frames on stdout (ffmpeg reads
+//!   them), the report on stderr, misuse refused, a closed pipe.
 //! - [`stress`]: `effectc stress` finds seed hazards at the ends of ranges; shipped effects
 //!   are clean.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
@@ -37,6 +40,8 @@ mod cli;
 mod codes;
 #[path = "suite/common.rs"]
 mod common;
+#[path = "suite/completions.rs"]
+mod completions;
 #[path = "suite/fail.rs"]
 mod fail;
 #[path = "suite/geometry.rs"]
@@ -57,6 +62,8 @@ mod rewrite;
 mod robust;
 #[path = "suite/settings.rs"]
 mod settings;
+#[path = "suite/stream.rs"]
+mod stream;
 #[path = "suite/stress.rs"]
 mod stress;
 #[path = "suite/translate.rs"]

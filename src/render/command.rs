@@ -1,11 +1,11 @@
 //! `effectc render`: check, translate to WGSL, build the scene, draw the frames and write
-//! them as PNG (plus a contact sheet, a GIF, non-finite masks).
+//! them as PNG (plus a contact sheet, a GIF, non-finite masks), or stream them to stdout.
 //!
 //! The adapter and device are opened once per run and every program reuses them; each
-//! program's pipeline and target are created once and reused by its frames. PNG encoding
-//! runs on a second thread while the next frame renders. Frame times come from the frame
-//! index (`start + i × step`), never from the wall clock, so the same command gives the same
-//! bytes.
+//! program's pipeline and target are created once and reused by its frames. Frames are
+//! encoded on a pool while the next ones render, and written in order (`render::sink`).
+//! Frame times come from the frame index (`start + i × step`), never from the wall clock,
+//! so the same command gives the same bytes.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -20,8 +20,10 @@ use crate::render::device::Gpu;
 pub use crate::render::drawer::DEFAULT_SIZE;
 use crate::render::drawer::{build, frame_state, prepare, BuildSettings, BuildVariant, Drawer};
 use crate::render::encode;
-use crate::render::frames::{Dump, Frame, FrameError, FrameTarget, GpuClock, Pixels};
+use crate::render::frames::{Frame, FrameError, FrameTarget, GpuClock};
 use crate::render::scene::ColorMode;
+pub use crate::render::sink::StreamFormat;
+use crate::render::sink::{Drawn, Sink};
 
 /// Frames kept in memory for `--contact-sheet` / `--gif` may use at most this much.
 pub const MAX_KEPT_BYTES: u64 = 2 << 30;
@@ -50,6 +52,9 @@ pub struct Request {
     pub size: Option<(u32, u32)>,
     /// `None`: `out/<effect>/frames/`.
     pub out: Option<PathBuf>,
+    /// `Some`: the frames go to stdout in this format instead (`out` is unused); one
+    /// program only, no contact sheet, GIF, float masks or target dumps.
+    pub stream: Option<StreamFormat>,
     pub contact_sheet: bool,
     pub gif: bool,
     pub float: bool,
@@ -77,6 +82,7 @@ impl Request {
             start: 0.0,
             size: None,
             out: None,
+            stream: None,
             contact_sheet: false,
             gif: false,
             float: false,
@@ -117,6 +123,8 @@ pub struct Rendered {
     pub dir: PathBuf,
     pub size: (u32, u32),
     pub files: Vec<PathBuf>,
+    /// The frames went to stdout in this format (no files).
+    pub stream: Option<StreamFormat>,
     pub frames: Vec<FrameReport>,
     pub clock: GpuClock,
     /// From process start until the first PNG was on disk.
@@ -142,6 +150,19 @@ pub fn run(request: &Request) -> RunResult {
     let (mut outcome, checked) = request.input.check();
     let mut result = RunResult { outcome: Outcome::default(), rendered: Vec::new(), adapter: None, hung: false };
     let inputs = output::input_paths(&outcome, &request.input.paths);
+    if request.stream.is_some() && checked.len() > 1 {
+        outcome.io_error = true;
+        outcome.diagnostics.push(
+            Diagnostic::new(
+                Code::OutputIo,
+                format!("the inputs name {} programs; their frames cannot share one stream on stdout", checked.len()),
+            )
+            .with_help("render one program per `--out -` run, or write files with `--out DIR`"),
+        );
+        crate::diag::sort(&mut outcome.diagnostics);
+        result.outcome = outcome;
+        return result;
+    }
     let mut gpu: Option<Gpu> = None;
     for c in checked.iter().filter(|c| request.wants(c)) {
         let Some(prepared) = prepare(c, &mut outcome, &request.build_settings(), None) else { continue };
@@ -173,6 +194,8 @@ pub fn run(request: &Request) -> RunResult {
         let plan = FramePlan { frames, size, step, start: request.start, dir };
         match draw_frames(gpu, &mut drawer, &plan, request, &inputs, file) {
             Ok((mut rendered, diags)) => {
+                // Frames that could not be written (or a closed stream) are IO errors.
+                outcome.io_error |= diags.iter().any(|d| d.code == Code::OutputIo);
                 outcome.diagnostics.extend(diags);
                 if let (Drawer::Graph(g), Some(e)) = (&drawer, effect) {
                     rendered.passes = Some(g.explain(e));
@@ -253,23 +276,6 @@ enum Stop {
     Failed(Box<Diagnostic>),
 }
 
-/// A frame handed to the encoder thread.
-struct Encoded {
-    index: u32,
-    pixels: Pixels,
-    dumps: Vec<Dump>,
-}
-
-/// What the encoder thread produced.
-#[derive(Default)]
-struct EncoderResult {
-    files: Vec<PathBuf>,
-    non_finite: Vec<(u32, encode::NonFinite, Option<PathBuf>)>,
-    kept: Vec<Vec<u8>>,
-    first_written: Option<Instant>,
-    errors: Vec<Diagnostic>,
-}
-
 fn draw_frames(
     gpu: &Gpu,
     drawer: &mut Drawer,
@@ -284,17 +290,18 @@ fn draw_frames(
     let keep = request.contact_sheet || request.gif;
     let mut reports = Vec::new();
     let mut stop = None;
-    let (tx, rx) = mpsc::sync_channel::<Encoded>(2);
+    let spare = drawer.spare().unwrap_or_default();
+    let sink = Sink { name: &name, dir: &plan.dir, size: plan.size, keep, inputs, stream: request.stream, spare };
+    let (tx, rx) = mpsc::sync_channel::<Drawn>(2);
     let encoded = std::thread::scope(|s| {
-        let encoder_name = name.clone();
-        let encoder = s.spawn(move || encode_frames(rx, &encoder_name, &plan.dir, plan.size, keep, inputs));
+        let writer = s.spawn(|| sink.run(rx));
         for i in 0..plan.frames {
             let time = plan.start + f64::from(i) * plan.step;
             let state = frame_state(drawer, i, time, plan.step, plan.size);
             match drawer.draw(gpu, &state, request.timeout) {
                 Ok(Frame { pixels, gpu_ms, cpu_ms, dumps }) => {
                     reports.push(FrameReport { index: i, time, gpu_ms, cpu_ms, non_finite: None });
-                    if tx.send(Encoded { index: i, pixels, dumps }).is_err() {
+                    if tx.send(Drawn { index: i, pixels, dumps }).is_err() {
                         break;
                     }
                 }
@@ -319,7 +326,7 @@ fn draw_frames(
             }
         }
         drop(tx);
-        encoder.join().unwrap_or_default()
+        writer.join().unwrap_or_default()
     });
     if let Some(b) = bar {
         b.finish_and_clear();
@@ -364,6 +371,7 @@ fn draw_frames(
         dir: plan.dir.clone(),
         size: plan.size,
         files,
+        stream: request.stream,
         frames: reports,
         clock: drawer.clock(),
         first_frame: encoded.first_written.map(|t| t.duration_since(request.started)),
@@ -371,46 +379,6 @@ fn draw_frames(
         passes: None,
     };
     Ok((rendered, diags))
-}
-
-/// The encoder thread: PNG (and float scans) for each frame as it arrives.
-fn encode_frames(
-    rx: mpsc::Receiver<Encoded>,
-    name: &str,
-    dir: &Path,
-    (w, h): (u32, u32),
-    keep: bool,
-    inputs: &BTreeSet<PathBuf>,
-) -> EncoderResult {
-    let mut out = EncoderResult::default();
-    for Encoded { index, pixels, dumps } in rx {
-        for d in dumps {
-            let path = dir.join(format!("{name}_{index:04}_{}.png", d.target));
-            write_png(&path, &d.rgba, d.size.0, d.size.1, inputs, &mut out.files, &mut out.errors);
-        }
-        let rgba = match pixels {
-            Pixels::Rgba8(p) => p,
-            Pixels::Rgba32F(f) => {
-                let (counts, mask) = encode::non_finite(&f, w, h);
-                let mask_path = mask.map(|m| {
-                    let path = dir.join(format!("{name}_{index:04}_nonfinite.png"));
-                    write_png(&path, &m, w, h, inputs, &mut out.files, &mut out.errors);
-                    path
-                });
-                out.non_finite.push((index, counts, mask_path));
-                encode::float_to_rgba8(&f)
-            }
-        };
-        let path = dir.join(format!("{name}_{index:04}.png"));
-        write_png(&path, &rgba, w, h, inputs, &mut out.files, &mut out.errors);
-        if out.first_written.is_none() {
-            out.first_written = Some(Instant::now());
-        }
-        if keep {
-            out.kept.push(rgba);
-        }
-    }
-    out
 }
 
 fn write_png(path: &Path, rgba: &[u8], w: u32, h: u32, inputs: &BTreeSet<PathBuf>, files: &mut Vec<PathBuf>, diags: &mut Vec<Diagnostic>) {
@@ -443,17 +411,14 @@ fn progress_bar(request: &Request, frames: u32, name: &str) -> Option<indicatif:
 /// Human summary of one rendered program (with per-frame timings when asked).
 pub fn summary(r: &Rendered, timings: bool, verbose: bool, explain: bool) -> String {
     let pngs = r.files.iter().filter(|f| !f.to_string_lossy().ends_with("_nonfinite.png")).count();
-    let mut text = format!(
-        "rendered {} → {}: {} frame{} at {}x{} ({} file{})\n",
-        r.name,
-        r.dir.display(),
-        r.frames.len(),
-        if r.frames.len() == 1 { "" } else { "s" },
-        r.size.0,
-        r.size.1,
-        pngs,
-        if pngs == 1 { "" } else { "s" },
-    );
+    let (to, what) = match r.stream {
+        None => (r.dir.display().to_string(), format!("{pngs} file{}", if pngs == 1 { "" } else { "s" })),
+        Some(StreamFormat::Png) => ("stdout".to_string(), "PNG stream".to_string()),
+        Some(StreamFormat::Raw) => ("stdout".to_string(), "raw RGBA8 stream".to_string()),
+    };
+    let frames = r.frames.len();
+    let mut text =
+        format!("rendered {} → {to}: {frames} frame{} at {}x{} ({what})\n", r.name, if frames == 1 { "" } else { "s" }, r.size.0, r.size.1);
     if verbose {
         text.push_str(&format!("  scene: {}\n", r.scene));
     }
@@ -478,7 +443,8 @@ pub fn summary(r: &Rendered, timings: bool, verbose: bool, explain: bool) -> Str
         gpu.sort_by(f64::total_cmp);
         text.push_str(&format!("    median gpu {:.3} ms/frame\n", gpu[gpu.len() / 2]));
         if let Some(t) = r.first_frame {
-            text.push_str(&format!("    first frame on disk {:.0} ms after start\n", t.as_secs_f64() * 1e3));
+            let place = if r.stream.is_some() { "in the stream" } else { "on disk" };
+            text.push_str(&format!("    first frame {place} {:.0} ms after start\n", t.as_secs_f64() * 1e3));
         }
     }
     text

@@ -145,6 +145,13 @@ impl Drawer {
             Drawer::Graph(g) => Box::new(g.scenes_mut()),
         }
     }
+    /// Where used RGBA8 frame buffers go back for reuse (single-scene drawers).
+    pub(crate) fn spare(&self) -> Option<frames::Spare> {
+        match self {
+            Drawer::Single { target, .. } => Some(target.spare.clone()),
+            Drawer::Graph(_) => None,
+        }
+    }
     pub(crate) fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
         match self {
             Drawer::Single { scene, target } => frames::render(gpu, scene, target, state, timeout),

@@ -4,7 +4,10 @@
 //! buffer with rows padded to 256 bytes, timestamp queries when the adapter has them) is
 //! created once per run and reused by every frame. Waiting for a frame is bounded by a
 //! timeout so that a shader stuck in a loop ends the run with an error instead of hanging.
+//! Frames are unpacked straight from the mapped readback into buffers the writer hands
+//! back ([`Spare`]), so a long run does not fault in fresh pages for every frame.
 
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use crate::render::device::Gpu;
@@ -15,6 +18,37 @@ use crate::render::semantics::FrameState;
 pub enum Pixels {
     Rgba8(Vec<u8>),
     Rgba32F(Vec<f32>),
+}
+
+/// Frame buffers handed back after use, for the next frames to reuse (shared between the
+/// render loop and whoever consumes the frames; a few are kept, the rest dropped).
+#[derive(Clone, Default)]
+pub struct Spare(Arc<Mutex<Vec<Vec<u8>>>>);
+
+impl Spare {
+    /// Buffers kept at most.
+    const KEPT: usize = 8;
+
+    /// An empty buffer with room for `len` bytes (a reused one when there is one).
+    pub fn take(&self, len: usize) -> Vec<u8> {
+        let reused = self.0.lock().ok().and_then(|mut free| free.pop());
+        match reused {
+            Some(mut v) if v.capacity() >= len => {
+                v.clear();
+                v
+            }
+            _ => Vec::with_capacity(len),
+        }
+    }
+
+    /// Hands a buffer back for reuse.
+    pub fn give(&self, v: Vec<u8>) {
+        if let Ok(mut free) = self.0.lock() {
+            if free.len() < Self::KEPT && v.capacity() > 0 {
+                free.push(v);
+            }
+        }
+    }
 }
 
 /// How the GPU time of a frame was measured.
@@ -114,6 +148,8 @@ pub struct FrameTarget {
     readback: wgpu::Buffer,
     padded_row: u32,
     timestamps: Option<Timestamps>,
+    /// RGBA8 frame buffers to reuse.
+    pub spare: Spare,
 }
 
 impl FrameTarget {
@@ -149,7 +185,8 @@ impl FrameTarget {
             mapped_at_creation: false,
         });
         let timestamps = Timestamps::new(gpu);
-        FrameTarget { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps }
+        let spare = Spare::default();
+        FrameTarget { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps, spare }
     }
 
     /// How [`Frame::gpu_ms`] is measured on this target.
@@ -251,7 +288,7 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &FrameTarget, state: &FrameS
     let mut cpu = cpu_start.elapsed();
     let wall = wait(gpu, submitted, timeout)?;
     let unpack_start = Instant::now();
-    let bytes = map_read(gpu, &target.readback)?;
+    let pixels = map_with(gpu, &target.readback, |bytes| unpad(bytes, target))?;
     let gpu_ms = match &target.timestamps {
         Some(t) => t.read_ms(gpu)?,
         None => wall.as_secs_f64() * 1e3,
@@ -259,7 +296,6 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &FrameTarget, state: &FrameS
     if let Some(e) = gpu.take_error() {
         return Err(FrameError::Device(e));
     }
-    let pixels = unpad(&bytes, target);
     cpu += unpack_start.elapsed();
     Ok(Frame { pixels, gpu_ms, cpu_ms: cpu.as_secs_f64() * 1e3, dumps: Vec::new() })
 }
@@ -319,6 +355,11 @@ pub fn read_u32s(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u32>, FrameErro
 
 /// Maps a finished buffer, copies its bytes out and unmaps it.
 pub fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError> {
+    map_with(gpu, buffer, <[u8]>::to_vec)
+}
+
+/// Maps a finished buffer, reads its bytes with `read` and unmaps it.
+fn map_with<T>(gpu: &Gpu, buffer: &wgpu::Buffer, read: impl FnOnce(&[u8]) -> T) -> Result<T, FrameError> {
     let slice = buffer.slice(..);
     let (tx, rx) = std::sync::mpsc::channel();
     slice.map_async(wgpu::MapMode::Read, move |r| {
@@ -329,9 +370,9 @@ pub fn map_read(gpu: &Gpu, buffer: &wgpu::Buffer) -> Result<Vec<u8>, FrameError>
         Ok(Ok(())) => {}
         _ => return Err(FrameError::Device("the readback buffer could not be mapped".into())),
     }
-    let bytes = slice.get_mapped_range().map_err(|e| FrameError::Device(e.to_string()))?.to_vec();
+    let value = read(&slice.get_mapped_range().map_err(|e| FrameError::Device(e.to_string()))?);
     buffer.unmap();
-    Ok(bytes)
+    Ok(value)
 }
 
 /// Drops the row padding of the readback and returns the rows top first.
@@ -339,7 +380,10 @@ fn unpad(bytes: &[u8], target: &FrameTarget) -> Pixels {
     let bpp = target.mode.format().block_copy_size(None).unwrap_or(4) as usize;
     let row = target.width as usize * bpp;
     let height = target.height as usize;
-    let mut out = Vec::with_capacity(row * height);
+    let mut out = match target.mode {
+        ColorMode::Unorm8 => target.spare.take(row * height),
+        ColorMode::Float32 => Vec::with_capacity(row * height),
+    };
     for y in 0..height {
         let source_row = if target.bottom_up { height - 1 - y } else { y };
         let start = source_row * target.padded_row as usize;

@@ -15,6 +15,8 @@
 //!   shared when lifetimes allow, all passes in one submission per frame.
 //! - [`encode`], [`compare`]: PNG, contact sheet, GIF, NaN/Inf masks; reference-image
 //!   comparison for pixel tests.
+//! - [`sink`]: where frames go (PNG files, or a PNG or raw stream on stdout), encoded on
+//!   a pool and written in order.
 //! - [`command`]: `effectc render`.
 //! - [`memory`]: a program built once and drawn in memory with other uniform values
 //!   (`effectc bench`, `effectc stress`).
@@ -30,4 +32,5 @@ pub mod memory;
 pub mod pass_graph;
 pub mod scene;
 pub mod semantics;
+pub mod sink;
 pub mod uniforms;
