@@ -450,6 +450,7 @@ impl RenderArgs {
             progress: std::io::stderr().is_terminal() && std::env::var_os("CI").is_none(),
             started,
             dump_targets: self.dump_targets,
+            timings: self.timings,
             only: None,
         }
     }

@@ -18,10 +18,11 @@
 
 use std::collections::BTreeMap;
 use std::ops::Range;
-use std::path::{Component, Path, PathBuf};
+use std::path::{Path, PathBuf};
 
 use globset::{Glob, GlobBuilder, GlobSet, GlobSetBuilder};
 
+use crate::diag::paths::absolute;
 use crate::diag::suppress::{self, Policy};
 use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::stage::StageKind;
@@ -80,23 +81,10 @@ fn matches_or_parent(globs: &GlobSet, relative: &Path) -> bool {
     relative.ancestors().filter(|a| !a.as_os_str().is_empty()).any(|a| globs.is_match(a))
 }
 
-/// `path` relative to `root`, both cleaned lexically; `None` when it lies elsewhere.
+/// `path` relative to `root`, both made absolute and cleaned lexically; `None` when it
+/// lies elsewhere.
 fn relative_to(root: &Path, path: &Path) -> Option<PathBuf> {
-    let cwd = std::env::current_dir().ok()?;
-    let clean = |p: &Path| -> PathBuf {
-        let mut out = PathBuf::new();
-        for c in cwd.join(p).components() {
-            match c {
-                Component::CurDir => {}
-                Component::ParentDir => {
-                    out.pop();
-                }
-                other => out.push(other),
-            }
-        }
-        out
-    };
-    clean(path).strip_prefix(clean(root)).ok().map(Path::to_path_buf)
+    absolute(path).strip_prefix(absolute(root)).ok().map(Path::to_path_buf)
 }
 
 /// The settings of a run.

@@ -120,7 +120,10 @@ impl InputSpec {
         let options = self.front;
         let analysed: Vec<(Checked, Vec<Diagnostic>, bool)> = self.on_threads(|| {
             use rayon::prelude::*;
-            loaded.into_par_iter().map(|l| analyse(l, files, options)).collect()
+            // One task per program: programs differ a lot in cost (a generated texture's
+            // hazard facts, a multi-pass graph), and rayon's default chunks left one of two
+            // threads idle a third of the time (1.46x instead of 1.76x on 252 programs).
+            loaded.into_par_iter().with_max_len(1).map(|l| analyse(l, files, options)).collect()
         });
         let mut checked = Vec::with_capacity(analysed.len());
         for ((mut c, diags, io_error), ids) in analysed.into_iter().zip(registered) {

@@ -65,6 +65,8 @@ pub struct Request {
     pub started: Instant,
     /// Multi-pass effects: write every intermediate target too (nothing pruned or shared).
     pub dump_targets: bool,
+    /// `--timings`: time frames with GPU timestamp queries.
+    pub timings: bool,
     /// `--watch` after a change: render only the programs that read one of these files
     /// (absolute paths); `None` renders every program.
     pub only: Option<Vec<PathBuf>>,
@@ -90,6 +92,7 @@ impl Request {
             progress: false,
             started: Instant::now(),
             dump_targets: false,
+            timings: false,
             only: None,
         }
     }
@@ -101,7 +104,7 @@ impl Request {
 
     /// What building each program takes from these flags.
     pub fn build_settings(&self) -> BuildSettings {
-        BuildSettings { back: self.back, size: self.size, dump_targets: self.dump_targets }
+        BuildSettings { back: self.back, size: self.size, dump_targets: self.dump_targets, timestamps: self.timings }
     }
 }
 

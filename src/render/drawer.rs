@@ -29,6 +29,10 @@ pub struct BuildSettings {
     pub size: Option<(u32, u32)>,
     /// Multi-pass effects: every pass and target kept (nothing pruned or shared).
     pub dump_targets: bool,
+    /// Time each frame on the GPU with timestamp queries (when the adapter has them);
+    /// otherwise the wall time of the wait stands in. The queries cost a second readback
+    /// per frame, so only `--timings` and `bench` ask for them.
+    pub timestamps: bool,
 }
 
 /// Changes a translation before it is built (`stress` instruments it): called with the
@@ -219,7 +223,7 @@ pub(crate) fn build(
                 overrides,
             };
             let scene = Scene::new(gpu, &input)?;
-            let target = FrameTarget::new(gpu, &scene, size.0, size.1, mode);
+            let target = FrameTarget::new(gpu, &scene, (size.0, size.1, mode), settings.timestamps);
             Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))
         }
     }

@@ -153,7 +153,9 @@ pub struct FrameTarget {
 }
 
 impl FrameTarget {
-    pub fn new(gpu: &Gpu, scene: &Scene, width: u32, height: u32, mode: ColorMode) -> FrameTarget {
+    /// A target of `width`×`height` in `mode`; `timestamps`: time frames with GPU
+    /// timestamp queries when the adapter has them.
+    pub fn new(gpu: &Gpu, scene: &Scene, (width, height, mode): (u32, u32, ColorMode), timestamps: bool) -> FrameTarget {
         let texture = |format: wgpu::TextureFormat, usage: wgpu::TextureUsages, label: &str| {
             gpu.device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
@@ -184,7 +186,7 @@ impl FrameTarget {
             usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
             mapped_at_creation: false,
         });
-        let timestamps = Timestamps::new(gpu);
+        let timestamps = if timestamps { Timestamps::new(gpu) } else { None };
         let spare = Spare::default();
         FrameTarget { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps, spare }
     }

@@ -83,7 +83,8 @@ impl<'c> MemoryDrawer<'c> {
         m: MemoryRequest,
         instrument: Option<Instrument<'_>>,
     ) -> Option<Self> {
-        let settings = BuildSettings { back: TranslateOptions::for_rendering(true), size: Some(m.size), dump_targets: false };
+        let settings =
+            BuildSettings { back: TranslateOptions::for_rendering(true), size: Some(m.size), dump_targets: false, timestamps: true };
         let prepared = prepare(c, outcome, &settings, instrument)?;
         let mode = if m.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
         match build(gpu, &prepared, c, (m.size, mode), &settings, BuildVariant { overrides, degenerate: m.degenerate }) {
