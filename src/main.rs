@@ -38,11 +38,11 @@ fn main() -> ExitCode {
         }
     };
     match &cli.command {
-        Command::Check(args) => repeat(common, args.watch, |s, _| check(args, s)),
-        Command::Translate(args) => repeat(common, args.watch, |s, _| translate(args, s)),
-        Command::Render(args) => repeat(common, args.watch, |s, changed| render(args, s, changed)),
-        Command::Bench(args) => repeat(common, false, |s, _| bench(args, s)),
-        Command::Stress(args) => repeat(common, false, |s, _| stress(args, s)),
+        Command::Check(args) => repeat(common, args.watch, false, |s, _| check(args, s)),
+        Command::Translate(args) => repeat(common, args.watch, false, |s, _| translate(args, s)),
+        Command::Render(args) => repeat(common, args.watch, args.streams(), |s, changed| render(args, s, changed)),
+        Command::Bench(args) => repeat(common, false, false, |s, _| bench(args, s)),
+        Command::Stress(args) => repeat(common, false, false, |s, _| stress(args, s)),
         Command::Completions(_) | Command::Man => ExitCode::SUCCESS,
     }
 }
@@ -69,10 +69,12 @@ fn render_usage_error(message: String) -> ExitCode {
 /// Runs `command` with the repository's settings once, or with `--watch` again after
 /// every change to a file it read (settings read anew each round) until interrupted.
 /// `command` gets the changed files (`None` the first time) and returns its exit code and
-/// the files it read.
+/// the files it read. `streams`: stdout carries frames, so a bad settings file is reported
+/// on stderr.
 fn repeat(
     common: &CommonArgs,
     watch: bool,
+    streams: bool,
     mut command: impl FnMut(&config::Loaded, Option<&[PathBuf]>) -> (ExitCode, Vec<PathBuf>),
 ) -> ExitCode {
     let mut round = |changed: Option<&[PathBuf]>| -> (ExitCode, Vec<PathBuf>) {
@@ -81,7 +83,10 @@ fn repeat(
         if settings.failed() {
             let outcome =
                 Outcome { files: settings.files.clone(), diagnostics: settings.diagnostics.clone(), io_error: true, ..Outcome::default() };
-            let _ = print(&diagnostics_text(common, &outcome));
+            let _ = match streams {
+                true => std::io::stderr().write_all(diagnostics_for(common, &outcome, std::io::stderr().is_terminal()).as_bytes()),
+                false => print(&diagnostics_text(common, &outcome)),
+            };
             return (ExitCode::from(2), read);
         }
         let (code, r) = command(&settings, changed);
