@@ -146,15 +146,13 @@ impl InputSpec {
     }
 
     /// Runs `work` on a pool of [`InputSpec::jobs`] threads (on this thread for one job).
-    pub fn on_threads<T: Send>(&self, work: impl FnOnce() -> T + Send) -> T {
+    fn on_threads<T: Send>(&self, work: impl FnOnce() -> T + Send) -> T {
         let threads = self.jobs.unwrap_or(0);
+        let mut pool = rayon::ThreadPoolBuilder::new().num_threads(threads);
         if threads == 1 {
-            return match rayon::ThreadPoolBuilder::new().num_threads(1).use_current_thread().build() {
-                Ok(pool) => pool.install(work),
-                Err(_) => work(),
-            };
+            pool = pool.use_current_thread();
         }
-        match rayon::ThreadPoolBuilder::new().num_threads(threads).build() {
+        match pool.build() {
             Ok(pool) => pool.install(work),
             Err(_) => work(),
         }
@@ -170,7 +168,7 @@ pub fn check_inputs(inputs: &[PathBuf], forced: Option<StageKind>, options: Fron
 /// not be read.
 fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, Vec<Diagnostic>, bool) {
     let mut diags = l.diagnostics;
-    let mut io_error = l.io_error;
+    let io_error = l.io_error;
     let mut units = Vec::new();
     let mut plan = None;
     match l.body {
@@ -190,7 +188,6 @@ fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, V
             dedup(&mut diags);
         }
     }
-    io_error |= diags.iter().any(|d| d.code == Code::InputIo);
     let failed = diags.iter().any(Diagnostic::is_error);
     if failed {
         units.clear();
