@@ -2,14 +2,15 @@
 # Installs what effectc needs on a fresh Debian machine, then builds it (release).
 # System packages: glslang-tools and spirv-tools (peer tools for the benchmark and corpus
 # scripts), mesa-vulkan-drivers + libvulkan1 (lavapipe, the CPU Vulkan used for rendering),
-# ffmpeg (ffmpeg and ffprobe: the test that pipes `effectc render --out -` into ffmpeg).
+# ffmpeg (ffmpeg and ffprobe: the test that pipes `effectc render --out -` into ffmpeg),
+# g++ (the `glslang-sys` crate builds the Khronos reference compiler from its C++ source).
 set -euo pipefail
 cd "$(dirname "$0")"
 SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 if command -v apt-get >/dev/null; then
     missing=""
-    for pkg in glslang-tools spirv-tools mesa-vulkan-drivers libvulkan1 ffmpeg; do
+    for pkg in glslang-tools spirv-tools mesa-vulkan-drivers libvulkan1 ffmpeg g++; do
         dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
     done
     if [ -n "$missing" ]; then

@@ -230,6 +230,8 @@ pub fn check_stages(
     if let Some(p) = &mut program {
         let syntaxes: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
         diags.extend(crate::link::check_interface(&syntaxes));
+        diags.extend(reference_link_errors(p, &diags));
+        drop_reference_repeats(files, &mut diags);
         if let Some(e) = effect {
             diags.extend(crate::link::check_manifest(e, &syntaxes, files));
         }
@@ -239,6 +241,49 @@ pub fn check_stages(
         }
     }
     (program, diags)
+}
+
+/// glslang's link errors for a program effectc's own front and link rules found no error in
+/// (where they did, their errors name the problem with both declarations labelled).
+fn reference_link_errors(program: &CompiledProgram, so_far: &[Diagnostic]) -> Vec<Diagnostic> {
+    match &program.reference {
+        Some(j) if !so_far.iter().any(Diagnostic::is_error) => j.link_errors.iter().map(|d| label_link_error(program, d.clone())).collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// glslang names each side of a link mismatch on a line of its own (`vertex stage: tex
+/// "layout( binding=1) uniform"`): the declaration of that name in that stage is labelled.
+fn label_link_error(program: &CompiledProgram, mut d: Diagnostic) -> Diagnostic {
+    let mut sides = Vec::new();
+    for note in &d.notes {
+        let Some((stage, rest)) = note.split_once(" stage: ") else { continue };
+        let Some(kind) = crate::front::reference::stage_named(stage) else { continue };
+        let name: String = rest.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+        let Some(s) = program.stage(kind) else { continue };
+        if let Some(g) = s.syntax.globals.iter().find(|g| g.name == name) {
+            sides.push((s.syntax.file, g.name_span.clone(), format!("`{name}` in the {kind} stage")));
+        }
+    }
+    for (i, (file, span, label)) in sides.into_iter().enumerate() {
+        d = if i == 0 {
+            let mut primary = Diagnostic::new(d.code, d.message.clone()).at(file, span, label);
+            primary.notes = d.notes;
+            primary
+        } else {
+            d.with_label(file, span, label)
+        };
+    }
+    d
+}
+
+/// Drops a glslang error (E0105) on a line where effectc's own rules report an error too
+/// (a geometry input that is no array: effectc's E0212 says it with the declaration
+/// labelled).
+fn drop_reference_repeats(files: &Files, diags: &mut Vec<Diagnostic>) {
+    let line_of = |d: &Diagnostic| Some((d.file?, files.line_col(d.file?, d.span.as_ref()?.start).0));
+    let own: Vec<_> = diags.iter().filter(|d| d.is_error() && d.code != Code::ReferenceRejects).filter_map(line_of).collect();
+    diags.retain(|d| d.code != Code::ReferenceRejects || line_of(d).is_none_or(|l| !own.contains(&l)));
 }
 
 /// Drops repeated diagnostics (two passes sharing a stage file report its findings once).
@@ -276,6 +321,8 @@ fn check_passes(
             if let Some(p) = &mut program {
                 let s: Vec<_> = p.stages.iter().map(|s| s.syntax.clone()).collect();
                 diags.extend(crate::link::check_interface(&s));
+                diags.extend(reference_link_errors(p, &diags));
+                drop_reference_repeats(files, &mut diags);
                 if pass.reuse.is_none() {
                     let declared = crate::link::declared::declared(&s);
                     view.uniforms.retain(|u| pass.uniforms.iter().any(|p| p.name == u.name) || declared.has_uniform(&u.name));

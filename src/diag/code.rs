@@ -68,6 +68,7 @@ codes! {
     SyntaxError => "E0102", "GLSL syntax error",
     NoMain => "E0103", "stage has no `main` function",
     IncludeUnresolved => "E0104", "an `#include` that cannot be read or includes itself",
+    ReferenceRejects => "E0105", "the reference compiler (glslang) rejects the stage",
     NonConstantSamplerIndex => "E0110", "sampler array indexed with a non-constant expression",
     NonConstantFragDataIndex => "E0111", "`gl_FragData` indexed with a non-constant expression",
     RemovedInVersionStrict => "E0120", "construct removed from the declared version (`--strict`)",
@@ -98,6 +99,7 @@ codes! {
     TextureKindMismatch => "E0226", "texture kind does not match the sampler type",
     AttributeUnknown => "E0227", "mesh or instance attribute names no vertex input",
     AttributeConflict => "E0228", "vertex input fed twice or given too many components",
+    ReferenceLinkFails => "E0230", "the reference compiler (glslang) refuses to link the program",
     PassUnknownTarget => "E0240", "pass or output names an undeclared target",
     PassReadBeforeWrite => "E0241", "pass reads a target no earlier pass writes",
     PassCycle => "E0242", "pass graph has a cycle or feedback loop",
@@ -133,6 +135,7 @@ codes! {
     ShadowBiasDropped => "N0103", "the bias of a shadow lookup is dropped",
     PointCoordConstant => "N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU points are one pixel wide",
     LayerSelected => "N0105", "`gl_Layer`/`gl_ViewportIndex` select which primitives a draw keeps (WebGPU cannot route them)",
+    ReferenceOnly => "N0106", "a stage the reference compiler accepts and effectc's own analysis cannot read: checked by glslang only",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
     // Warnings.
     StageExtension => "W0001", "stage file extension names another stage",

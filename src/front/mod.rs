@@ -11,6 +11,8 @@
 //! - [`geometry_layout`]: a geometry stage's primitives, `max_vertices` and invocations.
 //! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
 //! - [`limitation`]: a legal construct naga cannot take (the stage is checked, not translated).
+//! - [`reference`]: glslang, the Khronos reference compiler, in process: what is legal,
+//!   with its errors at the user's lines.
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
 //!   errors with [`builtins`]; [`program`]: all of it per program.
 
@@ -25,6 +27,7 @@ pub mod limitation;
 pub mod naga_run;
 pub mod plan;
 pub mod program;
+pub mod reference;
 pub mod rewrite;
 pub mod syntax;
 pub mod version;

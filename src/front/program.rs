@@ -14,6 +14,7 @@ use crate::front::geometry_fold::{self, Folded, Pulling};
 use crate::front::geometry_layout;
 use crate::front::naga_run::{self, Limitation, Outcome, Validated};
 use crate::front::plan::{self, Plan};
+use crate::front::reference;
 use crate::front::rewrite::{self, Rewritten};
 use crate::front::syntax::{self, StageSyntax};
 use crate::stage::StageKind;
@@ -46,6 +47,8 @@ pub struct CompiledProgram {
     /// vertex module, or what kept them from being folded ([`fold_geometry`]; None before
     /// it ran, or without a geometry stage).
     pub folded: Option<Result<Folded, String>>,
+    /// glslang's verdict on the program (None when glslang could not be set up).
+    pub reference: Option<reference::Judgement>,
 }
 
 impl CompiledProgram {
@@ -85,9 +88,111 @@ pub fn compile(
 ) -> Option<CompiledProgram> {
     let mut ordered: Vec<(FileId, StageKind)> = stages.to_vec();
     ordered.sort_by_key(|(_, k)| *k);
+    // glslang decides what is legal; effectc's own findings in a stage it accepts are
+    // effectc's limits, not the user's errors ([`accept_what_glslang_accepts`]).
+    let judgement = reference::judge(files, &ordered, options.env);
+    let mut own = Vec::new();
+    let program = compile_own(files, &ordered, options, &mut own);
+    let Some(judgement) = judgement else {
+        diags.extend(own);
+        return program;
+    };
+    let unreadable = program.is_none() && !own.iter().any(Diagnostic::is_error);
+    diags.extend(accept_what_glslang_accepts(&judgement, own));
+    if program.is_none() && !unreadable && !diags.iter().any(Diagnostic::is_error) {
+        // effectc's own analysis could not read a stage glslang accepts (now a note): the
+        // program is glslang's to link.
+        diags.extend(judgement.link_errors.iter().cloned());
+    }
+    program.map(|mut p| {
+        for stage in &mut p.stages {
+            let accepted = judgement.stage(stage.syntax.file).is_some_and(|v| v.accepted);
+            if accepted && stage.naga.is_none() && stage.limitation.is_none() && stage.syntax.stage.naga().is_some() {
+                // naga refused a stage glslang accepts: translate names what naga said.
+                let note = diags.iter().find(|d| d.code == Code::NagaCannotTake && d.file == Some(stage.syntax.file));
+                if let Some(n) = note {
+                    let said = n.message.trim_start_matches("naga cannot take this stage: ");
+                    stage.limitation = Some(Limitation { construct: format!("a construct naga rejects ({said})"), span: n.span.clone() });
+                }
+            }
+        }
+        p.reference = Some(judgement);
+        p
+    })
+}
+
+/// Merges effectc's own findings with glslang's verdict, stage by stage: in a stage glslang
+/// rejects, effectc's errors stand when it has some there (they name the construct with
+/// both spans), else glslang's errors are the stage's; in a stage glslang accepts, an error
+/// from effectc's syntax analysis or from naga becomes a note (effectc's or naga's limit:
+/// the stage is then checked for syntax and interface only and not translated), while
+/// effectc's own rules (`--strict`, a missing `main`) stay errors.
+fn accept_what_glslang_accepts(judgement: &reference::Judgement, own: Vec<Diagnostic>) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    for d in own {
+        let verdict = d.file.and_then(|f| judgement.stage(f));
+        match verdict {
+            Some(v) if v.accepted && d.is_error() && limit_of_effectc(d.code) => out.push(as_limitation(d)),
+            _ => out.push(d),
+        }
+    }
+    for v in judgement.stages.iter().filter(|v| !v.accepted) {
+        let effectc_found = out.iter().any(|d| d.is_error() && in_stage(d, v.file));
+        if !effectc_found {
+            out.extend(v.errors.iter().cloned());
+        }
+    }
+    out
+}
+
+/// Errors that come from what effectc's parser or naga can read, not from a GLSL rule
+/// effectc enforces on purpose.
+fn limit_of_effectc(code: Code) -> bool {
+    matches!(
+        code,
+        Code::BadVersion
+            | Code::SyntaxError
+            | Code::NonConstantSamplerIndex
+            | Code::NonConstantFragDataIndex
+            | Code::NagaParse
+            | Code::NagaValidation
+            | Code::NagaCrashed
+    )
+}
+
+fn in_stage(d: &Diagnostic, file: FileId) -> bool {
+    d.file == Some(file) || d.labels.iter().any(|l| l.file == file)
+}
+
+/// An error of effectc's parser or naga in a stage glslang accepts, as the note it is.
+fn as_limitation(d: Diagnostic) -> Diagnostic {
+    let (code, what) = match d.code {
+        Code::NagaParse | Code::NagaValidation | Code::NagaCrashed | Code::NonConstantSamplerIndex | Code::NonConstantFragDataIndex => {
+            (Code::NagaCannotTake, "naga cannot take this stage")
+        }
+        _ => (Code::ReferenceOnly, "effectc's own analysis cannot read this stage"),
+    };
+    let mut n = Diagnostic::new(code, format!("{what}: {}", d.message));
+    n.file = d.file;
+    n.span = d.span;
+    n.primary_label = d.primary_label;
+    n.labels = d.labels;
+    n.notes = d.notes;
+    n.with_note("the reference compiler (glslang) accepts the stage: it is legal GLSL, checked by glslang")
+        .with_note("`effectc translate` cannot translate this stage until effectc reads it")
+}
+
+/// effectc's own analysis of the program: syntax facts, the shared plan, the 4.50 rewrite
+/// and naga.
+fn compile_own(
+    files: &Files,
+    ordered: &[(FileId, StageKind)],
+    options: FrontOptions,
+    diags: &mut Vec<Diagnostic>,
+) -> Option<CompiledProgram> {
     let mut syntaxes = Vec::new();
     let mut ok = true;
-    for (file, kind) in &ordered {
+    for (file, kind) in ordered {
         match syntax::analyse(*file, files.text(*file), *kind, options.env) {
             Ok(s) => syntaxes.push(s),
             Err(errs) => {
@@ -186,7 +291,7 @@ pub fn compile(
         };
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation });
     }
-    Some(CompiledProgram { stages: compiled, plan, folded: None })
+    Some(CompiledProgram { stages: compiled, plan, folded: None, reference: None })
 }
 
 /// Folds a program's geometry stage into its vertex stage (when it has one), for a program

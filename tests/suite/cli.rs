@@ -46,8 +46,11 @@ fn json_parses_and_counts_errors() {
     assert_eq!(code(&out), 1);
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("valid JSON");
     assert!(v["summary"]["errors"].as_u64().unwrap() > 0, "{v}");
-    let d = &v["diagnostics"][0];
-    assert_eq!(d["code"], Code::InputBlockUnmatched.as_str());
+    let all = v["diagnostics"].as_array().unwrap();
+    // The student's vertex stage also names its block's instance after the block, which
+    // GLSL forbids (glslang reports it in sun.vert); the link bug is reported beside it.
+    assert!(all.iter().any(|d| d["code"] == Code::ReferenceRejects.as_str() && d["file"].as_str().unwrap().ends_with("sun.vert")), "{v}");
+    let d = all.iter().find(|d| d["code"] == Code::InputBlockUnmatched.as_str()).expect("the renamed block");
     assert!(d["file"].as_str().unwrap().ends_with("sun.frag"));
     assert!(d["labels"][0]["file"].as_str().unwrap().ends_with("sun.vert"));
 }
@@ -70,7 +73,8 @@ fn sarif_is_2_1_0() {
     let text = stdout(&out);
     assert!(text.contains("\"version\": \"2.1.0\""), "{text}");
     let v: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
-    assert_eq!(v["runs"][0]["results"][0]["ruleId"], Code::InputBlockUnmatched.as_str());
+    let results = v["runs"][0]["results"].as_array().unwrap();
+    assert!(results.iter().any(|r| r["ruleId"] == Code::InputBlockUnmatched.as_str()), "{text}");
 }
 
 #[test]
@@ -82,9 +86,13 @@ fn deny_warnings_fails_a_warning_only_input() {
 
 #[test]
 fn strict_turns_legacy_warning_into_error() {
-    let dir = "tests/fail/16-texture2d-in-420-core-warning";
+    // `texture2D` in 420 core: the reference compiler rejects the stage (E0105) with or
+    // without --strict; effectc's own finding, which suggests `texture`, is a warning that
+    // --strict raises.
+    let dir = "tests/fail/16-texture2d-in-420-core";
     let out = effectc(&["check", dir]);
-    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::ReferenceRejects.as_str()));
     assert!(stdout(&out).contains(Code::RemovedInVersion.as_str()));
     let out = effectc(&["check", "--strict", dir]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));

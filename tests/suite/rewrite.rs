@@ -77,7 +77,7 @@ fn rewrite_corpus() {
 #[test]
 fn rewrite_known_failures_still_fail() {
     let mut now_passing = Vec::new();
-    for dir in common::fixtures("tests/rewrite_known_failures", 7) {
+    for dir in common::fixtures("tests/rewrite_known_failures", 8) {
         let name = common::name_of(&dir);
         let why = std::fs::read_to_string(dir.join("why")).unwrap_or_default();
         assert!(!why.trim().is_empty(), "{name}: no `why` file");

@@ -126,7 +126,7 @@ impl Ctx<'_> {
         let d = if self.strict { Diagnostic::new(Code::RemovedInVersionStrict, msg) } else { Diagnostic::new(Code::RemovedInVersion, msg) };
         self.diags.push(
             d.at(self.s.file, span, format!("removed from the {profile} profile"))
-                .with_note("strict compilers such as glslangValidator reject this; effectc accepts it")
+                .with_note("GL drivers and the reference compiler (glslang) reject it in this version")
                 .with_help(format!("use `{replacement}` instead")),
         );
     }

@@ -20,4 +20,5 @@ mod types;
 pub use model::{BlockInfo, Call, DefaultDecl, Function, Global, Member, Param, Referent, StageSyntax, StructDef, Swizzle, Use};
 pub use nodes::expr_text;
 pub use parse::analyse;
+pub(crate) use parse::vulkan_source;
 pub use types::{dims_text, sampler_parts, GlslType, Interp, Storage};

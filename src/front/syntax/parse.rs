@@ -205,7 +205,7 @@ fn compiled_include(text: &str) -> Option<Range<usize>> {
 
 /// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
 /// constants, subpass inputs, separate texture and sampler uniforms)?
-fn vulkan_source(text: &str) -> bool {
+pub(crate) fn vulkan_source(text: &str) -> bool {
     let squeezed: String = text.split_whitespace().collect::<Vec<_>>().join(" ");
     squeezed.contains("push_constant")
         || squeezed.contains("subpassInput")

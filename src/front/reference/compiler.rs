@@ -1,0 +1,161 @@
+//! The Khronos reference compiler (glslang) in process, through its C interface
+//! (`glslang-sys`): one stage compiled, a program linked, each returning glslang's own
+//! verdict and info log.
+//!
+//! The `glslang` crate's safe layer links with Vulkan + SPIR-V rules only and panics on a
+//! log that is not UTF-8, so the C interface is driven here; its default resource limits
+//! (glslangValidator's) come from the safe crate.
+
+use std::ffi::{c_char, CStr, CString};
+use std::ptr::{self, NonNull};
+use std::sync::OnceLock;
+
+use glslang_sys as sys;
+
+use crate::stage::StageKind;
+
+/// The dialect a stage is compiled in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dialect {
+    /// OpenGL GLSL as a GL driver compiles it (`glslangValidator` without `-V`/`-G`):
+    /// desktop core/compatibility or ES, as its `#version` says; no `#version` is 1.10.
+    OpenGl,
+    /// Vulkan GLSL (`glslangValidator -V`): Vulkan 1.0, SPIR-V 1.0 rules.
+    Vulkan,
+}
+
+/// glslang's verdict on one stage or one link.
+#[derive(Debug, Clone)]
+pub struct Verdict {
+    pub ok: bool,
+    /// The info log as glslang writes it (`ERROR: 0:12:5: 'x' : undeclared identifier`).
+    pub log: String,
+}
+
+/// glslang's process-wide set-up, done once (never finalized: threads compile at any time).
+fn initialized() -> bool {
+    static INIT: OnceLock<bool> = OnceLock::new();
+    // SAFETY: glslang_initialize_process has no preconditions; it is reference-counted and
+    // guarded by glslang's own lock.
+    *INIT.get_or_init(|| unsafe { sys::glslang_initialize_process() } != 0)
+}
+
+fn stage_of(kind: StageKind) -> sys::glslang_stage_t {
+    match kind {
+        StageKind::Vertex => sys::glslang_stage_t::Vertex,
+        StageKind::TessControl => sys::glslang_stage_t::TesselationControl,
+        StageKind::TessEval => sys::glslang_stage_t::TesselationEvaluation,
+        StageKind::Geometry => sys::glslang_stage_t::Geometry,
+        StageKind::Fragment => sys::glslang_stage_t::Fragment,
+        StageKind::Compute => sys::glslang_stage_t::Compute,
+    }
+}
+
+fn messages(dialect: Dialect) -> sys::glslang_messages_t {
+    let base = sys::glslang_messages_t::DEFAULT | sys::glslang_messages_t::DISPLAY_ERROR_COLUMN;
+    match dialect {
+        Dialect::OpenGl => base,
+        Dialect::Vulkan => base | sys::glslang_messages_t::SPV_RULES | sys::glslang_messages_t::VULKAN_RULES,
+    }
+}
+
+/// A C string of `text`; a NUL byte (which no GLSL source holds) ends the text there, as it
+/// would for a driver reading a C string.
+fn c_text(text: &str) -> CString {
+    let end = text.find('\0').unwrap_or(text.len());
+    CString::new(&text[..end]).expect("no NUL before `end`")
+}
+
+fn log_of(ptr: *const c_char) -> String {
+    if ptr.is_null() {
+        return String::new();
+    }
+    // SAFETY: glslang returns a NUL-terminated string it owns, valid until the next call on
+    // the same object; it is copied at once.
+    unsafe { CStr::from_ptr(ptr) }.to_string_lossy().into_owned()
+}
+
+/// One compiled stage (a glslang shader object), kept for linking.
+pub struct CompiledShader {
+    handle: NonNull<sys::glslang_shader_t>,
+    /// glslang keeps pointers into the input and its text until the shader is deleted.
+    _input: Box<sys::glslang_input_t>,
+    _code: CString,
+    pub kind: StageKind,
+    pub verdict: Verdict,
+}
+
+// SAFETY: a glslang shader object is used by one thread at a time (it moves with its
+// program's analysis); glslang's shared state is initialised once and read-only after.
+unsafe impl Send for CompiledShader {}
+
+impl Drop for CompiledShader {
+    fn drop(&mut self) {
+        // SAFETY: created by glslang_shader_create, deleted once.
+        unsafe { sys::glslang_shader_delete(self.handle.as_ptr()) }
+    }
+}
+
+/// Compiles one stage's text (includes already inlined) as `dialect`.
+pub fn compile(text: &str, kind: StageKind, dialect: Dialect) -> Option<CompiledShader> {
+    if !initialized() {
+        return None;
+    }
+    let code = c_text(text);
+    let resource: *const sys::glslang_resource_t =
+        // SAFETY: `ResourceLimits` is `repr(transparent)` over `glslang_resource_t`.
+        (&glslang::limits::DEFAULT_LIMITS as *const glslang::limits::ResourceLimits).cast();
+    let (client, client_version, target, default_version) = match dialect {
+        Dialect::OpenGl => {
+            (sys::glslang_client_t::None, sys::glslang_target_client_version_t::OpenGL450, sys::glslang_target_language_t::None, 110)
+        }
+        Dialect::Vulkan => {
+            (sys::glslang_client_t::Vulkan, sys::glslang_target_client_version_t::Vulkan1_0, sys::glslang_target_language_t::SPIRV, 100)
+        }
+    };
+    let input = Box::new(sys::glslang_input_t {
+        language: sys::glslang_source_t::GLSL,
+        stage: stage_of(kind),
+        client,
+        client_version,
+        target_language: target,
+        target_language_version: sys::glslang_target_language_version_t::SPIRV1_0,
+        code: code.as_ptr(),
+        default_version,
+        default_profile: sys::glslang_profile_t::None,
+        force_default_version_and_profile: 0,
+        forward_compatible: 0,
+        messages: messages(dialect),
+        resource,
+        callbacks: sys::glsl_include_callbacks_t { include_system: None, include_local: None, free_include_result: None },
+        callbacks_ctx: ptr::null_mut(),
+    });
+    // SAFETY: `input` and `code` live as long as the shader (both move into it below).
+    let handle = NonNull::new(unsafe { sys::glslang_shader_create(&*input) })?;
+    // SAFETY: a live shader and its own input.
+    let ok = unsafe {
+        sys::glslang_shader_preprocess(handle.as_ptr(), &*input) != 0 && sys::glslang_shader_parse(handle.as_ptr(), &*input) != 0
+    };
+    // SAFETY: a live shader.
+    let log = log_of(unsafe { sys::glslang_shader_get_info_log(handle.as_ptr()) });
+    Some(CompiledShader { handle, _input: input, _code: code, kind, verdict: Verdict { ok, log } })
+}
+
+/// Links compiled stages as one program by `dialect`'s rules (GL: what `glslangValidator -l`
+/// checks). Every shader must have compiled.
+pub fn link(shaders: &[CompiledShader], dialect: Dialect) -> Option<Verdict> {
+    if !initialized() || shaders.iter().any(|s| !s.verdict.ok) {
+        return None;
+    }
+    // SAFETY: program created, used and deleted here; the shaders outlive it.
+    unsafe {
+        let program = NonNull::new(sys::glslang_program_create())?;
+        for s in shaders {
+            sys::glslang_program_add_shader(program.as_ptr(), s.handle.as_ptr());
+        }
+        let ok = sys::glslang_program_link(program.as_ptr(), messages(dialect).0) != 0;
+        let log = log_of(sys::glslang_program_get_info_log(program.as_ptr()));
+        sys::glslang_program_delete(program.as_ptr());
+        Some(Verdict { ok, log })
+    }
+}

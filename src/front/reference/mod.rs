@@ -1,0 +1,156 @@
+//! The reference compiler's verdict: every stage of a program compiled by glslang (the
+//! Khronos reference compiler, in process) for the profile and version its `#version`
+//! names, and the program linked as GL links it (or as Vulkan does, for Vulkan GLSL).
+//!
+//! glslang decides what is legal; its errors become effectc diagnostics at the user's
+//! file, line and column (included files and `#line` directives followed), with glslang's
+//! wording kept. effectc's own analysis (spans, interface rules, naga) runs on top: what
+//! glslang accepts is never refused because effectc's own analysis or naga cannot read it.
+//!
+//! - [`compiler`]: glslang's C interface (compile one stage, link a program).
+//! - [`log`]: glslang's info log parsed and placed in the user's text.
+
+pub mod compiler;
+pub mod log;
+
+use crate::config::TargetEnv;
+use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::stage::StageKind;
+
+pub use compiler::Dialect;
+
+/// glslang's verdict on one stage.
+#[derive(Debug, Clone)]
+pub struct StageVerdict {
+    pub file: FileId,
+    pub kind: StageKind,
+    pub accepted: bool,
+    /// glslang's errors, placed in the user's files.
+    pub errors: Vec<Diagnostic>,
+}
+
+/// glslang's verdict on a program.
+#[derive(Debug, Clone)]
+pub struct Judgement {
+    pub dialect: Dialect,
+    pub stages: Vec<StageVerdict>,
+    /// glslang's link errors (empty when every stage compiled and the program links, or
+    /// when a stage did not compile and so nothing was linked).
+    pub link_errors: Vec<Diagnostic>,
+}
+
+impl Judgement {
+    /// glslang's verdict on the stage read from `file` (None: not judged).
+    pub fn stage(&self, file: FileId) -> Option<&StageVerdict> {
+        self.stages.iter().find(|s| s.file == file)
+    }
+    /// glslang compiles every stage and links the program.
+    pub fn legal(&self) -> bool {
+        self.stages.iter().all(|s| s.accepted) && self.link_errors.is_empty()
+    }
+}
+
+/// The dialect glslang compiles a program in: Vulkan GLSL when asked, or (`auto`) when the
+/// text of any stage shows it (descriptor sets, push constants, separate samplers).
+pub fn dialect(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> Dialect {
+    let vulkan = match env {
+        TargetEnv::OpenGl => false,
+        TargetEnv::Vulkan => true,
+        TargetEnv::Auto => stages.iter().any(|(f, _)| crate::front::syntax::vulkan_source(files.text(*f))),
+    };
+    if vulkan {
+        Dialect::Vulkan
+    } else {
+        Dialect::OpenGl
+    }
+}
+
+/// glslang's verdict on the program made of `stages` (their texts in `files`, includes
+/// inlined). None when glslang could not be set up in this process.
+pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> Option<Judgement> {
+    let dialect = dialect(files, stages, env);
+    let mut compiled = Vec::new();
+    let mut verdicts = Vec::new();
+    for &(file, kind) in stages {
+        let text = files.text(file);
+        let shader = compiler::compile(text, kind, dialect)?;
+        let errors = if shader.verdict.ok { Vec::new() } else { place(files, file, &shader.verdict.log, Code::ReferenceRejects) };
+        verdicts.push(StageVerdict { file, kind, accepted: shader.verdict.ok, errors });
+        compiled.push(shader);
+    }
+    let mut link_errors = Vec::new();
+    if let Some(verdict) = compiler::link(&compiled, dialect) {
+        if !verdict.ok {
+            link_errors = link_diagnostics(stages, &verdict.log);
+        }
+    }
+    Some(Judgement { dialect, stages: verdicts, link_errors })
+}
+
+/// glslang's errors in `log` as diagnostics with `code` in `file` (an expanded stage's
+/// spans are shown in the included file they come from).
+fn place(files: &Files, file: FileId, log: &str, code: Code) -> Vec<Diagnostic> {
+    let text = files.text(file);
+    let table = log::LineTable::new(text);
+    let mut out = Vec::new();
+    for m in log::parse(log).into_iter().filter(|m| m.error) {
+        let mut d = Diagnostic::new(code, m.text.clone());
+        d = match m.at.and_then(|(s, l, c)| table.line_range(s, l).map(|r| (r, c))) {
+            Some((line, column)) => d.at(file, log::span_on_line(text, line, column, &m.text), "glslang reports this here"),
+            None => d.in_file(file),
+        };
+        for detail in &m.detail {
+            d = d.with_note(detail.clone());
+        }
+        out.push(d.with_note("the Khronos reference compiler (glslang) rejects this stage, as a GL driver would"));
+    }
+    if out.is_empty() {
+        out.push(
+            Diagnostic::new(code, "the reference compiler (glslang) rejects this stage")
+                .in_file(file)
+                .with_note(format!("glslang's log: {}", log.trim())),
+        );
+    }
+    out
+}
+
+/// glslang's link errors: `Linking fragment stage: …` is reported in that stage's file.
+fn link_diagnostics(stages: &[(FileId, StageKind)], log: &str) -> Vec<Diagnostic> {
+    let mut out = Vec::new();
+    for m in log::parse(log).into_iter().filter(|m| m.error) {
+        let (stage, text) = match m.text.strip_prefix("Linking ").and_then(|r| r.split_once(" stage:")) {
+            Some((name, rest)) => (stage_named(name), rest.trim().trim_end_matches(':').to_string()),
+            None => (None, m.text.clone()),
+        };
+        let file = stage.and_then(|k| stages.iter().find(|(_, s)| *s == k)).or(stages.first()).map(|(f, _)| *f);
+        let mut d = Diagnostic::new(Code::ReferenceLinkFails, text);
+        if let Some(f) = file {
+            d = d.in_file(f);
+        }
+        for detail in &m.detail {
+            d = d.with_note(detail.clone());
+        }
+        out.push(d.with_note("the Khronos reference compiler (glslang) refuses to link the program"));
+    }
+    if out.is_empty() && !log.trim().is_empty() {
+        let mut d = Diagnostic::new(Code::ReferenceLinkFails, "the reference compiler (glslang) refuses to link the program");
+        if let Some((f, _)) = stages.first() {
+            d = d.in_file(*f);
+        }
+        out.push(d.with_note(format!("glslang's log: {}", log.trim())));
+    }
+    out
+}
+
+/// The stage glslang names in a link message (`tessellation control`).
+pub fn stage_named(name: &str) -> Option<StageKind> {
+    Some(match name {
+        "vertex" => StageKind::Vertex,
+        "fragment" => StageKind::Fragment,
+        "geometry" => StageKind::Geometry,
+        "tessellation control" => StageKind::TessControl,
+        "tessellation evaluation" => StageKind::TessEval,
+        "compute" => StageKind::Compute,
+        _ => return None,
+    })
+}
