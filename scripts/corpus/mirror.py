@@ -252,3 +252,14 @@ def cpp_ifdefs(src, defined=()):
         elif stack:
             stack.pop()
     return "\n".join(out)
+
+
+def cap_sample(items, cap=800, key=str):
+    """At most `cap` of `items`, a deterministic sample (the smallest SHA-1 of key(item)),
+    kept in their original order; all of them when there are no more than `cap`."""
+    import hashlib
+    items = list(items)
+    if len(items) <= cap:
+        return items
+    keep = set(sorted(range(len(items)), key=lambda i: hashlib.sha1(key(items[i]).encode()).hexdigest())[:cap])
+    return [it for i, it in enumerate(items) if i in keep]
