@@ -3,8 +3,9 @@
 //! - a manifest (`*.toml`) is one program;
 //! - a directory contributes every `effect.toml` below it, plus stage files no manifest
 //!   there names, grouped by directory and file stem (`sun.vert` + `sun.frag`);
-//! - stage files named on the command line form one program together (grouped by stem
-//!   when two of them are the same stage).
+//! - stage files named on the command line form one program together; when a stage
+//!   repeats, its files are shader objects linked into that stage if at most one of them
+//!   defines `main`, else the files are grouped by stem.
 //!
 //! The repository's [`Selection`] (`effectc.toml`) leaves out paths its globs exclude and
 //! names the stage of extensions effectc does not know.
@@ -77,13 +78,66 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
     }
     if !loose.is_empty() {
         let kinds: BTreeSet<StageKind> = loose.iter().map(|(_, k)| *k).collect();
-        if kinds.len() == loose.len() {
+        if kinds.len() == loose.len() || units_of_one_program(&loose) {
             programs.push(ProgramInput::Stages { name: program_name(&loose), files: loose });
         } else {
             programs.extend(group_by_stem(loose));
         }
     }
     (programs, diags)
+}
+
+/// Stage files named together where a stage repeats are one program when, for every
+/// repeated stage, at most one of its files defines `main`: GL links several shader objects
+/// into one stage (`glAttachShader` per file), and a stage has exactly one `main`. Several
+/// files of one stage that each define `main` are separate programs (grouped by stem).
+fn units_of_one_program(files: &[(PathBuf, StageKind)]) -> bool {
+    let mut mains: BTreeMap<StageKind, usize> = BTreeMap::new();
+    for (path, kind) in files {
+        let text = std::fs::read(path).map(|b| String::from_utf8_lossy(&b).into_owned()).unwrap_or_default();
+        *mains.entry(*kind).or_default() += usize::from(defines_main(&text));
+    }
+    mains.values().all(|n| *n <= 1)
+}
+
+/// The text defines `void main(`, outside comments.
+fn defines_main(text: &str) -> bool {
+    let code = without_comments(text);
+    let mut rest = code.as_str();
+    while let Some(i) = rest.find("main") {
+        let before = rest[..i].trim_end();
+        let after = rest[i + 4..].trim_start();
+        let word_start = rest[..i].chars().next_back().is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
+        if word_start && before.ends_with("void") && after.starts_with('(') {
+            return true;
+        }
+        rest = &rest[i + 4..];
+    }
+    false
+}
+
+/// `text` with its `//` and `/* */` comments left out.
+fn without_comments(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    loop {
+        let (line, block) = (rest.find("//"), rest.find("/*"));
+        match (line, block) {
+            (Some(l), b) if b.is_none_or(|b| l < b) => {
+                out.push_str(&rest[..l]);
+                rest = rest[l..].find('\n').map_or("", |e| &rest[l + e..]);
+            }
+            (_, Some(b)) => {
+                out.push_str(&rest[..b]);
+                out.push(' ');
+                rest = rest[b + 2..].find("*/").map_or("", |e| &rest[b + 2 + e + 2..]);
+            }
+            _ => {
+                out.push_str(rest);
+                return out;
+            }
+        }
+    }
 }
 
 fn program_name(files: &[(PathBuf, StageKind)]) -> String {

@@ -17,7 +17,8 @@
 //! 5. [`inputs`]: command-line paths → programs (manifests, directories, stage files).
 //! 6. [`assets`]: CPU-side scene data: meshes, textures, the camera over time, degenerate
 //!    mesh variants (no GPU; shared by the static analysis and the renderer).
-//! 7. [`front`]: each GLSL stage → `#include`s inlined → syntax facts (glsl-lang, spans) →
+//! 7. [`front`]: each GLSL stage → `#include`s inlined → glslang's verdict (`front::reference`,
+//!    the reference compiler in process, what is legal) → syntax facts (glsl-lang, spans) →
 //!    GLSL 4.50 rewrite with an offset map → naga parse + validate.
 //! 8. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader
 //!    declarations; the pass graph's rules.

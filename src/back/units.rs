@@ -10,6 +10,9 @@ use crate::diag::{Code, Diagnostic};
 /// one for a single-pass program, one per pass that reaches the output for a multi-pass
 /// effect (`<effect>.<pass>`, all in the effect's directory). None when check found errors.
 pub fn translate_units(c: &Checked, options: TranslateOptions) -> Vec<(Result<Translation, Vec<Diagnostic>>, String)> {
+    if let Some(d) = &c.untranslatable {
+        return vec![(Err(vec![d.clone()]), c.name.clone())];
+    }
     c.running()
         .map(|unit| {
             let result = translate_unit(unit, options);

@@ -51,6 +51,9 @@ pub struct Checked {
     pub read: Vec<PathBuf>,
     /// Uniform values set on the command line (`--set`) that this program declares, checked.
     pub values: Vec<(String, crate::manifest::UniformValue)>,
+    /// A legal program effectc's own analysis cannot read (checked by the reference compiler
+    /// only, note N0106): why translate and render stop (E0306).
+    pub untranslatable: Option<Diagnostic>,
 }
 
 /// One program of a checked input: what one translation is made from.
@@ -192,7 +195,18 @@ fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, V
     if failed {
         units.clear();
     }
-    (Checked { name: l.name, effect: l.effect, failed, units, plan, read: Vec::new(), values: Vec::new() }, diags, io_error)
+    let untranslatable = if failed { None } else { diags.iter().find(|d| d.code == Code::ReferenceOnly).map(untranslatable) };
+    (Checked { name: l.name, effect: l.effect, failed, units, plan, read: Vec::new(), values: Vec::new(), untranslatable }, diags, io_error)
+}
+
+/// Why a program checked by glslang only is not translated: E0306 where its N0106 note is.
+fn untranslatable(note: &Diagnostic) -> Diagnostic {
+    let mut d = Diagnostic::new(Code::TargetCannotExpress, "the program cannot be translated: effectc's own analysis cannot read it");
+    d.file = note.file;
+    d.span = note.span.clone();
+    d.primary_label = "checked by the reference compiler only".into();
+    d.with_note(note.message.clone())
+        .with_note("the reference compiler (glslang) accepts the program; effectc translates through its own analysis and naga, which do not read it yet")
 }
 
 /// The image and mesh files an effect names.

@@ -91,6 +91,10 @@ pub fn compile(
     // glslang decides what is legal; effectc's own findings in a stage it accepts are
     // effectc's limits, not the user's errors ([`accept_what_glslang_accepts`]).
     let judgement = reference::judge(files, &ordered, options.env);
+    if let Some(kind) = repeated_stage(&ordered) {
+        diags.extend(units_judged_by_glslang(files, &ordered, kind, judgement));
+        return None;
+    }
     let mut own = Vec::new();
     let program = compile_own(files, &ordered, options, &mut own);
     let Some(judgement) = judgement else {
@@ -119,6 +123,52 @@ pub fn compile(
         p.reference = Some(judgement);
         p
     })
+}
+
+/// A stage made of several files (shader objects linked into one stage).
+fn repeated_stage(ordered: &[(FileId, StageKind)]) -> Option<StageKind> {
+    ordered.windows(2).find(|w| w[0].1 == w[1].1).map(|w| w[0].1)
+}
+
+/// A program with a stage made of several shader objects: glslang compiles each and links
+/// them as GL does; effectc's own analysis reads one file per stage, so a legal program is
+/// checked by glslang only (note N0106; translate names why it stops).
+fn units_judged_by_glslang(
+    files: &Files,
+    ordered: &[(FileId, StageKind)],
+    kind: StageKind,
+    judgement: Option<reference::Judgement>,
+) -> Vec<Diagnostic> {
+    let first = ordered.iter().find(|(_, k)| *k == kind).map(|(f, _)| *f).expect("a repeated stage");
+    let count = ordered.iter().filter(|(_, k)| *k == kind).count();
+    let Some(judgement) = judgement else {
+        return vec![Diagnostic::new(
+            Code::ReferenceRejects,
+            format!("the {kind} stage is made of {count} files, which only the reference compiler can link, and it could not be set up"),
+        )
+        .in_file(first)];
+    };
+    let mut out: Vec<Diagnostic> = judgement.stages.iter().flat_map(|v| v.errors.iter().cloned()).collect();
+    if out.is_empty() {
+        out.extend(judgement.link_errors.iter().cloned());
+    }
+    if out.is_empty() {
+        let names: Vec<String> = ordered
+            .iter()
+            .filter(|(_, k)| *k == kind)
+            .map(|(f, _)| format!("`{}`", files.path(*f).rsplit('/').next().unwrap_or("")))
+            .collect();
+        out.push(
+            Diagnostic::new(
+                Code::ReferenceOnly,
+                format!("the {kind} stage is made of {count} shader objects ({}), linked by the reference compiler", names.join(", ")),
+            )
+            .in_file(first)
+            .with_note("GL links several shader objects into one stage; effectc's own analysis (interface rules, hazards, translation) reads one file per stage, so this program is checked by glslang only")
+            .with_help("to translate or render it, join the files into one (`#include` the helpers into the file with `main`)"),
+        );
+    }
+    out
 }
 
 /// Merges effectc's own findings with glslang's verdict, stage by stage: in a stage glslang

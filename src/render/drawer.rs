@@ -59,6 +59,10 @@ pub(crate) fn prepare(
     if c.failed {
         return None;
     }
+    if let Some(d) = &c.untranslatable {
+        outcome.diagnostics.push(d.clone());
+        return None;
+    }
     let plan = match (c.multi_pass(), &c.plan) {
         (Some(effect), Some(plan)) => {
             let size = settings.size.or(effect.render.size).unwrap_or(DEFAULT_SIZE);

@@ -142,3 +142,49 @@ fn one_bad_program_does_not_stop_the_others() {
     let text = stdout(&out);
     assert!(text.contains("checked 2 programs: 1 error"), "{text}");
 }
+
+#[test]
+fn shader_objects_of_one_stage_are_linked_by_the_reference_compiler() {
+    // Files named together where a stage repeats and only one of its files has `main`: the
+    // files are shader objects linked into that stage, as GL's glAttachShader does.
+    let linked =
+        ["tests/shader_objects/linked/edge.vert", "tests/shader_objects/linked/edge.frag", "tests/shader_objects/linked/sobel.frag"];
+    let out = effectc(&[&["check"][..], &linked[..]].concat());
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::ReferenceOnly.as_str()), "{}", stdout(&out));
+    assert!(stdout(&out).contains("checked 1 program"), "{}", stdout(&out));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("shader-objects-out");
+    let out = effectc(&[&["translate", "--out", dir.to_str().unwrap()][..], &linked[..]].concat());
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::TargetCannotExpress.as_str()), "{}", stdout(&out));
+    let missing = [
+        "tests/shader_objects/missing-body/edge.vert",
+        "tests/shader_objects/missing-body/edge.frag",
+        "tests/shader_objects/missing-body/sobel.frag",
+    ];
+    let out = effectc(&[&["check"][..], &missing[..]].concat());
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0230") && stdout(&out).contains("`edges` is declared but no shader object"), "{}", stdout(&out));
+}
+
+#[test]
+fn legal_glsl_effectc_cannot_read_is_a_note_and_translate_says_why() {
+    // glslang (and Mesa) accept a `#pragma` with quoted text, which naga's preprocessor
+    // cannot read: check notes it (exit 0), translate stops with E0306 naming the stage.
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("pragma-quoted");
+    std::fs::create_dir_all(&dir).unwrap();
+    let vert = dir.join("p.vert");
+    let frag = dir.join("p.frag");
+    std::fs::write(&vert, "#version 330\nin vec3 position;\nvoid main() { gl_Position = vec4(position, 1.0); }\n").unwrap();
+    std::fs::write(
+        &frag,
+        "#version 330\n#pragma parameter GAMMA \"Gamma value\" 2.2 1.0 3.0\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n",
+    )
+    .unwrap();
+    let out = effectc(&["check", vert.to_str().unwrap(), frag.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::NagaCannotTake.as_str()), "{}", stdout(&out));
+    let out = effectc(&["translate", "--out", dir.join("out").to_str().unwrap(), vert.to_str().unwrap(), frag.to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::TargetCannotExpress.as_str()), "{}", stdout(&out));
+}

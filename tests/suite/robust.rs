@@ -83,7 +83,9 @@ fn run(program: &Program, which: usize, text: &str) -> Result<bool, String> {
         }
         let mut diags = Vec::new();
         let compiled = compile(&files, &ids, FrontOptions::default(), &mut diags);
-        let mut rejected = compiled.is_none();
+        // A stage the reference compiler accepts and effectc's own parser cannot read is
+        // not rejected: check notes it (N0106) and translate says why it stops.
+        let mut rejected = compiled.is_none() && !diags.iter().any(|d| d.code == effectc::diag::Code::ReferenceOnly);
         if let Some(p) = &compiled {
             // naga parses vertex, fragment and compute stages: each must have a module, or a
             // limitation (legal GLSL naga does not take) that check reports as a note.

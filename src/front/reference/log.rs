@@ -61,24 +61,39 @@ fn is_summary(rest: &str) -> bool {
     rest.ends_with("compilation errors.  No code generated.") || rest.ends_with("compilation errors. No code generated.")
 }
 
-/// `0:12:5: text` → ((0, 12, 5), text); `0:12: text` → ((0, 12, 0), text).
+/// `0:12:5: text` → ((0, 12, 5), text); `0:12: text` → ((0, 12, 0), text). A source string
+/// named by a `#line L "name"` directive (GL_GOOGLE_cpp_style_line_directive) is numbered by
+/// [`string_id`].
 fn location(rest: &str) -> (Option<(i64, i64, i64)>, &str) {
-    let mut fields = Vec::new();
-    let mut at = 0;
-    for _ in 0..3 {
-        let Some(colon) = rest[at..].find(':') else { break };
-        let field = &rest[at..at + colon];
-        match field.parse::<i64>() {
+    let Some(colon) = rest.find(':') else { return (None, rest) };
+    let string = &rest[..colon];
+    let string = match string.parse::<i64>() {
+        Ok(n) => n,
+        Err(_) if !string.is_empty() && !string.contains(' ') => string_id(string),
+        Err(_) => return (None, rest),
+    };
+    let mut fields = vec![string];
+    let mut at = colon + 1;
+    for _ in 0..2 {
+        let Some(c) = rest[at..].find(':') else { break };
+        match rest[at..at + c].parse::<i64>() {
             Ok(n) => fields.push(n),
             Err(_) => break,
         }
-        at += colon + 1;
+        at += c + 1;
     }
     match fields.as_slice() {
         [s, l] => (Some((*s, *l, 0)), &rest[at..]),
         [s, l, c] => (Some((*s, *l, *c)), &rest[at..]),
         _ => (None, rest),
     }
+}
+
+/// A stable number for a source string glslang names (`"common.inc"`): negative, so it
+/// never meets a numbered string.
+fn string_id(name: &str) -> i64 {
+    let name = name.trim_matches('"');
+    -1 - name.bytes().fold(0i64, |h, b| (h.wrapping_mul(131).wrapping_add(i64::from(b))) & 0x3fff_ffff_ffff)
 }
 
 /// The logical `(source string, line)` glslang gives each physical line of `text`, after
@@ -142,8 +157,47 @@ fn line_directive(line: &str) -> Option<(i64, Option<i64>)> {
     }
     let mut words = t.split_whitespace();
     let l = words.next()?.parse().ok()?;
-    let s = words.next().and_then(|w| w.parse().ok());
+    let s = words.next().and_then(|w| w.parse().ok().or_else(|| w.starts_with('"').then(|| string_id(w))));
     Some((l, s))
+}
+
+/// `text` with the lines of `#pragma`s glslang does not act on blanked (same length, so
+/// every offset holds). GLSL has implementations ignore a pragma they do not recognise;
+/// newer glslang tokenizes one anyway and refuses quoted text such as `#pragma parameter
+/// x "### Title ###" 0 0 8 1` (emulator packs), which older glslang and Mesa ignore.
+pub fn quiet_pragmas(text: &str) -> std::borrow::Cow<'_, str> {
+    const ACTED_ON: [&str; 10] = [
+        "optimize",
+        "debug",
+        "STDGL",
+        "once",
+        "use_storage_buffer",
+        "use_vulkan_memory_model",
+        "use_variable_pointers",
+        "shader_stage",
+        "include_alias",
+        "invariant",
+    ];
+    if !text.contains("pragma") {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len());
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        let word = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("pragma")).map(str::trim_start);
+        match word {
+            Some(rest) if !ACTED_ON.iter().any(|w| rest.starts_with(w)) && !line.trim_end().ends_with('\\') => {
+                for c in line.chars() {
+                    match c {
+                        '\n' | '\r' => out.push(c),
+                        _ => out.extend(std::iter::repeat_n(' ', c.len_utf8())),
+                    }
+                }
+            }
+            _ => out.push_str(line),
+        }
+    }
+    std::borrow::Cow::Owned(out)
 }
 
 /// The span a message points at on `line` (its byte range in the text): the quoted token
@@ -217,9 +271,22 @@ mod tests {
         let text = "#version 330\n#line 10 2\nfoo\nbar\n";
         let t = LineTable::new(text);
         assert_eq!(t.line_range(2, 10), Some(24..28));
+        let named = "#version 450\n#line 7 \"common.inc\"\nfoo\n";
+        let m = parse("ERROR: common.inc:7:2: 'foo' : undeclared identifier\n");
+        let (s, l, _) = m[0].at.unwrap();
+        assert_eq!(LineTable::new(named).line_range(s, l), Some(34..38));
         let old = "#version 120\n#line 10\nfoo\n";
         let t = LineTable::new(old);
         assert_eq!(t.line_range(0, 11), Some(22..26));
+    }
+
+    #[test]
+    fn unknown_pragmas_are_blanked_in_place() {
+        let text = "#version 450\n#pragma parameter x \"### \u{e9} ###\" 0 0 8 1\n#pragma optimize(off)\nvoid main() {}\n";
+        let quiet = quiet_pragmas(text);
+        assert_eq!(quiet.len(), text.len());
+        assert!(!quiet.contains("parameter") && quiet.contains("#pragma optimize(off)"));
+        assert_eq!(quiet.lines().count(), text.lines().count());
     }
 
     #[test]

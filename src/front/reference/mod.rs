@@ -72,16 +72,32 @@ pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> O
     let mut compiled = Vec::new();
     let mut verdicts = Vec::new();
     for &(file, kind) in stages {
-        let text = files.text(file);
-        let shader = compiler::compile(text, kind, dialect)?;
+        let text = log::quiet_pragmas(files.text(file));
+        let shader = compiler::compile(&text, kind, dialect)?;
+        if std::env::var_os("EFFECTC_DUMP_REFERENCE").is_some() {
+            // Debugging aid: glslang's own verdict and log for each stage, on stderr.
+            eprintln!(
+                "[glslang] {} {kind}: {}\n{}",
+                files.path(file),
+                if shader.verdict.ok { "accepted" } else { "rejected" },
+                shader.verdict.log
+            );
+        }
         let errors = if shader.verdict.ok { Vec::new() } else { place(files, file, &shader.verdict.log, Code::ReferenceRejects) };
         verdicts.push(StageVerdict { file, kind, accepted: shader.verdict.ok, errors });
         compiled.push(shader);
     }
     let mut link_errors = Vec::new();
-    if let Some(verdict) = compiler::link(&compiled, dialect) {
-        if !verdict.ok {
-            link_errors = link_diagnostics(stages, &verdict.log);
+    // Vulkan has no program object: each stage is compiled and linked on its own (glslc,
+    // `-V` per file: an entry point, one stage's rules) and interfaces meet by location,
+    // which effectc's link rules check; glslang's program link (GL's rules for same-named
+    // blocks across stages) joins the stages only in GL, or the shader objects of one stage.
+    let repeated = stages.windows(2).any(|w| w[0].1 == w[1].1);
+    let groups: Vec<&[compiler::CompiledShader]> =
+        if dialect == Dialect::OpenGl || repeated { vec![&compiled[..]] } else { compiled.chunks(1).collect() };
+    for group in groups {
+        if let Some(verdict) = compiler::link(group, dialect).filter(|v| !v.ok) {
+            link_errors.extend(link_diagnostics(stages, &verdict.log));
         }
     }
     Some(Judgement { dialect, stages: verdicts, link_errors })
@@ -123,7 +139,13 @@ fn link_diagnostics(stages: &[(FileId, StageKind)], log: &str) -> Vec<Diagnostic
             None => (None, m.text.clone()),
         };
         let file = stage.and_then(|k| stages.iter().find(|(_, s)| *s == k)).or(stages.first()).map(|(f, _)| *f);
-        let mut d = Diagnostic::new(Code::ReferenceLinkFails, text);
+        let mut d = match (text.as_str(), m.detail.first().and_then(|d| d.split_once('('))) {
+            // glslang names the function by its mangled signature (`edges(s21;vf2;`).
+            ("No function definition (body) found", Some((name, _))) => {
+                Diagnostic::new(Code::ReferenceLinkFails, format!("`{name}` is declared but no shader object of the stage defines it"))
+            }
+            _ => Diagnostic::new(Code::ReferenceLinkFails, text),
+        };
         if let Some(f) = file {
             d = d.in_file(f);
         }

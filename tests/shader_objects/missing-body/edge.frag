@@ -1,0 +1,10 @@
+#version 330 core
+// The helper is declared here and meant to come from a second shader object.
+in vec2 uv;
+out vec4 color;
+uniform sampler2D scene;
+vec3 edges(sampler2D image, vec2 at);
+void main()
+{
+    color = vec4(edges(scene, uv), 1.0);
+}
