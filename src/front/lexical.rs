@@ -308,9 +308,58 @@ fn buffer_reference(clean: &[u8], out: &mut [u8], at: usize) -> Option<usize> {
     }
 }
 
+/// `text` with the lines of `#pragma`s no compiler acts on blanked (same length, so every
+/// offset holds). GLSL has implementations ignore a pragma they do not recognise; newer
+/// glslang tokenizes one anyway and refuses quoted text such as `#pragma parameter x
+/// "### Title ###" 0 0 8 1` (emulator packs), which older glslang and Mesa ignore, and
+/// naga's preprocessor stops on it.
+pub fn quiet_pragmas(text: &str) -> std::borrow::Cow<'_, str> {
+    const ACTED_ON: [&str; 10] = [
+        "optimize",
+        "debug",
+        "STDGL",
+        "once",
+        "use_storage_buffer",
+        "use_vulkan_memory_model",
+        "use_variable_pointers",
+        "shader_stage",
+        "include_alias",
+        "invariant",
+    ];
+    if !text.contains("pragma") {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len());
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        let word = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("pragma")).map(str::trim_start);
+        match word {
+            Some(rest) if !ACTED_ON.iter().any(|w| rest.starts_with(w)) && !line.trim_end().ends_with('\\') => {
+                for c in line.chars() {
+                    match c {
+                        '\n' | '\r' => out.push(c),
+                        _ => out.extend(std::iter::repeat_n(' ', c.len_utf8())),
+                    }
+                }
+            }
+            _ => out.push_str(line),
+        }
+    }
+    std::borrow::Cow::Owned(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn unknown_pragmas_are_blanked_in_place() {
+        let text = "#version 450\n#pragma parameter x \"### \u{e9} ###\" 0 0 8 1\n#pragma optimize(off)\nvoid main() {}\n";
+        let quiet = quiet_pragmas(text);
+        assert_eq!(quiet.len(), text.len());
+        assert!(!quiet.contains("parameter") && quiet.contains("#pragma optimize(off)"));
+        assert_eq!(quiet.lines().count(), text.lines().count());
+    }
 
     fn masked(src: &str) -> Masked {
         let m = mask(src, src.as_bytes());

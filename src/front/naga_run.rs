@@ -184,7 +184,8 @@ fn parse_and_validate_inner(
     stage: naga::ShaderStage,
     version: &Version,
 ) -> Result<Validated, Failure> {
-    let text = &rewritten.text;
+    let quiet = crate::front::lexical::quiet_pragmas(&rewritten.text);
+    let text = quiet.as_ref();
     let map_span = |span: naga::Span| span.to_range().map(|r| rewritten.map.range_to_original(r));
     let parsed = catch_unwind(AssertUnwindSafe(|| {
         let mut frontend = naga::front::glsl::Frontend::default();

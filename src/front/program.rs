@@ -102,7 +102,7 @@ pub fn compile(
         return program;
     };
     let unreadable = program.is_none() && !own.iter().any(Diagnostic::is_error);
-    diags.extend(accept_what_glslang_accepts(&judgement, own));
+    diags.extend(accept_what_glslang_accepts(files, &judgement, own));
     if program.is_none() && !unreadable && !diags.iter().any(Diagnostic::is_error) {
         // effectc's own analysis could not read a stage glslang accepts (now a note): the
         // program is glslang's to link.
@@ -171,26 +171,39 @@ fn units_judged_by_glslang(
     out
 }
 
-/// Merges effectc's own findings with glslang's verdict, stage by stage: in a stage glslang
-/// rejects, effectc's errors stand when it has some there (they name the construct with
-/// both spans), else glslang's errors are the stage's; in a stage glslang accepts, an error
-/// from effectc's syntax analysis or from naga becomes a note (effectc's or naga's limit:
-/// the stage is then checked for syntax and interface only and not translated), while
-/// effectc's own rules (`--strict`, a missing `main`) stay errors.
-fn accept_what_glslang_accepts(judgement: &reference::Judgement, own: Vec<Diagnostic>) -> Vec<Diagnostic> {
+/// Merges effectc's own findings with glslang's verdict, stage by stage. In a stage glslang
+/// accepts, an error from effectc's syntax analysis or from naga becomes a note (effectc's
+/// or naga's limit: the stage is checked by glslang and not translated). In a stage glslang
+/// rejects, glslang's errors are the stage's, except on a line where effectc's parser or
+/// naga reports the same problem (effectc's message, with its labels, is shown there); an
+/// error of effectc's parser or naga on a line glslang does not name is its own limit and
+/// is dropped. effectc's own rules (`--strict`, a missing `main`) stay errors either way.
+fn accept_what_glslang_accepts(files: &Files, judgement: &reference::Judgement, own: Vec<Diagnostic>) -> Vec<Diagnostic> {
+    let line_of = |d: &Diagnostic| Some((d.file?, files.line_col(d.file?, d.span.as_ref()?.start).0));
     let mut out = Vec::new();
+    let mut shown_lines = Vec::new();
     for d in own {
         let verdict = d.file.and_then(|f| judgement.stage(f));
         match verdict {
             Some(v) if v.accepted && d.is_error() && limit_of_effectc(d.code) => out.push(as_limitation(d)),
+            Some(v) if !v.accepted && d.is_error() && limit_of_effectc(d.code) => {
+                let line = line_of(&d);
+                // Both refuse the `#version` line: effectc's message says which version.
+                if d.code == Code::BadVersion || (line.is_some() && v.errors.iter().any(|g| line_of(g) == line)) {
+                    shown_lines.extend(line);
+                    out.push(d);
+                }
+            }
             _ => out.push(d),
         }
     }
     for v in judgement.stages.iter().filter(|v| !v.accepted) {
-        let effectc_found = out.iter().any(|d| d.is_error() && in_stage(d, v.file));
-        if !effectc_found {
-            out.extend(v.errors.iter().cloned());
-        }
+        let version_shown = out.iter().any(|d| d.code == Code::BadVersion && d.file == Some(v.file));
+        let placed = |g: &&Diagnostic| match line_of(g) {
+            Some(l) => !shown_lines.contains(&l),
+            None => !version_shown,
+        };
+        out.extend(v.errors.iter().filter(placed).cloned());
     }
     out
 }
@@ -208,10 +221,6 @@ fn limit_of_effectc(code: Code) -> bool {
             | Code::NagaValidation
             | Code::NagaCrashed
     )
-}
-
-fn in_stage(d: &Diagnostic, file: FileId) -> bool {
-    d.file == Some(file) || d.labels.iter().any(|l| l.file == file)
 }
 
 /// An error of effectc's parser or naga in a stage glslang accepts, as the note it is.

@@ -161,45 +161,6 @@ fn line_directive(line: &str) -> Option<(i64, Option<i64>)> {
     Some((l, s))
 }
 
-/// `text` with the lines of `#pragma`s glslang does not act on blanked (same length, so
-/// every offset holds). GLSL has implementations ignore a pragma they do not recognise;
-/// newer glslang tokenizes one anyway and refuses quoted text such as `#pragma parameter
-/// x "### Title ###" 0 0 8 1` (emulator packs), which older glslang and Mesa ignore.
-pub fn quiet_pragmas(text: &str) -> std::borrow::Cow<'_, str> {
-    const ACTED_ON: [&str; 10] = [
-        "optimize",
-        "debug",
-        "STDGL",
-        "once",
-        "use_storage_buffer",
-        "use_vulkan_memory_model",
-        "use_variable_pointers",
-        "shader_stage",
-        "include_alias",
-        "invariant",
-    ];
-    if !text.contains("pragma") {
-        return std::borrow::Cow::Borrowed(text);
-    }
-    let mut out = String::with_capacity(text.len());
-    for line in text.split_inclusive('\n') {
-        let t = line.trim_start();
-        let word = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("pragma")).map(str::trim_start);
-        match word {
-            Some(rest) if !ACTED_ON.iter().any(|w| rest.starts_with(w)) && !line.trim_end().ends_with('\\') => {
-                for c in line.chars() {
-                    match c {
-                        '\n' | '\r' => out.push(c),
-                        _ => out.extend(std::iter::repeat_n(' ', c.len_utf8())),
-                    }
-                }
-            }
-            _ => out.push_str(line),
-        }
-    }
-    std::borrow::Cow::Owned(out)
-}
-
 /// The span a message points at on `line` (its byte range in the text): the quoted token
 /// glslang names at or after its column, else the word at the column, else the line.
 pub fn span_on_line(text: &str, line: Range<usize>, column: i64, message: &str) -> Range<usize> {
@@ -278,15 +239,6 @@ mod tests {
         let old = "#version 120\n#line 10\nfoo\n";
         let t = LineTable::new(old);
         assert_eq!(t.line_range(0, 11), Some(22..26));
-    }
-
-    #[test]
-    fn unknown_pragmas_are_blanked_in_place() {
-        let text = "#version 450\n#pragma parameter x \"### \u{e9} ###\" 0 0 8 1\n#pragma optimize(off)\nvoid main() {}\n";
-        let quiet = quiet_pragmas(text);
-        assert_eq!(quiet.len(), text.len());
-        assert!(!quiet.contains("parameter") && quiet.contains("#pragma optimize(off)"));
-        assert_eq!(quiet.lines().count(), text.lines().count());
     }
 
     #[test]
