@@ -308,6 +308,38 @@ fn buffer_reference(clean: &[u8], out: &mut [u8], at: usize) -> Option<usize> {
     }
 }
 
+/// `text` with its `#line` directives blanked (same length). Spans are byte offsets, so
+/// effectc's parser and naga need no line renumbering, and neither reads the named form
+/// (`#line 2 "file.slang"`, GL_GOOGLE_cpp_style_line_directive) that emulator packs use.
+/// glslang keeps them: its messages follow them back to the user's line.
+pub fn blank_line_directives(text: &str) -> std::borrow::Cow<'_, str> {
+    blank_lines_where(text, |directive| directive.starts_with("line") && directive[4..].starts_with(|c: char| c.is_whitespace()))
+}
+
+/// `text` with each line whose directive (the words after `#`) `blank` picks replaced by
+/// spaces, same length, line ends kept.
+fn blank_lines_where(text: &str, blank: impl Fn(&str) -> bool) -> std::borrow::Cow<'_, str> {
+    let picked =
+        |line: &str| line.trim_start().strip_prefix('#').map(str::trim_start).is_some_and(&blank) && !line.trim_end().ends_with('\\');
+    if !text.split_inclusive('\n').any(picked) {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len());
+    for line in text.split_inclusive('\n') {
+        if picked(line) {
+            for c in line.chars() {
+                match c {
+                    '\n' | '\r' => out.push(c),
+                    _ => out.extend(std::iter::repeat_n(' ', c.len_utf8())),
+                }
+            }
+        } else {
+            out.push_str(line);
+        }
+    }
+    std::borrow::Cow::Owned(out)
+}
+
 /// `text` with the lines of `#pragma`s no compiler acts on blanked (same length, so every
 /// offset holds). GLSL has implementations ignore a pragma they do not recognise; newer
 /// glslang tokenizes one anyway and refuses quoted text such as `#pragma parameter x
@@ -326,31 +358,25 @@ pub fn quiet_pragmas(text: &str) -> std::borrow::Cow<'_, str> {
         "include_alias",
         "invariant",
     ];
-    if !text.contains("pragma") {
-        return std::borrow::Cow::Borrowed(text);
-    }
-    let mut out = String::with_capacity(text.len());
-    for line in text.split_inclusive('\n') {
-        let t = line.trim_start();
-        let word = t.strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("pragma")).map(str::trim_start);
-        match word {
-            Some(rest) if !ACTED_ON.iter().any(|w| rest.starts_with(w)) && !line.trim_end().ends_with('\\') => {
-                for c in line.chars() {
-                    match c {
-                        '\n' | '\r' => out.push(c),
-                        _ => out.extend(std::iter::repeat_n(' ', c.len_utf8())),
-                    }
-                }
-            }
-            _ => out.push_str(line),
-        }
-    }
-    std::borrow::Cow::Owned(out)
+    blank_lines_where(text, |directive| {
+        directive.strip_prefix("pragma").is_some_and(|rest| !ACTED_ON.iter().any(|w| rest.trim_start().starts_with(w)))
+    })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn line_directives_are_blanked_in_place() {
+        let text = "#version 450\n#line 2 \"a.slang\"\nvoid main() {}\n  #  line 7\n#linear\n";
+        let blank = blank_line_directives(text);
+        assert_eq!(blank.len(), text.len());
+        let lines: Vec<&str> = blank.lines().collect();
+        assert_eq!(lines[1].trim(), "");
+        assert_eq!(lines[3].trim(), "");
+        assert_eq!(lines[4], "#linear");
+    }
 
     #[test]
     fn unknown_pragmas_are_blanked_in_place() {

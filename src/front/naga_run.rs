@@ -185,7 +185,8 @@ fn parse_and_validate_inner(
     version: &Version,
 ) -> Result<Validated, Failure> {
     let quiet = crate::front::lexical::quiet_pragmas(&rewritten.text);
-    let text = quiet.as_ref();
+    let quiet = crate::front::lexical::blank_line_directives(&quiet).into_owned();
+    let text: &str = &quiet;
     let map_span = |span: naga::Span| span.to_range().map(|r| rewritten.map.range_to_original(r));
     let parsed = catch_unwind(AssertUnwindSafe(|| {
         let mut frontend = naga::front::glsl::Frontend::default();

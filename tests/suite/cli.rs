@@ -169,33 +169,61 @@ fn shader_objects_of_one_stage_are_linked_by_the_reference_compiler() {
 
 #[test]
 fn legal_glsl_effectc_cannot_read_is_a_note_and_translate_says_why() {
-    // A global initialised from a uniform is legal desktop GLSL (glslang and Mesa accept
-    // it); naga's GLSL front cannot take it: check notes it (exit 0), translate stops with
-    // E0306 naming what naga said. A `#pragma` with quoted text (emulator packs), which
-    // naga's preprocessor used to stop on, is ignored as GLSL says: that stage translates.
+    // `textureGather` (GLSL 4.00) is legal (glslang and Mesa accept it); naga's GLSL front
+    // has no such function: check notes it (exit 0), translate stops with E0306 naming
+    // what naga said. A global initialised from a uniform (run-time initializer, which naga
+    // takes only as a constant) and a `#pragma` with quoted text (emulator packs), which
+    // naga's preprocessor used to stop on, translate.
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("legal-unread");
     std::fs::create_dir_all(&dir).unwrap();
     let vert = dir.join("p.vert");
-    let frag = dir.join("p.frag");
+    let gather = dir.join("p.frag");
+    let init = dir.join("i.frag");
     let pragma = dir.join("q.frag");
-    std::fs::write(&vert, "#version 330\nin vec3 position;\nvoid main() { gl_Position = vec4(position, 1.0); }\n").unwrap();
+    std::fs::write(&vert, "#version 400\nin vec3 position;\nvoid main() { gl_Position = vec4(position, 1.0); }\n").unwrap();
     std::fs::write(
-        &frag,
-        "#version 330\nuniform int frameCount;\nfloat t = float(frameCount) * 0.025;\nout vec4 color;\nvoid main() { color = vec4(t); }\n",
+        &gather,
+        "#version 400\nuniform sampler2D tex;\nout vec4 color;\nvoid main() { color = textureGather(tex, vec2(0.5)); }\n",
+    )
+    .unwrap();
+    std::fs::write(
+        &init,
+        "#version 400\nuniform int frameCount;\nfloat t = float(frameCount) * 0.025;\nout vec4 color;\nvoid main() { color = vec4(t); }\n",
     )
     .unwrap();
     std::fs::write(
         &pragma,
-        "#version 330\n#pragma parameter GAMMA \"Gamma value\" 2.2 1.0 3.0\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n",
+        "#version 400\n#pragma parameter GAMMA \"Gamma value\" 2.2 1.0 3.0\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n",
     )
     .unwrap();
-    let (v, f, q) = (vert.to_str().unwrap(), frag.to_str().unwrap(), pragma.to_str().unwrap());
-    let out = effectc(&["check", v, f]);
+    let v = vert.to_str().unwrap();
+    let out = effectc(&["check", v, gather.to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     assert!(stdout(&out).contains(Code::NagaCannotTake.as_str()), "{}", stdout(&out));
-    let out = effectc(&["translate", "--out", dir.join("out").to_str().unwrap(), v, f]);
+    let out = effectc(&["translate", "--out", dir.join("out").to_str().unwrap(), v, gather.to_str().unwrap()]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains(Code::TargetCannotExpress.as_str()) && stdout(&out).contains("frameCount"), "{}", stdout(&out));
-    let out = effectc(&["translate", "--out", dir.join("out2").to_str().unwrap(), v, q]);
+    assert!(stdout(&out).contains(Code::TargetCannotExpress.as_str()) && stdout(&out).contains("textureGather"), "{}", stdout(&out));
+    for (name, frag) in [("init", &init), ("pragma", &pragma)] {
+        let out = effectc(&["translate", "--out", dir.join(name).to_str().unwrap(), v, frag.to_str().unwrap()]);
+        assert_eq!(code(&out), 0, "{name}: {}", stdout(&out));
+    }
+}
+
+#[test]
+fn push_constants_become_a_uniform_buffer() {
+    // WebGPU has no push constants: the block is translated as a std140 uniform buffer the
+    // reflection names, and the WGSL validates.
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("push-constants");
+    std::fs::create_dir_all(&dir).unwrap();
+    let vert = dir.join("pc.vert");
+    let frag = dir.join("pc.frag");
+    std::fs::write(&vert, "#version 450\nlayout(location = 0) in vec3 position;\nlayout(location = 0) out vec2 uv;\nlayout(push_constant) uniform Push { mat4 mvp; vec4 tint; float scale; } pc;\nvoid main() { uv = position.xy * pc.scale; gl_Position = pc.mvp * vec4(position, 1.0); }\n").unwrap();
+    std::fs::write(&frag, "#version 450\nlayout(location = 0) in vec2 uv;\nlayout(location = 0) out vec4 color;\nlayout(push_constant) uniform Push { mat4 mvp; vec4 tint; float scale; } pc;\nvoid main() { color = pc.tint * vec4(uv, 0.0, 1.0); }\n").unwrap();
+    let out_dir = dir.join("out");
+    let out =
+        effectc(&["translate", "--to", "wgsl,reflect", "--out", out_dir.to_str().unwrap(), vert.to_str().unwrap(), frag.to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let wgsl = std::fs::read_to_string(out_dir.join("pc.wgsl")).unwrap();
+    assert!(wgsl.contains("var<uniform> pc"), "{wgsl}");
+    assert!(effectc::back::verify_wgsl(&wgsl).is_ok(), "{wgsl}");
 }

@@ -109,7 +109,17 @@ fn place(files: &Files, file: FileId, log: &str, code: Code) -> Vec<Diagnostic> 
     let text = files.text(file);
     let table = log::LineTable::new(text);
     let mut out = Vec::new();
+    let mut lines_seen = Vec::new();
     for m in log::parse(log).into_iter().filter(|m| m.error) {
+        // glslang's first error on a line is the cause; the ones after it on that line
+        // follow from it (`vec4(uv, 0.0)`: 'constructor' : not enough data, then 'assign' :
+        // cannot convert the ill-formed value).
+        if let Some((s, l, _)) = m.at {
+            if lines_seen.contains(&(s, l)) {
+                continue;
+            }
+            lines_seen.push((s, l));
+        }
         let mut d = Diagnostic::new(code, m.text.clone());
         d = match m.at.and_then(|(s, l, c)| table.line_range(s, l).map(|r| (r, c))) {
             Some((line, column)) => d.at(file, log::span_on_line(text, line, column, &m.text), "glslang reports this here"),

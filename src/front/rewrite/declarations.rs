@@ -50,8 +50,17 @@ impl Ctx<'_> {
     /// moved to a set of its own.
     fn block_binding(&mut self, first: &crate::front::syntax::Global) {
         let b = first.block.as_ref().expect("block");
-        if first.layout.iter().any(|(k, _)| k == "push_constant") {
-            // Push constants have no binding.
+        if let Some((_, at)) = first.layout_items.iter().find(|(k, _)| k == "push_constant") {
+            // WebGPU has no push constants: the block becomes a uniform buffer (std140, as
+            // naga's uniform rules want) at the plan's binding for it.
+            let binding = self.plan.user_blocks.get(&b.block_name).copied().unwrap_or(0);
+            let std430 = first.layout_items.iter().find(|(k, _)| k == "std430").map(|(_, r)| r.clone());
+            let std140 = first.layout_items.iter().any(|(k, _)| k == "std140");
+            let packing = if std140 || std430.is_some() { "" } else { "std140, " };
+            self.edits.replace(at.clone(), format!("{packing}set = 0, binding = {binding}"));
+            if let Some(r) = std430 {
+                self.edits.replace(r, "std140");
+            }
         } else if first.layout.iter().any(|(k, _)| k == "binding") {
             // The user's own binding numbers live in set 1, clear of ours.
             let set = if first.storage == Storage::Buffer { USER_BUFFER_SET } else { USER_UNIFORM_SET };

@@ -105,7 +105,8 @@ impl Ctx<'_> {
         // After every struct the block needs, before the first function.
         let structs_end =
             self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).map(|d| line_end(&s.text, d.span.end)).max().unwrap_or(0);
-        let at = s.first_function.unwrap_or(s.text.len()).max(structs_end);
+        let first = s.first_function.unwrap_or(s.text.len());
+        let at = self.header_before.map_or(first, |b| b.min(first)).max(structs_end);
         let at = if at >= s.text.len() && !s.text.ends_with('\n') {
             h.insert(0, '\n');
             s.text.len()

@@ -12,13 +12,15 @@
 //! block members, sampler splits, legacy built-ins), `calls` (sampler parameters, legacy and
 //! texture calls), `blocks` (struct and block definitions, layout qualifiers, row-major
 //! matrices), `expressions` (array sizes, scalar swizzles), `header` (what goes before the
-//! first function: the shared block, split textures, built-in replacements).
+//! first function: the shared block, split textures, built-in replacements),
+//! `initializers` (globals initialised from uniforms or inputs, assigned first in `main`).
 
 mod blocks;
 mod calls;
 mod declarations;
 mod expressions;
 mod header;
+mod initializers;
 mod uses;
 mod varyings;
 
@@ -66,6 +68,9 @@ struct Ctx<'a> {
     prologue: String,
     /// Statements run before `main` returns (matrix outputs split into columns).
     epilogue: String,
+    /// The header (shared block, split textures) goes before this offset too: a global
+    /// initialised at run time becomes a function there ([`initializers`]).
+    header_before: Option<usize>,
     limitation: Option<Limitation>,
 }
 
@@ -88,10 +93,12 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
         need_mat2_helper: false,
         prologue: String::new(),
         epilogue: String::new(),
+        header_before: None,
         limitation,
     };
     c.version();
     c.declarations();
+    c.runtime_initializers();
     c.uses();
     c.shadowed_block_members();
     c.functions();

@@ -27,7 +27,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
-    let unextended = version::blank_extensions(original);
+    let unextended = version::blank_extensions(&crate::front::lexical::blank_line_directives(original));
     let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
     if let Some(span) = compiled_include(&resolved) {
         return Err(vec![Diagnostic::new(Code::IncludeUnresolved, format!("cannot read included file `{}`", &original[span.clone()]))

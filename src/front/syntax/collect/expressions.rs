@@ -80,8 +80,34 @@ impl Collector<'_> {
         }
         let span = span_of(id);
         if self.s.text.get(span.clone()) != Some(name.as_str()) {
-            // Expanded from a macro: glsl-lang gives the invocation's span. The name is
-            // written in `#define` bodies; record it there (once), so rewrites edit the body.
+            // Expanded from a macro: glsl-lang gives the invocation's span. A name passed as
+            // the macro's argument is written inside that span (`tex2D(Texture_Color)`):
+            // record it there, so rewrites edit the argument.
+            let invocation = self.s.text.get(span.clone()).unwrap_or("");
+            let object_like = !invocation.is_empty() && invocation.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+            // An object-like macro passed straight to a user function (`#define Source
+            // Texture` … `blur(Source, uv)`): the argument is edited where it is written,
+            // since the body may also be used elsewhere as a plain sampler.
+            let in_args =
+                if user_call_arg && object_like { vec![span.clone()] } else { word_occurrences(&self.s.text, span.clone(), &name) };
+            if !in_args.is_empty() {
+                for at in in_args {
+                    if self.macro_uses.insert((name.clone(), at.start)) {
+                        self.s.uses.push(Use {
+                            name: name.clone(),
+                            target: target.clone(),
+                            span: at,
+                            index: None,
+                            field: None,
+                            user_call_arg,
+                            in_function: in_function.clone(),
+                        });
+                    }
+                }
+                return;
+            }
+            // Else the name is written in `#define` bodies; record it there (once), so
+            // rewrites edit the body.
             for at in macro_body_occurrences(&self.s.text, &name) {
                 if self.macro_uses.insert((name.clone(), at.start)) {
                     self.s.uses.push(Use {
@@ -219,16 +245,17 @@ impl Collector<'_> {
 
 /// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
 fn macro_body_occurrences(text: &str, name: &str) -> Vec<Range<usize>> {
+    crate::front::conditionals::define_lines(text).into_iter().flat_map(|(_, body)| word_occurrences(text, body, name)).collect()
+}
+
+/// Where `name` stands as a whole identifier in `text[within]`.
+fn word_occurrences(text: &str, within: Range<usize>, name: &str) -> Vec<Range<usize>> {
     let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
     let bytes = text.as_bytes();
-    let mut out = Vec::new();
-    for (_, body) in crate::front::conditionals::define_lines(text) {
-        for (i, _) in text[body.clone()].match_indices(name) {
-            let (s, e) = (body.start + i, body.start + i + name.len());
-            if (s == 0 || !is_ident(bytes[s - 1])) && (e >= bytes.len() || !is_ident(bytes[e])) {
-                out.push(s..e);
-            }
-        }
-    }
-    out
+    let Some(region) = text.get(within.clone()) else { return Vec::new() };
+    region
+        .match_indices(name)
+        .map(|(i, _)| within.start + i..within.start + i + name.len())
+        .filter(|r| (r.start == 0 || !is_ident(bytes[r.start - 1])) && (r.end >= bytes.len() || !is_ident(bytes[r.end])))
+        .collect()
 }
