@@ -16,10 +16,17 @@ fn options() -> naga::back::spv::Options<'static> {
     }
 }
 
-/// SPIR-V words of the entry point `entry` of `stage`.
+/// SPIR-V words of the entry point `entry` of `stage`. naga's SPIR-V writer has no
+/// specialization constants: overrides (`layout(constant_id = N) const`) are fixed at their
+/// defaults first (WGSL keeps them as `override`s).
 pub fn write(module: &Module, info: &ModuleInfo, stage: ShaderStage, entry: &str) -> Result<Vec<u32>, String> {
     let pipeline = naga::back::spv::PipelineOptions { shader_stage: stage, entry_point: entry.to_string() };
-    naga::back::spv::write_vec(module, info, &options(), Some(&pipeline)).map_err(|e| format!("naga's SPIR-V writer: {e}"))
+    if module.overrides.is_empty() {
+        return naga::back::spv::write_vec(module, info, &options(), Some(&pipeline)).map_err(|e| format!("naga's SPIR-V writer: {e}"));
+    }
+    let (module, info) = naga::back::pipeline_constants::process_overrides(module, info, Some((stage, entry)), &Default::default())
+        .map_err(|e| format!("specialization constants cannot take their defaults: {e}"))?;
+    naga::back::spv::write_vec(&module, &info, &options(), Some(&pipeline)).map_err(|e| format!("naga's SPIR-V writer: {e}"))
 }
 
 /// Little-endian bytes of SPIR-V words (the `.spv` file).

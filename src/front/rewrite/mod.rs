@@ -13,12 +13,14 @@
 //! texture calls), `blocks` (struct and block definitions, layout qualifiers, row-major
 //! matrices), `expressions` (array sizes, scalar swizzles), `header` (what goes before the
 //! first function: the shared block, split textures, built-in replacements),
-//! `initializers` (globals initialised from uniforms or inputs, assigned first in `main`).
+//! `initializers` (globals initialised from uniforms or inputs, assigned first in `main`),
+//! `file_scope` (a `;` after a function body).
 
 mod blocks;
 mod calls;
 mod declarations;
 mod expressions;
+mod file_scope;
 mod header;
 mod initializers;
 mod uses;
@@ -99,6 +101,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.version();
     c.declarations();
     c.runtime_initializers();
+    c.stray_semicolons();
     c.uses();
     c.shadowed_block_members();
     c.functions();
