@@ -34,6 +34,7 @@ impl Ctx<'_> {
                 pad += 1;
                 *offset = offset.next_multiple_of(size) + size;
             };
+            let macros = defined_macros(&s.text);
             for (i, m) in self.plan.members.iter().enumerate() {
                 let is_struct = self.plan.struct_members.contains_key(&m.block_ty.base);
                 if is_struct {
@@ -45,7 +46,7 @@ impl Ctx<'_> {
                 offset = offset.next_multiple_of(align) + size;
                 // A uniform another stage declares must not shadow this stage's own
                 // variable of that name: keep its bytes, not its name.
-                let shadowed = s.global(&m.name).is_some_and(|g| g.storage != Storage::Uniform) || defines_macro(&s.text, &m.name);
+                let shadowed = s.global(&m.name).is_some_and(|g| g.storage != Storage::Uniform) || macros.contains(m.name.as_str());
                 let name = if shadowed { format!("{OTHER_STAGE_PREFIX}{}", m.name) } else { m.name.clone() };
                 let _ = writeln!(h, "    {} {name}{};", m.block_ty.base, dims_text(&m.block_ty));
                 if is_struct && !m.block_ty.is_array() && i + 1 < self.plan.members.len() {
@@ -117,10 +118,11 @@ impl Ctx<'_> {
     }
 }
 
-/// Whether `text` has a `#define name` (a uniform of another stage by that name would be
-/// macro-expanded in this stage's copy of the shared block).
-fn defines_macro(text: &str, name: &str) -> bool {
-    crate::front::conditionals::define_lines(text).iter().any(|(n, _)| n == name)
+/// The names `text` `#define`s (a uniform of another stage by such a name would be
+/// macro-expanded in this stage's copy of the shared block). Read once per stage: a
+/// 6,000-line stage of macros has thousands of them.
+fn defined_macros(text: &str) -> std::collections::HashSet<String> {
+    crate::front::conditionals::define_lines(text).into_iter().map(|(n, _)| n).collect()
 }
 
 fn line_end(text: &str, at: usize) -> usize {
