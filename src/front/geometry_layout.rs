@@ -145,7 +145,7 @@ pub fn geometry_layout(s: &StageSyntax) -> Result<GeometryLayout, LayoutProblem>
                     None => continue,
                 },
                 (Some(Storage::Out), "max_vertices", Some(n)) => {
-                    set(&mut max_vertices, positive(*n, "max_vertices", &problem)?, &span, "max_vertices")?
+                    set(&mut max_vertices, non_negative(*n, "max_vertices", &problem)?, &span, "max_vertices")?
                 }
                 (Some(Storage::Out), other, None) => match OutputPrimitive::from_name(other) {
                     Some(p) => set(&mut output, p, &span, "output primitive")?,
@@ -184,6 +184,11 @@ fn set<T: PartialEq + Copy>(slot: &mut Option<(T, Range<usize>)>, value: T, span
             Ok(())
         }
     }
+}
+
+/// `max_vertices`, which may be 0 (a stage that emits nothing; glslang and GL accept it).
+fn non_negative(n: i64, name: &str, problem: &dyn Fn(String) -> LayoutProblem) -> Result<u32, LayoutProblem> {
+    u32::try_from(n).ok().ok_or_else(|| problem(format!("`{name} = {n}` must not be negative")))
 }
 
 /// A layout count that must be at least 1.
@@ -242,7 +247,14 @@ mod tests {
             layout(&format!("#version 440\nlayout(triangles) in;\nlayout(points, max_vertices = int(4.0)) out;\n{BODY}")).unwrap_err();
         assert!(expr.unreadable && expr.message.contains("cannot evaluate"), "{expr:?}");
         assert!(!no_max.unreadable && !twice.unreadable, "missing and conflicting items are link errors");
-        let zero = layout(&format!("#version 330\nlayout(triangles) in;\nlayout(points, max_vertices = 0) out;\n{BODY}")).unwrap_err();
-        assert!(zero.message.contains("at least 1"), "{zero:?}");
+        // `max_vertices = 0` is legal (a stage that emits nothing); a negative count is not,
+        // and neither is zero invocations.
+        let zero = layout(&format!("#version 330\nlayout(triangles) in;\nlayout(points, max_vertices = 0) out;\n{BODY}")).unwrap();
+        assert_eq!(zero.max_vertices, 0);
+        let negative = layout(&format!("#version 330\nlayout(triangles) in;\nlayout(points, max_vertices = -1) out;\n{BODY}")).unwrap_err();
+        assert!(negative.message.contains("must not be negative"), "{negative:?}");
+        let none = layout(&format!("#version 400\nlayout(triangles, invocations = 0) in;\nlayout(points, max_vertices = 1) out;\n{BODY}"))
+            .unwrap_err();
+        assert!(none.message.contains("at least 1"), "{none:?}");
     }
 }

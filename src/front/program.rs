@@ -397,6 +397,9 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
     let (vs, gs) = (rewritten(StageKind::Vertex)?, rewritten(StageKind::Geometry)?);
     let g = program.stage(StageKind::Geometry).expect("checked above");
     let layout = geometry_layout::geometry_layout(&g.syntax).map_err(|p| p.message)?;
+    if layout.max_vertices == 0 {
+        return Err("`max_vertices = 0`: the stage emits no vertex, so there is nothing to draw".into());
+    }
     // Debugging aid: with `EFFECTC_DUMP_REWRITE=DIR`, each fold is written next to the
     // stages' rewritten texts (before naga sees it).
     let dump = std::env::var_os("EFFECTC_DUMP_REWRITE");

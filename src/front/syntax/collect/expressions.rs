@@ -90,35 +90,13 @@ impl Collector<'_> {
             // since the body may also be used elsewhere as a plain sampler.
             let in_args =
                 if user_call_arg && object_like { vec![span.clone()] } else { word_occurrences(&self.s.text, span.clone(), &name) };
-            if !in_args.is_empty() {
-                for at in in_args {
-                    if self.macro_uses.insert((name.clone(), at.start)) {
-                        self.s.uses.push(Use {
-                            name: name.clone(),
-                            target: target.clone(),
-                            span: at,
-                            index: None,
-                            field: None,
-                            user_call_arg,
-                            in_function: in_function.clone(),
-                        });
-                    }
-                }
-                return;
-            }
             // Else the name is written in `#define` bodies; record it there (once), so
             // rewrites edit the body.
-            for at in macro_body_occurrences(&self.s.text, &name) {
+            let written = if in_args.is_empty() { macro_body_occurrences(&self.s.text, &name) } else { in_args };
+            for at in written {
                 if self.macro_uses.insert((name.clone(), at.start)) {
-                    self.s.uses.push(Use {
-                        name: name.clone(),
-                        target: target.clone(),
-                        span: at,
-                        index: None,
-                        field: None,
-                        user_call_arg,
-                        in_function: in_function.clone(),
-                    });
+                    let (name, target, in_function) = (name.clone(), target.clone(), in_function.clone());
+                    self.s.uses.push(Use { name, target, span: at, index: None, field: None, user_call_arg, in_function });
                 }
             }
             return;
