@@ -228,6 +228,12 @@ impl Files {
     }
     /// 1-based line and column (in characters) of a byte offset. A `\r\n` line end counts
     /// as one line break; offsets past the end clamp to the end.
+    /// The file and line of a diagnostic's primary span (None without one).
+    pub fn primary_line(&self, d: &Diagnostic) -> Option<(FileId, usize)> {
+        let file = d.file?;
+        Some((file, self.line_col(file, d.span.as_ref()?.start).0))
+    }
+
     pub fn line_col(&self, id: FileId, offset: usize) -> (usize, usize) {
         let text = &self.files[id.0].text;
         let mut offset = offset.min(text.len());

@@ -295,9 +295,9 @@ fn label_link_error(program: &CompiledProgram, mut d: Diagnostic) -> Diagnostic 
 /// (a geometry input that is no array: effectc's E0212 says it with the declaration
 /// labelled).
 fn drop_reference_repeats(files: &Files, diags: &mut Vec<Diagnostic>) {
-    let line_of = |d: &Diagnostic| Some((d.file?, files.line_col(d.file?, d.span.as_ref()?.start).0));
-    let own: Vec<_> = diags.iter().filter(|d| d.is_error() && d.code != Code::ReferenceRejects).filter_map(line_of).collect();
-    diags.retain(|d| d.code != Code::ReferenceRejects || line_of(d).is_none_or(|l| !own.contains(&l)));
+    let own: Vec<_> =
+        diags.iter().filter(|d| d.is_error() && d.code != Code::ReferenceRejects).filter_map(|d| files.primary_line(d)).collect();
+    diags.retain(|d| d.code != Code::ReferenceRejects || files.primary_line(d).is_none_or(|l| !own.contains(&l)));
 }
 
 /// Drops repeated diagnostics (two passes sharing a stage file report its findings once).

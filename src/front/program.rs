@@ -91,7 +91,7 @@ pub fn compile(
     // glslang decides what is legal; effectc's own findings in a stage it accepts are
     // effectc's limits, not the user's errors ([`accept_what_glslang_accepts`]).
     let judgement = reference::judge(files, &ordered, options.env);
-    if let Some(kind) = repeated_stage(&ordered) {
+    if let Some(kind) = reference::repeated_stage(&ordered) {
         diags.extend(units_judged_by_glslang(files, &ordered, kind, judgement));
         return None;
     }
@@ -101,33 +101,23 @@ pub fn compile(
         diags.extend(own);
         return program;
     };
-    let unreadable = program.is_none() && !own.iter().any(Diagnostic::is_error);
-    diags.extend(accept_what_glslang_accepts(files, &judgement, own));
-    if program.is_none() && !unreadable && !diags.iter().any(Diagnostic::is_error) {
+    let (merged, naga_refused) = accept_what_glslang_accepts(files, &judgement, own);
+    diags.extend(merged);
+    if program.is_none() && !diags.iter().any(Diagnostic::is_error) {
         // effectc's own analysis could not read a stage glslang accepts (now a note): the
         // program is glslang's to link.
         diags.extend(judgement.link_errors.iter().cloned());
     }
     program.map(|mut p| {
         for stage in &mut p.stages {
-            let accepted = judgement.stage(stage.syntax.file).is_some_and(|v| v.accepted);
-            if accepted && stage.naga.is_none() && stage.limitation.is_none() && stage.syntax.stage.naga().is_some() {
+            if stage.naga.is_none() && stage.limitation.is_none() && stage.syntax.stage.naga().is_some() {
                 // naga refused a stage glslang accepts: translate names what naga said.
-                let note = diags.iter().find(|d| d.code == Code::NagaCannotTake && d.file == Some(stage.syntax.file));
-                if let Some(n) = note {
-                    let said = n.message.trim_start_matches("naga cannot take this stage: ");
-                    stage.limitation = Some(Limitation { construct: format!("a construct naga rejects ({said})"), span: n.span.clone() });
-                }
+                stage.limitation = naga_refused.iter().find(|(f, _)| *f == stage.syntax.file).map(|(_, l)| l.clone());
             }
         }
         p.reference = Some(judgement);
         p
     })
-}
-
-/// A stage made of several files (shader objects linked into one stage).
-fn repeated_stage(ordered: &[(FileId, StageKind)]) -> Option<StageKind> {
-    ordered.windows(2).find(|w| w[0].1 == w[1].1).map(|w| w[0].1)
 }
 
 /// A program with a stage made of several shader objects: glslang compiles each and links
@@ -178,14 +168,27 @@ fn units_judged_by_glslang(
 /// naga reports the same problem (effectc's message, with its labels, is shown there); an
 /// error of effectc's parser or naga on a line glslang does not name is its own limit and
 /// is dropped. effectc's own rules (`--strict`, a missing `main`) stay errors either way.
-fn accept_what_glslang_accepts(files: &Files, judgement: &reference::Judgement, own: Vec<Diagnostic>) -> Vec<Diagnostic> {
-    let line_of = |d: &Diagnostic| Some((d.file?, files.line_col(d.file?, d.span.as_ref()?.start).0));
+/// Also returns, per stage file, what naga refused in a stage glslang accepts (translate
+/// names it).
+fn accept_what_glslang_accepts(
+    files: &Files,
+    judgement: &reference::Judgement,
+    own: Vec<Diagnostic>,
+) -> (Vec<Diagnostic>, Vec<(FileId, Limitation)>) {
+    let line_of = |d: &Diagnostic| files.primary_line(d);
     let mut out = Vec::new();
+    let mut naga_refused = Vec::new();
     let mut shown_lines = Vec::new();
     for d in own {
         let verdict = d.file.and_then(|f| judgement.stage(f));
         match verdict {
-            Some(v) if v.accepted && d.is_error() && limit_of_effectc(d.code) => out.push(as_limitation(d)),
+            Some(v) if v.accepted && d.is_error() && limit_of_effectc(d.code) => {
+                if let (Some(file), true) = (d.file, is_naga_limit(d.code)) {
+                    let construct = format!("a construct naga rejects ({})", d.message);
+                    naga_refused.push((file, Limitation { construct, span: d.span.clone() }));
+                }
+                out.push(as_limitation(d));
+            }
             Some(v) if !v.accepted && d.is_error() && limit_of_effectc(d.code) => {
                 let line = line_of(&d);
                 // Both refuse the `#version` line: effectc's message says which version.
@@ -205,7 +208,7 @@ fn accept_what_glslang_accepts(files: &Files, judgement: &reference::Judgement, 
         };
         out.extend(v.errors.iter().filter(placed).cloned());
     }
-    out
+    (out, naga_refused)
 }
 
 /// Errors that come from what effectc's parser or naga can read, not from a GLSL rule
@@ -223,13 +226,20 @@ fn limit_of_effectc(code: Code) -> bool {
     )
 }
 
+/// Errors where naga, not effectc's parser, could not take the stage.
+fn is_naga_limit(code: Code) -> bool {
+    matches!(
+        code,
+        Code::NagaParse | Code::NagaValidation | Code::NagaCrashed | Code::NonConstantSamplerIndex | Code::NonConstantFragDataIndex
+    )
+}
+
 /// An error of effectc's parser or naga in a stage glslang accepts, as the note it is.
 fn as_limitation(d: Diagnostic) -> Diagnostic {
-    let (code, what) = match d.code {
-        Code::NagaParse | Code::NagaValidation | Code::NagaCrashed | Code::NonConstantSamplerIndex | Code::NonConstantFragDataIndex => {
-            (Code::NagaCannotTake, "naga cannot take this stage")
-        }
-        _ => (Code::ReferenceOnly, "effectc's own analysis cannot read this stage"),
+    let (code, what) = if is_naga_limit(d.code) {
+        (Code::NagaCannotTake, "naga cannot take this stage")
+    } else {
+        (Code::ReferenceOnly, "effectc's own analysis cannot read this stage")
     };
     let mut n = Diagnostic::new(code, format!("{what}: {}", d.message));
     n.file = d.file;

@@ -23,7 +23,6 @@ pub use compiler::Dialect;
 #[derive(Debug, Clone)]
 pub struct StageVerdict {
     pub file: FileId,
-    pub kind: StageKind,
     pub accepted: bool,
     /// glslang's errors, placed in the user's files.
     pub errors: Vec<Diagnostic>,
@@ -32,7 +31,6 @@ pub struct StageVerdict {
 /// glslang's verdict on a program.
 #[derive(Debug, Clone)]
 pub struct Judgement {
-    pub dialect: Dialect,
     pub stages: Vec<StageVerdict>,
     /// glslang's link errors (empty when every stage compiled and the program links, or
     /// when a stage did not compile and so nothing was linked).
@@ -44,10 +42,12 @@ impl Judgement {
     pub fn stage(&self, file: FileId) -> Option<&StageVerdict> {
         self.stages.iter().find(|s| s.file == file)
     }
-    /// glslang compiles every stage and links the program.
-    pub fn legal(&self) -> bool {
-        self.stages.iter().all(|s| s.accepted) && self.link_errors.is_empty()
-    }
+}
+
+/// The stage made of several files in `stages` (sorted by stage): shader objects GL links
+/// into one stage.
+pub fn repeated_stage(stages: &[(FileId, StageKind)]) -> Option<StageKind> {
+    stages.windows(2).find(|w| w[0].1 == w[1].1).map(|w| w[0].1)
 }
 
 /// The dialect glslang compiles a program in: Vulkan GLSL when asked, or (`auto`) when the
@@ -83,8 +83,8 @@ pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> O
                 shader.verdict.log
             );
         }
-        let errors = if shader.verdict.ok { Vec::new() } else { place(files, file, &shader.verdict.log, Code::ReferenceRejects) };
-        verdicts.push(StageVerdict { file, kind, accepted: shader.verdict.ok, errors });
+        let errors = if shader.verdict.ok { Vec::new() } else { place(files, file, &shader.verdict.log) };
+        verdicts.push(StageVerdict { file, accepted: shader.verdict.ok, errors });
         compiled.push(shader);
     }
     let mut link_errors = Vec::new();
@@ -92,20 +92,20 @@ pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> O
     // `-V` per file: an entry point, one stage's rules) and interfaces meet by location,
     // which effectc's link rules check; glslang's program link (GL's rules for same-named
     // blocks across stages) joins the stages only in GL, or the shader objects of one stage.
-    let repeated = stages.windows(2).any(|w| w[0].1 == w[1].1);
     let groups: Vec<&[compiler::CompiledShader]> =
-        if dialect == Dialect::OpenGl || repeated { vec![&compiled[..]] } else { compiled.chunks(1).collect() };
+        if dialect == Dialect::OpenGl || repeated_stage(stages).is_some() { vec![&compiled[..]] } else { compiled.chunks(1).collect() };
     for group in groups {
         if let Some(verdict) = compiler::link(group, dialect).filter(|v| !v.ok) {
             link_errors.extend(link_diagnostics(stages, &verdict.log));
         }
     }
-    Some(Judgement { dialect, stages: verdicts, link_errors })
+    Some(Judgement { stages: verdicts, link_errors })
 }
 
-/// glslang's errors in `log` as diagnostics with `code` in `file` (an expanded stage's
-/// spans are shown in the included file they come from).
-fn place(files: &Files, file: FileId, log: &str, code: Code) -> Vec<Diagnostic> {
+/// glslang's errors in `log` as E0105 diagnostics in `file` (an expanded stage's spans are
+/// shown in the included file they come from).
+fn place(files: &Files, file: FileId, log: &str) -> Vec<Diagnostic> {
+    let code = Code::ReferenceRejects;
     let text = files.text(file);
     let table = log::LineTable::new(text);
     let mut out = Vec::new();
