@@ -28,6 +28,8 @@
 //!   them), the report on stderr, misuse refused, a closed pipe.
 //! - [`stress`]: `effectc stress` finds seed hazards at the ends of ranges; shipped effects
 //!   are clean.
+//! - [`through_spirv`]: legal programs naga's GLSL front refuses go through glslang's SPIR-V;
+//!   their hazards still point at GLSL lines; reports snapshotted under `snapshots/through_spirv/`.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
 //! - [`watch`]: `--watch` reports again after a change; `render` renders only what changed.
@@ -66,6 +68,8 @@ mod settings;
 mod stream;
 #[path = "suite/stress.rs"]
 mod stress;
+#[path = "suite/through_spirv.rs"]
+mod through_spirv;
 #[path = "suite/translate.rs"]
 mod translate;
 #[path = "suite/watch.rs"]

@@ -163,6 +163,11 @@ pub fn translate(
             None => !l.name.starts_with("effectc_"),
         });
     }
+    if program.stages.iter().any(|s| s.through_spirv) {
+        // naga's SPIR-V front declares every built-in glslang's SPIR-V lists
+        // (`gl_VertexIndex` for a GL stage's `gl_VertexID`), written by the user or not.
+        left_out.retain(|l| !l.name.starts_with("gl_"));
+    }
     fixes::read_only_unwritten_storage(&mut module);
     let info = crate::front::naga_run::validator()
         .validate(&module)

@@ -14,7 +14,8 @@
 //! - [`reference`]: glslang, the Khronos reference compiler, in process: what is legal,
 //!   with its errors at the user's lines.
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
-//!   errors with [`builtins`]; [`program`]: all of it per program.
+//!   errors with [`builtins`]; [`through_spirv`]: glslang → SPIR-V → naga, where naga's GLSL
+//!   front cannot take a stage glslang accepts; [`program`]: all of it per program.
 
 pub mod builtins;
 pub mod conditionals;
@@ -30,4 +31,5 @@ pub mod program;
 pub mod reference;
 pub mod rewrite;
 pub mod syntax;
+pub mod through_spirv;
 pub mod version;

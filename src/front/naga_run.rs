@@ -79,7 +79,7 @@ pub fn gl_capabilities() -> Capabilities {
 }
 
 /// The capabilities of [`gl_capabilities`] beyond WebGPU's defaults that `module` needs.
-fn needed_capabilities(module: &naga::Module) -> Vec<String> {
+pub fn needed_capabilities(module: &naga::Module) -> Vec<String> {
     let valid = |caps: Capabilities| {
         catch_unwind(AssertUnwindSafe(|| naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps).validate(module).is_ok()))
             .unwrap_or(false)

@@ -17,6 +17,7 @@ use crate::front::plan::{self, Plan};
 use crate::front::reference;
 use crate::front::rewrite::{self, Rewritten};
 use crate::front::syntax::{self, StageSyntax};
+use crate::front::through_spirv;
 use crate::stage::StageKind;
 
 /// Options for the front.
@@ -36,6 +37,9 @@ pub struct CompiledStage {
     pub naga: Option<Validated>,
     /// A legal construct naga cannot take (the stage is checked for syntax and interface only).
     pub limitation: Option<Limitation>,
+    /// `naga` was read from glslang's SPIR-V ([`through_spirv`]), not from the 4.50 rewrite;
+    /// `rewritten` is then the stage's own text, which the module's spans index.
+    pub through_spirv: bool,
 }
 
 /// The front's result for a program: per-stage results, the shared plan, and diagnostics.
@@ -108,6 +112,7 @@ pub fn compile(
         // program is glslang's to link.
         diags.extend(judgement.link_errors.iter().cloned());
     }
+    let dialect = reference::dialect(files, &ordered, options.env);
     program.map(|mut p| {
         for stage in &mut p.stages {
             if stage.naga.is_none() && stage.limitation.is_none() && stage.syntax.stage.naga().is_some() {
@@ -116,8 +121,48 @@ pub fn compile(
             }
         }
         p.reference = Some(judgement);
+        through_spirv_where_naga_refuses(files, &ordered, dialect, &mut p, diags);
         p
     })
+}
+
+/// A legal program (glslang accepts and links it) with a stage naga's GLSL front cannot
+/// take goes through SPIR-V instead ([`through_spirv`]), every stage of it, so the stages
+/// share one binding and location plan. When that works, naga's refusals are no longer
+/// limits of the program and their notes go; otherwise the program stays as it was.
+fn through_spirv_where_naga_refuses(
+    files: &Files,
+    ordered: &[(FileId, StageKind)],
+    dialect: reference::Dialect,
+    program: &mut CompiledProgram,
+    diags: &mut Vec<Diagnostic>,
+) {
+    let legal = program.reference.as_ref().is_some_and(|j| j.stages.iter().all(|v| v.accepted) && j.link_errors.is_empty());
+    let refused = program.stages.iter().any(|s| s.limitation.is_some());
+    let naga_stages = program.stages.iter().all(|s| s.syntax.stage.naga().is_some());
+    if !legal || !refused || !naga_stages || diags.iter().any(Diagnostic::is_error) {
+        return;
+    }
+    let stages = match through_spirv::compile(files, ordered, dialect, &program.plan) {
+        Ok(stages) => stages,
+        Err(why) => {
+            if std::env::var_os("EFFECTC_DUMP_REFERENCE").is_some() {
+                // Debugging aid: why the route through SPIR-V did not take the program.
+                eprintln!("[through SPIR-V] {why}");
+            }
+            return;
+        }
+    };
+    for (stage, spirv) in program.stages.iter_mut().zip(stages) {
+        debug_assert_eq!(stage.syntax.stage, spirv.kind);
+        let len = spirv.text.len();
+        stage.rewritten = Some(Rewritten { text: spirv.text, map: OffsetMap::identity(len), limitation: None });
+        stage.naga = Some(spirv.validated);
+        stage.limitation = None;
+        stage.through_spirv = true;
+    }
+    let files_of: Vec<FileId> = ordered.iter().map(|(f, _)| *f).collect();
+    diags.retain(|d| !(d.code == Code::NagaCannotTake && d.file.is_some_and(|f| files_of.contains(&f))));
 }
 
 /// A program with a stage made of several shader objects: glslang compiles each and links
@@ -304,7 +349,7 @@ fn compile_own(
                 dump_rewrite(files, &s, &rewritten);
                 rewritten
             });
-            compiled.push(CompiledStage { syntax: s, rewritten, naga: None, limitation: None });
+            compiled.push(CompiledStage { syntax: s, rewritten, naga: None, limitation: None, through_spirv: false });
             continue;
         };
         let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
@@ -358,7 +403,7 @@ fn compile_own(
                 }
             },
         };
-        compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation });
+        compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation, through_spirv: false });
     }
     Some(CompiledProgram { stages: compiled, plan, folded: None, reference: None })
 }

@@ -169,18 +169,25 @@ fn shader_objects_of_one_stage_are_linked_by_the_reference_compiler() {
 
 #[test]
 fn legal_glsl_effectc_cannot_read_is_a_note_and_translate_says_why() {
-    // `textureGather` (GLSL 4.00) is legal (glslang and Mesa accept it); naga's GLSL front
-    // has no such function: check notes it (exit 0), translate stops with E0306 naming
-    // what naga said. A global initialised from a uniform (run-time initializer, which naga
+    // `textureQueryLod` (GLSL 4.00) is legal (glslang and Mesa accept it); naga's GLSL front
+    // has no such function and its SPIR-V front no `OpImageQueryLod`: check notes it (exit
+    // 0), translate stops with E0306 naming what naga said. `textureGather`, which naga's
+    // GLSL front lacks too, translates through SPIR-V. A global initialised from a uniform (run-time initializer, which naga
     // takes only as a constant) and a `#pragma` with quoted text (emulator packs), which
     // naga's preprocessor used to stop on, translate.
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("legal-unread");
     std::fs::create_dir_all(&dir).unwrap();
     let vert = dir.join("p.vert");
-    let gather = dir.join("p.frag");
+    let lod = dir.join("p.frag");
+    let gather = dir.join("g.frag");
     let init = dir.join("i.frag");
     let pragma = dir.join("q.frag");
     std::fs::write(&vert, "#version 400\nin vec3 position;\nvoid main() { gl_Position = vec4(position, 1.0); }\n").unwrap();
+    std::fs::write(
+        &lod,
+        "#version 400\nuniform sampler2D tex;\nout vec4 color;\nvoid main() { color = vec4(textureQueryLod(tex, vec2(0.5)), 0.0, 1.0); }\n",
+    )
+    .unwrap();
     std::fs::write(
         &gather,
         "#version 400\nuniform sampler2D tex;\nout vec4 color;\nvoid main() { color = textureGather(tex, vec2(0.5)); }\n",
@@ -197,13 +204,15 @@ fn legal_glsl_effectc_cannot_read_is_a_note_and_translate_says_why() {
     )
     .unwrap();
     let v = vert.to_str().unwrap();
-    let out = effectc(&["check", v, gather.to_str().unwrap()]);
+    let out = effectc(&["check", v, lod.to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     assert!(stdout(&out).contains(Code::NagaCannotTake.as_str()), "{}", stdout(&out));
-    let out = effectc(&["translate", "--out", dir.join("out").to_str().unwrap(), v, gather.to_str().unwrap()]);
+    let out = effectc(&["translate", "--out", dir.join("out").to_str().unwrap(), v, lod.to_str().unwrap()]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains(Code::TargetCannotExpress.as_str()) && stdout(&out).contains("textureGather"), "{}", stdout(&out));
-    for (name, frag) in [("init", &init), ("pragma", &pragma)] {
+    assert!(stdout(&out).contains(Code::TargetCannotExpress.as_str()) && stdout(&out).contains("textureQueryLod"), "{}", stdout(&out));
+    let out = effectc(&["check", v, gather.to_str().unwrap()]);
+    assert!(code(&out) == 0 && !stdout(&out).contains(Code::NagaCannotTake.as_str()), "{}", stdout(&out));
+    for (name, frag) in [("gather", &gather), ("init", &init), ("pragma", &pragma)] {
         let out = effectc(&["translate", "--out", dir.join(name).to_str().unwrap(), v, frag.to_str().unwrap()]);
         assert_eq!(code(&out), 0, "{name}: {}", stdout(&out));
     }

@@ -99,3 +99,26 @@ pub fn scratch(group: &str, name: &str) -> PathBuf {
 pub fn in_ci() -> bool {
     std::env::var_os("CI").is_some()
 }
+
+/// `glslangValidator` links the program (OpenGL semantics, else Vulkan's); None when the
+/// tool is missing outside CI.
+pub fn glslang_links(dir: &Path) -> Option<bool> {
+    let files: Vec<std::path::PathBuf> = stage_files(dir).iter().map(|f| std::fs::canonicalize(f).unwrap()).collect();
+    let scratch = scratch("rewrite-glslang", &name_of(dir));
+    let run = |vulkan: bool| {
+        let mut c = Command::new("glslangValidator");
+        c.current_dir(&scratch);
+        if vulkan {
+            c.arg("-V");
+        }
+        c.arg("-l").args(&files).output()
+    };
+    match run(false) {
+        Err(_) => {
+            assert!(!in_ci(), "glslangValidator is missing (Debian package glslang-tools; ./setup.sh installs it)");
+            None
+        }
+        Ok(o) if o.status.success() => Some(true),
+        Ok(_) => Some(run(true).is_ok_and(|o| o.status.success())),
+    }
+}

@@ -7,35 +7,11 @@
 //! translate, lives in `tests/rewrite_known_failures/`, each with a `why` file. That list
 //! is kept true: an entry that starts passing fails the test (move it to `tests/rewrite/`).
 
-use std::path::Path;
 use std::process::Command;
 
 use effectc::diag;
 
 use crate::common;
-
-/// `glslangValidator` links the program (OpenGL semantics, else Vulkan's); None when the
-/// tool is missing outside CI.
-fn glslang_links(dir: &Path) -> Option<bool> {
-    let files: Vec<std::path::PathBuf> = common::stage_files(dir).iter().map(|f| std::fs::canonicalize(f).unwrap()).collect();
-    let scratch = common::scratch("rewrite-glslang", &common::name_of(dir));
-    let run = |vulkan: bool| {
-        let mut c = Command::new("glslangValidator");
-        c.current_dir(&scratch);
-        if vulkan {
-            c.arg("-V");
-        }
-        c.arg("-l").args(&files).output()
-    };
-    match run(false) {
-        Err(_) => {
-            assert!(!common::in_ci(), "glslangValidator is missing (Debian package glslang-tools; ./setup.sh installs it)");
-            None
-        }
-        Ok(o) if o.status.success() => Some(true),
-        Ok(_) => Some(run(true).is_ok_and(|o| o.status.success())),
-    }
-}
 
 #[test]
 fn rewrite_corpus() {
@@ -48,7 +24,7 @@ fn rewrite_corpus() {
     for dir in &dirs {
         let name = common::name_of(dir);
         common::assert_crlf_kept(dir);
-        match glslang_links(dir) {
+        match common::glslang_links(dir) {
             Some(true) => {}
             Some(false) => problems.push(format!("{name}: glslangValidator does not link it, so it is no legal fixture")),
             None => eprintln!("glslangValidator not found: {name} not proven legal"),
@@ -77,7 +53,7 @@ fn rewrite_corpus() {
 #[test]
 fn rewrite_known_failures_still_fail() {
     let mut now_passing = Vec::new();
-    for dir in common::fixtures("tests/rewrite_known_failures", 8) {
+    for dir in common::fixtures("tests/rewrite_known_failures", 7) {
         let name = common::name_of(&dir);
         let why = std::fs::read_to_string(dir.join("why")).unwrap_or_default();
         assert!(!why.trim().is_empty(), "{name}: no `why` file");
@@ -118,7 +94,7 @@ fn rewrite_known_failures_still_fail() {
 fn geometry_programs_rewrite_to_legal_450_stages() {
     for dir in common::fixtures("tests/geometry", 12) {
         let name = common::name_of(&dir);
-        assert_ne!(glslang_links(&dir), Some(false), "{name}: glslangValidator does not link it, so it is no legal fixture");
+        assert_ne!(common::glslang_links(&dir), Some(false), "{name}: glslangValidator does not link it, so it is no legal fixture");
         let (outcome, checked) = common::check(&dir);
         assert!(!diag::has_errors(&outcome.diagnostics), "{name}:\n{}", common::render(&outcome));
         let program = &checked[0].units.first().expect("a checked program").program;

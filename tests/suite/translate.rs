@@ -1,4 +1,5 @@
-//! Translation: every effect under `effects/` and every program under `tests/rewrite/`
+//! Translation: every effect under `effects/` and every program under `tests/rewrite/` and
+//! `tests/through_spirv/`
 //! translates to every target. The WGSL re-validates (inside effectc), every SPIR-V stage
 //! passes `spirv-val`, and a wgpu render pipeline builds from the WGSL on the machine's
 //! adapter (lavapipe in CI). The pruned IR, the WGSL and the SPIR-V disassembly are
@@ -21,6 +22,7 @@ use crate::common::in_ci;
 fn programs() -> Vec<PathBuf> {
     let mut dirs = common::fixtures("effects", 21);
     dirs.extend(common::fixtures("tests/rewrite", 42));
+    dirs.extend(common::fixtures("tests/through_spirv", 3));
     dirs
 }
 

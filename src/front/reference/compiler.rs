@@ -98,6 +98,22 @@ impl Drop for CompiledShader {
 
 /// Compiles one stage's text (includes already inlined) as `dialect`.
 pub fn compile(text: &str, kind: StageKind, dialect: Dialect) -> Option<CompiledShader> {
+    create(text, kind, dialect, None)
+}
+
+/// How stages are compiled for SPIR-V ([`spirv`]).
+#[derive(Debug, Clone, Copy)]
+pub struct SpirvSetup<'a> {
+    /// Name, descriptor set and binding of the block GL's loose uniforms are gathered into
+    /// (glslang's relaxed Vulkan rules).
+    pub uniform_block: &'a str,
+    pub set: u32,
+    pub binding: u32,
+}
+
+/// glslang's parse of one stage; for SPIR-V (`spirv`), with line information kept and, for
+/// OpenGL GLSL, Vulkan's rules relaxed as `glslangValidator -V -R --amb --aml` does.
+fn create(text: &str, kind: StageKind, dialect: Dialect, spirv: Option<&SpirvSetup>) -> Option<CompiledShader> {
     if !initialized() {
         return None;
     }
@@ -105,14 +121,18 @@ pub fn compile(text: &str, kind: StageKind, dialect: Dialect) -> Option<Compiled
     let resource: *const sys::glslang_resource_t =
         // SAFETY: `ResourceLimits` is `repr(transparent)` over `glslang_resource_t`.
         (&glslang::limits::DEFAULT_LIMITS as *const glslang::limits::ResourceLimits).cast();
-    let (client, client_version, target, default_version) = match dialect {
-        Dialect::OpenGl => {
+    let vulkan = (sys::glslang_client_t::Vulkan, sys::glslang_target_client_version_t::Vulkan1_0, sys::glslang_target_language_t::SPIRV);
+    let (client, client_version, target, default_version) = match (dialect, spirv) {
+        (Dialect::OpenGl, None) => {
             (sys::glslang_client_t::None, sys::glslang_target_client_version_t::OpenGL450, sys::glslang_target_language_t::None, 110)
         }
-        Dialect::Vulkan => {
-            (sys::glslang_client_t::Vulkan, sys::glslang_target_client_version_t::Vulkan1_0, sys::glslang_target_language_t::SPIRV, 100)
-        }
+        (Dialect::OpenGl, Some(_)) => (vulkan.0, vulkan.1, vulkan.2, 110),
+        (Dialect::Vulkan, _) => (vulkan.0, vulkan.1, vulkan.2, 100),
     };
+    let mut messages = messages(if spirv.is_some() { Dialect::Vulkan } else { dialect });
+    if spirv.is_some() {
+        messages |= sys::glslang_messages_t::DEBUG_INFO;
+    }
     let input = Box::new(sys::glslang_input_t {
         language: sys::glslang_source_t::GLSL,
         stage: stage_of(kind),
@@ -125,13 +145,26 @@ pub fn compile(text: &str, kind: StageKind, dialect: Dialect) -> Option<Compiled
         default_profile: sys::glslang_profile_t::None,
         force_default_version_and_profile: 0,
         forward_compatible: 0,
-        messages: messages(dialect),
+        messages,
         resource,
         callbacks: sys::glsl_include_callbacks_t { include_system: None, include_local: None, free_include_result: None },
         callbacks_ctx: ptr::null_mut(),
     });
     // SAFETY: `input` and `code` live as long as the shader (both move into it below).
     let handle = NonNull::new(unsafe { sys::glslang_shader_create(&*input) })?;
+    if let Some(setup) = spirv {
+        let mut options = sys::glslang_shader_options_t::AUTO_MAP_BINDINGS | sys::glslang_shader_options_t::AUTO_MAP_LOCATIONS;
+        if dialect == Dialect::OpenGl {
+            options |= sys::glslang_shader_options_t::VULKAN_RULES_RELAXED;
+        }
+        let name = c_text(setup.uniform_block);
+        // SAFETY: a live shader; glslang copies the block name.
+        unsafe {
+            sys::glslang_shader_set_options(handle.as_ptr(), options.0);
+            sys::glslang_shader_set_default_uniform_block_name(handle.as_ptr(), name.as_ptr());
+            sys::glslang_shader_set_default_uniform_block_set_and_binding(handle.as_ptr(), setup.set, setup.binding);
+        }
+    }
     // SAFETY: a live shader and its own input.
     let ok = unsafe {
         sys::glslang_shader_preprocess(handle.as_ptr(), &*input) != 0 && sys::glslang_shader_parse(handle.as_ptr(), &*input) != 0
@@ -139,6 +172,73 @@ pub fn compile(text: &str, kind: StageKind, dialect: Dialect) -> Option<Compiled
     // SAFETY: a live shader.
     let log = log_of(unsafe { sys::glslang_shader_get_info_log(handle.as_ptr()) });
     Some(CompiledShader { handle, _input: input, _code: code, kind, verdict: Verdict { ok, log } })
+}
+
+/// SPIR-V for every stage of a program glslang accepts (texts with includes inlined, in
+/// pipeline order), with `OpLine` debug information. Vulkan GLSL: each stage compiled and
+/// linked on its own, bindings and locations as written. OpenGL GLSL (1.40 and later, core):
+/// one program under relaxed Vulkan rules, loose uniforms gathered into one block, bindings
+/// and locations mapped once for the whole program. Err: glslang's log.
+pub fn spirv(stages: &[(&str, StageKind)], dialect: Dialect, setup: &SpirvSetup) -> Result<Vec<Vec<u32>>, String> {
+    let mut shaders = Vec::new();
+    for (text, kind) in stages {
+        let shader = create(text, *kind, dialect, Some(setup)).ok_or("glslang could not be set up")?;
+        if !shader.verdict.ok {
+            return Err(shader.verdict.log.clone());
+        }
+        shaders.push(shader);
+    }
+    let groups: Vec<&[CompiledShader]> = match dialect {
+        Dialect::OpenGl => vec![&shaders[..]],
+        Dialect::Vulkan => shaders.chunks(1).collect(),
+    };
+    let mut out = Vec::new();
+    for group in groups {
+        // SAFETY: program created, used and deleted here; the shaders outlive it; the SPIR-V
+        // pointer is valid for `size` words until the next generation on the program.
+        unsafe {
+            let program = NonNull::new(sys::glslang_program_create()).ok_or("glslang could not create a program")?;
+            for s in group {
+                sys::glslang_program_add_shader(program.as_ptr(), s.handle.as_ptr());
+            }
+            let linked = sys::glslang_program_link(program.as_ptr(), (messages(Dialect::Vulkan) | sys::glslang_messages_t::DEBUG_INFO).0)
+                != 0
+                && sys::glslang_program_map_io(program.as_ptr()) != 0;
+            if !linked {
+                let log = log_of(sys::glslang_program_get_info_log(program.as_ptr()));
+                sys::glslang_program_delete(program.as_ptr());
+                return Err(log);
+            }
+            for s in group {
+                let mut options = sys::glslang_spv_options_t {
+                    generate_debug_info: true,
+                    strip_debug_info: false,
+                    disable_optimizer: true,
+                    optimize_size: false,
+                    optimize_performance: false,
+                    disassemble: false,
+                    validate: false,
+                    emit_nonsemantic_shader_debug_info: false,
+                    emit_nonsemantic_shader_debug_source: false,
+                    compile_only: false,
+                    optimize_allow_expanded_id_bound: false,
+                    compiler_signature: ptr::null(),
+                    command_line_arguments: ptr::null(),
+                    current_working_directory: ptr::null(),
+                };
+                sys::glslang_program_SPIRV_generate_with_options(program.as_ptr(), stage_of(s.kind), &mut options);
+                let size = sys::glslang_program_SPIRV_get_size(program.as_ptr());
+                let words = sys::glslang_program_SPIRV_get_ptr(program.as_ptr());
+                if words.is_null() || size == 0 {
+                    sys::glslang_program_delete(program.as_ptr());
+                    return Err(format!("glslang made no SPIR-V for the {} stage", s.kind));
+                }
+                out.push(std::slice::from_raw_parts(words, size).to_vec());
+            }
+            sys::glslang_program_delete(program.as_ptr());
+        }
+    }
+    Ok(out)
 }
 
 /// Links compiled stages as one program by `dialect`'s rules (GL: what `glslangValidator -l`

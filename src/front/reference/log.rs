@@ -91,7 +91,7 @@ fn location(rest: &str) -> (Option<(i64, i64, i64)>, &str) {
 
 /// A stable number for a source string glslang names (`"common.inc"`): negative, so it
 /// never meets a numbered string.
-fn string_id(name: &str) -> i64 {
+pub fn string_id(name: &str) -> i64 {
     let name = name.trim_matches('"');
     -1 - name.bytes().fold(0i64, |h, b| (h.wrapping_mul(131).wrapping_add(i64::from(b))) & 0x3fff_ffff_ffff)
 }

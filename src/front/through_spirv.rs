@@ -1,0 +1,429 @@
+//! The route through SPIR-V, for programs glslang accepts and naga's GLSL front cannot
+//! take: glslang compiles the program to SPIR-V with line information, combined image
+//! samplers are split into a texture and a sampler (WebGPU has no combined ones), naga's
+//! SPIR-V front reads each stage, and every span of the module is moved from the SPIR-V
+//! binary to the line of the user's text that the `OpLine` in force there names. What
+//! works on the IR (translation, hazards, stress culprits, reflection) then points at the
+//! user's GLSL as it does for the GLSL route.
+//!
+//! Bindings and locations are the user's (Vulkan GLSL) or mapped once for the whole program
+//! by glslang (OpenGL GLSL ≥ 1.40 under relaxed Vulkan rules: loose uniforms in one block
+//! named [`UNIFORM_BLOCK`]); a sampler split off a combined one takes the next binding.
+//! Push constants, which WebGPU lacks, become a uniform buffer (a read-only storage buffer
+//! when their layout breaks uniform alignment).
+
+use std::ops::Range;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use naga::{AddressSpace, Block, Module, ResourceBinding, Span, Statement, TypeInner};
+
+use crate::diag::{FileId, Files};
+use crate::front::naga_run::{self, Validated};
+use crate::front::plan::{Plan, UNIFORM_BLOCK};
+use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
+use crate::front::reference::log::{self, LineTable};
+use crate::stage::StageKind;
+
+/// SPIR-V opcodes read here (SPIR-V 1.0 §3.32).
+const OP_SOURCE_CONTINUED: u16 = 2;
+const OP_SOURCE: u16 = 3;
+const OP_STRING: u16 = 7;
+const OP_LINE: u16 = 8;
+const OP_FUNCTION: u16 = 54;
+const OP_LABEL: u16 = 248;
+const OP_FUNCTION_END: u16 = 56;
+const OP_TYPE_SAMPLED_IMAGE: u16 = 27;
+const OP_NO_LINE: u16 = 317;
+/// Words in the SPIR-V header before the first instruction.
+const HEADER_WORDS: usize = 5;
+
+/// One stage through SPIR-V: its validated module, spans indexing `text` (the stage's text
+/// as glslang compiled it, includes inlined: offsets are those of the user's stage).
+#[derive(Debug)]
+pub struct SpirvStage {
+    pub kind: StageKind,
+    pub validated: Validated,
+    pub text: String,
+}
+
+/// Every stage of the program (`ordered`, pipeline order) through SPIR-V, or why not (the
+/// first thing that failed).
+pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect, plan: &Plan) -> Result<Vec<SpirvStage>, String> {
+    let texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
+    let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
+    let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
+    let binaries = compiler::spirv(&sources, dialect, &setup).map_err(|log| {
+        let first = log::parse(&log).into_iter().find(|m| m.error).map(|m| m.text);
+        format!("glslang makes no SPIR-V of it: {}", first.unwrap_or_else(|| log.trim().to_string()))
+    })?;
+    let mut modules = Vec::new();
+    for (words, (file, kind)) in binaries.into_iter().zip(ordered) {
+        let words = readable_by_naga(split_combined_samplers(words)?);
+        let lines = Lines::of(&words);
+        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+        // Clip space as the GLSL wrote it, as the GLSL route leaves it: the back end maps
+        // GL's conventions to WebGPU's for both routes alike.
+        let options = naga::front::spv::Options { adjust_coordinate_space: false, strict_capabilities: false, block_ctx_dump_prefix: None };
+        let mut module = match catch_unwind(AssertUnwindSafe(|| naga::front::spv::parse_u8_slice(&bytes, &options))) {
+            Ok(Ok(m)) => m,
+            Ok(Err(e)) => return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {e}")),
+            Err(_) => return Err(format!("naga's SPIR-V front crashed on the {kind} stage")),
+        };
+        let text = files.text(*file);
+        let table = LineTable::new(text);
+        respan_module(&mut module, &|span| lines.user_span(span, &table, text));
+        user_names(&mut module);
+        name_split_samplers(&mut module, plan);
+        name_stage_outputs(&mut module);
+        modules.push(module);
+    }
+    if dialect == Dialect::OpenGl {
+        one_binding_per_resource(&mut modules);
+    }
+    let immediates = uniform_buffers_for_push_constants(&mut modules);
+    let mut out = Vec::new();
+    for ((module, (file, kind)), immediates) in modules.into_iter().zip(ordered).zip(immediates) {
+        out.push(SpirvStage { kind: *kind, validated: validate(module, immediates, *kind)?, text: files.text(*file).to_string() });
+    }
+    Ok(out)
+}
+
+/// naga's validation (with desktop GL's capabilities, as for the GLSL route); push
+/// constants become a uniform buffer, or a read-only storage buffer when their layout
+/// breaks uniform alignment.
+fn validate(mut module: Module, immediates: Vec<naga::Handle<naga::GlobalVariable>>, kind: StageKind) -> Result<Validated, String> {
+    let run = |m: &Module| {
+        catch_unwind(AssertUnwindSafe(|| {
+            naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga_run::gl_capabilities()).validate(m)
+        }))
+    };
+    let mut result = run(&module);
+    if !immediates.is_empty() && matches!(result, Ok(Err(_))) {
+        for g in &immediates {
+            module.global_variables[*g].space = AddressSpace::Storage { access: naga::StorageAccess::LOAD };
+        }
+        result = run(&module);
+    }
+    match result {
+        Ok(Ok(info)) => {
+            let needs = naga_run::needed_capabilities(&module);
+            Ok(Validated { module, info, needs })
+        }
+        Ok(Err(e)) => Err(format!("naga does not validate the {kind} stage read from SPIR-V: {}", e.as_inner())),
+        Err(_) => Err(format!("naga's validator crashed on the {kind} stage read from SPIR-V")),
+    }
+}
+
+/// GL numbers bindings per kind (texture unit 0 and uniform block 0 coexist) and glslang
+/// maps each stage's on its own: every resource of the program gets one binding of its
+/// own, the same in every stage that declares it (by name), keeping the number it has
+/// where no other resource holds it.
+fn one_binding_per_resource(modules: &mut [Module]) {
+    let mut plan: Vec<(String, ResourceBinding)> = Vec::new();
+    for m in modules.iter_mut() {
+        for (_, g) in m.global_variables.iter_mut() {
+            let Some(b) = g.binding else { continue };
+            let key = g.name.clone().or_else(|| m.types[g.ty].name.clone()).unwrap_or_default();
+            let assigned = match plan.iter().find(|(k, _)| *k == key) {
+                Some((_, at)) => *at,
+                None => {
+                    let held = |r: &ResourceBinding| plan.iter().any(|(_, at)| at == r);
+                    let at = if held(&b) {
+                        let free = (0..).find(|n| !held(&ResourceBinding { group: b.group, binding: *n })).expect("a free binding");
+                        ResourceBinding { group: b.group, binding: free }
+                    } else {
+                        b
+                    };
+                    plan.push((key, at));
+                    at
+                }
+            };
+            g.binding = Some(assigned);
+        }
+    }
+}
+
+/// Push-constant blocks (Vulkan has one range for all stages) moved to one uniform buffer
+/// at the first binding of group 0 no stage uses; per module, the globals moved.
+fn uniform_buffers_for_push_constants(modules: &mut [Module]) -> Vec<Vec<naga::Handle<naga::GlobalVariable>>> {
+    let taken: Vec<u32> = modules
+        .iter()
+        .flat_map(|m| m.global_variables.iter().filter_map(|(_, g)| g.binding.as_ref()).filter(|b| b.group == 0).map(|b| b.binding))
+        .collect();
+    let binding = (0..).find(|b| !taken.contains(b)).expect("a free binding");
+    modules
+        .iter_mut()
+        .map(|m| {
+            let mut moved = Vec::new();
+            for (h, g) in m.global_variables.iter_mut().filter(|(_, g)| g.space == AddressSpace::Immediate) {
+                g.space = AddressSpace::Uniform;
+                g.binding = Some(ResourceBinding { group: 0, binding });
+                moved.push(h);
+            }
+            moved
+        })
+        .collect()
+}
+
+/// Splits combined image samplers (absent from WGSL and naga) into a texture and a sampler
+/// at the next binding, with `spirv_combimgsampsplitter` (panics contained).
+fn split_combined_samplers(words: Vec<u32>) -> Result<Vec<u32>, String> {
+    if !instructions(&words).any(|(_, op, _)| op == OP_TYPE_SAMPLED_IMAGE) {
+        return Ok(words);
+    }
+    match catch_unwind(AssertUnwindSafe(|| spirv_combimgsampsplitter::combimgsampsplitter(&words))) {
+        Ok(Ok(split)) => Ok(split),
+        _ => Err("its combined image samplers could not be split into textures and samplers (arrays of samplers, or samplers passed in ways the splitter does not follow)".into()),
+    }
+}
+
+/// glslang names an anonymous block's variable (the loose uniforms' block, `gl_PerVertex`)
+/// with the empty string, which writers print as `unnamed`: the uniform block gets no name
+/// (the back end names it `uniforms`, as for the GLSL route), `gl_PerVertex` is
+/// `per_vertex`, another block its type's name in lower case. glslang names functions by
+/// their signature (`coverage(vf2;`): they keep the name the user wrote.
+fn user_names(module: &mut Module) {
+    for (_, g) in module.global_variables.iter_mut() {
+        if g.name.as_deref() != Some("") {
+            continue;
+        }
+        g.name = match module.types[g.ty].name.as_deref() {
+            Some("gl_PerVertex") => Some("per_vertex".to_string()),
+            Some(t) if g.space != AddressSpace::Uniform => Some(t.to_lowercase()),
+            _ => None,
+        };
+    }
+    for (_, f) in module.functions.iter_mut() {
+        if let Some(name) = &mut f.name {
+            if let Some(i) = name.find('(') {
+                name.truncate(i);
+            }
+        }
+    }
+}
+
+/// The sampler split off a combined image sampler has no name: it takes the plan's sampler
+/// name for its texture (what the GLSL route calls it, so manifests and the renderer find
+/// it), else `<texture>_sampler`.
+fn name_split_samplers(module: &mut Module, plan: &Plan) {
+    let textures: Vec<(ResourceBinding, String)> = module
+        .global_variables
+        .iter()
+        .filter(|(_, g)| matches!(module.types[g.ty].inner, TypeInner::Image { .. }))
+        .filter_map(|(_, g)| Some((g.binding?, g.name.clone()?)))
+        .collect();
+    for (_, g) in module.global_variables.iter_mut() {
+        if g.name.is_some() || !matches!(module.types[g.ty].inner, TypeInner::Sampler { .. }) {
+            continue;
+        }
+        let Some(b) = &g.binding else { continue };
+        let texture = textures.iter().find(|(t, _)| t.group == b.group && t.binding + 1 == b.binding).map(|(_, n)| n);
+        if let Some(t) = texture {
+            let planned = plan.textures.iter().find(|p| &p.name == t).map(|p| p.sampler_name.clone());
+            g.name = Some(planned.unwrap_or_else(|| format!("{t}_sampler")));
+        }
+    }
+}
+
+/// `words` without the debug instructions naga's SPIR-V front does not read: `OpLine` and
+/// `OpNoLine` among the global declarations and in a function's header (before its first
+/// `OpLabel`), where glslang also puts them, and the stage's source text (`OpSource`'s
+/// text operand and `OpSourceContinued`).
+fn readable_by_naga(words: Vec<u32>) -> Vec<u32> {
+    let mut out = words[..HEADER_WORDS.min(words.len())].to_vec();
+    let mut in_body = false;
+    for (at, op, count) in instructions(&words) {
+        match op {
+            OP_FUNCTION | OP_FUNCTION_END => in_body = false,
+            OP_LABEL => in_body = true,
+            OP_LINE | OP_NO_LINE if !in_body => continue,
+            OP_SOURCE_CONTINUED => continue,
+            // OpSource language version [file] [text]: the text goes.
+            OP_SOURCE if count > 4 => {
+                out.push((4 << 16) | u32::from(OP_SOURCE));
+                out.extend_from_slice(&words[at + 1..at + 4]);
+                continue;
+            }
+            _ => {}
+        }
+        out.extend_from_slice(&words[at..(at + count.max(1)).min(words.len())]);
+    }
+    out
+}
+
+/// naga's SPIR-V front returns a stage's outputs as a struct with unnamed members: each
+/// member with a location takes the name of the variable the entry point returns in it
+/// (`uv`), so the translation and its reflection name varyings as the GLSL does.
+fn name_stage_outputs(module: &mut Module) {
+    let mut renames = Vec::new();
+    for ep in &module.entry_points {
+        let Some(result) = &ep.function.result else { continue };
+        let TypeInner::Struct { members, .. } = &module.types[result.ty].inner else { continue };
+        let returned = ep.function.body.iter().find_map(|st| match st {
+            Statement::Return { value: Some(e) } => Some(*e),
+            _ => None,
+        });
+        let Some(naga::Expression::Compose { components, .. }) = returned.map(|e| &ep.function.expressions[e]) else { continue };
+        let names: Vec<Option<String>> = members
+            .iter()
+            .zip(components)
+            .map(|(m, c)| match (&m.name, &m.binding, &ep.function.expressions[*c]) {
+                (None, Some(naga::Binding::Location { .. }), naga::Expression::Load { pointer }) => match ep.function.expressions[*pointer]
+                {
+                    naga::Expression::GlobalVariable(g) => module.global_variables[g].name.clone(),
+                    _ => None,
+                },
+                _ => None,
+            })
+            .collect();
+        if names.iter().any(Option::is_some) {
+            renames.push((result.ty, names));
+        }
+    }
+    for (ty, names) in renames {
+        let mut t = module.types[ty].clone();
+        if let TypeInner::Struct { members, .. } = &mut t.inner {
+            for (m, n) in members.iter_mut().zip(names) {
+                if m.name.is_none() {
+                    m.name = n;
+                }
+            }
+        }
+        if module.types.get(&t).is_none() {
+            module.types.replace(ty, t);
+        }
+    }
+}
+
+/// Each instruction of a SPIR-V binary: its first word's index, opcode and word count.
+fn instructions(words: &[u32]) -> impl Iterator<Item = (usize, u16, usize)> + '_ {
+    let mut i = HEADER_WORDS;
+    std::iter::from_fn(move || {
+        let w = *words.get(i)?;
+        let (count, op) = ((w >> 16) as usize, (w & 0xffff) as u16);
+        let at = i;
+        i += count.max(1);
+        Some((at, op, count))
+    })
+}
+
+/// The `OpLine` in force at each point of a SPIR-V binary: (byte offset where it starts to
+/// hold; the source string and line, or None after `OpNoLine` and at the end of a function).
+struct Lines {
+    changes: Vec<(usize, Option<(i64, i64)>)>,
+}
+
+impl Lines {
+    fn of(words: &[u32]) -> Lines {
+        let mut strings: Vec<(u32, String)> = Vec::new();
+        let mut changes = Vec::new();
+        for (at, op, count) in instructions(words) {
+            let operands = words.get(at + 1..at + count).unwrap_or(&[]);
+            match op {
+                OP_STRING if !operands.is_empty() => {
+                    let bytes: Vec<u8> = operands[1..].iter().flat_map(|w| w.to_le_bytes()).take_while(|b| *b != 0).collect();
+                    strings.push((operands[0], String::from_utf8_lossy(&bytes).into_owned()));
+                }
+                OP_LINE if operands.len() >= 3 => {
+                    // The first string is the stage's own text (string 0); another is a
+                    // source string a `#line N "name"` or `#line N M` directive named.
+                    let string = match strings.iter().position(|(id, _)| *id == operands[0]) {
+                        Some(0) | None => 0,
+                        Some(i) => strings[i].1.parse::<i64>().unwrap_or_else(|_| log::string_id(&strings[i].1)),
+                    };
+                    changes.push((at * 4, Some((string, i64::from(operands[1])))));
+                }
+                OP_NO_LINE | OP_FUNCTION_END => changes.push((at * 4, None)),
+                _ => {}
+            }
+        }
+        Lines { changes }
+    }
+
+    /// The user's line (trimmed) for a span naga gave in SPIR-V bytes.
+    fn user_span(&self, span: Span, table: &LineTable, text: &str) -> Span {
+        let Some(range) = span.to_range() else { return Span::UNDEFINED };
+        let i = self.changes.partition_point(|(at, _)| *at <= range.start);
+        let Some((string, line)) = i.checked_sub(1).and_then(|i| self.changes[i].1) else { return Span::UNDEFINED };
+        match table.line_range(string, line) {
+            Some(r) => Span::from(trimmed(text, r)),
+            None => Span::UNDEFINED,
+        }
+    }
+}
+
+/// A line's range without its indentation and line break.
+fn trimmed(text: &str, line: Range<usize>) -> Range<usize> {
+    let body = &text[line.clone()];
+    let start = line.start + (body.len() - body.trim_start().len());
+    let end = line.start + body.trim_end().len();
+    start..end.max(start)
+}
+
+/// Every span of `module` through `f` (naga keeps spans in its arenas and blocks).
+fn respan_module(module: &mut Module, f: &dyn Fn(Span) -> Span) {
+    respan_arena(&mut module.global_variables, f);
+    respan_arena(&mut module.global_expressions, f);
+    respan_arena(&mut module.constants, f);
+    respan_arena(&mut module.overrides, f);
+    let functions = module.functions.iter_mut().map(|(_, func)| func);
+    for func in functions.chain(module.entry_points.iter_mut().map(|ep| &mut ep.function)) {
+        respan_arena(&mut func.expressions, f);
+        respan_arena(&mut func.local_variables, f);
+        respan_block(&mut func.body, f);
+    }
+}
+
+fn respan_arena<T>(arena: &mut naga::Arena<T>, f: &dyn Fn(Span) -> Span) {
+    let items: Vec<(T, Span)> = arena.drain().map(|(_, value, span)| (value, span)).collect();
+    for (value, span) in items {
+        arena.append(value, f(span));
+    }
+}
+
+fn respan_block(block: &mut Block, f: &dyn Fn(Span) -> Span) {
+    for (statement, span) in block.span_iter_mut() {
+        if let Some(span) = span {
+            *span = f(*span);
+        }
+        match statement {
+            Statement::Block(b) => respan_block(b, f),
+            Statement::If { accept, reject, .. } => {
+                respan_block(accept, f);
+                respan_block(reject, f);
+            }
+            Statement::Switch { cases, .. } => cases.iter_mut().for_each(|c| respan_block(&mut c.body, f)),
+            Statement::Loop { body, continuing, .. } => {
+                respan_block(body, f);
+                respan_block(continuing, f);
+            }
+            _ => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn instructions_walk_the_binary_after_the_header() {
+        // header, OpNop (1 word), OpLine %1 7 3 (4 words), OpFunctionEnd (1 word)
+        let words = [0x0723_0203, 0x0001_0000, 0, 10, 0, 0x0001_0000, (4 << 16) | 8, 1, 7, 3, (1 << 16) | 56];
+        let ops: Vec<(usize, u16)> = instructions(&words).map(|(at, op, _)| (at, op)).collect();
+        assert_eq!(ops, [(5, 0), (6, OP_LINE), (10, OP_FUNCTION_END)]);
+        let lines = Lines::of(&words);
+        assert_eq!(lines.changes, [(24, Some((0, 7))), (40, None)]);
+    }
+
+    #[test]
+    fn a_span_takes_the_line_in_force() {
+        let text = "#version 450\nvoid main() {\n    float x = 1.0;\n}\n";
+        let table = LineTable::new(text);
+        let lines = Lines { changes: vec![(24, Some((0, 3))), (40, None)] };
+        let at = |r: Range<usize>| lines.user_span(Span::from(r), &table, text).to_range();
+        assert_eq!(at(28..32).map(|r| &text[r]), Some("float x = 1.0;"));
+        assert_eq!(at(8..12), None, "before any OpLine");
+        assert_eq!(at(44..48), None, "after the function ends");
+    }
+}
