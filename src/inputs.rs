@@ -94,7 +94,8 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
 fn units_of_one_program(files: &[(PathBuf, StageKind)]) -> bool {
     let mut mains: BTreeMap<StageKind, usize> = BTreeMap::new();
     for (path, kind) in files {
-        let text = std::fs::read(path).map(|b| String::from_utf8_lossy(&b).into_owned()).unwrap_or_default();
+        let text =
+            crate::read::bounded(path, crate::read::MAX_FILE_BYTES).map(|b| String::from_utf8_lossy(&b).into_owned()).unwrap_or_default();
         *mains.entry(*kind).or_default() += usize::from(defines_main(&text));
     }
     mains.values().all(|n| *n <= 1)

@@ -5,9 +5,10 @@
 //! (`tests/suite/layout.rs` checks every `crate::` path against this order, and that no
 //! module's own submodules import each other in a cycle).
 //!
-//! 1. [`diag`], [`stage`]: every finding is a [`diag::Diagnostic`] with a typed code,
-//!    rendered by one emitter (human, JSON, GitHub annotations, SARIF), silenced by
-//!    suppressions (`diag::suppress`); stage kinds.
+//! 1. [`diag`], [`stage`], [`read`]: every finding is a [`diag::Diagnostic`] with a typed
+//!    code, rendered by one emitter (human, JSON, GitHub annotations, SARIF), silenced by
+//!    suppressions (`diag::suppress`); stage kinds; bounded reads of the files a user's
+//!    input names (regular files only, a size limit, confinement to the project root).
 //! 2. [`config`]: the repository's `effectc.toml` (paths read, dialect, codes allowed or
 //!    denied).
 //! 3. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures,
@@ -19,7 +20,8 @@
 //!    mesh variants (no GPU; shared by the static analysis and the renderer).
 //! 7. [`front`]: each GLSL stage → `#include`s inlined → glslang's verdict (`front::reference`,
 //!    the reference compiler in process, what is legal) → syntax facts (glsl-lang, spans) →
-//!    GLSL 4.50 rewrite with an offset map → naga parse + validate.
+//!    GLSL 4.50 rewrite with an offset map → naga parse + validate; where naga's GLSL
+//!    front refuses a legal stage, glslang → SPIR-V → naga instead (`front::through_spirv`).
 //! 8. [`link`]: cross-stage interface checks by OpenGL link rules; manifest ↔ shader
 //!    declarations; the pass graph's rules.
 //! 9. [`check`]: all of the above per program, one bad program never stopping the others;
@@ -49,6 +51,7 @@ pub mod inputs;
 pub mod link;
 pub mod manifest;
 pub mod output;
+pub mod read;
 pub mod render;
 pub mod stage;
 pub mod stress;

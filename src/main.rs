@@ -11,6 +11,17 @@ use effectc::cli::{self, BenchArgs, CheckArgs, Cli, ColorChoice, Command, Common
 use effectc::{config, diag};
 
 fn main() -> ExitCode {
+    // Deeply nested legal GLSL (10,000-term sums, 1,000 nested blocks: what glslangValidator
+    // accepts) is read by recursive parsers and walks: the command runs on a thread with the
+    // same large stack as `check`'s workers, so `-j1` and the default behave alike.
+    let command = std::thread::Builder::new().stack_size(effectc::check::ANALYSIS_STACK).spawn(run);
+    match command.map(|t| t.join()) {
+        Ok(Ok(code)) => code,
+        _ => ExitCode::from(2),
+    }
+}
+
+fn run() -> ExitCode {
     // naga can panic on odd inputs; those panics are caught and reported as diagnostics,
     // so the default hook's message would only be noise.
     if std::env::var_os("EFFECTC_SHOW_PANICS").is_none() {

@@ -9,6 +9,8 @@
 //!   render what the same triangles drawn directly render.
 //! - [`hazards`]: guarded hazards under `tests/safe/` and the shipped effects check with
 //!   no hazard warning.
+//! - [`hostile`]: deep legal GLSL alike on any `--jobs`; limits (E0107), devices (E0013) and
+//!   includes outside the project root (E0106) refused, nothing refused ever printed.
 //! - [`rewrite`]: legal desktop GLSL under `tests/rewrite/` checks clean; the 4.50 text
 //!   naga sees is snapshotted under `snapshots/rewrite/`.
 //! - [`bench`]: `effectc bench` knob sweeps (error to 0 at the reference, plot, mistakes).
@@ -50,6 +52,8 @@ mod fail;
 mod geometry;
 #[path = "suite/hazards.rs"]
 mod hazards;
+#[path = "suite/hostile.rs"]
+mod hostile;
 #[path = "suite/layout.rs"]
 mod layout;
 #[path = "suite/passes.rs"]

@@ -139,7 +139,7 @@ fn load_passes(effect: &Effect, files: &mut Files, l: &mut Loaded) -> Vec<PassFi
 
 /// Reads one stage file and inlines its `#include`s: the id of the text the front reads.
 fn read_stage(path: &Path, files: &mut Files, l: &mut Loaded) -> Option<FileId> {
-    match std::fs::read(path) {
+    match crate::read::bounded(path, crate::read::MAX_FILE_BYTES) {
         Ok(bytes) => match String::from_utf8(bytes) {
             Ok(text) => {
                 let id = files.add(path.display().to_string(), text);
@@ -157,9 +157,14 @@ fn read_stage(path: &Path, files: &mut Files, l: &mut Loaded) -> Option<FileId> 
                 None
             }
         },
-        Err(e) => {
+        Err(crate::read::Refused::Io(e)) => {
             l.io_error = true;
             l.diagnostics.push(Diagnostic::new(Code::InputIo, format!("cannot read `{}`: {e}", path.display())));
+            None
+        }
+        Err(why) => {
+            l.io_error = true;
+            l.diagnostics.push(Diagnostic::new(Code::InputRefused, format!("`{}` is not read: {why}", path.display())));
             None
         }
     }

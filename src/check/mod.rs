@@ -148,19 +148,22 @@ impl InputSpec {
         (out, checked)
     }
 
-    /// Runs `work` on a pool of [`InputSpec::jobs`] threads (on this thread for one job).
+    /// Runs `work` on a pool of [`InputSpec::jobs`] threads, each with an
+    /// [`ANALYSIS_STACK`] (one job: one such thread), so every `--jobs` reads the same inputs.
     fn on_threads<T: Send>(&self, work: impl FnOnce() -> T + Send) -> T {
         let threads = self.jobs.unwrap_or(0);
-        let mut pool = rayon::ThreadPoolBuilder::new().num_threads(threads);
-        if threads == 1 {
-            pool = pool.use_current_thread();
-        }
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).stack_size(ANALYSIS_STACK);
         match pool.build() {
             Ok(pool) => pool.install(work),
             Err(_) => work(),
         }
     }
 }
+
+/// The stack of every thread that analyses programs (and of the command's own thread):
+/// glslang, glsl-lang, naga and effectc's walks recurse once per nesting level and per
+/// term of a long sum. Reserved, not committed: a thread touches only what it uses.
+pub const ANALYSIS_STACK: usize = 512 << 20;
 
 /// Checks every program named by `inputs` (every path selected, one thread per core).
 pub fn check_inputs(inputs: &[PathBuf], forced: Option<StageKind>, options: FrontOptions) -> (Outcome, Vec<Checked>) {

@@ -61,6 +61,7 @@ codes! {
     InputIo => "E0010", "input missing or unreadable",
     UnknownStage => "E0011", "the stage of a file cannot be told from its extension",
     NotText => "E0012", "stage file is not UTF-8 text",
+    InputRefused => "E0013", "input is not a regular file, or over the size limit",
     OutputIo => "E0014", "output cannot be written",
     ConfigInvalid => "E0015", "`effectc.toml` cannot be read or has an invalid setting",
     // The front: syntax, rewrite, naga (`front`).
@@ -69,6 +70,8 @@ codes! {
     NoMain => "E0103", "stage has no `main` function",
     IncludeUnresolved => "E0104", "an `#include` that cannot be read or includes itself",
     ReferenceRejects => "E0105", "the reference compiler (glslang) rejects the stage",
+    IncludeOutsideRoot => "E0106", "an `#include` outside the project root",
+    StageLimit => "E0107", "a stage beyond a limit effectc enforces (statement length, macro expansion)",
     NonConstantSamplerIndex => "E0110", "sampler array indexed with a non-constant expression",
     NonConstantFragDataIndex => "E0111", "`gl_FragData` indexed with a non-constant expression",
     RemovedInVersionStrict => "E0120", "construct removed from the declared version (`--strict`)",

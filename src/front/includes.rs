@@ -6,8 +6,15 @@
 //! is shown in the file it came from (the stage or an included file, at its own line).
 //! Include guards work as written (`#ifndef X`/`#define X` are resolved on the expanded
 //! text); `#pragma once` is honoured. A file that includes itself is error E0104 at the
-//! directive; one that cannot be read keeps its directive, which the front reports (E0104)
-//! unless conditional compilation leaves it out (`#ifdef __cplusplus` in a shared header).
+//! directive, unless it is guarded (`#pragma once`, or `#ifndef X`/`#define X` around it),
+//! which makes the second inclusion empty; one that cannot be read keeps its directive,
+//! which the front reports (E0104) unless conditional compilation leaves it out (`#ifdef
+//! __cplusplus` in a shared header).
+//!
+//! Confinement: an included file must lie inside the stage's project root
+//! ([`crate::read::project_root`]; `..` and symlinks resolved): one outside it (an absolute
+//! path, `/proc/self/environ`, a `..` escape) is E0106 and is never opened. A device, FIFO
+//! or directory, or a file over [`crate::read::MAX_FILE_BYTES`], is E0104 and is not read.
 
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
@@ -25,7 +32,14 @@ pub fn expand(path: &Path, main: FileId, files: &mut Files, diags: &mut Vec<Diag
     if !has_include(&text) {
         return Some(main);
     }
-    let mut x = Expansion { out: String::new(), segments: Vec::new(), stack: vec![canonical(path)], once: HashSet::new(), failed: false };
+    let mut x = Expansion {
+        out: String::new(),
+        segments: Vec::new(),
+        stack: vec![canonical(path)],
+        once: HashSet::new(),
+        root: crate::read::project_root(path),
+        failed: false,
+    };
     x.inline(path, main, &text, files, diags);
     if x.failed {
         return None;
@@ -46,8 +60,10 @@ struct Expansion {
     segments: Vec<Segment>,
     /// Files being inlined (cycle detection).
     stack: Vec<PathBuf>,
-    /// Files with `#pragma once` already inlined.
+    /// Files with `#pragma once` or an include guard already inlined.
     once: HashSet<PathBuf>,
+    /// The directory included files must lie in.
+    root: PathBuf,
     failed: bool,
 }
 
@@ -66,6 +82,20 @@ impl Expansion {
             copied = line.end;
             let target = path.parent().unwrap_or(Path::new(".")).join(&name);
             let key = canonical(&target);
+            if !crate::read::confined(&target, &self.root) {
+                let d = Diagnostic::new(Code::IncludeOutsideRoot, format!("`{name}` lies outside the project root"))
+                    .at(id, name_span, "included here")
+                    .with_note(format!(
+                        "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the stage's own): a shader under review must not read the machine's files",
+                        self.root.display()
+                    ));
+                self.fail(diags, d);
+                continue;
+            }
+            if self.once.contains(&key) {
+                // `#pragma once` or its guard: the second inclusion is empty.
+                continue;
+            }
             if self.stack.contains(&key) || self.stack.len() > MAX_DEPTH {
                 self.fail(
                     diags,
@@ -73,19 +103,26 @@ impl Expansion {
                 );
                 continue;
             }
-            if self.once.contains(&key) {
-                continue;
-            }
-            let Ok(bytes) = std::fs::read(&target) else {
+            let bytes = match crate::read::bounded(&target, crate::read::MAX_FILE_BYTES) {
+                Ok(bytes) => bytes,
+                Err(why @ (crate::read::Refused::NotAFile(_) | crate::read::Refused::TooLarge(_))) => {
+                    let d = Diagnostic::new(Code::IncludeUnresolved, format!("`{name}` cannot be included: {why}")).at(
+                        id,
+                        name_span,
+                        "included here",
+                    );
+                    self.fail(diags, d);
+                    continue;
+                }
                 // Kept as written: inside an inactive `#ifdef __cplusplus` it is blanked
                 // with its group; where it is compiled the front reports it (E0104).
-                self.copy(id, text, line.start, line.end);
-                continue;
+                Err(crate::read::Refused::Io(_)) => {
+                    self.copy(id, text, line.start, line.end);
+                    continue;
+                }
             };
             let included = String::from_utf8_lossy(&bytes).into_owned();
-            if included.lines().any(|l| {
-                l.trim_start().strip_prefix('#').map(str::trim_start).is_some_and(|r| r.starts_with("pragma") && r.contains("once"))
-            }) {
+            if guarded(&included) {
                 self.once.insert(key.clone());
             }
             let inc_id = files.add(target.display().to_string(), included.clone());
@@ -103,6 +140,30 @@ impl Expansion {
         self.failed = true;
         diags.push(d);
     }
+}
+
+/// The file makes a second inclusion empty: `#pragma once`, or an include guard (its first
+/// directive `#ifndef X` or `#if !defined(X)` followed by `#define X`).
+fn guarded(text: &str) -> bool {
+    let directives: Vec<&str> = text.lines().filter_map(|l| l.trim_start().strip_prefix('#')).map(str::trim_start).collect();
+    if directives.iter().any(|r| r.starts_with("pragma") && r.contains("once")) {
+        return true;
+    }
+    let guard = match directives.first() {
+        Some(d) => d
+            .strip_prefix("ifndef")
+            .or_else(|| d.strip_prefix("if").map(str::trim_start).and_then(|r| r.strip_prefix("!defined")))
+            .map(|r| r.trim().trim_start_matches('(').trim_end_matches(')').trim()),
+        None => None,
+    };
+    let defines_guard = match (guard, directives.get(1)) {
+        (Some(g), Some(next)) if !g.is_empty() => next.strip_prefix("define").is_some_and(|r| r.split_whitespace().next() == Some(g)),
+        _ => false,
+    };
+    // The guard's `#endif` closes the file: nothing but blank lines and comments after it.
+    let after_endif = text.rfind("#endif").map(|i| text[i..].split_once('\n').map_or("", |(_, rest)| rest));
+    let closes = after_endif.is_some_and(|rest| rest.lines().all(|l| l.trim().is_empty() || l.trim_start().starts_with("//")));
+    defines_guard && closes && directives.last().is_some_and(|d| d.starts_with("endif"))
 }
 
 #[cfg(test)]
@@ -159,5 +220,15 @@ mod tests {
         let x = expand(&path, id, &mut files, &mut diags).expect("a missing file is left to the front");
         assert_eq!(files.text(x), "#ifdef __cplusplus\n#include <glm/glm.hpp>\n#endif\nfloat one() { return 1.0; }\n");
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn guards_are_told_from_their_shape() {
+        assert!(guarded("#ifndef A_H\n#define A_H\nfloat a;\n#endif\n// end\n"));
+        assert!(guarded("// header\n#if !defined(A_H)\n#define A_H\nfloat a;\n#endif // A_H\n"));
+        assert!(guarded("#pragma once\nfloat a;\n"));
+        assert!(!guarded("#ifndef A_H\n#define A_H\nfloat a;\n#endif\nfloat b;\n"), "code after the guard");
+        assert!(!guarded("#ifndef A_H\n#define B_H\nfloat a;\n#endif\n"), "another macro");
+        assert!(!guarded("float a;\n"));
     }
 }

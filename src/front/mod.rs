@@ -11,6 +11,8 @@
 //! - [`geometry_layout`]: a geometry stage's primitives, `max_vertices` and invocations.
 //! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
 //! - [`limitation`]: a legal construct naga cannot take (the stage is checked, not translated).
+//! - [`limits`]: what a stage must keep before any compiler reads it (statement length, macro
+//!   expansion): the stack and memory stay bounded.
 //! - [`reference`]: glslang, the Khronos reference compiler, in process: what is legal,
 //!   with its errors at the user's lines.
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
@@ -25,6 +27,7 @@ pub mod geometry_layout;
 pub mod includes;
 pub mod lexical;
 pub mod limitation;
+pub mod limits;
 pub mod naga_run;
 pub mod plan;
 pub mod program;

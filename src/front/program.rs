@@ -12,6 +12,7 @@ use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::edits::OffsetMap;
 use crate::front::geometry_fold::{self, Folded, Pulling};
 use crate::front::geometry_layout;
+use crate::front::limits;
 use crate::front::naga_run::{self, Limitation, Outcome, Validated};
 use crate::front::plan::{self, Plan};
 use crate::front::reference;
@@ -92,6 +93,11 @@ pub fn compile(
 ) -> Option<CompiledProgram> {
     let mut ordered: Vec<(FileId, StageKind)> = stages.to_vec();
     ordered.sort_by_key(|(_, k)| *k);
+    let beyond: Vec<Diagnostic> = ordered.iter().filter_map(|(f, _)| limits::check(*f, files.text(*f))).collect();
+    if !beyond.is_empty() {
+        diags.extend(beyond);
+        return None;
+    }
     // glslang decides what is legal; effectc's own findings in a stage it accepts are
     // effectc's limits, not the user's errors ([`accept_what_glslang_accepts`]).
     let judgement = reference::judge(files, &ordered, options.env);
@@ -316,6 +322,11 @@ fn compile_own(
         }
     }
     if !ok {
+        return None;
+    }
+    let beyond: Vec<Diagnostic> = syntaxes.iter().filter_map(limits::check_globals).collect();
+    if !beyond.is_empty() {
+        diags.extend(beyond);
         return None;
     }
     for s in &syntaxes {

@@ -1,0 +1,199 @@
+//! Limits a stage must keep before any compiler reads it (E0107): glslang, glsl-lang, naga
+//! and effectc's own walks recurse once per term of a sum and per expanded macro level, so
+//! an input far beyond real code would exhaust the stack or memory rather than fail.
+//!
+//! - one statement of more than [`MAX_STATEMENT_TOKENS`] tokens (a sum of ~100,000 terms;
+//!   glslangValidator itself crashes near there, and 10,000 terms are accepted);
+//! - a macro that expands to more than [`MAX_MACRO_TOKENS`] tokens (`#define A1 A0+A0`,
+//!   doubling at each level);
+//! - ([`check_globals`], on the declarations) a uniform or private global array of more than
+//!   [`MAX_ARRAY_ELEMENTS`] elements: GL's uniform storage holds a few thousand (Mesa refuses
+//!   more at link), and effectc models every element.
+//!
+//! The first two are counted on the text in one pass, linear in its size.
+
+use std::collections::HashMap;
+
+use crate::diag::{Code, Diagnostic, FileId};
+
+/// Tokens in one statement (between `;`, `{` and `}`).
+pub const MAX_STATEMENT_TOKENS: usize = 200_000;
+/// Tokens one macro may expand to.
+pub const MAX_MACRO_TOKENS: u64 = 1 << 20;
+
+/// Elements in one uniform or private global array (all dimensions).
+pub const MAX_ARRAY_ELEMENTS: u64 = 1 << 16;
+
+/// The first global of `s` beyond [`MAX_ARRAY_ELEMENTS`], as an error.
+pub fn check_globals(s: &crate::front::syntax::StageSyntax) -> Option<Diagnostic> {
+    use crate::front::syntax::Storage;
+    s.globals.iter().filter(|g| matches!(g.storage, Storage::Uniform | Storage::Private)).find_map(|g| {
+        let elements = g.ty.dims.iter().map(|d| u64::from(d.unwrap_or(1))).fold(1u64, u64::saturating_mul);
+        (elements > MAX_ARRAY_ELEMENTS).then(|| {
+            Diagnostic::new(Code::StageLimit, format!("`{}` has {elements} elements, more than effectc's limit of {MAX_ARRAY_ELEMENTS}", g.name))
+                .at(s.file, g.name_span.clone(), "declared here")
+                .with_note("GL drivers hold a few thousand uniform components per stage (Mesa refuses more when it links); use a storage buffer or a texture for bulk data")
+        })
+    })
+}
+
+/// The first limit the stage `text` (of `file`) breaks, as an error.
+pub fn check(file: FileId, text: &str) -> Option<Diagnostic> {
+    let mut statement_start = 0;
+    let mut count = 0usize;
+    let mut defines: Vec<(String, Vec<String>, std::ops::Range<usize>)> = Vec::new();
+    let mut line_start = 0;
+    for line in logical_lines(text) {
+        let (at, body) = (line_start, line);
+        line_start += line.len();
+        let trimmed = body.trim_start();
+        if let Some(d) = trimmed.strip_prefix('#') {
+            if let Some(rest) = d.trim_start().strip_prefix("define") {
+                let rest = rest.trim_start();
+                let name_len = rest.find(|c: char| !(c.is_alphanumeric() || c == '_')).unwrap_or(rest.len());
+                let name = rest[..name_len].to_string();
+                let after = &rest[name_len..];
+                // A function-like macro's parameters are not part of its body.
+                let body_text = if after.starts_with('(') { after.find(')').map_or("", |i| &after[i + 1..]) } else { after };
+                let indent = body.len() - trimmed.len();
+                defines.push((name, tokens(body_text).map(|(t, _)| t.to_string()).collect(), at + indent..at + body.trim_end().len()));
+            }
+            continue;
+        }
+        for (token, offset) in tokens(body) {
+            count += 1;
+            if matches!(token, ";" | "{" | "}") {
+                count = 0;
+                statement_start = at + offset + 1;
+            } else if count > MAX_STATEMENT_TOKENS {
+                let end = (at + offset + token.len()).min(statement_start + 80).max(statement_start);
+                return Some(
+                    Diagnostic::new(Code::StageLimit, format!("a statement of more than {MAX_STATEMENT_TOKENS} tokens"))
+                        .at(file, char_floor(text, statement_start)..char_floor(text, end), "this statement")
+                        .with_note("effectc refuses expressions this long before compiling them (glslangValidator itself crashes near 100,000 terms); split the sum into several statements"),
+                );
+            }
+        }
+    }
+    let bodies: HashMap<&str, &[String]> = defines.iter().map(|(n, b, _)| (n.as_str(), b.as_slice())).collect();
+    let mut sizes: HashMap<&str, u64> = HashMap::new();
+    for (name, _, span) in &defines {
+        if expanded_size(name, &bodies, &mut sizes, &mut Vec::new()) > MAX_MACRO_TOKENS {
+            return Some(
+                Diagnostic::new(Code::StageLimit, format!("`{name}` expands to more than {MAX_MACRO_TOKENS} tokens"))
+                    .at(file, span.clone(), "defined here")
+                    .with_note(
+                        "each level of this macro repeats the one below it: its expansion grows exponentially, which no compiler can read",
+                    ),
+            );
+        }
+    }
+    None
+}
+
+/// Tokens `name` expands to (object-like expansion of its body; memoised, cycles count 1).
+fn expanded_size<'a>(
+    name: &'a str,
+    bodies: &HashMap<&'a str, &'a [String]>,
+    sizes: &mut HashMap<&'a str, u64>,
+    open: &mut Vec<&'a str>,
+) -> u64 {
+    if let Some(s) = sizes.get(name) {
+        return *s;
+    }
+    let Some(body) = bodies.get(name) else { return 1 };
+    if open.contains(&name) {
+        return 1;
+    }
+    open.push(name);
+    let mut total: u64 = 0;
+    for t in body.iter() {
+        let t: &'a str = t.as_str();
+        let size = if bodies.contains_key(t) { expanded_size(t, bodies, sizes, open) } else { 1 };
+        total = total.saturating_add(size);
+    }
+    open.pop();
+    sizes.insert(name, total);
+    total
+}
+
+/// Lines with `\`-continuations joined (each piece keeps its bytes, so offsets add up).
+fn logical_lines(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = text;
+    std::iter::from_fn(move || {
+        if rest.is_empty() {
+            return None;
+        }
+        let mut end = 0;
+        loop {
+            match rest[end..].find('\n') {
+                Some(i) => {
+                    let nl = end + i;
+                    end = nl + 1;
+                    if !rest[..nl].trim_end_matches('\r').ends_with('\\') {
+                        break;
+                    }
+                }
+                None => {
+                    end = rest.len();
+                    break;
+                }
+            }
+        }
+        let (line, tail) = rest.split_at(end);
+        rest = tail;
+        Some(line)
+    })
+}
+
+/// The tokens of a line (words, numbers, single punctuation) with their byte offsets;
+/// `//` comments end the line (block comments count as punctuation: close enough for a limit).
+fn tokens(line: &str) -> impl Iterator<Item = (&str, usize)> {
+    let code = line.find("//").map_or(line, |i| &line[..i]);
+    let mut i = 0;
+    std::iter::from_fn(move || {
+        let rest = &code[i..];
+        let skip = rest.len() - rest.trim_start().len();
+        i += skip;
+        let rest = &code[i..];
+        let first = rest.chars().next()?;
+        let len = if first.is_alphanumeric() || first == '_' || first == '.' {
+            rest.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == '.')).unwrap_or(rest.len())
+        } else {
+            first.len_utf8()
+        };
+        let at = i;
+        i += len;
+        Some((&code[at..at + len], at))
+    })
+}
+
+fn char_floor(s: &str, mut i: usize) -> usize {
+    i = i.min(s.len());
+    while !s.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_sums_and_doubling_macros_are_refused_and_real_code_is_not() {
+        let sum = |n: usize| format!("void main() {{ float x = {}; }}\n", vec!["u"; n].join(" + "));
+        assert!(check(FileId(0), &sum(10_000)).is_none(), "glslang-sized sums pass");
+        let d = check(FileId(0), &sum(150_000)).expect("a 150,000-term sum");
+        assert_eq!(d.code, Code::StageLimit);
+        let mut macros = String::from("#define A0 u\n");
+        for i in 1..=16 {
+            macros.push_str(&format!("#define A{i} A{}+A{}\n", i - 1, i - 1));
+        }
+        assert!(check(FileId(0), &macros).is_none(), "2^16 tokens pass");
+        macros.push_str("#define A21 A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16\n");
+        assert!(check(FileId(0), &macros).is_some_and(|d| d.message.contains("`A21`")));
+        let continued = "#define F(x) \\\n  (x) * \\\n  (x)\nvoid main() { float y = F(2.0); }\n";
+        assert!(check(FileId(0), continued).is_none());
+    }
+}

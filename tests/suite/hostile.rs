@@ -1,0 +1,109 @@
+//! Hostile and huge input (generated here, never committed): effectc reads pull requests
+//! nobody has reviewed. Deep legal GLSL checks the same with one job and with many (no stack
+//! overflow); inputs past effectc's limits are refused with E0107 before any compiler reads
+//! them; devices are never read; `#include` cannot leave the project root, and nothing of a
+//! refused file (the CI job's environment included) appears in any output format.
+
+use std::process::Command;
+
+use crate::common::{self, code, stdout};
+
+/// `effectc check` of `files` with `args`, with a secret in the environment.
+fn check(args: &[&str], files: &[&std::path::Path]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .arg("check")
+        .args(args)
+        .args(files)
+        .env("NO_COLOR", "1")
+        .env("EFFECTC_TEST_SECRET", "hunter2-secret")
+        .output()
+        .unwrap()
+}
+
+fn sum(terms: usize) -> String {
+    let body: Vec<String> = (0..terms).map(|i| format!("u{}", i % 4)).collect();
+    format!("#version 330\nuniform float u0, u1, u2, u3;\nout vec4 c;\nvoid main() {{ float x = {}; c = vec4(x); }}\n", body.join(" + "))
+}
+
+fn nested_ifs(depth: usize) -> String {
+    let open: String = (0..depth).map(|i| format!("if (x > {i}.0) {{\n")).collect();
+    format!(
+        "#version 330\nuniform float u;\nout vec4 c;\nvoid main() {{ float x = u;\n{open}x += 1.0;\n{}c = vec4(x); }}\n",
+        "}\n".repeat(depth)
+    )
+}
+
+#[test]
+fn deep_legal_glsl_checks_alike_on_one_job_and_many() {
+    let dir = common::scratch("hostile", "deep");
+    for (name, text) in [("sum.frag", sum(10_000)), ("ifs.frag", nested_ifs(1_000))] {
+        let file = dir.join(name);
+        std::fs::write(&file, text).unwrap();
+        for jobs in ["-j1", "-j4"] {
+            let out = check(&[jobs], &[&file]);
+            assert_eq!(code(&out), 0, "{name} {jobs}: {}", stdout(&out));
+            assert!(stdout(&out).contains("no problems"), "{name} {jobs}: {}", stdout(&out));
+        }
+    }
+}
+
+#[test]
+fn inputs_past_the_limits_are_refused_before_compiling() {
+    let dir = common::scratch("hostile", "limits");
+    let long = dir.join("long.frag");
+    std::fs::write(&long, sum(150_000)).unwrap();
+    let mut macros = String::from("#version 330\nuniform float u;\nout vec4 c;\n#define A0 u\n");
+    for i in 1..=24 {
+        macros.push_str(&format!("#define A{i} A{}+A{}\n", i - 1, i - 1));
+    }
+    macros.push_str("void main() { c = vec4(A24); }\n");
+    let doubling = dir.join("doubling.frag");
+    std::fs::write(&doubling, macros).unwrap();
+    for file in [&long, &doubling] {
+        let out = check(&[], &[file]);
+        assert_eq!(code(&out), 1, "{}", stdout(&out));
+        assert!(stdout(&out).contains("E0107"), "{}", stdout(&out));
+    }
+    let out = check(&["--stage", "fragment"], &[std::path::Path::new("/dev/zero")]);
+    assert_eq!(code(&out), 2, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0013") && stdout(&out).contains("a device"), "{}", stdout(&out));
+}
+
+#[test]
+fn includes_stay_inside_the_project_root_and_nothing_refused_is_printed() {
+    let outside = common::scratch("hostile", "outside");
+    std::fs::write(outside.join("secret.txt"), "float leaked = 1.0; // hunter2-outside\n").unwrap();
+    let root = common::scratch("hostile", "pull-request");
+    std::fs::write(root.join("effectc.toml"), "").unwrap();
+    let shaders = root.join("shaders");
+    std::fs::create_dir_all(&shaders).unwrap();
+    let targets = [
+        "/proc/self/environ".to_string(),
+        outside.join("secret.txt").display().to_string(),
+        "../../outside/secret.txt".to_string(),
+        "link/secret.txt".to_string(),
+    ];
+    std::os::unix::fs::symlink(&outside, shaders.join("link")).unwrap();
+    for (i, target) in targets.iter().enumerate() {
+        let file = shaders.join(format!("p{i}.frag"));
+        std::fs::write(&file, format!("#version 330\n#include \"{target}\"\nout vec4 c;\nvoid main() {{ c = vec4(1.0); }}\n")).unwrap();
+        for format in ["human", "json", "github", "sarif"] {
+            let out = check(&["--format", format], &[&file]);
+            let all = format!("{}{}", stdout(&out), String::from_utf8_lossy(&out.stderr));
+            assert_eq!(code(&out), 1, "{target} ({format}): {all}");
+            assert!(all.contains("E0106"), "{target} ({format}): {all}");
+            assert!(!all.contains("hunter2"), "{target} ({format}) printed a refused file: {all}");
+        }
+    }
+}
+
+#[test]
+fn files_that_include_each_other_behind_guards_are_no_cycle() {
+    let dir = common::scratch("hostile", "guards");
+    std::fs::write(dir.join("a.glsl"), "#ifndef A_GLSL\n#define A_GLSL\n#include \"b.glsl\"\nfloat a() { return 1.0; }\n#endif\n").unwrap();
+    std::fs::write(dir.join("b.glsl"), "#pragma once\n#include \"a.glsl\"\nfloat b() { return 2.0; }\n").unwrap();
+    let file = dir.join("p.frag");
+    std::fs::write(&file, "#version 330\n#extension GL_GOOGLE_include_directive : require\n#include \"a.glsl\"\nout vec4 c;\nvoid main() { c = vec4(a() + b()); }\n").unwrap();
+    let out = check(&[], &[&file]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+}
