@@ -16,6 +16,18 @@ use crate::front::syntax::types::Storage;
 use crate::front::version::{self, Renames};
 use crate::stage::StageKind;
 
+/// The stage enables 64-bit floating-point types by extension (`GL_ARB_gpu_shader_fp64`,
+/// `GL_ARB_vertex_attrib_64bit`).
+fn enables_fp64(text: &str) -> bool {
+    text.lines().any(|l| {
+        let t = l.trim_start();
+        t.starts_with('#')
+            && t[1..].trim_start().starts_with("extension")
+            && (t.contains("GL_ARB_gpu_shader_fp64") || t.contains("GL_ARB_vertex_attrib_64bit"))
+            && !t.contains("disable")
+    })
+}
+
 /// Parses one stage. Errors are syntax diagnostics at the user's spans.
 /// `env` forces the dialect, else the text tells it ([`TargetEnv::Auto`]).
 pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -> Result<StageSyntax, Vec<Diagnostic>> {
@@ -47,6 +59,14 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
         },
         ..Default::default()
     };
+    if !opts.target_vulkan && version.number < 400 && !version.is_es() && enables_fp64(original) {
+        // glsl-lang knows `double`/`dvecN`/`dmatN` from `#version 400` only (extensions are
+        // blanked for it); GL_ARB_gpu_shader_fp64 brings them to 1.50. The identifiers that
+        // are keywords in newer versions are already renamed, so the parse is the same.
+        if let Some(span) = version.number_span.clone() {
+            text.replace_range(span, "400");
+        }
+    }
     if opts.target_vulkan && version.number >= 400 && !version.is_es() {
         // glsl-lang enables Vulkan's types from `#version 460` only; Vulkan GLSL has them
         // from 4.50 on. Same-length digits keep every offset.
@@ -234,4 +254,20 @@ fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
         || separate
         || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Referent::Unresolved)
         || original.contains("GL_KHR_vulkan_glsl")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fp64_types_by_extension_are_read_below_400() {
+        let src = "#version 150\n#extension GL_ARB_gpu_shader_fp64 : require\nuniform dvec4 arg0;\nflat out dvec3 a;\nvoid main() { a = arg0.xyz; }\n";
+        let s = analyse(FileId(0), src, StageKind::Vertex, TargetEnv::Auto).expect("GLSL 1.50 with GL_ARB_gpu_shader_fp64 parses");
+        let types: Vec<&str> = s.globals.iter().map(|g| g.ty.base.as_str()).collect();
+        assert_eq!(types, ["dvec4", "dvec3"]);
+        assert_eq!(s.version.number, 150, "the stage keeps its own version");
+        let without = "#version 150\nuniform dvec4 arg0;\nvoid main() {}\n";
+        assert!(analyse(FileId(0), without, StageKind::Vertex, TargetEnv::Auto).is_err(), "no extension, no doubles");
+    }
 }
