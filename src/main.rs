@@ -277,7 +277,10 @@ fn check(args: &CheckArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBuf>
     if print(&text).is_err() {
         return (ExitCode::from(2), Vec::new());
     }
-    (exit_code(&outcome, args.deny_warnings || settings.config.deny_warnings), outcome.read)
+    // A CI step that checked nothing must not pass: in the machine formats (what CI
+    // reads) a folder with no program fails like a denied warning.
+    let nothing = c.format != Format::Human && outcome.diagnostics.iter().any(|d| d.code == diag::Code::NoProgramFound);
+    (exit_code(&outcome, nothing || args.deny_warnings || settings.config.deny_warnings), outcome.read)
 }
 
 fn translate(args: &TranslateArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBuf>) {

@@ -133,6 +133,9 @@ codes! {
     NothingToBench => "E0802", "nothing to bench",
     KnobValues => "E0803", "`--knob` values that are not numbers",
     // Notes.
+    PairedInFolder => "N0001", "a fragment stage paired with the one vertex stage of its folder",
+    StageAlone => "N0002", "a stage checked alone: no link rule ran",
+    StageFromText => "N0003", "a `.glsl` file's stage told from its text",
     SyntaxAndInterfaceOnly => "N0101", "stage checked for syntax and interface only",
     NagaCannotTake => "N0102", "a legal construct naga cannot take: stage checked for syntax and interface only",
     ShadowBiasDropped => "N0103", "the bias of a shadow lookup is dropped",
@@ -146,6 +149,7 @@ codes! {
     UnusedGeneratorParam => "W0003", "texture generator parameter has no effect",
     SuppressionInvalid => "W0004", "suppression or config names an unknown code, an error, or is malformed",
     SuppressionUnused => "W0005", "suppression that silences nothing",
+    NoProgramFound => "W0006", "a folder with no program in it: nothing was checked",
     RemovedInVersion => "W0120", "construct removed from the declared version",
     UniformInitializerIgnored => "W0130", "uniform initializer ignored",
     RewriteFailed => "W0190", "effectc could not rewrite an expression for naga",

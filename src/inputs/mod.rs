@@ -2,7 +2,12 @@
 //!
 //! - a manifest (`*.toml`) is one program;
 //! - a directory contributes every `effect.toml` below it, plus stage files no manifest
-//!   there names, grouped by directory and file stem (`sun.vert` + `sun.frag`);
+//!   there names, grouped by directory and program stem (`sun.vert` + `sun.frag`,
+//!   `sun.vert.glsl` + `sun_fs.glsl`); a `.glsl` file the name does not place is placed by
+//!   its text ([`stage_names`], note N0003 with the evidence); a folder with one vertex
+//!   stage pairs it with each fragment stage that has no vertex stage of its own (note
+//!   N0001); a stage left alone gets note N0002 (no link rule ran); a folder with no program
+//!   at all is warning W0006;
 //! - stage files named on the command line form one program together; when a stage
 //!   repeats, its files are shader objects linked into that stage if at most one of them
 //!   defines `main`, else the files are grouped by stem.
@@ -16,6 +21,8 @@ use std::path::{Path, PathBuf};
 use crate::config::Selection;
 use crate::diag::{Code, Diagnostic};
 use crate::stage::StageKind;
+
+pub mod stage_names;
 
 /// One program to check.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -33,9 +40,10 @@ impl ProgramInput {
     }
 }
 
-/// The stage of a file from its extension or the `--stage` override.
+/// The stage of a file from its name (`.vert`, `x.vert.glsl`, `x_vs.glsl`, …) or the
+/// `--stage` override.
 pub fn stage_of(path: &Path, forced: Option<StageKind>) -> Option<StageKind> {
-    forced.or_else(|| path.extension().and_then(|e| e.to_str()).and_then(StageKind::from_extension))
+    forced.or_else(|| stage_names::from_name(path).map(|(k, _)| k))
 }
 
 fn is_manifest(path: &Path) -> bool {
@@ -76,12 +84,35 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
             }
         }
     }
-    if !loose.is_empty() {
+    let loose_named = !loose.is_empty();
+    if loose_named {
         let kinds: BTreeSet<StageKind> = loose.iter().map(|(_, k)| *k).collect();
         if kinds.len() == loose.len() || units_of_one_program(&loose) {
             programs.push(ProgramInput::Stages { name: program_name(&loose), files: loose });
         } else {
             programs.extend(group_by_stem(loose));
+        }
+    }
+    if programs.is_empty() && !loose_named {
+        for dir in inputs.iter().filter(|p| p.is_dir()) {
+            diags.push(
+                Diagnostic::new(Code::NoProgramFound, format!("no program found in `{}`: nothing was checked", dir.display()))
+                    .with_note("effectc looks for `effect.toml` manifests and stage files: `.vert`/`.frag`/… , `x.vert.glsl`, `x_vs.glsl`, `vertex.glsl`, or `.glsl` files with a `main` whose text shows the stage")
+                    .with_help("name the stage files, or list them in `effectc.toml` (`[stages] \"*.shader\" = \"fragment\"`)"),
+            );
+        }
+    }
+    for p in &programs {
+        if let ProgramInput::Stages { files, .. } = p {
+            if let [(path, kind)] = files.as_slice() {
+                if *kind != StageKind::Compute {
+                    diags.push(
+                        Diagnostic::new(Code::StageAlone, format!("`{}` is checked alone: no link rule ran", path.display()))
+                            .with_note(format!("a {kind} stage on its own is not a program; its interface with the other stages was not checked"))
+                            .with_help("name its stages together (`effectc check a.vert b.frag`), give them one stem (`a.vert` + `a.frag`), or keep one vertex stage in its folder"),
+                    );
+                }
+            }
         }
     }
     (programs, diags)
@@ -102,7 +133,7 @@ fn units_of_one_program(files: &[(PathBuf, StageKind)]) -> bool {
 }
 
 /// The text defines `void main(`, outside comments.
-fn defines_main(text: &str) -> bool {
+pub(crate) fn defines_main(text: &str) -> bool {
     let code = without_comments(text);
     let mut rest = code.as_str();
     while let Some(i) = rest.find("main") {
@@ -118,7 +149,7 @@ fn defines_main(text: &str) -> bool {
 }
 
 /// `text` with its `//` and `/* */` comments left out.
-fn without_comments(text: &str) -> String {
+pub(crate) fn without_comments(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     let mut rest = text;
     loop {
@@ -154,7 +185,9 @@ fn group_by_stem(files: Vec<(PathBuf, StageKind)>) -> Vec<ProgramInput> {
     let mut groups: BTreeMap<(PathBuf, String), Vec<(PathBuf, StageKind)>> = BTreeMap::new();
     for (path, kind) in files {
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        let stem = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+        let stem = stage_names::from_name(&path)
+            .map(|(_, stem)| stem)
+            .unwrap_or_else(|| path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default());
         groups.entry((dir, stem)).or_default().push((path, kind));
     }
     groups
@@ -195,6 +228,14 @@ fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Dia
                 manifests.push(p);
             } else if let Some(kind) = stage_of(&p, None).or_else(|| selection.stage_of(&p)) {
                 stage_files.push((p, kind));
+            } else if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("glsl")) {
+                let text = crate::read::bounded(&p, crate::read::MAX_FILE_BYTES)
+                    .map(|b| String::from_utf8_lossy(&b).into_owned())
+                    .unwrap_or_default();
+                if let Some((kind, why)) = stage_names::from_text(&text) {
+                    diags.push(Diagnostic::new(Code::StageFromText, format!("`{}` is read as a {kind} stage: {why}", p.display())));
+                    stage_files.push((p, kind));
+                }
             }
         }
     }
@@ -203,8 +244,50 @@ fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Dia
     let manifest_dirs: BTreeSet<PathBuf> = manifests.iter().filter_map(|m| m.parent().map(Path::to_path_buf)).collect();
     stage_files.retain(|(p, _)| !p.parent().is_some_and(|d| manifest_dirs.contains(d)));
     let mut programs: Vec<ProgramInput> = manifests.into_iter().map(ProgramInput::Manifest).collect();
-    programs.extend(group_by_stem(stage_files));
+    let mut groups = group_by_stem(stage_files);
+    diags.extend(pair_with_the_folders_vertex_stage(&mut groups));
+    programs.extend(groups);
     (programs, diags)
+}
+
+/// In a folder with exactly one vertex stage, each program with a fragment stage and no
+/// vertex stage gets that vertex stage (the common one-vertex-many-fragments layout, where
+/// the host code links `PCN.vert` with `Diffuse.frag`, `Phong.frag`, …); the vertex stage
+/// no longer stands alone. A note (N0001) names each pairing.
+fn pair_with_the_folders_vertex_stage(groups: &mut Vec<ProgramInput>) -> Vec<Diagnostic> {
+    let files_of = |p: &ProgramInput| match p {
+        ProgramInput::Stages { files, .. } => files.clone(),
+        ProgramInput::Manifest(_) => Vec::new(),
+    };
+    let dir_of = |path: &Path| path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let mut vertex_by_dir: BTreeMap<PathBuf, Vec<PathBuf>> = BTreeMap::new();
+    for g in groups.iter() {
+        for (path, kind) in files_of(g) {
+            if kind == StageKind::Vertex {
+                vertex_by_dir.entry(dir_of(&path)).or_default().push(path);
+            }
+        }
+    }
+    let mut notes = Vec::new();
+    let mut paired_vertex: BTreeSet<PathBuf> = BTreeSet::new();
+    for g in groups.iter_mut() {
+        let ProgramInput::Stages { files, .. } = g else { continue };
+        let kinds: BTreeSet<StageKind> = files.iter().map(|(_, k)| *k).collect();
+        if !kinds.contains(&StageKind::Fragment) || kinds.contains(&StageKind::Vertex) || kinds.contains(&StageKind::Compute) {
+            continue;
+        }
+        let Some([vertex]) = vertex_by_dir.get(&dir_of(&files[0].0)).map(Vec::as_slice) else { continue };
+        notes.push(Diagnostic::new(
+            Code::PairedInFolder,
+            format!("`{}` is paired with `{}`, the one vertex stage of its folder", files[0].0.display(), vertex.display()),
+        ));
+        files.push((vertex.clone(), StageKind::Vertex));
+        files.sort_by_key(|(_, k)| *k);
+        paired_vertex.insert(vertex.clone());
+    }
+    // A vertex stage now checked with its fragment stages is no program of its own.
+    groups.retain(|g| !matches!(g, ProgramInput::Stages { files, .. } if files.len() == 1 && paired_vertex.contains(&files[0].0)));
+    notes
 }
 
 #[cfg(test)]
@@ -223,8 +306,14 @@ mod tests {
         let (progs, diags) = collect(&[v.clone(), f.clone()], None, &all);
         assert!(diags.is_empty());
         assert_eq!(progs.len(), 1);
-        let (progs, _) = collect(std::slice::from_ref(&dir), None, &all);
-        assert_eq!(progs.len(), 2, "directory groups by stem: a and b");
+        let (progs, diags) = collect(std::slice::from_ref(&dir), None, &all);
+        assert_eq!(progs.len(), 1, "the folder's one vertex stage pairs with the lone fragment stage");
+        assert_eq!(diags.iter().map(|d| d.code).collect::<Vec<_>>(), [Code::PairedInFolder]);
+        std::fs::write(dir.join("c.vert"), "void main(){}").unwrap();
+        let (progs, diags) = collect(std::slice::from_ref(&dir), None, &all);
+        assert_eq!(progs.len(), 3, "two vertex stages: grouped by stem, a, b and c alone");
+        assert_eq!(diags.iter().filter(|d| d.code == Code::StageAlone).count(), 3);
+        std::fs::remove_file(dir.join("c.vert")).unwrap();
         let (_, diags) = collect(&[dir.join("missing.frag")], None, &all);
         assert_eq!(diags[0].code, Code::InputIo);
         let (_, diags) = collect(&[dir.join("a.vert").with_extension("txt")], None, &all);

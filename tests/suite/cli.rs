@@ -236,3 +236,43 @@ fn push_constants_become_a_uniform_buffer() {
     assert!(wgsl.contains("var<uniform> pc"), "{wgsl}");
     assert!(effectc::back::verify_wgsl(&wgsl).is_ok(), "{wgsl}");
 }
+
+#[test]
+fn folders_form_the_programs_their_layout_means() {
+    // One vertex stage with many fragment stages (a tutorial's `PCN.vert` beside
+    // `DiffuseOnly.frag`, …): each fragment stage is paired with it, so the link rules run and
+    // a fragment input no stage writes is caught. `.glsl` names (`x.vert.glsl`, `x_fs.glsl`)
+    // and `.glsl` files placed by their text form programs too; a folder with nothing in it
+    // is a warning, and fails in a CI format.
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("formation");
+    let _ = std::fs::remove_dir_all(&dir);
+    let (pairs, glsl, empty) = (dir.join("pairs"), dir.join("glsl"), dir.join("empty"));
+    for d in [&pairs, &glsl, &empty] {
+        std::fs::create_dir_all(d).unwrap();
+    }
+    let vert = "#version 330\nin vec3 pos;\nout vec3 N;\nvoid main() { N = pos; gl_Position = vec4(pos, 1.0); }\n";
+    std::fs::write(pairs.join("PCN.vert"), vert).unwrap();
+    std::fs::write(pairs.join("DiffuseOnly.frag"), "#version 330\nin vec3 N;\nout vec4 c;\nvoid main() { c = vec4(N, 1.0); }\n").unwrap();
+    std::fs::write(pairs.join("Typo.frag"), "#version 330\nin vec3 Nrm;\nout vec4 c;\nvoid main() { c = vec4(Nrm, 1.0); }\n").unwrap();
+    let out = effectc(&["check", "--color", "never", pairs.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    assert!(text.contains("E0202") && text.contains("Nrm") && text.matches("N0001").count() == 2, "{text}");
+    assert!(text.contains("checked 2 programs"), "{text}");
+
+    std::fs::write(glsl.join("quad.vert.glsl"), vert).unwrap();
+    std::fs::write(glsl.join("quad_fs.glsl"), "#version 330\nin vec3 N;\nout vec4 c;\nvoid main() { c = vec4(N, 1.0); }\n").unwrap();
+    std::fs::write(glsl.join("tint.glsl"), "#version 330\nin vec3 N;\nout vec4 c;\nvoid main() { c = vec4(N * 0.5, 1.0); }\n").unwrap();
+    std::fs::write(glsl.join("common.glsl"), "float helper(float x) { return x; }\n").unwrap();
+    let out = effectc(&["check", "--color", "never", glsl.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("checked 2 programs") && text.contains("N0003") && text.contains("tint.glsl"), "{text}");
+    assert!(!text.contains("N0002"), "every stage is paired: {text}");
+
+    let out = effectc(&["check", "--color", "never", empty.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains("W0006"), "{}", stdout(&out));
+    let out = effectc(&["check", "--format", "sarif", empty.to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "a CI format fails when nothing was checked");
+}

@@ -135,7 +135,7 @@ fn the_config_allows_denies_and_selects() {
     std::fs::write(dir.join("effectc.toml"), "exclude = [\"third_party\", \"a.*\"]\n[stages]\nshader = \"fragment\"\n").unwrap();
     let out = effectc(&["check", "--color", "never", path(&dir)]);
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("checked 1 program: no problems"), "c.shader is read as a fragment stage: {text}");
+    assert!(text.contains("checked 1 program: 1 note") && text.contains("N0002"), "c.shader is read as a fragment stage, alone: {text}");
     std::fs::write(dir.join("effectc.toml"), "exclude = [\"third_party\", \"a.*\"]\n").unwrap();
     let out = effectc(&["check", "--color", "never", path(&dir)]);
     assert!(String::from_utf8_lossy(&out.stdout).contains("checked 0 programs"), "without [stages] it is not");
