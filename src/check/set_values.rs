@@ -19,6 +19,7 @@ pub fn apply(values: &[(String, String)], out: &mut Outcome, checked: &mut [Chec
     let text: String = values.iter().map(|(n, v)| format!("--set {n}={v}\n")).collect();
     let file = out.files.add("command line", text);
     let mut defaults = Vec::new();
+    let mut unparsed = false;
     let mut start = 0;
     for (name, value) in values {
         let name_at = start + "--set ".len();
@@ -26,15 +27,27 @@ pub fn apply(values: &[(String, String)], out: &mut Outcome, checked: &mut [Chec
         start = value_at + value.len() + 1;
         match parse_value(value) {
             Some(v) => defaults.push(default(name, name_at..name_at + name.len(), v, value_at..value_at + value.len())),
-            None => out.diagnostics.push(
-                Diagnostic::new(
-                    Code::ManifestValue,
-                    format!("`--set {name}={value}`: `{value}` is not a number, a boolean or a list of them"),
+            None => {
+                unparsed = true;
+                out.diagnostics.push(
+                    Diagnostic::new(
+                        Code::ManifestValue,
+                        format!("`--set {name}={value}`: `{value}` is not a finite number a shader can hold, a boolean or a list of them"),
+                    )
+                    .at(file, value_at..value_at + value.len(), "not a value")
+                    .with_note("floats must be finite and within 32-bit range (±3.4e38); integers within 32 bits")
+                    .with_help("write e.g. `--set speed=0.5`, `--set count=3`, `--set on=true`, `--set tint=1,0.5,0`"),
                 )
-                .at(file, value_at..value_at + value.len(), "not a value")
-                .with_help("write e.g. `--set speed=0.5`, `--set count=3`, `--set on=true`, `--set tint=1,0.5,0`"),
-            ),
+            }
         }
+    }
+    if unparsed {
+        // The values apply to every program: none is drawn with a value left out.
+        for c in checked.iter_mut() {
+            c.failed = true;
+            c.units.clear();
+        }
+        return;
     }
     let mut unknown: Vec<Option<Diagnostic>> = vec![None; defaults.len()];
     let mut declared_somewhere = vec![false; defaults.len()];
@@ -94,8 +107,9 @@ pub fn parse_value(text: &str) -> Option<UniformValue> {
 
 fn convert(v: &toml::Value) -> Option<UniformValue> {
     Some(match v {
-        toml::Value::Integer(i) => UniformValue::Int(*i),
-        toml::Value::Float(f) if f.is_finite() => UniformValue::Float(*f),
+        toml::Value::Integer(i) if (i64::from(i32::MIN)..=i64::from(u32::MAX)).contains(i) => UniformValue::Int(*i),
+        // f32 is what a shader holds: 1e39 would arrive as +Inf.
+        toml::Value::Float(f) if f.is_finite() && f.abs() <= f64::from(f32::MAX) => UniformValue::Float(*f),
         toml::Value::Boolean(b) => UniformValue::Bool(*b),
         toml::Value::Array(items) if !items.is_empty() => UniformValue::List(items.iter().map(convert).collect::<Option<_>>()?),
         _ => return None,
@@ -111,6 +125,9 @@ mod tests {
         assert_eq!(parse_value("0.5"), Some(UniformValue::Float(0.5)));
         assert_eq!(parse_value("3"), Some(UniformValue::Int(3)));
         assert_eq!(parse_value("true"), Some(UniformValue::Bool(true)));
+        for bad in ["nan", "inf", "-inf", "1e39", "1e309", "99999999999", "abc"] {
+            assert_eq!(parse_value(bad), None, "{bad}");
+        }
         let v = Some(UniformValue::List(vec![UniformValue::Int(1), UniformValue::Float(0.5), UniformValue::Int(0)]));
         assert_eq!(parse_value("[1, 0.5, 0]"), v);
         assert_eq!(parse_value("1,0.5,0"), v);

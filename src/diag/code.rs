@@ -70,7 +70,7 @@ codes! {
     NoMain => "E0103", "stage has no `main` function",
     IncludeUnresolved => "E0104", "an `#include` that cannot be read or includes itself",
     ReferenceRejects => "E0105", "the reference compiler (glslang) rejects the stage",
-    IncludeOutsideRoot => "E0106", "an `#include` outside the project root",
+    OutsideRoot => "E0106", "a file outside the project root (an `#include`, a manifest path)",
     StageLimit => "E0107", "a stage beyond a limit effectc enforces (statement length, macro expansion)",
     NonConstantSamplerIndex => "E0110", "sampler array indexed with a non-constant expression",
     NonConstantFragDataIndex => "E0111", "`gl_FragData` indexed with a non-constant expression",

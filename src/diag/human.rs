@@ -59,23 +59,53 @@ fn to_codespan(d: &Diagnostic, files: &Files) -> cs::Diagnostic<FileId> {
     };
     let mut labels = Vec::new();
     let mut notes = Vec::new();
+    // A label on a line too long to show (a generated or hostile file) becomes a note with
+    // its position: the snippet would print the whole line.
+    let mut place = |file: FileId, span: Range<usize>, message: &str, primary: bool| match long_line(files, file, &span) {
+        Some((line, column, len)) => {
+            let path = files.try_get(file).map(|f| f.path.as_str()).unwrap_or("");
+            notes.push(format!("{path}:{line}:{column}: {message} (the line is {len} bytes long; not shown)"));
+        }
+        None if primary => labels.push(cs::Label::primary(file, span).with_message(message)),
+        None => labels.push(cs::Label::secondary(file, span).with_message(message)),
+    };
     if let (Some(file), Some(span)) = (d.file, &d.span) {
         if let Some(span) = files.clamp_span(file, span.clone()) {
-            labels.push(cs::Label::primary(file, span).with_message(&d.primary_label));
+            place(file, span, &d.primary_label, true);
         }
-    } else if let Some(f) = d.file.and_then(|file| files.try_get(file)) {
-        notes.push(format!("in {}", f.path));
     }
     for label in &d.labels {
         if let Some(span) = files.clamp_span(label.file, label.span.clone()) {
-            labels.push(cs::Label::secondary(label.file, span).with_message(&label.message));
+            place(label.file, span, &label.message, false);
         }
+    }
+    if let (None, Some(f)) = (&d.span, d.file.and_then(|file| files.try_get(file))) {
+        notes.insert(0, format!("in {}", f.path));
     }
     notes.extend(d.notes.iter().cloned());
     if let Some(help) = &d.help {
         notes.push(format!("help: {help}"));
     }
     cs::Diagnostic::new(severity).with_code(d.code.as_str()).with_message(&d.message).with_labels(labels).with_notes(notes)
+}
+
+/// Longest source line a snippet shows (bytes).
+const MAX_SHOWN_LINE: usize = 1_000;
+
+/// The 1-based line and column of `span`'s start and its line's length, when that line (or
+/// any line the span covers) is longer than [`MAX_SHOWN_LINE`].
+fn long_line(files: &Files, file: FileId, span: &Range<usize>) -> Option<(usize, usize, usize)> {
+    let text = &files.try_get(file)?.text;
+    let start = span.start.min(text.len());
+    let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
+    let end = span.end.clamp(start, text.len());
+    let line_end = text[end..].find('\n').map_or(text.len(), |i| end + i);
+    let longest = text[line_start..line_end].split('\n').map(str::len).max().unwrap_or(0);
+    (longest > MAX_SHOWN_LINE).then(|| {
+        let line = text[..line_start].matches('\n').count() + 1;
+        let column = text[line_start..start].chars().count() + 1;
+        (line, column, longest)
+    })
 }
 
 /// Render diagnostics for a terminal, rustc style (`error[E0101]: message`, source
@@ -106,6 +136,17 @@ pub fn render_human(diags: &[Diagnostic], files: &Files, color: bool) -> String 
 mod tests {
     use super::*;
     use crate::diag::Code;
+
+    #[test]
+    fn a_label_on_a_huge_line_is_a_note_not_a_snippet() {
+        let mut files = Files::new();
+        let long = format!("#version 330\nfloat x = {};\n", "(".repeat(50_000));
+        let f = files.add("big.frag", &long);
+        let d = Diagnostic::new(Code::SyntaxError, "too deep").at(f, 20_013..20_014, "here");
+        let out = render_human(&[d], &files, false);
+        assert!(out.len() < 1_000, "{} bytes printed", out.len());
+        assert!(out.contains("big.frag:2:20001: here (the line is"), "{out}");
+    }
 
     #[test]
     fn two_file_diagnostic_shows_both_files_and_lines() {

@@ -83,7 +83,7 @@ impl Expansion {
             let target = path.parent().unwrap_or(Path::new(".")).join(&name);
             let key = canonical(&target);
             if !crate::read::confined(&target, &self.root) {
-                let d = Diagnostic::new(Code::IncludeOutsideRoot, format!("`{name}` lies outside the project root"))
+                let d = Diagnostic::new(Code::OutsideRoot, format!("`{name}` lies outside the project root"))
                     .at(id, name_span, "included here")
                     .with_note(format!(
                         "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the stage's own): a shader under review must not read the machine's files",

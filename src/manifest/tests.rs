@@ -329,7 +329,8 @@ fn garbage_input_does_not_panic() {
 
 #[test]
 fn non_finite_and_huge_numbers() {
-    let text = minimal("[uniforms]\na = nan\nb = -inf\nc = 1e400\nd = 99999999999999999999\ne = [1.0, +nan]\nf = 0x7fffffffffffffff\n");
+    let text =
+        minimal("[uniforms]\na = nan\nb = -inf\nc = 1e400\nd = 99999999999999999999\ne = [1.0, +nan]\nf = 0x7fffffffffffffff\ng = -1e39\n");
     let diags = errors(&text, &minimal_dir());
     let spans: Vec<(Code, &str)> = diags.iter().map(|d| (d.code, span_text(&text, d))).collect();
     assert_eq!(
@@ -339,7 +340,8 @@ fn non_finite_and_huge_numbers() {
             (Code::ManifestValue, "-inf"),
             (Code::ManifestValue, "1e400"),
             (Code::ManifestValue, "99999999999999999999"),
-            (Code::ManifestValue, "+nan")
+            (Code::ManifestValue, "+nan"),
+            (Code::ManifestValue, "-1e39")
         ]
     );
 }
@@ -563,9 +565,11 @@ fn stage_rules() {
     let e = run("[stages]\ncompute = \"a.comp\"\n", &dir).unwrap();
     assert_eq!(e.stages[0].kind, StageKind::Compute);
 
+    // An absolute path is read inside the project root, and refused outside it (E0106).
     let abs = dir.join("a.vert");
     let text = format!("[stages]\nvertex = '{}'\n", abs.display());
-    assert_eq!(run(&text, Path::new("/nonexistent")).unwrap().stages[0].path, abs);
+    assert_eq!(run(&text, &dir).unwrap().stages[0].path, abs);
+    one(&errors(&text, Path::new("/nonexistent")), Code::OutsideRoot);
 }
 
 #[test]

@@ -107,3 +107,28 @@ fn files_that_include_each_other_behind_guards_are_no_cycle() {
     let out = check(&[], &[&file]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
 }
+
+#[test]
+fn manifest_paths_stay_inside_the_project_root() {
+    let outside = common::scratch("hostile", "manifest-outside");
+    std::fs::write(outside.join("secret.frag"), "// hunter2-outside\nvoid main() {}\n").unwrap();
+    let root = common::scratch("hostile", "manifest-pull-request");
+    std::fs::write(root.join("effectc.toml"), "").unwrap();
+    std::fs::write(root.join("a.vert"), "#version 330\nin vec3 p;\nvoid main() { gl_Position = vec4(p, 1.0); }\n").unwrap();
+    let fields = [
+        ("[stages]\nvertex = \"a.vert\"\nfragment = \"../manifest-outside/secret.frag\"\n", "stage"),
+        ("[stages]\nvertex = \"a.vert\"\n[textures]\nt = { file = \"/proc/self/environ\" }\n", "texture"),
+        ("[stages]\nvertex = \"a.vert\"\n[mesh]\nobj = \"/proc/self/environ\"\n", "mesh"),
+    ];
+    for (body, what) in fields {
+        let manifest = root.join("effect.toml");
+        std::fs::write(&manifest, format!("name = \"leak\"\n{body}")).unwrap();
+        for format in ["human", "json", "github", "sarif"] {
+            let out = check(&["--format", format], &[&manifest]);
+            let all = format!("{}{}", stdout(&out), String::from_utf8_lossy(&out.stderr));
+            assert_eq!(code(&out), 1, "{what} ({format}): {all}");
+            assert!(all.contains("E0106"), "{what} ({format}): {all}");
+            assert!(!all.contains("hunter2"), "{what} ({format}) printed a refused file: {all}");
+        }
+    }
+}

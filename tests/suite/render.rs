@@ -266,3 +266,23 @@ fn depth_compare_lequal_lets_the_skybox_trick_through() {
     assert_eq!(centre("effect.toml"), [51, 102, 230], "lequal draws the far-plane quad");
     assert_eq!(centre("less.toml"), [0, 0, 0], "less keeps the clear colour");
 }
+
+#[test]
+fn a_bad_value_writes_no_frame_and_leaves_existing_ones_untouched() {
+    // `--set` values that are no value, or that no f32 holds (nan, inf, 1e39), stop the run
+    // before anything is drawn: the frames of an earlier run stay byte for byte.
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "bad-value");
+    let d = dir.to_str().unwrap();
+    let out = effectc(&["render", "effects/sun/effect.toml", "--frames", "1", "--size", "32x32", "--out", d]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let before = std::fs::read(dir.join("sun_0000.png")).unwrap();
+    for bad in ["minBI=abc", "minBI=nan", "minBI=inf", "minBI=1e39"] {
+        let out = effectc(&["render", "effects/sun/effect.toml", "--frames", "1", "--size", "32x32", "--set", bad, "--out", d]);
+        assert_eq!(code(&out), 1, "{bad}: {}", stdout(&out));
+        assert!(stdout(&out).contains("E0006"), "{bad}: {}", stdout(&out));
+        assert_eq!(std::fs::read(dir.join("sun_0000.png")).unwrap(), before, "{bad} rewrote the frame");
+    }
+}

@@ -206,7 +206,7 @@ fn set_gives_uniforms_their_value_and_checks_it() {
     assert!(String::from_utf8_lossy(&r.stdout).contains("error[E0221]"), "a list for a float does not fit");
     let r = render(&["gain=abc"]);
     assert_eq!(r.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&r.stdout).contains("is not a number, a boolean or a list"));
+    assert!(String::from_utf8_lossy(&r.stdout).contains("is not a finite number a shader can hold, a boolean or a list"));
 }
 
 #[test]

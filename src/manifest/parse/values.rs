@@ -83,10 +83,16 @@ impl Ctx<'_> {
                 }
             },
             DeValue::Float(f) => match f.as_str().parse::<f64>() {
-                Ok(x) if x.is_finite() => Some(x),
+                // Shaders hold f32: 1e39 would arrive as +Inf.
+                Ok(x) if x.is_finite() && x.abs() <= f64::from(f32::MAX) => Some(x),
                 _ => {
-                    let d = self.report(Code::ManifestValue, v.span(), format!("{what} must be a finite number"), "not a finite number");
-                    d.notes.push("`nan`, `inf` and numbers beyond the f64 range are not accepted".into());
+                    let d = self.report(
+                        Code::ManifestValue,
+                        v.span(),
+                        format!("{what} must be a finite 32-bit number"),
+                        "not a finite 32-bit number",
+                    );
+                    d.notes.push("`nan`, `inf` and numbers beyond ±3.4e38 (the 32-bit float range a shader holds) are not accepted".into());
                     None
                 }
             },
@@ -97,7 +103,8 @@ impl Ctx<'_> {
         }
     }
 
-    /// A path relative to the manifest directory that must name an existing file.
+    /// A path relative to the manifest directory that must name an existing file inside the
+    /// project root ([`crate::read::project_root`]; E0106 outside it, never opened).
     pub(super) fn file_path(&mut self, v: &Val<'_>, what: &str, code: Code, noun: &str) -> Option<PathBuf> {
         let rel = self.string(v, what)?;
         if rel.trim().is_empty() {
@@ -105,6 +112,20 @@ impl Ctx<'_> {
             return None;
         }
         let path = self.dir.join(rel);
+        let root = crate::read::project_root(&self.dir.join("effect.toml"));
+        if !crate::read::confined(&path, &root) {
+            let d = self.report(
+                Code::OutsideRoot,
+                v.span(),
+                format!("{noun} `{rel}` lies outside the project root"),
+                "outside the project root",
+            );
+            d.notes.push(format!(
+                "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the manifest's own): a manifest under review must not read the machine's files",
+                root.display()
+            ));
+            return None;
+        }
         if !path.is_file() {
             let d = self.report(code, v.span(), format!("{noun} not found: `{rel}`"), "no file at this path");
             d.notes.push(format!("looked for `{}`", path.display()));
