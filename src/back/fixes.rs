@@ -343,6 +343,51 @@ pub fn read_only_unwritten_storage(module: &mut Module) {
     }
 }
 
+/// Storage images GLSL declares without `readonly`/`writeonly` are read-write in naga's IR;
+/// WebGPU takes read-write storage textures only for the 32-bit single-channel formats. An
+/// image the program only reads becomes read-only, one it only writes write-only (GL's
+/// meaning is the same: the access the code makes). Images passed to functions keep their
+/// type (the parameters share it).
+pub fn narrow_storage_image_access(module: &mut Module) {
+    use naga::valid::GlobalUse;
+    use naga::{ImageClass, StorageAccess};
+    let Ok(info) = crate::front::naga_run::validator().validate(module) else { return };
+    let uses = |h: naga::Handle<naga::GlobalVariable>| {
+        let mut u = GlobalUse::empty();
+        for (f, _) in module.functions.iter() {
+            u |= info[f][h];
+        }
+        for i in 0..module.entry_points.len() {
+            u |= info.get_entry_point(i)[h];
+        }
+        u
+    };
+    let passed: Vec<naga::Handle<naga::Type>> = module.functions.iter().flat_map(|(_, f)| f.arguments.iter().map(|a| a.ty)).collect();
+    let mut changes = Vec::new();
+    for (h, g) in module.global_variables.iter() {
+        let TypeInner::Image { dim, arrayed, class: ImageClass::Storage { format, access } } = module.types[g.ty].inner else { continue };
+        if access != StorageAccess::LOAD | StorageAccess::STORE || passed.contains(&g.ty) {
+            continue;
+        }
+        let u = uses(h);
+        let narrowed = match (u.contains(GlobalUse::READ), u.intersects(GlobalUse::WRITE | GlobalUse::ATOMIC)) {
+            (_, true) if u.contains(GlobalUse::ATOMIC) => continue,
+            (true, false) | (false, false) => StorageAccess::LOAD,
+            (false, true) => StorageAccess::STORE,
+            (true, true) => continue,
+        };
+        let ty = Type {
+            name: module.types[g.ty].name.clone(),
+            inner: TypeInner::Image { dim, arrayed, class: ImageClass::Storage { format, access: narrowed } },
+        };
+        changes.push((h, ty));
+    }
+    for (h, ty) in changes {
+        let span = module.types.get_span(module.global_variables[h].ty);
+        module.global_variables[h].ty = module.types.insert(ty, span);
+    }
+}
+
 /// Puts the interpolation and sampling qualifiers the user wrote on interface-block members
 /// onto the bindings of this stage's outputs (vertex) or inputs (fragment), by member name.
 pub fn block_member_interpolation(module: &mut Module, syntax: &crate::front::syntax::StageSyntax) {

@@ -169,6 +169,7 @@ pub fn translate(
         left_out.retain(|l| !l.name.starts_with("gl_"));
     }
     fixes::read_only_unwritten_storage(&mut module);
+    fixes::narrow_storage_image_access(&mut module);
     let info = crate::front::naga_run::validator()
         .validate(&module)
         .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", e.as_inner()))])?;

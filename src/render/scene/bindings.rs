@@ -47,6 +47,13 @@ pub(super) fn bind_groups(
         ));
         at.push((b.group, b.binding));
     }
+    // Storage textures (GL image units): zeroed images of each binding's format.
+    let images: Vec<((u32, u32), wgpu::TextureView)> = by_group
+        .values()
+        .flatten()
+        .filter(|b| b.kind == "storage_texture")
+        .filter_map(|b| Some(((b.group, b.binding), storage_texture(gpu, b)?)))
+        .collect();
     let mut groups = Vec::new();
     for (group, bindings) in by_group {
         let mut entries = Vec::new();
@@ -57,6 +64,9 @@ pub(super) fn bind_groups(
                 }
                 "storage_buffer" => at.iter().position(|a| *a == (b.group, b.binding)).map(|i| storage[i].1.as_entire_binding()),
                 "texture" => textures.views.get(&b.name).map(wgpu::BindingResource::TextureView),
+                "storage_texture" => {
+                    images.iter().find(|(at, _)| *at == (b.group, b.binding)).map(|(_, v)| wgpu::BindingResource::TextureView(v))
+                }
                 "sampler" | "comparison_sampler" => textures.samplers.get(&b.name).map(wgpu::BindingResource::Sampler),
                 _ => None,
             };
@@ -69,6 +79,55 @@ pub(super) fn bind_groups(
         groups.push((group, bg));
     }
     (groups, storage)
+}
+
+/// Side of the zeroed images bound to storage textures (GL programs size them to their
+/// framebuffer; the scene's frame size is not known here).
+const IMAGE_SIDE: u32 = 256;
+
+/// A zeroed image for a storage-texture binding, of its format and dimension (None for a
+/// format WebGPU cannot bind as storage).
+fn storage_texture(gpu: &Gpu, b: &BindingInfo) -> Option<wgpu::TextureView> {
+    use wgpu::TextureFormat as T;
+    let format = match b.format? {
+        "r32float" => T::R32Float,
+        "r32uint" => T::R32Uint,
+        "r32sint" => T::R32Sint,
+        "rg32float" => T::Rg32Float,
+        "rg32uint" => T::Rg32Uint,
+        "rg32sint" => T::Rg32Sint,
+        "rgba8unorm" => T::Rgba8Unorm,
+        "rgba8snorm" => T::Rgba8Snorm,
+        "rgba8uint" => T::Rgba8Uint,
+        "rgba8sint" => T::Rgba8Sint,
+        "bgra8unorm" => T::Bgra8Unorm,
+        "rgba16float" => T::Rgba16Float,
+        "rgba16uint" => T::Rgba16Uint,
+        "rgba16sint" => T::Rgba16Sint,
+        "rgba32float" => T::Rgba32Float,
+        "rgba32uint" => T::Rgba32Uint,
+        "rgba32sint" => T::Rgba32Sint,
+        _ => return None,
+    };
+    let view_dimension = super::textures::view_dimension(b);
+    let (dimension, depth) = match view_dimension {
+        wgpu::TextureViewDimension::D1 => (wgpu::TextureDimension::D1, 1),
+        wgpu::TextureViewDimension::D3 => (wgpu::TextureDimension::D3, 4),
+        wgpu::TextureViewDimension::D2Array => (wgpu::TextureDimension::D2, 4),
+        _ => (wgpu::TextureDimension::D2, 1),
+    };
+    let height = if dimension == wgpu::TextureDimension::D1 { 1 } else { IMAGE_SIDE };
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(&b.name),
+        size: wgpu::Extent3d { width: IMAGE_SIDE, height, depth_or_array_layers: depth },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension,
+        format,
+        usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING,
+        view_formats: &[],
+    });
+    Some(texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(view_dimension), ..Default::default() }))
 }
 
 /// The scene's pipeline. wgpu derives the layout from the shader stage by stage, and refuses

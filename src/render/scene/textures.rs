@@ -36,6 +36,8 @@ impl Textures {
                         continue;
                     }
                     let view = match (decl, b.sample_type) {
+                        // A multisampled texture cannot be uploaded: it is a cleared target.
+                        (_, sample_type) if b.multisampled => multisampled_placeholder(gpu, b, sample_type == Some("depth")),
                         (_, Some("depth")) => depth_placeholder(gpu, b),
                         (_, Some("sint" | "uint")) => integer_placeholder(gpu, b),
                         (Some(decl), _) => {
@@ -199,6 +201,44 @@ fn depth_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
     }
     gpu.queue.submit([encoder.finish()]);
     texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
+}
+
+/// A 4-sample 1×1 texture cleared to magenta (depth: to 1.0), for a `sampler2DMS` the
+/// manifest cannot fill (only render targets are multisampled).
+fn multisampled_placeholder(gpu: &Gpu, b: &BindingInfo, depth: bool) -> wgpu::TextureView {
+    let format = if depth { wgpu::TextureFormat::Depth32Float } else { wgpu::TextureFormat::Rgba8Unorm };
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(&b.name),
+        size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 4,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::RENDER_ATTACHMENT,
+        view_formats: &[],
+    });
+    let view = texture.create_view(&Default::default());
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    let color = [Some(wgpu::RenderPassColorAttachment {
+        view: &view,
+        depth_slice: None,
+        resolve_target: None,
+        ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color { r: 1.0, g: 0.0, b: 1.0, a: 1.0 }), store: wgpu::StoreOp::Store },
+    })];
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("clear multisampled placeholder"),
+        color_attachments: if depth { &[] } else { &color },
+        depth_stencil_attachment: depth.then_some(wgpu::RenderPassDepthStencilAttachment {
+            view: &view,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    });
+    gpu.queue.submit([encoder.finish()]);
+    view
 }
 
 /// A 1×1 integer texture of zeros.

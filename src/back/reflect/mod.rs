@@ -8,13 +8,16 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use naga::{AddressSpace, Binding, Handle, ImageClass, ImageDimension, Module, ScalarKind, Statement, Type, TypeInner};
+use naga::{AddressSpace, Binding, Handle, Module, ScalarKind, Statement, Type, TypeInner};
 use serde::Serialize;
 
 use crate::back::merge::visit_statements;
+
+mod images;
 use crate::back::prune::LeftOut;
 use crate::front::plan::{Plan, Repr, UNIFORM_BLOCK};
 use crate::manifest::{Effect, UniformValue};
+use images::describe_image;
 
 /// Version of the reflection JSON schema (documented in the README).
 pub const SCHEMA_VERSION: u32 = 1;
@@ -163,6 +166,12 @@ pub struct BindingInfo {
     /// Textures: multisampled.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub multisampled: bool,
+    /// Storage textures: the texel format in WGSL's spelling (`rgba8unorm`), and the access
+    /// the code makes (`read`, `write`, `read_write`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub format: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub access: Option<&'static str>,
     /// Buffers: the bound struct's size in bytes.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub size: Option<u32>,
@@ -360,36 +369,15 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
             dimension: None,
             sample_type: None,
             multisampled: false,
+            format: None,
+            access: None,
             size: None,
             visibility: vis.get(&h).map(|s| s.iter().copied().collect()).unwrap_or_default(),
             glsl: None,
         };
         match &module.types[g.ty].inner {
             TypeInner::Image { dim, arrayed, class } => {
-                info.kind = if matches!(class, ImageClass::Storage { .. }) { "storage_texture" } else { "texture" };
-                info.dimension = Some(match (dim, arrayed) {
-                    (ImageDimension::D1, _) => "1d",
-                    (ImageDimension::D2, false) => "2d",
-                    (ImageDimension::D2, true) => "2d_array",
-                    (ImageDimension::D3, _) => "3d",
-                    (ImageDimension::Cube, false) => "cube",
-                    (ImageDimension::Cube, true) => "cube_array",
-                });
-                match class {
-                    ImageClass::Sampled { kind, multi } => {
-                        info.multisampled = *multi;
-                        info.sample_type = Some(match kind {
-                            ScalarKind::Sint => "sint",
-                            ScalarKind::Uint => "uint",
-                            _ => "float",
-                        });
-                    }
-                    ImageClass::Depth { multi } => {
-                        info.multisampled = *multi;
-                        info.sample_type = Some("depth");
-                    }
-                    _ => {}
-                }
+                describe_image(&mut info, *dim, *arrayed, class);
                 info.glsl = plan.textures.iter().find(|t| t.name == gname).map(|t| t.user_path.clone());
             }
             TypeInner::Sampler { comparison } => {
