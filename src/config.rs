@@ -137,7 +137,9 @@ impl Loaded {
 pub fn discover(input: &Path) -> Option<PathBuf> {
     let absolute = std::env::current_dir().ok()?.join(input);
     let start = if absolute.is_dir() { absolute.as_path() } else { absolute.parent()? };
-    start.ancestors().map(|d| d.join(FILE_NAME)).find(|p| p.is_file())
+    // Anything by that name counts (a directory too, which `load` then refuses): a settings
+    // file that is silently skipped would let a run pass under defaults nobody chose.
+    start.ancestors().map(|d| d.join(FILE_NAME)).find(|p| p.exists())
 }
 
 /// Loads `explicit` (`--config`), else the file [`discover`]ed from the first input, else
@@ -152,8 +154,12 @@ pub fn load(explicit: Option<&Path>, inputs: &[PathBuf]) -> Loaded {
         };
     };
     let mut files = Files::new();
-    let text = match std::fs::read_to_string(&path) {
-        Ok(t) => t,
+    let text = match crate::read::bounded(&path, crate::read::MAX_FILE_BYTES).map(|b| String::from_utf8(b).map_err(|e| e.utf8_error())) {
+        Ok(Ok(t)) => t,
+        Ok(Err(e)) => {
+            let d = Diagnostic::new(Code::ConfigInvalid, format!("`{}` is not UTF-8 text: {e}", path.display()));
+            return Loaded { config: Config::default(), files, diagnostics: vec![d] };
+        }
         Err(e) => {
             let d = Diagnostic::new(Code::ConfigInvalid, format!("cannot read `{}`: {e}", path.display()));
             return Loaded { config: Config::default(), files, diagnostics: vec![d] };

@@ -336,9 +336,16 @@ fn report_json(key: &str, reports: &impl serde::Serialize, adapter: &Option<Stri
     serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
 }
 
+/// Writes the report to stdout; a failed write (a full disk) is said on stderr, since a CI
+/// step must not fail without a word.
 fn print(text: &str) -> std::io::Result<()> {
     let mut stdout = std::io::stdout().lock();
-    stdout.write_all(text.as_bytes()).and_then(|_| stdout.flush())
+    let written = stdout.write_all(text.as_bytes()).and_then(|_| stdout.flush());
+    // A reader that stopped early (`| head`) asked for no more: no message then.
+    if let Some(e) = written.as_ref().err().filter(|e| e.kind() != std::io::ErrorKind::BrokenPipe) {
+        let _ = writeln!(std::io::stderr(), "effectc: cannot write the report to stdout: {e}");
+    }
+    written
 }
 
 /// 2 for usage/IO errors, 1 for errors in the input (or warnings when denied), else 0.

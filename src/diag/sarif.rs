@@ -37,9 +37,41 @@ struct Driver<'a> {
     rules: Vec<Rule<'a>>,
 }
 
+/// A rule as code scanning shows it: its id, a name, the code's title as the short
+/// description, a sentence on what kind of finding it is as the full one, a help link, and
+/// its default level.
 #[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
 struct Rule<'a> {
     id: &'a str,
+    name: String,
+    short_description: Message,
+    full_description: Message,
+    help_uri: String,
+    default_configuration: Configuration,
+}
+
+#[derive(Serialize)]
+struct Configuration {
+    level: &'static str,
+}
+
+impl Rule<'_> {
+    fn of(code: &Code) -> Rule<'_> {
+        let kind = match code.severity() {
+            Severity::Error => "an error: the program is wrong, or cannot be checked or translated",
+            Severity::Warning => "a warning: legal, but likely not what the author meant, or a hazard at run time",
+            Severity::Note => "a note: what effectc did or could not do, for the record",
+        };
+        Rule {
+            id: code.as_str(),
+            name: format!("{code:?}"),
+            short_description: Message { text: code.title().to_string() },
+            full_description: Message { text: format!("{} ({}). effectc reports {kind}.", code.title(), code.as_str()) },
+            help_uri: format!("{INFORMATION_URI}#diagnostics"),
+            default_configuration: Configuration { level: level(code.severity()) },
+        }
+    }
 }
 
 #[derive(Serialize)]
@@ -129,9 +161,17 @@ fn location(files: &Files, file: FileId, span: Option<std::ops::Range<usize>>) -
     Some(PhysicalLocation { artifact_location: ArtifactLocation { uri: path_to_uri(&source.path) }, region })
 }
 
+fn level(s: Severity) -> &'static str {
+    match s {
+        Severity::Error => "error",
+        Severity::Warning => "warning",
+        Severity::Note => "note",
+    }
+}
+
 /// Render diagnostics as a SARIF 2.1.0 log (pretty JSON, ending in a newline) with one run
 /// of the `effectc` tool. `tool.driver.rules` has one entry per distinct code, sorted by
-/// code; each result has `ruleId`/`ruleIndex`, `level` (`error`/`warning`/`note`),
+/// code, with its name, title, description, help link and default level; each result has `ruleId`/`ruleIndex`, `level` (`error`/`warning`/`note`),
 /// `message.text` (message, notes and `help: ...`, one per line), one location with a
 /// region (1-based lines, 1-based character columns with an exclusive end, byte offset and
 /// length) when the diagnostic has a file, and `relatedLocations` (with the label text as
@@ -145,11 +185,7 @@ pub fn render_sarif(diags: &[Diagnostic], files: &Files) -> String {
         .map(|d| SarifResult {
             rule_id: d.code.as_str(),
             rule_index: codes.binary_search(&d.code).expect("every code is in the rules"),
-            level: match d.severity() {
-                Severity::Error => "error",
-                Severity::Warning => "warning",
-                Severity::Note => "note",
-            },
+            level: level(d.severity()),
             message: Message { text: full_message(d) },
             locations: d
                 .file
@@ -179,7 +215,7 @@ pub fn render_sarif(diags: &[Diagnostic], files: &Files) -> String {
                     name: "effectc",
                     information_uri: INFORMATION_URI,
                     version: env!("CARGO_PKG_VERSION"),
-                    rules: codes.iter().map(|id| Rule { id: id.as_str() }).collect(),
+                    rules: codes.iter().map(Rule::of).collect(),
                 },
             },
             results,
@@ -217,7 +253,14 @@ mod tests {
         assert_eq!(driver["name"], "effectc");
         assert_eq!(driver["version"], env!("CARGO_PKG_VERSION"));
         assert_eq!(driver["informationUri"], INFORMATION_URI);
-        assert_eq!(driver["rules"], json!([{"id": "E0301"}, {"id": "W0001"}]));
+        let rules = driver["rules"].as_array().unwrap();
+        let ids: Vec<&str> = rules.iter().map(|r| r["id"].as_str().unwrap()).collect();
+        assert_eq!(ids, ["E0301", "W0001"]);
+        assert_eq!(rules[0]["name"], "BindingConflict");
+        assert_eq!(rules[0]["shortDescription"]["text"], Code::BindingConflict.title());
+        assert!(rules[0]["fullDescription"]["text"].as_str().unwrap().contains("an error"));
+        assert_eq!(rules[1]["defaultConfiguration"]["level"], "warning");
+        assert!(rules.iter().all(|r| r["helpUri"].as_str().unwrap().starts_with("https://")));
 
         let results = v["runs"][0]["results"].as_array().unwrap();
         assert_eq!(results.len(), 3);

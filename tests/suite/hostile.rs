@@ -132,3 +132,19 @@ fn manifest_paths_stay_inside_the_project_root() {
         }
     }
 }
+
+#[test]
+fn a_report_that_cannot_be_written_and_a_settings_directory_are_said() {
+    // `check > /dev/full`: exit 2 with the reason on stderr, not a silent failure.
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_effectc")).args(["check", "effects/sun"]).stdout(full).output().unwrap();
+    assert_eq!(code(&out), 2);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write the report to stdout"), "{}", String::from_utf8_lossy(&out.stderr));
+    // An `effectc.toml` that is a directory is refused, not skipped for the defaults.
+    let dir = common::scratch("hostile", "settings-dir");
+    std::fs::create_dir_all(dir.join("effectc.toml")).unwrap();
+    std::fs::write(dir.join("p.frag"), "#version 330\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n").unwrap();
+    let out = check(&[], &[&dir.join("p.frag")]);
+    assert_eq!(code(&out), 2, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0015") && stdout(&out).contains("a directory"), "{}", stdout(&out));
+}
