@@ -15,7 +15,6 @@ use std::time::Duration;
 use notify::{EventKind, RecursiveMode, Watcher};
 
 use crate::diag::paths::absolute;
-use crate::stage::StageKind;
 
 /// How long the files must be quiet before a round starts.
 pub const DEBOUNCE: Duration = Duration::from_millis(200);
@@ -38,7 +37,11 @@ pub fn run(inputs: &[PathBuf], clear: bool, mut round: impl FnMut(Option<&[PathB
     for r in &roots {
         watcher.watch(r, RecursiveMode::Recursive).map_err(|e| format!("cannot watch `{}`: {e}", r.display()))?;
     }
-    let mut read: BTreeSet<PathBuf> = round(None).iter().map(|p| absolute(p)).collect();
+    // The files named on the command line are watched whatever a round read: one deleted
+    // and written again (a `git checkout`, an editor's save) must start a round.
+    let named: Vec<PathBuf> = inputs.iter().map(|p| absolute(p)).filter(|p| !p.is_dir()).collect();
+    let with_named = |read: Vec<PathBuf>| -> BTreeSet<PathBuf> { read.iter().map(|p| absolute(p)).chain(named.iter().cloned()).collect() };
+    let mut read: BTreeSet<PathBuf> = with_named(round(None));
     let mut watched: BTreeSet<PathBuf> = BTreeSet::new();
     loop {
         for dir in read.iter().filter_map(|p| p.parent()) {
@@ -67,7 +70,7 @@ pub fn run(inputs: &[PathBuf], clear: bool, mut round: impl FnMut(Option<&[PathB
             print!("{CLEAR}");
         }
         let changed: Vec<PathBuf> = changed.into_iter().collect();
-        read = round(Some(&changed)).iter().map(|p| absolute(p)).collect();
+        read = with_named(round(Some(&changed)));
     }
 }
 
@@ -86,10 +89,11 @@ fn collect(event: &notify::Event, read: &BTreeSet<PathBuf>, roots: &[PathBuf], c
     }
 }
 
-/// A file that can add or change a program: a stage file, a manifest, a settings file.
+/// A file that can add or change a program: a stage file (by any name the directory walk
+/// takes, `.glsl` included), a manifest, a settings file.
 fn is_program_file(p: &Path) -> bool {
     let ext = p.extension().and_then(|e| e.to_str()).unwrap_or("");
-    ext == "toml" || StageKind::from_extension(ext).is_some()
+    ext == "toml" || ext == "glsl" || crate::inputs::stage_of(p, None).is_some()
 }
 
 #[cfg(test)]

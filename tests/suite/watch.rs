@@ -124,3 +124,20 @@ fn render_renders_again_only_what_changed() {
     let second = w.until("watching");
     assert!(rendered(&second, "two") && !rendered(&second, "one"), "only `two` again: {second:#?}");
 }
+
+#[test]
+fn a_named_file_deleted_and_written_again_is_watched_again() {
+    let dir = programs("recreate", &["a"]);
+    let (vert, frag) = (dir.join("a.vert"), dir.join("a.frag"));
+    let w = Watching::start(&["check", "--watch", "--color", "never", arg(&vert), arg(&frag)]);
+    let first = w.until("watching");
+    assert!(first.iter().any(|l| l.contains("checked 1 program")), "{first:#?}");
+    std::thread::sleep(Duration::from_millis(300));
+    std::fs::remove_file(&frag).unwrap();
+    let second = w.until("watching");
+    assert!(second.iter().any(|l| l.contains("E0010")), "the deleted file is reported: {second:#?}");
+    std::thread::sleep(Duration::from_millis(300));
+    std::fs::write(&frag, FRAGMENT.replace("colour = vec4(uv, 0.0, 1.0);", "colour = vec4(uv, 0.0);")).unwrap();
+    let third = w.until("watching");
+    assert!(third.iter().any(|l| l.contains("checked 1 program: 1 error")), "the file written again is read again: {third:#?}");
+}
