@@ -359,8 +359,17 @@ impl Analyzer<'_> {
                 if a.c.len() != 1 || b.c.len() != 1 {
                     return state;
                 }
-                let (ai, bi) = (a.c[0], b.c[0]);
-                let int = matches!(a.kind, naga::ScalarKind::Sint | naga::ScalarKind::Uint);
+                // An integer holds its type's range whatever else is unknown about it: `i < n`
+                // bounds `i` by `INT_MAX - 1` even when `n` is any int (a loop to a uniform
+                // count never overflows its counter).
+                let range = match a.kind {
+                    naga::ScalarKind::Sint => Some(Iv::new(f64::from(i32::MIN), f64::from(i32::MAX))),
+                    naga::ScalarKind::Uint => Some(Iv::new(0.0, f64::from(u32::MAX))),
+                    _ => None,
+                };
+                let typed = |v: Iv| range.map_or(v, |r| v.meet(r));
+                let (ai, bi) = (typed(a.c[0]), typed(b.c[0]));
+                let int = range.is_some();
                 self.learn(c, &mut state, left, op, bi, int);
                 self.learn(c, &mut state, right, mirror(op), ai, int);
             }

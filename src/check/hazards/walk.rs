@@ -454,12 +454,25 @@ impl<'a> Analyzer<'a> {
             naga::ScalarKind::Uint => (0.0, f64::from(u32::MAX)),
             _ => return,
         };
+        // Integer steps are exact (f64 holds every 32-bit sum and product): no float
+        // rounding slack, which near 2^31 is wider than the step itself.
+        let (x, y) = (a.iv(), b.iv());
         let raw = match op {
-            naga::BinaryOperator::Add => a.iv().add(b.iv()),
-            naga::BinaryOperator::Subtract => a.iv().sub(b.iv()),
-            _ => a.iv().mul(b.iv()),
+            naga::BinaryOperator::Add => Iv::new(x.lo + y.lo, x.hi + y.hi),
+            naga::BinaryOperator::Subtract => Iv::new(x.lo - y.hi, x.hi - y.lo),
+            _ => {
+                let p = [x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi].map(|v| if v.is_nan() { 0.0 } else { v });
+                Iv::new(p.iter().copied().fold(f64::INFINITY, f64::min), p.iter().copied().fold(f64::NEG_INFINITY, f64::max))
+            }
         };
-        if a.known && b.known && (raw.hi > hi || raw.lo < lo) {
+        // A step can overflow only the way it moves: `i + 1` past the top, never below the
+        // bottom (the counter's own lower bound may be lost to widening, not to the step).
+        let (step_up, step_down) = match op {
+            naga::BinaryOperator::Add => (b.iv().hi > 0.0, b.iv().lo < 0.0),
+            naga::BinaryOperator::Subtract => (b.iv().lo < 0.0, b.iv().hi > 0.0),
+            _ => (true, true),
+        };
+        if a.known && b.known && ((step_up && raw.hi > hi) || (step_down && raw.lo < lo)) {
             self.report(Hazard::counter(span, a.iv(), raw, a.kind));
         }
     }
