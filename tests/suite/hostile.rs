@@ -20,6 +20,18 @@ fn check(args: &[&str], files: &[&std::path::Path]) -> std::process::Output {
         .unwrap()
 }
 
+/// `check` of `file` refuses with E0106 (exit 1) in every output format, and no byte of a
+/// refused file (the secret in it or in the environment) appears in any of them.
+fn refused_in_every_format(file: &std::path::Path, what: &str) {
+    for format in ["human", "json", "github", "sarif"] {
+        let out = check(&["--format", format], &[file]);
+        let all = format!("{}{}", stdout(&out), String::from_utf8_lossy(&out.stderr));
+        assert_eq!(code(&out), 1, "{what} ({format}): {all}");
+        assert!(all.contains("E0106"), "{what} ({format}): {all}");
+        assert!(!all.contains("hunter2"), "{what} ({format}) printed a refused file: {all}");
+    }
+}
+
 fn sum(terms: usize) -> String {
     let body: Vec<String> = (0..terms).map(|i| format!("u{}", i % 4)).collect();
     format!("#version 330\nuniform float u0, u1, u2, u3;\nout vec4 c;\nvoid main() {{ float x = {}; c = vec4(x); }}\n", body.join(" + "))
@@ -87,13 +99,7 @@ fn includes_stay_inside_the_project_root_and_nothing_refused_is_printed() {
     for (i, target) in targets.iter().enumerate() {
         let file = shaders.join(format!("p{i}.frag"));
         std::fs::write(&file, format!("#version 330\n#include \"{target}\"\nout vec4 c;\nvoid main() {{ c = vec4(1.0); }}\n")).unwrap();
-        for format in ["human", "json", "github", "sarif"] {
-            let out = check(&["--format", format], &[&file]);
-            let all = format!("{}{}", stdout(&out), String::from_utf8_lossy(&out.stderr));
-            assert_eq!(code(&out), 1, "{target} ({format}): {all}");
-            assert!(all.contains("E0106"), "{target} ({format}): {all}");
-            assert!(!all.contains("hunter2"), "{target} ({format}) printed a refused file: {all}");
-        }
+        refused_in_every_format(&file, target);
     }
 }
 
@@ -123,13 +129,7 @@ fn manifest_paths_stay_inside_the_project_root() {
     for (body, what) in fields {
         let manifest = root.join("effect.toml");
         std::fs::write(&manifest, format!("name = \"leak\"\n{body}")).unwrap();
-        for format in ["human", "json", "github", "sarif"] {
-            let out = check(&["--format", format], &[&manifest]);
-            let all = format!("{}{}", stdout(&out), String::from_utf8_lossy(&out.stderr));
-            assert_eq!(code(&out), 1, "{what} ({format}): {all}");
-            assert!(all.contains("E0106"), "{what} ({format}): {all}");
-            assert!(!all.contains("hunter2"), "{what} ({format}) printed a refused file: {all}");
-        }
+        refused_in_every_format(&manifest, what);
     }
 }
 

@@ -186,21 +186,34 @@ fn depth_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
             array_layer_count: Some(1),
             ..Default::default()
         });
-        encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("clear depth placeholder"),
-            color_attachments: &[],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &view,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        clear(&mut encoder, &view, None);
     }
     gpu.queue.submit([encoder.finish()]);
     texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
+}
+
+/// Clears a placeholder target: a colour target to `color`, a depth target (None) to 1.0.
+fn clear(encoder: &mut wgpu::CommandEncoder, view: &wgpu::TextureView, color: Option<wgpu::Color>) {
+    let colors = color.map(|c| {
+        [Some(wgpu::RenderPassColorAttachment {
+            view,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(c), store: wgpu::StoreOp::Store },
+        })]
+    });
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("clear placeholder"),
+        color_attachments: colors.as_ref().map_or(&[][..], |c| &c[..]),
+        depth_stencil_attachment: color.is_none().then_some(wgpu::RenderPassDepthStencilAttachment {
+            view,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    });
 }
 
 /// A 4-sample 1×1 texture cleared to magenta (depth: to 1.0), for a `sampler2DMS` the
@@ -219,24 +232,7 @@ fn multisampled_placeholder(gpu: &Gpu, b: &BindingInfo, depth: bool) -> wgpu::Te
     });
     let view = texture.create_view(&Default::default());
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    let color = [Some(wgpu::RenderPassColorAttachment {
-        view: &view,
-        depth_slice: None,
-        resolve_target: None,
-        ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color { r: 1.0, g: 0.0, b: 1.0, a: 1.0 }), store: wgpu::StoreOp::Store },
-    })];
-    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-        label: Some("clear multisampled placeholder"),
-        color_attachments: if depth { &[] } else { &color },
-        depth_stencil_attachment: depth.then_some(wgpu::RenderPassDepthStencilAttachment {
-            view: &view,
-            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
-            stencil_ops: None,
-        }),
-        timestamp_writes: None,
-        occlusion_query_set: None,
-        multiview_mask: None,
-    });
+    clear(&mut encoder, &view, (!depth).then_some(wgpu::Color { r: 1.0, g: 0.0, b: 1.0, a: 1.0 }));
     gpu.queue.submit([encoder.finish()]);
     view
 }
