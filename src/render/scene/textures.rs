@@ -37,7 +37,16 @@ impl Textures {
                     }
                     let view = match (decl, b.sample_type) {
                         // A multisampled texture cannot be uploaded: it is a cleared target.
-                        (_, sample_type) if b.multisampled => multisampled_placeholder(gpu, b, sample_type == Some("depth")),
+                        (_, sample_type) if b.multisampled => {
+                            let name = user.clone().unwrap_or_else(|| b.name.clone());
+                            let d = Diagnostic::new(
+                                Code::TexturePlaceholder,
+                                format!("sampler `{name}` is multisampled: it reads a placeholder cleared to magenta"),
+                            );
+                            let d = at_declaration(d, input.program, &name, Storage::Uniform, "this sampler");
+                            warnings.push(d.with_note("only render targets are multisampled; an image file cannot fill one"));
+                            multisampled_placeholder(gpu, b, sample_type == Some("depth"))
+                        }
                         (_, Some("depth")) => depth_placeholder(gpu, b),
                         (_, Some("sint" | "uint")) => integer_placeholder(gpu, b),
                         (Some(decl), _) => {
