@@ -36,7 +36,7 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
     let (mut outcome, checked) = request.input.check();
     let inputs = input_paths(&outcome, &request.input.paths);
     let mut written = Vec::new();
-    for c in &checked {
+    'programs: for c in &checked {
         for (result, dir_name) in translate_units(c, request.back) {
             let translation = match result {
                 Ok(t) => t,
@@ -61,8 +61,17 @@ pub fn run(request: &Request) -> (Outcome, Vec<Written>) {
                     match write_atomic(&path, &o.bytes, &inputs) {
                         Ok(()) => files.push(path),
                         Err(e) => {
+                            // The first failed write stops the command, with one message; the
+                            // program's files written so far go, so nothing is half there.
+                            for f in &files {
+                                let _ = std::fs::remove_file(f);
+                            }
                             outcome.io_error = true;
-                            outcome.diagnostics.push(Diagnostic::new(Code::OutputIo, e));
+                            outcome.diagnostics.push(
+                                Diagnostic::new(Code::OutputIo, e)
+                                    .with_note("nothing more was written: the first failed write stops the run"),
+                            );
+                            break 'programs;
                         }
                     }
                 }

@@ -339,6 +339,10 @@ fn draw_frames(
     }
     let mut diags = encoded.errors;
     let mut files = encoded.files;
+    if diags.iter().any(|d| d.code == Code::OutputIo) {
+        // Written frames only: a write that failed ended the run there.
+        reports.truncate(encoded.frames as usize);
+    }
     for (index, nf, mask) in &encoded.non_finite {
         if let Some(r) = reports.iter_mut().find(|r| r.index == *index) {
             r.non_finite = Some((nf.nan, nf.pos_inf, nf.neg_inf));

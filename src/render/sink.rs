@@ -162,7 +162,7 @@ impl Sink<'_> {
         Encoded { index, images, non_finite, kept }
     }
 
-    /// Writes the oldest pending frame; false when the stream cannot take more.
+    /// Writes the oldest pending frame; false when the stream or the disk cannot take more.
     fn write_next(
         &self,
         pending: &mut VecDeque<mpsc::Receiver<Encoded>>,
@@ -184,7 +184,15 @@ impl Sink<'_> {
             match (path, stdout.as_mut()) {
                 (Some(path), _) => match write_atomic(&path, &bytes, self.inputs) {
                     Ok(()) => out.files.push(path),
-                    Err(e) => out.errors.push(Diagnostic::new(Code::OutputIo, e)),
+                    Err(e) => {
+                        // A full disk or a directory that cannot be written: the first failed
+                        // frame ends the run (the render loop stops when `rx` is dropped).
+                        out.errors.push(
+                            Diagnostic::new(Code::OutputIo, e)
+                                .with_note("no further frame was written: the first failed write stops the run"),
+                        );
+                        return false;
+                    }
                 },
                 (None, Some(s)) => {
                     if let Err(e) = s.write_all(&bytes) {

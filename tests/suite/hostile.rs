@@ -148,3 +148,23 @@ fn a_report_that_cannot_be_written_and_a_settings_directory_are_said() {
     assert_eq!(code(&out), 2, "{}", stdout(&out));
     assert!(stdout(&out).contains("E0015") && stdout(&out).contains("a directory"), "{}", stdout(&out));
 }
+
+#[test]
+fn the_first_failed_write_stops_the_run_with_one_message() {
+    // An output directory that cannot be made (a file is in its way): one E0014, exit 2,
+    // and no "translated"/frame claims for what was not written.
+    let dir = common::scratch("hostile", "unwritable");
+    let blocker = dir.join("blocker");
+    std::fs::write(&blocker, "a file, not a directory").unwrap();
+    let out_dir = blocker.join("out");
+    let out = common::effectc(&["translate", "--to", "wgsl,spv,reflect", "--out", out_dir.to_str().unwrap(), "effects/sun"]);
+    assert_eq!(code(&out), 2, "{}", stdout(&out));
+    assert_eq!(stdout(&out).matches("E0014").count(), 1, "{}", stdout(&out));
+    assert!(!stdout(&out).contains("translated sun"), "{}", stdout(&out));
+    if crate::render::have_gpu() {
+        let out = common::effectc(&["render", "--frames", "3", "--size", "16x16", "--out", out_dir.to_str().unwrap(), "effects/sun"]);
+        assert_eq!(code(&out), 2, "{}", stdout(&out));
+        assert_eq!(stdout(&out).matches("E0014").count(), 1, "{}", stdout(&out));
+        assert!(stdout(&out).contains("0 frames"), "{}", stdout(&out));
+    }
+}
