@@ -174,6 +174,13 @@ fn render(args: &RenderArgs, settings: &config::Loaded, changed: Option<&[PathBu
         return (render_usage_error(message), Vec::new());
     }
     let streams = args.streams();
+    if streams && stdout_closed() {
+        // Rust's stdout swallows writes to a closed descriptor: the frames would vanish
+        // and the run would pass.
+        let message = "`--out -` writes frames to stdout, which is closed here: nothing would receive them";
+        let _ = writeln!(std::io::stderr(), "error: {message}");
+        return (ExitCode::from(2), Vec::new());
+    }
     if streams && std::io::stdout().is_terminal() {
         let message = "`--out -` writes binary frames to stdout, which is a terminal here; pipe it (`| ffmpeg -f image2pipe -i - out.mp4`)";
         return (render_usage_error(message.into()), Vec::new());
@@ -334,6 +341,20 @@ fn report_json(key: &str, reports: &impl serde::Serialize, adapter: &Option<Stri
     let mut doc = serde_json::json!({ "version": 1, "adapter": adapter, "diagnostics": diagnostics });
     doc[key] = serde_json::to_value(reports).unwrap_or_default();
     serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
+}
+
+/// Whether the process was started with descriptor 1 closed (`>&-`). Rust's runtime then
+/// opens `/dev/null` read-write in its place (a shell's `> /dev/null` opens it write-only),
+/// so that is what is looked for; where `/proc` cannot tell, stdout is taken as open.
+fn stdout_closed() -> bool {
+    let target = std::fs::read_link("/proc/self/fd/1");
+    let flags = std::fs::read_to_string("/proc/self/fdinfo/1").ok().and_then(|info| {
+        let line = info.lines().find(|l| l.starts_with("flags:"))?;
+        u32::from_str_radix(line["flags:".len()..].trim(), 8).ok()
+    });
+    const O_ACCMODE: u32 = 0o3;
+    const O_RDWR: u32 = 0o2;
+    matches!((target, flags), (Ok(t), Some(f)) if t == std::path::Path::new("/dev/null") && f & O_ACCMODE == O_RDWR)
 }
 
 /// Writes the report to stdout; a failed write (a full disk) is said on stderr, since a CI

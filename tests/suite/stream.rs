@@ -176,3 +176,25 @@ fn a_reader_that_stops_early_ends_the_run_without_a_panic() {
     assert!(!text.contains("panicked"), "{text}");
     assert!(text.contains("error[E0014]") && text.contains("closed"), "{text}");
 }
+
+#[test]
+fn a_stream_to_a_closed_stdout_is_refused() {
+    // `>&-`: the frames would go nowhere (Rust reopens a closed stdout on /dev/null), so
+    // the run fails with a message instead of passing; `> /dev/null` is a choice and works.
+    let bin = env!("CARGO_BIN_EXE_effectc");
+    let run = |redirect: &str| {
+        Command::new("sh")
+            .arg("-c")
+            .arg(format!("'{bin}' render --frames 1 --size 8x8 --out - effects/sun {redirect}"))
+            .env("NO_COLOR", "1")
+            .output()
+            .unwrap()
+    };
+    let closed = run(">&-");
+    assert_eq!(code(&closed), 2, "{}", stderr(&closed));
+    assert!(stderr(&closed).contains("stdout, which is closed"), "{}", stderr(&closed));
+    if have_gpu() {
+        let null = run("> /dev/null");
+        assert_eq!(code(&null), 0, "{}", stderr(&null));
+    }
+}
