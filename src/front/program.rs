@@ -240,6 +240,9 @@ fn accept_what_glslang_accepts(
                 }
                 out.push(as_limitation(d));
             }
+            // What naga could not take in a stage glslang rejects says nothing more: the
+            // stage is wrong, and its errors are glslang's.
+            Some(v) if !v.accepted && d.code == Code::NagaCannotTake => {}
             Some(v) if !v.accepted && d.is_error() && limit_of_effectc(d.code) => {
                 let line = line_of(&d);
                 // Both refuse the `#version` line: effectc's message says which version.

@@ -40,7 +40,7 @@ pub fn parse(log: &str) -> Vec<Message> {
         }
         let (at, text) = location(rest);
         let text = tidy(text);
-        if text == "'' : compilation terminated" {
+        if text == "compilation terminated" {
             // glslang's parser giving up after the errors already reported.
             continue;
         }
@@ -50,11 +50,16 @@ pub fn parse(log: &str) -> Vec<Message> {
 }
 
 /// glslang's text with its padding taken out: `' const int'` → `'const int'`, runs of
-/// spaces → one.
+/// spaces → one, and an empty token it names nothing with (`'' : array size must be …`) left
+/// out.
 fn tidy(text: &str) -> String {
     let quoted: Vec<String> =
         text.split('\'').enumerate().map(|(i, part)| if i % 2 == 1 { part.trim().to_string() } else { part.to_string() }).collect();
-    quoted.join("'").split_whitespace().collect::<Vec<_>>().join(" ")
+    let text = quoted.join("'").split_whitespace().collect::<Vec<_>>().join(" ");
+    match text.strip_prefix("'' : ") {
+        Some(rest) => rest.to_string(),
+        None => text,
+    }
 }
 
 fn is_summary(rest: &str) -> bool {
@@ -213,6 +218,7 @@ mod tests {
         assert_eq!(m[0].at, Some((0, 12, 5)));
         assert_eq!(m[0].text, "'foo' : undeclared identifier");
         assert_eq!(m[1].at, Some((0, 3, 0)));
+        assert_eq!(m[1].text, "syntax error", "an empty token is left out");
         let m =
             parse("ERROR: 0:4:13: '=' :  cannot convert from ' const int' to ' temp float'\nERROR: 0:4:16: '' : compilation terminated \n");
         assert_eq!(m.len(), 1);
