@@ -16,6 +16,7 @@ use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use naga::{AddressSpace, Block, Module, ResourceBinding, Span, Statement, TypeInner};
+use rspirv::spirv::Op;
 
 use crate::diag::{FileId, Files};
 use crate::front::naga_run::{self, Validated};
@@ -24,16 +25,16 @@ use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
 use crate::front::reference::log::{self, LineTable};
 use crate::stage::StageKind;
 
-/// SPIR-V opcodes read here (SPIR-V 1.0 §3.32).
-const OP_SOURCE_CONTINUED: u16 = 2;
-const OP_SOURCE: u16 = 3;
-const OP_STRING: u16 = 7;
-const OP_LINE: u16 = 8;
-const OP_FUNCTION: u16 = 54;
-const OP_LABEL: u16 = 248;
-const OP_FUNCTION_END: u16 = 56;
-const OP_TYPE_SAMPLED_IMAGE: u16 = 27;
-const OP_NO_LINE: u16 = 317;
+/// SPIR-V opcodes read here (SPIR-V 1.0 §3.32), from rspirv's grammar.
+const OP_SOURCE_CONTINUED: u16 = Op::SourceContinued as u16;
+const OP_SOURCE: u16 = Op::Source as u16;
+const OP_STRING: u16 = Op::String as u16;
+const OP_LINE: u16 = Op::Line as u16;
+const OP_FUNCTION: u16 = Op::Function as u16;
+const OP_LABEL: u16 = Op::Label as u16;
+const OP_FUNCTION_END: u16 = Op::FunctionEnd as u16;
+const OP_TYPE_SAMPLED_IMAGE: u16 = Op::TypeSampledImage as u16;
+const OP_NO_LINE: u16 = Op::NoLine as u16;
 /// Words in the SPIR-V header before the first instruction.
 const HEADER_WORDS: usize = 5;
 
