@@ -59,7 +59,7 @@ codes! {
     ManifestConflict => "E0009", "manifest keys that exclude each other",
     // Inputs and outputs (`inputs`, `check`, `output`).
     InputIo => "E0010", "input missing or unreadable",
-    UnknownStage => "E0011", "the stage of a file cannot be told from its extension",
+    UnknownStage => "E0011", "the stage of a file cannot be told from its name or its text",
     NotText => "E0012", "stage file is not UTF-8 text",
     InputRefused => "E0013", "input is not a regular file, or over the size limit",
     OutputIo => "E0014", "output cannot be written",

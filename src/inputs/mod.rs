@@ -77,10 +77,16 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
         } else {
             match stage_of(input, forced).or_else(|| selection.stage_of(input)) {
                 Some(kind) => loose.push((input.clone(), kind)),
-                None => diags.push(
-                    Diagnostic::new(Code::UnknownStage, format!("cannot tell the stage of `{}` from its extension", input.display()))
-                        .with_help("name it .vert/.vs/.vsh, .frag/.fs/.fsh, .geom/.gs, or pass --stage vertex|fragment|geometry|…"),
-                ),
+                None => match stage_from_text(input) {
+                    Some((kind, note)) => {
+                        diags.push(note);
+                        loose.push((input.clone(), kind));
+                    }
+                    None => diags.push(
+                        Diagnostic::new(Code::UnknownStage, format!("cannot tell the stage of `{}` from its name or its text", input.display()))
+                            .with_help("name it .vert/.vs/.vsh, .frag/.fs/.fsh, .geom/.gs (or x.vert.glsl, x_vs.glsl), or pass --stage vertex|fragment|geometry|…"),
+                    ),
+                },
             }
         }
     }
@@ -228,14 +234,9 @@ fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Dia
                 manifests.push(p);
             } else if let Some(kind) = stage_of(&p, None).or_else(|| selection.stage_of(&p)) {
                 stage_files.push((p, kind));
-            } else if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("glsl")) {
-                let text = crate::read::bounded(&p, crate::read::MAX_FILE_BYTES)
-                    .map(|b| String::from_utf8_lossy(&b).into_owned())
-                    .unwrap_or_default();
-                if let Some((kind, why)) = stage_names::from_text(&text) {
-                    diags.push(Diagnostic::new(Code::StageFromText, format!("`{}` is read as a {kind} stage: {why}", p.display())));
-                    stage_files.push((p, kind));
-                }
+            } else if let Some((kind, note)) = stage_from_text(&p) {
+                diags.push(note);
+                stage_files.push((p, kind));
             }
         }
     }
@@ -248,6 +249,16 @@ fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Dia
     diags.extend(pair_with_the_folders_vertex_stage(&mut groups));
     programs.extend(groups);
     (programs, diags)
+}
+
+/// The stage a `.glsl` file's text shows, with the note (N0003) naming the evidence.
+fn stage_from_text(path: &Path) -> Option<(StageKind, Diagnostic)> {
+    if !path.extension().is_some_and(|e| e.eq_ignore_ascii_case("glsl")) {
+        return None;
+    }
+    let text = crate::read::bounded(path, crate::read::MAX_FILE_BYTES).map(|b| String::from_utf8_lossy(&b).into_owned()).ok()?;
+    let (kind, why) = stage_names::from_text(&text)?;
+    Some((kind, Diagnostic::new(Code::StageFromText, format!("`{}` is read as a {kind} stage: {why}", path.display()))))
 }
 
 /// In a folder with exactly one vertex stage, each program with a fragment stage and no

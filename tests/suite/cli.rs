@@ -105,10 +105,18 @@ fn stage_flag_for_glsl_extension() {
     let file = dir.join("effect.glsl");
     std::fs::write(&file, GOOD_FRAG.replace("in vec2 uv;\n", "uniform vec2 uv;\n")).unwrap();
     let path = file.to_str().unwrap();
+    // Its text shows the stage (a fragment output, no gl_Position): read so, with a note.
     let out = effectc(&["check", path]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains(Code::StageFromText.as_str()) && stdout(&out).contains("read as a fragment stage"), "{}", stdout(&out));
+    // A text that shows no stage needs --stage.
+    let blank = dir.join("blank.glsl");
+    std::fs::write(&blank, "#version 330\nvoid main() {}\n").unwrap();
+    let blank = blank.to_str().unwrap();
+    let out = effectc(&["check", blank]);
     assert_eq!(code(&out), 1, "{}", stdout(&out));
     assert!(stdout(&out).contains(Code::UnknownStage.as_str()));
-    let out = effectc(&["check", "--stage", "fragment", path]);
+    let out = effectc(&["check", "--stage", "fragment", blank]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     assert!(stdout(&out).contains("checked 1 program"));
 }
