@@ -50,6 +50,21 @@ pub fn bounded(path: &Path, limit: u64) -> Result<Vec<u8>, Refused> {
     Ok(bytes)
 }
 
+/// [`bounded`] as text, bytes that are not UTF-8 replaced (for looking into a file, not
+/// for compiling it).
+pub fn bounded_text_lossy(path: &Path) -> Result<String, Refused> {
+    bounded(path, MAX_FILE_BYTES).map(|b| String::from_utf8_lossy(&b).into_owned())
+}
+
+/// The note of a refusal to read outside `root` (E0106): which directory, why, and that
+/// `what` (the stage, the manifest) is under review.
+pub fn outside_root_note(root: &Path, what: &str) -> String {
+    format!(
+        "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the {what}'s own): a {what} under review must not read the machine's files",
+        root.display()
+    )
+}
+
 fn kind_of(meta: &std::fs::Metadata) -> &'static str {
     use std::os::unix::fs::FileTypeExt;
     let t = meta.file_type();

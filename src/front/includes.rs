@@ -85,10 +85,7 @@ impl Expansion {
             if !crate::read::confined(&target, &self.root) {
                 let d = Diagnostic::new(Code::OutsideRoot, format!("`{name}` lies outside the project root"))
                     .at(id, name_span, "included here")
-                    .with_note(format!(
-                        "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the stage's own): a shader under review must not read the machine's files",
-                        self.root.display()
-                    ));
+                    .with_note(crate::read::outside_root_note(&self.root, "stage"));
                 self.fail(diags, d);
                 continue;
             }

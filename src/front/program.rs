@@ -118,7 +118,7 @@ pub fn compile(
         // program is glslang's to link.
         diags.extend(judgement.link_errors.iter().cloned());
     }
-    let dialect = reference::dialect(files, &ordered, options.env);
+    let dialect = judgement.dialect;
     program.map(|mut p| {
         for stage in &mut p.stages {
             if stage.naga.is_none() && stage.limitation.is_none() && stage.syntax.stage.naga().is_some() {

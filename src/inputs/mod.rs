@@ -131,17 +131,20 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
 fn units_of_one_program(files: &[(PathBuf, StageKind)]) -> bool {
     let mut mains: BTreeMap<StageKind, usize> = BTreeMap::new();
     for (path, kind) in files {
-        let text =
-            crate::read::bounded(path, crate::read::MAX_FILE_BYTES).map(|b| String::from_utf8_lossy(&b).into_owned()).unwrap_or_default();
+        let text = crate::read::bounded_text_lossy(path).unwrap_or_default();
         *mains.entry(*kind).or_default() += usize::from(defines_main(&text));
     }
     mains.values().all(|n| *n <= 1)
 }
 
 /// The text defines `void main(`, outside comments.
-pub(crate) fn defines_main(text: &str) -> bool {
-    let code = without_comments(text);
-    let mut rest = code.as_str();
+fn defines_main(text: &str) -> bool {
+    code_defines_main(&without_comments(text))
+}
+
+/// `code` (comments already out) defines `void main(`.
+pub(crate) fn code_defines_main(code: &str) -> bool {
+    let mut rest = code;
     while let Some(i) = rest.find("main") {
         let before = rest[..i].trim_end();
         let after = rest[i + 4..].trim_start();
@@ -256,7 +259,7 @@ fn stage_from_text(path: &Path) -> Option<(StageKind, Diagnostic)> {
     if !path.extension().is_some_and(|e| e.eq_ignore_ascii_case("glsl")) {
         return None;
     }
-    let text = crate::read::bounded(path, crate::read::MAX_FILE_BYTES).map(|b| String::from_utf8_lossy(&b).into_owned()).ok()?;
+    let text = crate::read::bounded_text_lossy(path).ok()?;
     let (kind, why) = stage_names::from_text(&text)?;
     Some((kind, Diagnostic::new(Code::StageFromText, format!("`{}` is read as a {kind} stage: {why}", path.display()))))
 }

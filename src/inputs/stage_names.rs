@@ -40,10 +40,10 @@ pub fn from_name(path: &Path) -> Option<(StageKind, String)> {
 /// The stage a `.glsl` file's text shows, and the evidence (None: not a stage with `main`,
 /// or the text shows no stage or more than one).
 pub fn from_text(text: &str) -> Option<(StageKind, &'static str)> {
-    if !super::defines_main(text) {
+    let code = super::without_comments(text);
+    if !super::code_defines_main(&code) {
         return None;
     }
-    let code = super::without_comments(text);
     let has = |word: &str| contains_word(&code, word);
     let geometry = has("EmitVertex") || has("EmitStreamVertex");
     let tess_eval = has("gl_TessCoord");

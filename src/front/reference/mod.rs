@@ -35,6 +35,8 @@ pub struct Judgement {
     /// glslang's link errors (empty when every stage compiled and the program links, or
     /// when a stage did not compile and so nothing was linked).
     pub link_errors: Vec<Diagnostic>,
+    /// The dialect the program was compiled in.
+    pub dialect: Dialect,
 }
 
 impl Judgement {
@@ -99,7 +101,7 @@ pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> O
             link_errors.extend(link_diagnostics(stages, &verdict.log));
         }
     }
-    Some(Judgement { stages: verdicts, link_errors })
+    Some(Judgement { stages: verdicts, link_errors, dialect })
 }
 
 /// glslang's errors in `log` as E0105 diagnostics in `file` (an expanded stage's spans are

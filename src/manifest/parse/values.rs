@@ -120,10 +120,7 @@ impl Ctx<'_> {
                 format!("{noun} `{rel}` lies outside the project root"),
                 "outside the project root",
             );
-            d.notes.push(format!(
-                "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the manifest's own): a manifest under review must not read the machine's files",
-                root.display()
-            ));
+            d.notes.push(crate::read::outside_root_note(&root, "manifest"));
             return None;
         }
         if !path.is_file() {
