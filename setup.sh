@@ -3,14 +3,16 @@
 # System packages: glslang-tools and spirv-tools (peer tools for the benchmark and corpus
 # scripts), mesa-vulkan-drivers + libvulkan1 (lavapipe, the CPU Vulkan used for rendering),
 # ffmpeg (ffmpeg and ffprobe: the test that pipes `effectc render --out -` into ffmpeg),
-# g++ (the `glslang-sys` crate builds the Khronos reference compiler from its C++ source).
+# g++ (the `glslang-sys` crate builds the Khronos reference compiler from its C++ source),
+# libegl1 + libegl-mesa0 + libgl1-mesa-dri (Mesa's OpenGL driver, headless through EGL:
+# what `effectc verify` compares every translation with).
 set -euo pipefail
 cd "$(dirname "$0")"
 SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 if command -v apt-get >/dev/null; then
     missing=""
-    for pkg in glslang-tools spirv-tools mesa-vulkan-drivers libvulkan1 ffmpeg g++; do
+    for pkg in glslang-tools spirv-tools mesa-vulkan-drivers libvulkan1 ffmpeg g++ libegl1 libegl-mesa0 libgl1-mesa-dri; do
         dpkg -s "$pkg" >/dev/null 2>&1 || missing="$missing $pkg"
     done
     if [ -n "$missing" ]; then

@@ -34,6 +34,9 @@ pub enum Command {
     /// Check, translate to WGSL and render frames headlessly with wgpu (PNG, contact sheet,
     /// GIF, or frames streamed to stdout with `--out -`).
     Render(RenderArgs),
+    /// Render like `render`, draw the original GLSL with the system's OpenGL driver (same
+    /// scene), and compare every frame: exit 1 when a frame differs beyond the tolerance.
+    Verify(VerifyArgs),
     /// Sweep quality knobs: GPU ms/frame against the error from the reference value's frames.
     Bench(BenchArgs),
     /// Render into float targets at the ends and random points of the uniform ranges and at
@@ -260,6 +263,78 @@ pub struct RenderArgs {
     /// textures, meshes, new files below input directories), until interrupted.
     #[arg(long)]
     pub watch: bool,
+}
+
+#[derive(Debug, clap::Args)]
+pub struct VerifyArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// `NAME=VALUE`: a uniform's value (`0.5`, `3`, `true`, `1,0.5,0`), checked against the
+    /// declarations like a manifest default; wins over the manifest (repeatable).
+    #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parse_set)]
+    pub set: Vec<(String, String)>,
+    /// Number of frames (default: the manifest's `[render] frames`, else 1).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
+    pub frames: Option<u32>,
+    /// Frames per second of effect time (default: the manifest's `[render] fps`, else 30).
+    #[arg(long, conflicts_with = "time_step", value_parser = parse_positive)]
+    pub fps: Option<f64>,
+    /// Seconds of effect time between frames (instead of --fps).
+    #[arg(long, value_parser = parse_finite, allow_negative_numbers = true)]
+    pub time_step: Option<f64>,
+    /// Effect time of the first frame, in seconds.
+    #[arg(long, default_value_t = 0.0, value_parser = parse_finite, allow_negative_numbers = true)]
+    pub start: f64,
+    /// Frame size `WIDTHxHEIGHT` (default: the manifest's `[render] size`, else 512x512).
+    #[arg(long, value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Output directory (default: `out/<effect>/verify/`): per frame `<effect>_NNNN.png`
+    /// (the translation), `<effect>_NNNN_gl.png` (the OpenGL driver) and, when they differ
+    /// at all, `<effect>_NNNN_diff.png` (a heat map).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Largest per-channel difference (0–255) that still matches (default: the manifest's
+    /// `[verify] tolerance`, else 2).
+    #[arg(long)]
+    pub tolerance: Option<u8>,
+    /// Percent of pixels allowed beyond the tolerance (default: the manifest's `[verify]
+    /// max_differing`, else 0.1).
+    #[arg(long, value_parser = parse_percent)]
+    pub max_differing: Option<f64>,
+    /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop).
+    #[arg(long, default_value = "5", value_parser = parse_timeout, allow_negative_numbers = true)]
+    pub timeout: Duration,
+    /// Print the adapter and the GL renderer.
+    #[arg(long)]
+    pub verbose: bool,
+}
+
+impl VerifyArgs {
+    /// The request these flags make.
+    pub fn request(&self, config: &Config) -> crate::verify::command::VerifyRequest {
+        let step = match (self.fps, self.time_step) {
+            (Some(f), _) => TimeStep::Fps(f),
+            (None, Some(s)) => TimeStep::Seconds(s),
+            (None, None) => TimeStep::Default,
+        };
+        let mut render = render::command::Request::new(InputSpec { values: self.set.clone(), ..self.common.input_spec(config) });
+        render.frames = self.frames;
+        render.step = step;
+        render.start = self.start;
+        render.size = self.size;
+        render.out = self.out.clone();
+        render.timeout = self.timeout;
+        crate::verify::command::VerifyRequest { render, tolerance: self.tolerance, max_differing: self.max_differing }
+    }
+}
+
+fn parse_percent(s: &str) -> Result<f64, String> {
+    let v: f64 = s.trim().trim_end_matches('%').parse().map_err(|_| format!("`{s}` is not a number"))?;
+    if (0.0..=100.0).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("{v} is not a percentage between 0 and 100"))
+    }
 }
 
 #[derive(Debug, clap::Args)]

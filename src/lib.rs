@@ -32,10 +32,12 @@
 //! 11. [`output`]: atomic file writes that never replace an input.
 //! 12. [`translate`]: `effectc translate`: check, translate, write the targets.
 //! 13. [`render`]: wgpu headless: one drawer per program (scene or pass graph), frames, PNG.
-//! 14. [`stress`]: renders under extreme inputs counting NaN/Inf, the culprit expression
+//! 14. [`verify`]: the translation's frames against the original GLSL drawn by the
+//!     system's OpenGL driver (glow + EGL), frame by frame.
+//! 15. [`stress`]: renders under extreme inputs counting NaN/Inf, the culprit expression
 //!     located by instrumenting the translation (`stress::culprit`).
-//! 15. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
-//! 16. [`cli`], [`watch`]: the command line (clap), above every command it configures;
+//! 16. [`bench`]: quality knobs swept, GPU time against error from the reference frames.
+//! 17. [`cli`], [`watch`]: the command line (clap), above every command it configures;
 //!     `--watch` running a command again when a file it read changes.
 
 pub mod assets;
@@ -56,4 +58,5 @@ pub mod render;
 pub mod stage;
 pub mod stress;
 pub mod translate;
+pub mod verify;
 pub mod watch;

@@ -7,7 +7,9 @@ use std::process::ExitCode;
 
 use clap::{CommandFactory, Parser};
 use effectc::check::Outcome;
-use effectc::cli::{self, BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, StressArgs, TranslateArgs};
+use effectc::cli::{
+    self, BenchArgs, CheckArgs, Cli, ColorChoice, Command, CommonArgs, Format, RenderArgs, StressArgs, TranslateArgs, VerifyArgs,
+};
 use effectc::{config, diag};
 
 fn main() -> ExitCode {
@@ -38,6 +40,7 @@ fn run() -> ExitCode {
         Command::Check(a) => &a.common,
         Command::Translate(a) => &a.common,
         Command::Render(a) => &a.common,
+        Command::Verify(a) => &a.common,
         Command::Bench(a) => &a.common,
         Command::Stress(a) => &a.common,
         Command::Completions(args) => return print_bytes(&cli::completions(args.shell)),
@@ -52,6 +55,7 @@ fn run() -> ExitCode {
         Command::Check(args) => repeat(common, args.watch, false, |s, _| check(args, s)),
         Command::Translate(args) => repeat(common, args.watch, false, |s, _| translate(args, s)),
         Command::Render(args) => repeat(common, args.watch, args.streams(), |s, changed| render(args, s, changed)),
+        Command::Verify(args) => repeat(common, false, false, |s, _| verify(args, s)),
         Command::Bench(args) => repeat(common, false, false, |s, _| bench(args, s)),
         Command::Stress(args) => repeat(common, false, false, |s, _| stress(args, s)),
         Command::Completions(_) | Command::Man => ExitCode::SUCCESS,
@@ -135,6 +139,7 @@ enum Reach {
     Check,
     Translate,
     Render,
+    Verify,
     Stress,
     Bench,
 }
@@ -148,7 +153,8 @@ impl Reach {
         match group {
             "00" | "01" | "02" => true,
             "03" => self != Reach::Check,
-            "04" => matches!(self, Reach::Render | Reach::Stress | Reach::Bench),
+            "04" => matches!(self, Reach::Render | Reach::Verify | Reach::Stress | Reach::Bench),
+            "05" => self == Reach::Verify,
             "07" if matches!(s, "E0701" | "W0702") => self == Reach::Stress,
             "07" => true,
             "08" => self == Reach::Bench,
@@ -213,6 +219,39 @@ fn render(args: &RenderArgs, settings: &config::Loaded, changed: Option<&[PathBu
         std::process::exit(1);
     }
     if printed.is_err() {
+        return (ExitCode::from(2), Vec::new());
+    }
+    (exit_code(&result.outcome, false), result.outcome.read)
+}
+
+fn verify(args: &VerifyArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBuf>) {
+    let c = &args.common;
+    let request = args.request(&settings.config);
+    let mut result = effectc::verify::command::run(&request);
+    result.outcome = settle(result.outcome, settings, Reach::Verify);
+    let text = match c.format {
+        Format::Json => {
+            let mut doc = report_json("programs", &result.verified, &result.adapter, &result.outcome);
+            if let Ok(mut v) = serde_json::from_str::<serde_json::Value>(&doc) {
+                v["gl"] = serde_json::to_value(&result.gl).unwrap_or_default();
+                doc = serde_json::to_string_pretty(&v).unwrap_or(doc) + "\n";
+            }
+            doc
+        }
+        _ => {
+            let mut text = String::new();
+            if c.format == Format::Human {
+                if let (true, Some(a), Some(g)) = (args.verbose, &result.adapter, &result.gl) {
+                    text.push_str(&format!("adapter: {a}\nOpenGL: {g}\n"));
+                }
+                for v in &result.verified {
+                    text.push_str(&effectc::verify::command::summary(v));
+                }
+            }
+            text + &diagnostics_text(c, &result.outcome)
+        }
+    };
+    if print(&text).is_err() {
         return (ExitCode::from(2), Vec::new());
     }
     (exit_code(&result.outcome, false), result.outcome.read)

@@ -34,6 +34,8 @@
 //!   their hazards still point at GLSL lines; reports snapshotted under `snapshots/through_spirv/`.
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
+//! - [`verify`]: `effectc verify`: every effect and the semantics suite against the system's
+//!   OpenGL driver; known failures listed, and failing when they start matching.
 //! - [`watch`]: `--watch` reports again after a change; `render` renders only what changed.
 
 #[path = "suite/bench.rs"]
@@ -76,5 +78,7 @@ mod stress;
 mod through_spirv;
 #[path = "suite/translate.rs"]
 mod translate;
+#[path = "suite/verify.rs"]
+mod verify;
 #[path = "suite/watch.rs"]
 mod watch;

@@ -2,7 +2,7 @@
 //!
 //! A code is a letter for its severity (`E` error, `W` warning, `N` note) and four digits;
 //! the hundreds group codes by the step that reports them (`E00xx` manifest and inputs,
-//! `E01xx` front, `E02xx` link, `E03xx` translate, `E04xx` render, `E07xx` stress and
+//! `E01xx` front, `E02xx` link, `E03xx` translate, `E04xx` render, `E05xx` verify, `E07xx` stress and
 //! hazards, `E08xx` bench). The table is sorted by the code string, so the derived order of
 //! [`Code`] is the order of the strings. The README's *Diagnostics* table lists every code
 //! (`tests/suite/codes.rs` checks it).
@@ -126,6 +126,11 @@ codes! {
     AssetLoad => "E0406", "texture or mesh file could not be loaded",
     FrameFailed => "E0407", "a frame failed on the device",
     Unrenderable => "E0408", "the program cannot be rendered",
+    // Verify (`verify`).
+    NoGlDriver => "E0501", "no OpenGL driver to verify against",
+    GlRejects => "E0502", "the OpenGL driver does not compile, link or draw the original program",
+    FramesDiffer => "E0503", "the translation draws a different picture than the OpenGL driver",
+    NotAGlProgram => "E0504", "Vulkan GLSL cannot be verified against an OpenGL driver",
     // Stress (`stress`).
     StressNonFinite => "E0701", "a stress case renders NaN or Inf pixels",
     // Bench (`bench`).

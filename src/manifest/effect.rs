@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use super::{
     CameraDecl, InstancesDecl, KnobDecl, MeshDecl, ModelDecl, PassDecl, RenderDecl, TargetDecl, TargetRef, TextureDecl, UniformDefault,
+    VerifyDecl,
 };
 use crate::diag::{Diagnostic, FileId};
 use crate::stage::StageKind;
@@ -44,6 +45,8 @@ pub struct Effect {
     pub output: Option<TargetRef>,
     /// `[knobs]`: uniforms `effectc bench` sweeps, in manifest order.
     pub knobs: Vec<KnobDecl>,
+    /// `[verify]`: the tolerance of `effectc verify`.
+    pub verify: VerifyDecl,
     /// Warnings found while reading the manifest (the effect is still usable).
     pub warnings: Vec<Diagnostic>,
 }

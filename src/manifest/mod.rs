@@ -50,7 +50,7 @@ pub use instances::{InstanceAttribute, InstanceSource, InstancesDecl, MAX_INSTAN
 pub use knobs::KnobDecl;
 pub use mesh::{BuiltinMesh, MeshAttribute, MeshDecl, MeshSource, MESH_ATTRIBUTES};
 pub use passes::{PassClear, PassDecl, PassDraw, SampleDecl, SampleKind, TargetDecl, TargetFormat, TargetRef, TargetSize};
-pub use scene::{Blend, CameraDecl, CameraKey, Cull, DepthCompare, Ease, ModelDecl, RenderDecl, MAX_FRAMES, MAX_FRAME_SIDE};
+pub use scene::{Blend, CameraDecl, CameraKey, Cull, DepthCompare, Ease, ModelDecl, RenderDecl, VerifyDecl, MAX_FRAMES, MAX_FRAME_SIDE};
 pub use textures::{
     Filter, Generator, GeneratorParams, TextureDecl, TextureKind, TextureSource, Wrap, DEFAULT_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
 };

@@ -87,6 +87,16 @@ pub struct RenderDecl {
     pub blend: Blend,
 }
 
+/// `[verify]`: how close `effectc verify` wants the translation's frames to the OpenGL
+/// driver's (defaults: 2/255 per channel on at most 0.1% of the pixels).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct VerifyDecl {
+    /// `tolerance`: the largest channel difference (0–255) a pixel may have and match.
+    pub tolerance: Option<u8>,
+    /// `max_differing`: the percentage of pixels (0–100) allowed beyond the tolerance.
+    pub max_differing: Option<f64>,
+}
+
 /// `glDepthFunc`: when a fragment passes the depth test.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum DepthCompare {

@@ -80,6 +80,7 @@ pub fn vertex_format(name: &str) -> wgpu::VertexFormat {
 }
 
 /// One vertex buffer holding every input, interleaved in input order.
+#[derive(Clone)]
 pub struct Interleaved {
     pub bytes: Vec<u8>,
     pub stride: u64,

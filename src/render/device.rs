@@ -187,39 +187,50 @@ impl Gpu {
                 })
             })
             .collect();
-        let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(spec.label),
-            layout: spec.layout,
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &buffers,
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: spec.topology,
-                cull_mode: spec.cull,
-                front_face: spec.front_face,
-                ..Default::default()
-            },
-            depth_stencil: spec.depth.map(|format| wgpu::DepthStencilState {
-                format,
-                depth_write_enabled: Some(spec.depth_write),
-                depth_compare: Some(spec.depth_compare),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: wgpu::MultisampleState::default(),
-            fragment: spec.fragment.then(|| wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &targets,
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
-        match pollster::block_on(scope.pop()) {
+        // wgpu compiles the WGSL with naga's SPIR-V writer, which can panic on a module its
+        // WGSL reader accepted: contained here as an error, not a crash of the run.
+        let made = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(spec.label),
+                layout: spec.layout,
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &buffers,
+                },
+                primitive: wgpu::PrimitiveState {
+                    topology: spec.topology,
+                    cull_mode: spec.cull,
+                    front_face: spec.front_face,
+                    ..Default::default()
+                },
+                depth_stencil: spec.depth.map(|format| wgpu::DepthStencilState {
+                    format,
+                    depth_write_enabled: Some(spec.depth_write),
+                    depth_compare: Some(spec.depth_compare),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState::default(),
+                fragment: spec.fragment.then(|| wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: Default::default(),
+                    targets: &targets,
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        }));
+        let popped = pollster::block_on(scope.pop());
+        let pipeline = made.map_err(|payload| {
+            format!(
+                "wgpu's shader compiler (naga's SPIR-V writer) crashed on the translated WGSL: {}",
+                crate::front::naga_run::panic_message(payload.as_ref())
+            )
+        })?;
+        match popped {
             Some(e) => Err(e.to_string()),
             None => Ok(pipeline),
         }

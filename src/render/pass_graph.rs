@@ -53,6 +53,29 @@ struct RunningPass {
     keep_depth: bool,
     clear: Option<[f32; 4]>,
     size: (u32, u32),
+    /// The targets attached, by location (`None`: nothing attached there).
+    color_targets: Vec<Option<String>>,
+    /// The depth target; `None` with `depth` set: a depth buffer of the pass's own.
+    depth_target: Option<String>,
+    /// (sampler, target) of the pass's `samples`.
+    samples: Vec<(String, String)>,
+}
+
+/// One running pass as another API needs it to draw the same graph (`effectc verify`).
+pub struct PassView<'a> {
+    pub name: &'a str,
+    pub scene: &'a Scene,
+    /// Attached colour targets by location, with their formats.
+    pub colors: Vec<Option<(&'a str, wgpu::TextureFormat)>>,
+    /// The depth target; `own_depth`: a transient depth buffer instead.
+    pub depth_target: Option<&'a str>,
+    pub own_depth: bool,
+    /// Depth is loaded from the target rather than cleared (and kept).
+    pub keep_depth: bool,
+    pub clear: Option<[f32; 4]>,
+    pub size: (u32, u32),
+    /// (sampler, target) pairs.
+    pub samples: &'a [(String, String)],
 }
 
 /// A texture read back after the passes.
@@ -160,6 +183,7 @@ impl PassGraph {
                 }
             }
             let color_views = decl.targets.iter().zip(attached).map(|(t, on)| if *on { view_of(&t.name) } else { None }).collect();
+            let color_targets = decl.targets.iter().zip(attached).map(|(t, on)| on.then(|| t.name.clone())).collect();
             passes.push(RunningPass {
                 index: p.index,
                 name: decl.name.clone(),
@@ -173,6 +197,9 @@ impl PassGraph {
                     PassClear::Default => Some(p.view.render.clear),
                 },
                 size,
+                color_targets,
+                depth_target: decl.depth.as_ref().map(|d| d.name.clone()),
+                samples: decl.samples.iter().map(|s| (s.sampler.clone(), s.target.name.clone())).collect(),
             });
         }
         if let Some(e) = pollster::block_on(scope.pop()) {
@@ -204,6 +231,29 @@ impl PassGraph {
             camera: effect.camera.clone().unwrap_or_default(),
             model: effect.model.clone(),
         })
+    }
+
+    /// Every running pass in order, as another API draws it.
+    pub fn pass_views(&self) -> Vec<PassView<'_>> {
+        self.passes
+            .iter()
+            .map(|p| PassView {
+                name: &p.name,
+                scene: &p.scene,
+                colors: p.color_targets.iter().zip(&p.scene.colors).map(|(t, f)| Some((t.as_deref()?, (*f)?))).collect(),
+                depth_target: p.depth_target.as_deref(),
+                own_depth: p.depth.is_some() && p.depth_target.is_none(),
+                keep_depth: p.keep_depth,
+                clear: p.clear,
+                size: p.size,
+                samples: &p.samples,
+            })
+            .collect()
+    }
+
+    /// The name of the target the graph's frames show.
+    pub fn output_target(&self) -> &str {
+        &self.output.target
     }
 
     /// The scene of every running pass, with its index into `Effect::passes`.

@@ -44,6 +44,7 @@ const ROOT_KEYS: &[&str] = &[
     "passes",
     "output",
     "knobs",
+    "verify",
 ];
 
 pub(super) fn parse(text: &str, file: FileId, dir: &Path) -> Result<Effect, Vec<Diagnostic>> {
@@ -159,6 +160,7 @@ impl Ctx<'_> {
         let mut camera = None;
         let mut model = ModelDecl::default();
         let mut render = RenderDecl::default();
+        let mut verify = VerifyDecl::default();
         let mut instances = None;
         let mut stages_key = None;
         let mut passes = Vec::new();
@@ -190,6 +192,7 @@ impl Ctx<'_> {
                 "camera" => camera = self.camera(v),
                 "model" => model = self.model(v).unwrap_or_default(),
                 "render" => render = self.render(v).unwrap_or_default(),
+                "verify" => verify = self.verify(v).unwrap_or_default(),
                 "instances" => instances = self.instances(v),
                 "passes" => {
                     passes_key = Some(k.span());
@@ -242,6 +245,7 @@ impl Ctx<'_> {
             targets,
             output,
             knobs,
+            verify,
             warnings: Vec::new(),
         }
     }

@@ -12,12 +12,13 @@ use super::{entries, key, Ctx, Val};
 use crate::diag::Code;
 use crate::manifest::{
     Blend, CameraDecl, CameraKey, Cull, DepthCompare, Ease, InstanceAttribute, InstanceSource, InstancesDecl, ModelDecl, RenderDecl,
-    MAX_FRAMES, MAX_FRAME_SIDE, MAX_INSTANCES,
+    VerifyDecl, MAX_FRAMES, MAX_FRAME_SIDE, MAX_INSTANCES,
 };
 
 const CAMERA_KEYS: &[&str] = &["eye", "target", "up", "fov", "near", "far", "keys", "ease"];
 const CAMERA_KEY_KEYS: &[&str] = &["time", "eye", "target"];
 const MODEL_KEYS: &[&str] = &["translate", "rotate", "scale", "spin"];
+const VERIFY_KEYS: &[&str] = &["tolerance", "max_differing"];
 const RENDER_KEYS: &[&str] = &["size", "frames", "fps", "clear", "cull", "depth_test", "depth_write", "depth_compare", "blend"];
 const INSTANCES_KEYS: &[&str] = &["count", "attributes"];
 pub(super) const CULL_CHOICES: &[(&str, Cull)] = &[("none", Cull::None), ("back", Cull::Back), ("front", Cull::Front)];
@@ -329,6 +330,25 @@ impl Ctx<'_> {
 }
 
 impl Ctx<'_> {
+    /// `[verify]`: `tolerance` (0–255 per channel), `max_differing` (percent of pixels).
+    pub(super) fn verify(&mut self, v: &Val<'_>) -> Option<VerifyDecl> {
+        let t = self.table(v, "`verify`")?;
+        let mut d = VerifyDecl::default();
+        let mut ok = true;
+        for (k, v2) in entries(t) {
+            let what = format!("`verify.{}`", key(k));
+            ok &= match key(k) {
+                "tolerance" => self.uint(v2, &what, 0, 255).map(|n| d.tolerance = Some(n as u8)).is_some(),
+                "max_differing" => self.float_in(v2, &what, 0.0, 100.0).map(|x| d.max_differing = Some(f64::from(x))).is_some(),
+                other => {
+                    self.unknown_key(other, k.span(), "in `[verify]`", VERIFY_KEYS);
+                    false
+                }
+            };
+        }
+        ok.then_some(d)
+    }
+
     pub(super) fn instances(&mut self, v: &Val<'_>) -> Option<InstancesDecl> {
         let t = self.table(v, "`instances`")?;
         let mut count = None;

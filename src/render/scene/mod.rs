@@ -7,7 +7,8 @@
 
 mod bindings;
 mod mesh_choice;
-mod pulled;
+pub(crate) mod pulled;
+pub mod replay;
 mod textures;
 
 use bindings::{bind_groups, buffer_init};
@@ -102,6 +103,8 @@ pub struct Scene {
     /// What the stress variant of the mesh changed; `None` without one, or when the scene
     /// draws no mesh it could change (a full-screen pass, vertices made by the shader).
     pub degenerate: Option<String>,
+    /// The scene's CPU data, for drawing it again with another API (`effectc verify`).
+    pub replay: replay::Replay,
 }
 
 /// What a scene is built from.
@@ -168,6 +171,7 @@ impl Scene {
         let own_vertices = matches!(mesh_note, MeshNote::OwnVertices);
         let pulled =
             pulled::for_geometry(r, &choices, &mesh, own_vertices, instanced.is_some()).map_err(|d| vec![d.in_file(first_file)])?;
+        let replay_vertices = interleaved.clone();
         if pulled.is_some() {
             interleaved.attributes.clear();
         }
@@ -227,6 +231,13 @@ impl Scene {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }
         let describe = describe(&mesh_note, &mesh, &choices, input.effect);
+        let replay = replay::Replay {
+            draw: replay_draw(r, &mesh, own_vertices),
+            instances: instanced.clone(),
+            render: render.clone(),
+            depth,
+            ..replay_of(input, replay_vertices, &textures)
+        };
         Ok(Scene {
             name: t.name.clone(),
             module: t.module.clone(),
@@ -247,7 +258,39 @@ impl Scene {
             flipped_y: input.flipped_y,
             storage,
             degenerate,
+            replay,
         })
+    }
+}
+
+/// The CPU data of a scene that its draw does not decide.
+fn replay_of(input: &SceneInput<'_>, vertices: attributes::Interleaved, textures: &Textures) -> replay::Replay {
+    let plan = &input.program.plan;
+    replay::Replay {
+        vertices,
+        instances: None,
+        draw: replay::ReplayDraw { primitive: "triangles", indices: None, count: 0 },
+        textures: textures.replay.clone(),
+        samplers: textures.replay_samplers.clone(),
+        render: Default::default(),
+        depth: false,
+        inputs: input.translation.reflection.vertex_inputs.iter().map(|v| (v.name.clone(), v.location)).collect(),
+        plan_textures: plan.textures.iter().map(|t| (t.user_path.clone(), t.name.clone(), t.sampler_name.clone())).collect(),
+    }
+}
+
+/// How GL draws the original program: the mesh's triangles, the program's own three
+/// vertices, or a geometry stage's input primitives made from them.
+fn replay_draw(r: &crate::back::reflect::Reflection, mesh: &Mesh, own_vertices: bool) -> replay::ReplayDraw {
+    let triangles: Vec<u32> = if own_vertices { vec![0, 1, 2] } else { mesh.indices.clone() };
+    match &r.geometry {
+        Some(g) => {
+            let count = if own_vertices { 3 } else { mesh.vertex_count() };
+            let indices = pulled::primitive_indices(g.input_primitive, triangles, count, mesh);
+            replay::ReplayDraw { primitive: g.input_primitive, count: indices.len() as u32, indices: Some(indices) }
+        }
+        None if own_vertices => replay::ReplayDraw { primitive: "triangles", indices: None, count: 3 },
+        None => replay::ReplayDraw { primitive: "triangles", count: triangles.len() as u32, indices: Some(triangles) },
     }
 }
 

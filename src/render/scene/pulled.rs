@@ -57,15 +57,7 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
     use wgpu::VertexFormat as F;
     let triangles: Vec<u32> = if own_vertices { vec![0, 1, 2] } else { mesh.indices.clone() };
     let vertex_count = if own_vertices { 3 } else { mesh.vertex_count() };
-    let indices: Vec<u32> = match draw.input_primitive {
-        "points" => (0..vertex_count as u32).collect(),
-        "lines" => triangles.chunks_exact(3).flat_map(|t| [t[0], t[1], t[1], t[2], t[2], t[0]]).collect(),
-        "lines_adjacency" => {
-            triangles.chunks_exact(3).flat_map(|t| [t[2], t[0], t[1], t[2], t[0], t[1], t[2], t[0], t[1], t[2], t[0], t[1]]).collect()
-        }
-        "triangles_adjacency" => with_adjacency(&triangles, &mesh.attribute(crate::manifest::MeshAttribute::Position)),
-        _ => triangles,
-    };
+    let indices = primitive_indices(draw.input_primitive, triangles, vertex_count, mesh);
     let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.map(|a| mesh.attribute(a))).collect();
     let mut vertices = Vec::with_capacity(vertex_count * choices.len() * 16);
     for v in 0..vertex_count {
@@ -88,6 +80,21 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
         vertices,
         count: primitives * draw.vertices_per_primitive,
         bindings: [draw.index_buffer.binding, draw.vertex_buffer.binding],
+    }
+}
+
+/// The vertex indices of every input primitive of a geometry stage that reads
+/// `input_primitive`, made from a triangle list as the module doc says (what GL draws with
+/// the matching mode; `effectc verify` draws them so).
+pub(crate) fn primitive_indices(input_primitive: &str, triangles: Vec<u32>, vertex_count: usize, mesh: &Mesh) -> Vec<u32> {
+    match input_primitive {
+        "points" => (0..vertex_count as u32).collect(),
+        "lines" => triangles.chunks_exact(3).flat_map(|t| [t[0], t[1], t[1], t[2], t[2], t[0]]).collect(),
+        "lines_adjacency" => {
+            triangles.chunks_exact(3).flat_map(|t| [t[2], t[0], t[1], t[2], t[0], t[1], t[2], t[0], t[1], t[2], t[0], t[1]]).collect()
+        }
+        "triangles_adjacency" => with_adjacency(&triangles, &mesh.attribute(crate::manifest::MeshAttribute::Position)),
+        _ => triangles,
     }
 }
 

@@ -12,12 +12,17 @@ use crate::manifest::{Filter, TextureKind, TextureSource, Wrap};
 use crate::render::device::Gpu;
 
 use super::mesh_choice::at_declaration;
+use super::replay::ReplayTexture;
 use super::{toml_key, SceneInput};
 
 /// Textures and samplers by binding name.
 pub(super) struct Textures {
     pub(super) views: BTreeMap<String, wgpu::TextureView>,
     pub(super) samplers: BTreeMap<String, wgpu::Sampler>,
+    /// What each texture holds, on the CPU ([`super::replay`]).
+    pub(super) replay: BTreeMap<String, ReplayTexture>,
+    /// Each sampler's filter, wrap and comparison.
+    pub(super) replay_samplers: BTreeMap<String, (Filter, Wrap, bool)>,
 }
 
 impl Textures {
@@ -26,6 +31,8 @@ impl Textures {
         let plan = &input.program.plan;
         let mut views = BTreeMap::new();
         let mut samplers = BTreeMap::new();
+        let mut replay = BTreeMap::new();
+        let mut replay_samplers = BTreeMap::new();
         for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
             match b.kind {
                 "texture" => {
@@ -33,8 +40,10 @@ impl Textures {
                     let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
                     if let Some((view, _)) = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u)) {
                         views.insert(b.name.clone(), view.clone());
+                        replay.insert(b.name.clone(), ReplayTexture::Target(user.clone().unwrap_or_default()));
                         continue;
                     }
+                    let dimension = b.dimension.unwrap_or("2d");
                     let view = match (decl, b.sample_type) {
                         // A multisampled texture cannot be uploaded: it is a cleared target.
                         (_, sample_type) if b.multisampled => {
@@ -45,10 +54,17 @@ impl Textures {
                             );
                             let d = at_declaration(d, input.program, &name, Storage::Uniform, "this sampler");
                             warnings.push(d.with_note("only render targets are multisampled; an image file cannot fill one"));
+                            replay.insert(b.name.clone(), ReplayTexture::Multisampled { depth: sample_type == Some("depth") });
                             multisampled_placeholder(gpu, b, sample_type == Some("depth"))
                         }
-                        (_, Some("depth")) => depth_placeholder(gpu, b),
-                        (_, Some("sint" | "uint")) => integer_placeholder(gpu, b),
+                        (_, Some("depth")) => {
+                            replay.insert(b.name.clone(), ReplayTexture::Depth { dimension });
+                            depth_placeholder(gpu, b)
+                        }
+                        (_, Some(kind @ ("sint" | "uint"))) => {
+                            replay.insert(b.name.clone(), ReplayTexture::Integer { unsigned: kind == "uint", dimension });
+                            integer_placeholder(gpu, b)
+                        }
                         (Some(decl), _) => {
                             let image = load(decl).map_err(|e| {
                                 let file = input.effect.map(|e| e.file).unwrap_or(FileId(0));
@@ -58,7 +74,9 @@ impl Textures {
                                     "this texture",
                                 )]
                             })?;
-                            upload(gpu, &image, b)
+                            let view = upload(gpu, &image, b);
+                            replay.insert(b.name.clone(), ReplayTexture::Image { image, dimension });
+                            view
                         }
                         (None, _) => {
                             let kind = if b.dimension == Some("cube") { TextureKind::Cube } else { TextureKind::D2 };
@@ -78,7 +96,10 @@ impl Textures {
                             warnings.push(
                                 d.with_help(format!("bind it in [textures]: `{key} = \"image.png\"` or `{{ generate = \"noise\" }}`")),
                             );
-                            upload(gpu, &texture::placeholder(kind), b)
+                            let image = texture::placeholder(kind);
+                            let view = upload(gpu, &image, b);
+                            replay.insert(b.name.clone(), ReplayTexture::Image { image, dimension });
+                            view
                         }
                     };
                     views.insert(b.name.clone(), view);
@@ -93,11 +114,12 @@ impl Textures {
                         None => decl.map(|d| (d.filter, d.wrap)).unwrap_or_default(),
                     };
                     samplers.insert(b.name.clone(), sampler(gpu, filter, wrap, b.kind == "comparison_sampler"));
+                    replay_samplers.insert(b.name.clone(), (filter, wrap, b.kind == "comparison_sampler"));
                 }
                 _ => {}
             }
         }
-        Ok(Textures { views, samplers })
+        Ok(Textures { views, samplers, replay, replay_samplers })
     }
 }
 

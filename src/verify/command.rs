@@ -1,0 +1,417 @@
+//! `effectc verify`: every program drawn twice — the translation through wgpu exactly as
+//! `render` draws it, and the user's original GLSL through the system's OpenGL driver with
+//! the same scene — and every frame compared. A frame beyond the tolerance is E0503, with
+//! the three pictures (translation, GL, heat map) written beside each other.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use crate::check::{Checked, Outcome};
+use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::front::reference::compiler::Dialect;
+use crate::output::{self, write_atomic};
+use crate::render::command::{open_once, Request, TimeStep, DEFAULT_FPS};
+use crate::render::device::Gpu;
+use crate::render::drawer::{build, frame_state, prepare, BuildVariant, Drawer, DEFAULT_SIZE};
+use crate::render::encode;
+use crate::render::frames::{Frame, FrameError, Pixels};
+use crate::render::scene::ColorMode;
+use crate::stage::StageKind;
+
+use super::context::GlContext;
+use super::diff::{self, FrameDiff, Tolerance};
+use super::gl_frame::{GlFrames, PassTargets};
+use super::gl_scene::GlScene;
+use super::program;
+
+/// What `verify` was asked to do: a render request (frames, times, size, `--set`, output
+/// directory) and a tolerance over the manifests' own.
+#[derive(Debug, Clone)]
+pub struct VerifyRequest {
+    pub render: Request,
+    /// `--tolerance`: per-channel difference that still matches (0–255).
+    pub tolerance: Option<u8>,
+    /// `--max-differing`: percent of pixels allowed beyond the tolerance.
+    pub max_differing: Option<f64>,
+}
+
+/// One frame's comparison.
+#[derive(Debug, Clone, Serialize)]
+pub struct FrameVerdict {
+    pub index: u32,
+    pub time: f64,
+    #[serde(flatten)]
+    pub diff: FrameDiff,
+    /// The translation's frame, GL's frame, and the heat map when any pixel differs.
+    pub files: Vec<PathBuf>,
+}
+
+/// One verified program.
+#[derive(Debug, Clone, Serialize)]
+pub struct Verified {
+    pub name: String,
+    pub size: (u32, u32),
+    pub tolerance: Tolerance,
+    pub frames: Vec<FrameVerdict>,
+    /// Every frame within the tolerance.
+    pub matches: bool,
+}
+
+/// The result of a run.
+pub struct RunResult {
+    pub outcome: Outcome,
+    pub verified: Vec<Verified>,
+    /// The wgpu adapter and the GL renderer.
+    pub adapter: Option<String>,
+    pub gl: Option<String>,
+}
+
+/// Runs check, translation, both renderers and the comparison for every program.
+pub fn run(request: &VerifyRequest) -> RunResult {
+    prefer_newest_glsl();
+    let (mut outcome, checked) = request.render.input.check();
+    let mut result = RunResult { outcome: Outcome::default(), verified: Vec::new(), adapter: None, gl: None };
+    let inputs = output::input_paths(&outcome, &request.render.input.paths);
+    let mut gpu: Option<Gpu> = None;
+    let mut gl: Option<GlContext> = None;
+    for c in &checked {
+        if let Some(d) = vulkan_dialect(c) {
+            outcome.diagnostics.push(d);
+            continue;
+        }
+        let settings = request.render.build_settings();
+        let Some(prepared) = prepare(c, &mut outcome, &settings, None) else { continue };
+        let Some(gpu) = open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
+        let Some(gl) = open_gl(&mut gl, &mut result.gl, &mut outcome) else { break };
+        let render = c.effect.as_ref().map(|e| e.render.clone()).unwrap_or_default();
+        let size = request.render.size.or(render.size).unwrap_or(DEFAULT_SIZE);
+        let (mut drawer, file) = match build(gpu, &prepared, c, (size, ColorMode::Unorm8), &settings, BuildVariant::default()) {
+            Ok(d) => d,
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                continue;
+            }
+        };
+        outcome.diagnostics.append(drawer.warnings());
+        let mut original = match GlDrawer::new(&gl.gl, &outcome.files, c, &drawer) {
+            Ok(o) => o,
+            Err(diags) => {
+                outcome.diagnostics.extend(diags);
+                continue;
+            }
+        };
+        let tolerance = tolerance(request, c);
+        let plan = Plan {
+            frames: request.render.frames.or(render.frames).unwrap_or(1),
+            size,
+            step: match request.render.step {
+                TimeStep::Fps(f) => 1.0 / f,
+                TimeStep::Seconds(s) => s,
+                TimeStep::Default => 1.0 / render.fps.unwrap_or(DEFAULT_FPS),
+            },
+            start: request.render.start,
+            dir: request.render.out.clone().unwrap_or_else(|| Path::new("out").join(drawer.name()).join("verify")),
+            tolerance,
+        };
+        let verified = compare_frames(gpu, gl, &mut drawer, &mut original, &plan, request, &inputs, file, &mut outcome);
+        original.delete(&gl.gl);
+        if let Some(v) = verified {
+            result.verified.push(v);
+        }
+    }
+    crate::diag::sort(&mut outcome.diagnostics);
+    result.outcome = outcome;
+    result
+}
+
+/// Mesa compiles GLSL 4.60 only when told to; a driver that has it anyway ignores these.
+fn prefer_newest_glsl() {
+    for (k, v) in [("MESA_GL_VERSION_OVERRIDE", "4.6COMPAT"), ("MESA_GLSL_VERSION_OVERRIDE", "460")] {
+        if std::env::var_os(k).is_none() {
+            // Set before any thread reads the environment (check has not started yet).
+            std::env::set_var(k, v);
+        }
+    }
+}
+
+/// Vulkan GLSL is not a GL program: there is nothing to compare with.
+fn vulkan_dialect(c: &Checked) -> Option<Diagnostic> {
+    let unit = c.units.first()?;
+    let judgement = unit.program.reference.as_ref()?;
+    (judgement.dialect == Dialect::Vulkan).then(|| {
+        Diagnostic::new(Code::NotAGlProgram, format!("`{}` is Vulkan GLSL: an OpenGL driver cannot draw it, so there is nothing to verify against", c.name))
+            .in_file(unit.program.stages[0].syntax.file)
+            .with_note("verify compares a translation with the original program on the system's OpenGL driver; Vulkan GLSL (set/binding layouts, push constants) is not GLSL for GL")
+            .with_help("render it with `effectc render`; verify the GL version of the effect if there is one")
+    })
+}
+
+/// The GL context, opened on first use. `None`: E0501 is in `outcome` (exit 2).
+fn open_gl<'g>(gl: &'g mut Option<GlContext>, describe: &mut Option<String>, outcome: &mut Outcome) -> Option<&'g GlContext> {
+    if gl.is_none() {
+        match GlContext::new() {
+            Ok(c) => {
+                *describe = Some(c.describe.clone());
+                *gl = Some(c);
+            }
+            Err(e) => {
+                outcome.io_error = true;
+                outcome.diagnostics.push(
+                    Diagnostic::new(Code::NoGlDriver, "no OpenGL driver to verify against").with_note(e.0).with_help(
+                        "install the driver: `apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri` (Mesa; or the GPU vendor's)",
+                    ),
+                );
+            }
+        }
+    }
+    gl.as_ref()
+}
+
+/// The flags' tolerance over the manifest's over the default.
+fn tolerance(request: &VerifyRequest, c: &Checked) -> Tolerance {
+    let decl = c.effect.as_ref().map(|e| e.verify).unwrap_or_default();
+    let default = Tolerance::default();
+    Tolerance {
+        channel: request.tolerance.or(decl.tolerance).unwrap_or(default.channel),
+        fraction: request.max_differing.or(decl.max_differing).map_or(default.fraction, |p| p / 100.0),
+    }
+}
+
+/// The original program drawn by GL: one scene per pass and the targets.
+struct GlDrawer {
+    scenes: Vec<GlScene>,
+    frames: GlFrames,
+    output: String,
+    /// GL reads these without a value from the translation (they stay 0 in GL).
+    unmatched: Vec<String>,
+}
+
+impl GlDrawer {
+    fn new(gl: &glow::Context, files: &Files, c: &Checked, drawer: &Drawer) -> Result<GlDrawer, Vec<Diagnostic>> {
+        let mut frames = GlFrames::new(gl).map_err(|e| vec![Diagnostic::new(Code::GlRejects, e)])?;
+        let mut scenes = Vec::new();
+        let mut unmatched = Vec::new();
+        let fail = |e: String, file: FileId| vec![Diagnostic::new(Code::GlRejects, e).in_file(file)];
+        for (pass, scene) in drawer.scenes() {
+            let Some(unit) = c.units.iter().find(|u| u.pass == pass) else { continue };
+            let stages: Vec<(FileId, StageKind)> = unit.program.stages.iter().map(|s| (s.syntax.file, s.syntax.stage)).collect();
+            let first = stages[0].0;
+            let linked = program::link(gl, files, &stages)?;
+            let s = GlScene::new(gl, linked, scene).map_err(|e| fail(e, first))?;
+            unmatched.extend(s.uniforms.unmatched.iter().cloned());
+            unmatched.extend(s.unfed_inputs.iter().map(|i| format!("vertex input `{i}`")));
+            scenes.push(s);
+        }
+        let output = match drawer {
+            Drawer::Graph(g) => {
+                for v in g.pass_views() {
+                    for (name, format) in v.colors.iter().flatten() {
+                        frames.target(gl, name, *format, v.size).map_err(|e| fail(e, FileId(0)))?;
+                    }
+                    if let Some(d) = v.depth_target {
+                        frames.target(gl, d, wgpu::TextureFormat::Depth32Float, v.size).map_err(|e| fail(e, FileId(0)))?;
+                    }
+                }
+                g.output_target().to_string()
+            }
+            Drawer::Single { scene, target } => {
+                for (i, f) in scene.colors.iter().enumerate() {
+                    if let Some(f) = f {
+                        frames.target(gl, &format!("output{i}"), *f, (target.width, target.height)).map_err(|e| fail(e, FileId(0)))?;
+                    }
+                }
+                "output0".to_string()
+            }
+        };
+        Ok(GlDrawer { scenes, frames, output, unmatched })
+    }
+
+    /// Draws one frame with the uniform values the wgpu scenes hold now (after their frame).
+    fn draw(&mut self, gl: &glow::Context, drawer: &Drawer) -> Result<Vec<u8>, String> {
+        match drawer {
+            Drawer::Single { scene, target } => {
+                let names: Vec<String> = (0..scene.colors.len()).map(|i| format!("output{i}")).collect();
+                let at = PassTargets {
+                    colors: scene.colors.iter().zip(&names).map(|(f, n)| f.map(|_| n.as_str())).collect(),
+                    depth: None,
+                    own_depth: scene.replay.depth,
+                    keep_depth: false,
+                    clear: Some(scene.clear),
+                    size: (target.width, target.height),
+                    samples: &[],
+                };
+                self.frames.draw(gl, &mut self.scenes[0], scene, &at)?;
+            }
+            Drawer::Graph(g) => {
+                for (v, s) in g.pass_views().iter().zip(&mut self.scenes) {
+                    let at = PassTargets {
+                        colors: v.colors.iter().map(|c| c.map(|(n, _)| n)).collect(),
+                        depth: v.depth_target,
+                        own_depth: v.own_depth,
+                        keep_depth: v.keep_depth,
+                        clear: v.clear,
+                        size: v.size,
+                        samples: v.samples,
+                    };
+                    self.frames.draw(gl, s, v.scene, &at)?;
+                }
+            }
+        }
+        self.frames.read(gl, &self.output).ok_or_else(|| format!("GL has no target `{}` to read", self.output))
+    }
+
+    fn delete(self, gl: &glow::Context) {
+        for s in self.scenes {
+            s.delete(gl);
+        }
+        self.frames.delete(gl);
+    }
+}
+
+struct Plan {
+    frames: u32,
+    size: (u32, u32),
+    step: f64,
+    start: f64,
+    dir: PathBuf,
+    tolerance: Tolerance,
+}
+
+/// Draws and compares every frame; mismatches become E0503 in `outcome`.
+#[allow(clippy::too_many_arguments)]
+fn compare_frames(
+    gpu: &Gpu,
+    gl: &GlContext,
+    drawer: &mut Drawer,
+    original: &mut GlDrawer,
+    plan: &Plan,
+    request: &VerifyRequest,
+    inputs: &BTreeSet<PathBuf>,
+    file: FileId,
+    outcome: &mut Outcome,
+) -> Option<Verified> {
+    let name = drawer.name().to_owned();
+    let mut frames = Vec::new();
+    for i in 0..plan.frames {
+        let time = plan.start + f64::from(i) * plan.step;
+        let state = frame_state(drawer, i, time, plan.step, plan.size);
+        let translated = match drawer.draw(gpu, &state, request.render.timeout) {
+            Ok(Frame { pixels: Pixels::Rgba8(p), .. }) => p,
+            Ok(_) => return None,
+            Err(FrameError::Timeout(t)) => {
+                outcome.diagnostics.push(
+                    Diagnostic::new(Code::FrameTimeout, format!("frame {i} did not finish within {:.1} s", t.as_secs_f64())).in_file(file),
+                );
+                return None;
+            }
+            Err(FrameError::Device(e)) => {
+                outcome
+                    .diagnostics
+                    .push(Diagnostic::new(Code::FrameFailed, format!("frame {i} failed on the device")).in_file(file).with_note(e));
+                return None;
+            }
+        };
+        let reference = match original.draw(&gl.gl, drawer) {
+            Ok(p) => p,
+            Err(e) => {
+                outcome.diagnostics.push(
+                    Diagnostic::new(Code::GlRejects, format!("frame {i}: the OpenGL driver could not draw it")).in_file(file).with_note(e),
+                );
+                return None;
+            }
+        };
+        let diff = diff::compare(&translated, &reference, plan.size, plan.tolerance);
+        let files = write_frames(&plan.dir, &name, i, plan, (&translated, &reference), &diff, inputs, outcome);
+        if !diff.matches {
+            outcome.diagnostics.push(mismatch(i, &diff, plan.tolerance, &files, &original.unmatched, file));
+        }
+        frames.push(FrameVerdict { index: i, time, diff, files });
+    }
+    let matches = frames.iter().all(|f| f.diff.matches);
+    Some(Verified { name, size: plan.size, tolerance: plan.tolerance, frames, matches })
+}
+
+/// Writes the translation's frame, GL's frame and (when they differ at all) the heat map.
+#[allow(clippy::too_many_arguments)]
+fn write_frames(
+    dir: &Path,
+    name: &str,
+    i: u32,
+    plan: &Plan,
+    (translated, reference): (&[u8], &[u8]),
+    diff: &FrameDiff,
+    inputs: &BTreeSet<PathBuf>,
+    outcome: &mut Outcome,
+) -> Vec<PathBuf> {
+    let (w, h) = plan.size;
+    let mut pictures = vec![(format!("{name}_{i:04}.png"), translated.to_vec()), (format!("{name}_{i:04}_gl.png"), reference.to_vec())];
+    if diff.max_channel > 0 {
+        pictures.push((format!("{name}_{i:04}_diff.png"), diff::heat_map(translated, reference, plan.tolerance)));
+    }
+    let mut files = Vec::new();
+    for (file, rgba) in pictures {
+        let path = dir.join(file);
+        match encode::png_bytes(&rgba, w, h).and_then(|bytes| write_atomic(&path, &bytes, inputs)) {
+            Ok(()) => files.push(path),
+            Err(e) => {
+                outcome.io_error = true;
+                outcome.diagnostics.push(Diagnostic::new(Code::OutputIo, e));
+                break;
+            }
+        }
+    }
+    files
+}
+
+fn mismatch(i: u32, d: &FrameDiff, tol: Tolerance, files: &[PathBuf], unmatched: &[String], file: FileId) -> Diagnostic {
+    let percent = 100.0 * d.over as f64 / d.pixels.max(1) as f64;
+    let psnr = d.psnr.map_or("∞".to_string(), |p| format!("{p:.1}"));
+    let mut diag = Diagnostic::new(
+        Code::FramesDiffer,
+        format!(
+            "frame {i}: the translation draws a different picture than the OpenGL driver: {} pixels ({percent:.2}%) differ by more than {}/255",
+            d.over, tol.channel
+        ),
+    )
+    .in_file(file)
+    .with_note(format!("largest channel difference {}/255, PSNR {psnr} dB; allowed: {:.2}% of the pixels", d.max_channel, tol.fraction * 100.0));
+    if let Some((x, y)) = d.first_over {
+        diag = diag.with_note(format!("first differing pixel at ({x}, {y}) from the top left"));
+    }
+    if let Some(heat) = files.iter().find(|f| f.to_string_lossy().ends_with("_diff.png")) {
+        diag = diag.with_note(format!("heat map: {} (blue within the tolerance, red to yellow beyond it)", heat.display()));
+    }
+    if !unmatched.is_empty() {
+        diag = diag.with_note(format!("GL reads values the translation does not feed (they stay 0 in GL): {}", unmatched.join(", ")));
+    }
+    diag.with_help("set `[verify] tolerance`/`max_differing` in the manifest (or `--tolerance`) when the difference is expected")
+}
+
+/// Human summary of one verified program.
+pub fn summary(v: &Verified) -> String {
+    let ok = v.frames.iter().filter(|f| f.diff.matches).count();
+    let mut text = format!(
+        "verified {}: {ok}/{} frame{} match the OpenGL driver at {}x{} (tolerance {}/255 on ≤ {:.2}% of the pixels)\n",
+        v.name,
+        v.frames.len(),
+        if v.frames.len() == 1 { "" } else { "s" },
+        v.size.0,
+        v.size.1,
+        v.tolerance.channel,
+        v.tolerance.fraction * 100.0
+    );
+    for f in &v.frames {
+        let psnr = f.diff.psnr.map_or("identical".to_string(), |p| format!("PSNR {p:.1} dB"));
+        text.push_str(&format!(
+            "  frame {:4} t={:.3}s: {} — max difference {}/255, {} pixels over, {psnr}\n",
+            f.index,
+            f.time,
+            if f.diff.matches { "match" } else { "DIFFERS" },
+            f.diff.max_channel,
+            f.diff.over
+        ));
+    }
+    text
+}

@@ -1,0 +1,429 @@
+//! One scene drawn by the OpenGL driver from the original GLSL: the same vertex bytes, the
+//! same textures and sampler state, the uniform values the wgpu scene drew with, the same
+//! depth, blend and cull state — in GL's own conventions (lower-left origin, [-1, 1] clip
+//! depth, counter-clockwise front faces, the last vertex provoking `flat` values), which is
+//! what the original program means.
+
+use std::collections::BTreeMap;
+
+use glow::HasContext;
+
+use crate::manifest::{Blend, Cull, DepthCompare, Filter, Wrap};
+use crate::render::scene::replay::ReplayTexture;
+use crate::render::scene::Scene;
+
+use super::program::GlProgram;
+use super::uniforms::GlUniforms;
+
+/// A texture GL created, bound to one unit.
+struct Bound {
+    unit: u32,
+    target: u32,
+    texture: glow::Texture,
+    /// Owned here (deleted with the scene); targets of other passes are not.
+    owned: bool,
+}
+
+/// The GL objects of one scene.
+pub struct GlScene {
+    pub program: GlProgram,
+    pub uniforms: GlUniforms,
+    vao: glow::VertexArray,
+    buffers: Vec<glow::Buffer>,
+    textures: Vec<Bound>,
+    /// Sampler uniforms that read the target of an earlier pass: (unit, sampler's GLSL
+    /// name, filter).
+    target_samplers: Vec<(u32, String, Filter)>,
+    mode: u32,
+    indexed: bool,
+    count: i32,
+    instances: i32,
+    /// Vertex inputs GL reads that the scene has no data for.
+    pub unfed_inputs: Vec<String>,
+}
+
+impl GlScene {
+    /// Uploads what `scene` draws with for `program`.
+    pub fn new(gl: &glow::Context, program: GlProgram, scene: &Scene) -> Result<GlScene, String> {
+        let uniforms = GlUniforms::new(gl, program.program, scene)?;
+        let replay = &scene.replay;
+        // SAFETY: object creation and state on the current context.
+        unsafe {
+            let vao = gl.create_vertex_array()?;
+            gl.bind_vertex_array(Some(vao));
+            let mut buffers = Vec::new();
+            let mut unfed_inputs = Vec::new();
+            let vbo = gl.create_buffer()?;
+            buffers.push(vbo);
+            gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
+            gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &replay.vertices.bytes, glow::STATIC_DRAW);
+            let ibo = match &replay.instances {
+                Some(i) => {
+                    let b = gl.create_buffer()?;
+                    buffers.push(b);
+                    gl.bind_buffer(glow::ARRAY_BUFFER, Some(b));
+                    gl.buffer_data_u8_slice(glow::ARRAY_BUFFER, &i.bytes, glow::STATIC_DRAW);
+                    Some(b)
+                }
+                None => None,
+            };
+            let reflection_inputs = &scene_inputs(scene);
+            for a in 0..gl.get_active_attributes(program.program) {
+                let Some(attr) = gl.get_active_attribute(program.program, a) else { continue };
+                if attr.name.starts_with("gl_") {
+                    continue;
+                }
+                let Some(location) = gl.get_attrib_location(program.program, &attr.name) else { continue };
+                let wgsl_location = reflection_inputs.iter().find(|(n, _)| *n == attr.name).map(|(_, l)| *l);
+                let per_vertex = wgsl_location.and_then(|l| replay.vertices.attributes.iter().find(|x| x.shader_location == l));
+                let per_instance = wgsl_location
+                    .and_then(|l| replay.instances.as_ref().and_then(|i| i.attributes.iter().find(|x| x.shader_location == l)));
+                let (buffer, stride, attribute, divisor) = match (per_vertex, per_instance, ibo) {
+                    (_, Some(x), Some(b)) => (b, replay.instances.as_ref().map_or(0, |i| i.stride), x, 1),
+                    (Some(x), _, _) => (vbo, replay.vertices.stride, x, 0),
+                    _ => {
+                        unfed_inputs.push(attr.name.clone());
+                        continue;
+                    }
+                };
+                gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer));
+                gl.enable_vertex_attrib_array(location);
+                let (size, ty, integer) = vertex_format(attribute.format);
+                if integer {
+                    gl.vertex_attrib_pointer_i32(location, size, ty, stride as i32, attribute.offset as i32);
+                } else {
+                    gl.vertex_attrib_pointer_f32(location, size, ty, false, stride as i32, attribute.offset as i32);
+                }
+                gl.vertex_attrib_divisor(location, divisor);
+            }
+            let indexed = match &replay.draw.indices {
+                Some(indices) => {
+                    let b = gl.create_buffer()?;
+                    buffers.push(b);
+                    gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(b));
+                    let bytes: Vec<u8> = indices.iter().flat_map(|i| i.to_le_bytes()).collect();
+                    gl.buffer_data_u8_slice(glow::ELEMENT_ARRAY_BUFFER, &bytes, glow::STATIC_DRAW);
+                    true
+                }
+                None => false,
+            };
+            gl.bind_vertex_array(None);
+            let mut textures = Vec::new();
+            let mut target_samplers = Vec::new();
+            for s in &uniforms.samplers {
+                let plan = scene_plan_texture(scene, &s.name);
+                let (texture_name, sampler_name) = plan.unwrap_or_else(|| (s.name.clone(), format!("{}_sampler", s.name)));
+                let sampler = replay.samplers.get(&sampler_name).copied().unwrap_or((Filter::Linear, Wrap::Repeat, false));
+                match replay.textures.get(&texture_name) {
+                    Some(ReplayTexture::Target(target)) => target_samplers.push((s.unit, target.clone(), sampler.0)),
+                    Some(t) => {
+                        let (target, texture) = upload(gl, t, sampler)?;
+                        textures.push(Bound { unit: s.unit, target, texture, owned: true });
+                    }
+                    None => {}
+                }
+            }
+            let (mode, count) = (primitive_mode(replay.draw.primitive), replay.draw.count as i32);
+            let instances = scene.instances as i32;
+            Ok(GlScene { program, uniforms, vao, buffers, textures, target_samplers, mode, indexed, count, instances, unfed_inputs })
+        }
+    }
+
+    /// Draws into the bound framebuffer (viewport and clears done by the caller), with the
+    /// uniform values `scene` holds now and earlier passes' targets for its samplers
+    /// (`targets`, by sampler name).
+    pub fn draw(&mut self, gl: &glow::Context, scene: &Scene, targets: &BTreeMap<String, glow::Texture>) {
+        self.uniforms.upload(gl, self.program.program, scene);
+        let r = &scene.replay.render;
+        // SAFETY: state and draws on the current context with its objects.
+        unsafe {
+            for b in &self.textures {
+                gl.active_texture(glow::TEXTURE0 + b.unit);
+                gl.bind_texture(b.target, Some(b.texture));
+            }
+            for (unit, target, filter) in &self.target_samplers {
+                gl.active_texture(glow::TEXTURE0 + unit);
+                let texture = targets.get(target).copied();
+                gl.bind_texture(glow::TEXTURE_2D, texture);
+                if texture.is_some() {
+                    set_sampler(gl, glow::TEXTURE_2D, (*filter, Wrap::Clamp, false), false);
+                }
+            }
+            gl.active_texture(glow::TEXTURE0);
+            // WebGPU filters cube maps across faces; GL does so when asked.
+            gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+            // A vertex stage that writes `gl_PointSize` sets the size of its points in GL.
+            gl.enable(glow::PROGRAM_POINT_SIZE);
+            if scene.replay.depth {
+                gl.enable(glow::DEPTH_TEST);
+                gl.depth_func(depth_func(r.depth_compare));
+                gl.depth_mask(r.depth_write);
+            } else {
+                gl.disable(glow::DEPTH_TEST);
+            }
+            match r.cull {
+                Cull::None => gl.disable(glow::CULL_FACE),
+                Cull::Back | Cull::Front => {
+                    gl.enable(glow::CULL_FACE);
+                    gl.cull_face(if r.cull == Cull::Back { glow::BACK } else { glow::FRONT });
+                    gl.front_face(glow::CCW);
+                }
+            }
+            set_blend(gl, r.blend);
+            gl.bind_vertex_array(Some(self.vao));
+            match (self.indexed, self.instances > 1) {
+                (true, false) => gl.draw_elements(self.mode, self.count, glow::UNSIGNED_INT, 0),
+                (true, true) => gl.draw_elements_instanced(self.mode, self.count, glow::UNSIGNED_INT, 0, self.instances),
+                (false, false) => gl.draw_arrays(self.mode, 0, self.count),
+                (false, true) => gl.draw_arrays_instanced(self.mode, 0, self.count, self.instances),
+            }
+            gl.bind_vertex_array(None);
+            gl.depth_mask(true);
+        }
+    }
+
+    /// Deletes the GL objects.
+    pub fn delete(self, gl: &glow::Context) {
+        self.uniforms.delete(gl);
+        // SAFETY: objects of the current context.
+        unsafe {
+            gl.delete_vertex_array(self.vao);
+            for b in self.buffers {
+                gl.delete_buffer(b);
+            }
+            for t in self.textures.iter().filter(|t| t.owned) {
+                gl.delete_texture(t.texture);
+            }
+            gl.delete_program(self.program.program);
+        }
+    }
+}
+
+/// The scene's vertex inputs: GLSL name → WGSL location.
+fn scene_inputs(scene: &Scene) -> Vec<(String, u32)> {
+    scene.replay.inputs.clone()
+}
+
+/// The (texture, sampler) binding names of the GLSL sampler `name` in the scene's plan.
+fn scene_plan_texture(scene: &Scene, name: &str) -> Option<(String, String)> {
+    scene.replay.plan_textures.iter().find(|(user, _, _)| user == name).map(|(_, t, s)| (t.clone(), s.clone()))
+}
+
+fn primitive_mode(primitive: &str) -> u32 {
+    match primitive {
+        "points" => glow::POINTS,
+        "lines" => glow::LINES,
+        "lines_adjacency" => glow::LINES_ADJACENCY,
+        "triangles_adjacency" => glow::TRIANGLES_ADJACENCY,
+        _ => glow::TRIANGLES,
+    }
+}
+
+/// (components, GL type, read as integers) of a wgpu vertex format.
+fn vertex_format(f: wgpu::VertexFormat) -> (i32, u32, bool) {
+    use wgpu::VertexFormat as F;
+    match f {
+        F::Float32 => (1, glow::FLOAT, false),
+        F::Float32x2 => (2, glow::FLOAT, false),
+        F::Float32x3 => (3, glow::FLOAT, false),
+        F::Sint32 => (1, glow::INT, true),
+        F::Sint32x2 => (2, glow::INT, true),
+        F::Sint32x3 => (3, glow::INT, true),
+        F::Sint32x4 => (4, glow::INT, true),
+        F::Uint32 => (1, glow::UNSIGNED_INT, true),
+        F::Uint32x2 => (2, glow::UNSIGNED_INT, true),
+        F::Uint32x3 => (3, glow::UNSIGNED_INT, true),
+        F::Uint32x4 => (4, glow::UNSIGNED_INT, true),
+        _ => (4, glow::FLOAT, false),
+    }
+}
+
+fn depth_func(c: DepthCompare) -> u32 {
+    match c {
+        DepthCompare::Never => glow::NEVER,
+        DepthCompare::Less => glow::LESS,
+        DepthCompare::Equal => glow::EQUAL,
+        DepthCompare::LessEqual => glow::LEQUAL,
+        DepthCompare::Greater => glow::GREATER,
+        DepthCompare::NotEqual => glow::NOTEQUAL,
+        DepthCompare::GreaterEqual => glow::GEQUAL,
+        DepthCompare::Always => glow::ALWAYS,
+    }
+}
+
+/// The manifest's blend modes as `glBlendFuncSeparate` (the same factors `render` gives wgpu).
+fn set_blend(gl: &glow::Context, blend: Blend) {
+    // SAFETY: state on the current context.
+    unsafe {
+        let funcs = match blend {
+            Blend::None => {
+                gl.disable(glow::BLEND);
+                return;
+            }
+            Blend::Alpha => (glow::SRC_ALPHA, glow::ONE_MINUS_SRC_ALPHA, glow::ONE, glow::ONE_MINUS_SRC_ALPHA),
+            Blend::Additive => (glow::SRC_ALPHA, glow::ONE, glow::ONE, glow::ONE),
+            Blend::Premultiplied => (glow::ONE, glow::ONE_MINUS_SRC_ALPHA, glow::ONE, glow::ONE_MINUS_SRC_ALPHA),
+        };
+        gl.enable(glow::BLEND);
+        gl.blend_equation(glow::FUNC_ADD);
+        gl.blend_func_separate(funcs.0, funcs.1, funcs.2, funcs.3);
+    }
+}
+
+/// Filter, wrap and comparison on the bound texture of `target`.
+fn set_sampler(gl: &glow::Context, target: u32, (filter, wrap, compare): (Filter, Wrap, bool), mipmapped: bool) {
+    let (min, mag) = match (filter, mipmapped) {
+        (Filter::Linear, true) => (glow::LINEAR_MIPMAP_LINEAR, glow::LINEAR),
+        (Filter::Linear, false) => (glow::LINEAR, glow::LINEAR),
+        (Filter::Nearest, true) => (glow::NEAREST_MIPMAP_NEAREST, glow::NEAREST),
+        (Filter::Nearest, false) => (glow::NEAREST, glow::NEAREST),
+    };
+    let wrap = match wrap {
+        Wrap::Repeat => glow::REPEAT,
+        Wrap::Clamp => glow::CLAMP_TO_EDGE,
+        Wrap::Mirror => glow::MIRRORED_REPEAT,
+    };
+    // SAFETY: state of the bound texture on the current context.
+    unsafe {
+        gl.tex_parameter_i32(target, glow::TEXTURE_MIN_FILTER, min as i32);
+        gl.tex_parameter_i32(target, glow::TEXTURE_MAG_FILTER, mag as i32);
+        for p in [glow::TEXTURE_WRAP_S, glow::TEXTURE_WRAP_T, glow::TEXTURE_WRAP_R] {
+            gl.tex_parameter_i32(target, p, wrap as i32);
+        }
+        if compare {
+            gl.tex_parameter_i32(target, glow::TEXTURE_COMPARE_MODE, glow::COMPARE_REF_TO_TEXTURE as i32);
+            gl.tex_parameter_i32(target, glow::TEXTURE_COMPARE_FUNC, glow::LEQUAL as i32);
+        }
+    }
+}
+
+/// Creates the GL texture of `t` (with the same mip chain wgpu got) and its sampler state.
+fn upload(gl: &glow::Context, t: &ReplayTexture, sampler: (Filter, Wrap, bool)) -> Result<(u32, glow::Texture), String> {
+    use glow::PixelUnpackData::Slice;
+    // SAFETY: texture creation on the current context; slices sized by the images.
+    unsafe {
+        let texture = gl.create_texture()?;
+        let target = match t {
+            ReplayTexture::Image { image, dimension } => {
+                let target = texture_target(dimension);
+                gl.bind_texture(target, Some(texture));
+                let mipmapped = matches!(target, glow::TEXTURE_2D | glow::TEXTURE_CUBE_MAP);
+                let mut levels = vec![image.clone()];
+                if mipmapped {
+                    levels.extend(image.mip_chain());
+                }
+                gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+                for (mip, level) in levels.iter().enumerate() {
+                    let (w, h) = (level.width as i32, level.height as i32);
+                    let layer = |k: u32| level.layer(k % level.layers.max(1));
+                    let m = mip as i32;
+                    match target {
+                        glow::TEXTURE_CUBE_MAP => {
+                            for face in 0..6 {
+                                let target = glow::TEXTURE_CUBE_MAP_POSITIVE_X + face;
+                                gl.tex_image_2d(
+                                    target,
+                                    m,
+                                    glow::RGBA8 as i32,
+                                    w,
+                                    h,
+                                    0,
+                                    glow::RGBA,
+                                    glow::UNSIGNED_BYTE,
+                                    Slice(layer(face)),
+                                );
+                            }
+                        }
+                        glow::TEXTURE_2D_ARRAY | glow::TEXTURE_3D => {
+                            let depth = if target == glow::TEXTURE_3D { 1 } else { level.layers.max(1) as i32 };
+                            let data: Vec<u8> = (0..depth as u32).filter_map(layer).flatten().copied().collect();
+                            gl.tex_image_3d(
+                                target,
+                                m,
+                                glow::RGBA8 as i32,
+                                w,
+                                h,
+                                depth,
+                                0,
+                                glow::RGBA,
+                                glow::UNSIGNED_BYTE,
+                                Slice(Some(&data)),
+                            );
+                        }
+                        glow::TEXTURE_1D => {
+                            let row = layer(0).map(|l| &l[..(w * 4) as usize]);
+                            gl.tex_image_1d(target, m, glow::RGBA8 as i32, w, 0, glow::RGBA, glow::UNSIGNED_BYTE, Slice(row));
+                        }
+                        _ => gl.tex_image_2d(target, m, glow::RGBA8 as i32, w, h, 0, glow::RGBA, glow::UNSIGNED_BYTE, Slice(layer(0))),
+                    }
+                }
+                gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, levels.len() as i32 - 1);
+                set_sampler(gl, target, sampler, mipmapped);
+                target
+            }
+            ReplayTexture::Depth { dimension } => {
+                let target = texture_target(dimension);
+                gl.bind_texture(target, Some(texture));
+                let one = 1.0f32.to_le_bytes();
+                let faces = if target == glow::TEXTURE_CUBE_MAP { 6 } else { 1 };
+                for face in 0..faces {
+                    let t = if faces == 6 { glow::TEXTURE_CUBE_MAP_POSITIVE_X + face } else { glow::TEXTURE_2D };
+                    gl.tex_image_2d(t, 0, glow::DEPTH_COMPONENT32F as i32, 1, 1, 0, glow::DEPTH_COMPONENT, glow::FLOAT, Slice(Some(&one)));
+                }
+                set_sampler(gl, target, sampler, false);
+                target
+            }
+            ReplayTexture::Integer { unsigned, dimension } => {
+                let target = texture_target(dimension);
+                gl.bind_texture(target, Some(texture));
+                let zeros = [0u8; 16];
+                let (internal, format) = if *unsigned { (glow::RGBA32UI, glow::RGBA_INTEGER) } else { (glow::RGBA32I, glow::RGBA_INTEGER) };
+                let ty = if *unsigned { glow::UNSIGNED_INT } else { glow::INT };
+                gl.tex_image_2d(glow::TEXTURE_2D, 0, internal as i32, 1, 1, 0, format, ty, Slice(Some(&zeros)));
+                set_sampler(gl, target, (Filter::Nearest, Wrap::Clamp, false), false);
+                target
+            }
+            ReplayTexture::Multisampled { depth } => {
+                let target = glow::TEXTURE_2D_MULTISAMPLE;
+                gl.bind_texture(target, Some(texture));
+                let internal = if *depth { glow::DEPTH_COMPONENT32F } else { glow::RGBA8 };
+                gl.tex_image_2d_multisample(target, 4, internal as i32, 1, 1, true);
+                clear_multisampled(gl, texture, *depth)?;
+                target
+            }
+            ReplayTexture::Target(_) => glow::TEXTURE_2D,
+        };
+        Ok((target, texture))
+    }
+}
+
+fn texture_target(dimension: &str) -> u32 {
+    match dimension {
+        "1d" => glow::TEXTURE_1D,
+        "3d" => glow::TEXTURE_3D,
+        "cube" => glow::TEXTURE_CUBE_MAP,
+        "2d_array" => glow::TEXTURE_2D_ARRAY,
+        "cube_array" => glow::TEXTURE_CUBE_MAP_ARRAY,
+        _ => glow::TEXTURE_2D,
+    }
+}
+
+/// Clears a multisampled placeholder as `render` does: magenta, or depth 1.0.
+fn clear_multisampled(gl: &glow::Context, texture: glow::Texture, depth: bool) -> Result<(), String> {
+    // SAFETY: a temporary framebuffer on the current context.
+    unsafe {
+        let fbo = gl.create_framebuffer()?;
+        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+        let attachment = if depth { glow::DEPTH_ATTACHMENT } else { glow::COLOR_ATTACHMENT0 };
+        gl.framebuffer_texture_2d(glow::FRAMEBUFFER, attachment, glow::TEXTURE_2D_MULTISAMPLE, Some(texture), 0);
+        if depth {
+            gl.clear_buffer_f32_slice(glow::DEPTH, 0, &[1.0]);
+        } else {
+            gl.draw_buffers(&[glow::COLOR_ATTACHMENT0]);
+            gl.clear_buffer_f32_slice(glow::COLOR, 0, &[1.0, 0.0, 1.0, 1.0]);
+        }
+        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+        gl.delete_framebuffer(fbo);
+    }
+    Ok(())
+}

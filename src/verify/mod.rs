@@ -1,0 +1,20 @@
+//! `effectc verify`: proof that a translation draws what the original GLSL draws on a real
+//! OpenGL driver, frame by frame.
+//!
+//! # Steps
+//! - [`context`]: a headless GL 4.5 compatibility context through EGL (surfaceless).
+//! - [`program`]: the user's GLSL compiled and linked by the driver; its errors placed in
+//!   the user's files.
+//! - [`uniforms`]: GL's active uniforms fed from the wgpu scene's uniform buffers.
+//! - [`gl_scene`]: the same vertices, textures and state for one scene.
+//! - [`gl_frame`]: targets, passes in order, the output read back.
+//! - [`diff`]: the comparison of two frames and its heat map.
+//! - [`command`]: the run.
+
+pub mod command;
+pub mod context;
+pub mod diff;
+pub mod gl_frame;
+pub mod gl_scene;
+pub mod program;
+pub mod uniforms;

@@ -1,0 +1,147 @@
+//! `effectc verify`: every shipped effect and every program of the semantics suite
+//! (`tests/verify/semantics/`, one fragment stage each behind a shared full-screen vertex
+//! stage) draws the same picture through the translation as through the system's OpenGL
+//! driver (Mesa's llvmpipe in CI; never skipped there). Programs that do not match yet are
+//! listed in `tests/verify/known_failures.txt`, and an entry that starts matching fails.
+
+use std::path::Path;
+
+use crate::common::{code, effectc, fixtures, in_ci, name_of, scratch, stdout};
+use crate::render::have_gpu;
+
+/// Frame size of the semantics programs (they are written for 64×64).
+const SEMANTICS_SIZE: &str = "64x64";
+/// Programs in the semantics suite.
+const SEMANTICS: usize = 67;
+
+/// Whether verify can run here: CI must have a GL driver and an adapter.
+fn can_verify() -> bool {
+    if !have_gpu() {
+        return false;
+    }
+    let ok = effectc::verify::context::GlContext::new();
+    if let Err(e) = &ok {
+        assert!(!in_ci(), "no OpenGL driver in CI: {}", e.0);
+        eprintln!("no OpenGL driver ({}): verify tests skipped", e.0);
+    }
+    ok.is_ok()
+}
+
+#[test]
+fn every_effect_matches_the_gl_driver() {
+    if !can_verify() {
+        return;
+    }
+    let mut failures = Vec::new();
+    for effect in fixtures("effects", 21) {
+        let name = name_of(&effect);
+        let out_dir = scratch("verify", &name);
+        let manifest = effect.join("effect.toml");
+        let args = ["verify", manifest.to_str().unwrap(), "--frames", "4", "--size", "128x128", "--out", out_dir.to_str().unwrap()];
+        let out = effectc(&args);
+        let text = stdout(&out);
+        if code(&out) != 0 || !text.contains("4/4 frames match") {
+            failures.push(format!("{name}: exit {}\n{text}", code(&out)));
+        }
+        // Every frame is written three ways when they differ at all: the translation, GL, the heat map.
+        assert!(out_dir.join(format!("{name}_0003_gl.png")).is_file(), "{name}: no GL frame written\n{text}");
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+fn known_failures() -> Vec<String> {
+    let text = std::fs::read_to_string("tests/verify/known_failures.txt").unwrap();
+    text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()).map(|l| l.split_whitespace().next().unwrap().to_string()).collect()
+}
+
+#[test]
+fn semantics_programs_match_the_gl_driver() {
+    if !can_verify() {
+        return;
+    }
+    let dir = Path::new("tests/verify/semantics");
+    let mut programs: Vec<String> =
+        std::fs::read_dir(dir).unwrap().filter_map(|e| e.ok()?.file_name().to_str()?.strip_suffix(".frag").map(str::to_owned)).collect();
+    programs.sort();
+    assert_eq!(programs.len(), SEMANTICS, "tests/verify/semantics: expected {SEMANTICS} programs");
+    let known = known_failures();
+    for k in &known {
+        assert!(programs.contains(k), "known failure `{k}` names no program");
+    }
+    let vertex = dir.join("fullscreen.vert");
+    let mut wrong = Vec::new();
+    for p in &programs {
+        let frag = dir.join(format!("{p}.frag"));
+        let out_dir = scratch("verify-semantics", p);
+        let args = [
+            "verify",
+            vertex.to_str().unwrap(),
+            frag.to_str().unwrap(),
+            "--size",
+            SEMANTICS_SIZE,
+            "--format",
+            "json",
+            "--out",
+            out_dir.to_str().unwrap(),
+        ];
+        let out = effectc(&args);
+        let text = stdout(&out);
+        let matched = code(&out) == 0 && json_matches(&text);
+        match (matched, known.contains(p)) {
+            (true, true) => wrong.push(format!("{p}: matches now; remove it from tests/verify/known_failures.txt")),
+            (false, false) => wrong.push(format!("{p}: does not match the GL driver (exit {})\n{text}", code(&out))),
+            _ => {}
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// The JSON report has one program, all of whose frames match.
+fn json_matches(text: &str) -> bool {
+    let v: serde_json::Value = serde_json::from_str(text).unwrap_or_default();
+    let programs = v["programs"].as_array().cloned().unwrap_or_default();
+    programs.len() == 1 && programs[0]["matches"] == true
+}
+
+#[test]
+fn a_mismatch_is_e0503_with_the_three_pictures() {
+    if !can_verify() {
+        return;
+    }
+    let dir = Path::new("tests/verify/semantics");
+    let out_dir = scratch("verify", "mismatch");
+    let vertex = dir.join("fullscreen.vert");
+    let frag = dir.join("short_circuit_and.frag");
+    let out = effectc(&["verify", vertex.to_str().unwrap(), frag.to_str().unwrap(), "--size", "64x64", "--out", out_dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    assert!(text.contains("error[E0503]") && text.contains("heat map:"), "{text}");
+    for suffix in ["", "_gl", "_diff"] {
+        assert!(out_dir.join(format!("fullscreen_0000{suffix}.png")).is_file(), "no fullscreen_0000{suffix}.png\n{text}");
+    }
+    // A tolerance wide enough for the difference makes it a match.
+    let out = effectc(&[
+        "verify",
+        vertex.to_str().unwrap(),
+        frag.to_str().unwrap(),
+        "--size",
+        "64x64",
+        "--max-differing",
+        "60",
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+}
+
+#[test]
+fn vulkan_glsl_is_not_verified() {
+    if !can_verify() {
+        return;
+    }
+    let program = Path::new("tests/through_spirv/02-vulkan-push-constants-gather");
+    let out = effectc(&["verify", program.to_str().unwrap(), "--out", scratch("verify", "vulkan").to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    assert!(text.contains("error[E0504]") && !text.contains("match"), "{text}");
+}
