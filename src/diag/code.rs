@@ -183,6 +183,9 @@ codes! {
     HazardTrig => "W0717", "sin/cos argument too large for f32",
     HazardSinHash => "W0718", "`fract(sin(x) * K)` hash depends on the GPU's sin precision",
     HazardCounterOverflow => "W0719", "loop counter can overflow",
+    HazardNegativeRemainder => "W0720", "integer `%` of a value that can be negative (undefined in GLSL)",
+    HazardShift => "W0721", "shift by an amount that can be negative or at least 32 (undefined in GLSL)",
+    HazardAtan2 => "W0722", "`atan(y, x)` where both can be 0 (undefined in GLSL)",
 }
 
 impl Code {

@@ -53,6 +53,25 @@ impl Edits {
         self.edits.is_empty()
     }
 
+    /// `original[range]` with the edits inside `range` applied: for text the rewrite
+    /// writes a second time elsewhere (a loop condition moved ahead of its body).
+    pub fn text_within(&self, original: &str, range: Range<usize>) -> String {
+        let mut inside: Vec<&Edit> = self.edits.iter().filter(|e| e.range.start >= range.start && e.range.end <= range.end).collect();
+        inside.sort_by_key(|e| (e.range.start, !e.range.is_empty()));
+        let mut out = String::new();
+        let mut at = range.start;
+        for e in inside {
+            if e.range.start < at {
+                continue;
+            }
+            out.push_str(&original[at..e.range.start]);
+            out.push_str(&e.text);
+            at = e.range.end;
+        }
+        out.push_str(&original[at..range.end]);
+        out
+    }
+
     /// Apply to `original`. Overlapping edits are a bug in the caller: the later one (in
     /// offset order) is dropped rather than corrupting the output, and reported in the
     /// returned list so the caller can surface it.

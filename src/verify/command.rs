@@ -103,6 +103,7 @@ pub fn run(request: &VerifyRequest) -> RunResult {
             }
         };
         let tolerance = tolerance(request, c);
+        let undefined = undefined_behaviour(&outcome, c);
         let plan = Plan {
             frames: request.render.frames.or(render.frames).unwrap_or(1),
             size,
@@ -114,6 +115,7 @@ pub fn run(request: &VerifyRequest) -> RunResult {
             start: request.render.start,
             dir: request.render.out.clone().unwrap_or_else(|| Path::new("out").join(drawer.name()).join("verify")),
             tolerance,
+            undefined,
         };
         let verified = compare_frames(gpu, gl, &mut drawer, &mut original, &plan, request, &inputs, file, &mut outcome);
         original.delete(&gl.gl);
@@ -277,6 +279,27 @@ struct Plan {
     start: f64,
     dir: PathBuf,
     tolerance: Tolerance,
+    /// Where the program does what GLSL leaves undefined (`path:line: message`).
+    undefined: Vec<String>,
+}
+
+/// Codes of the check warnings about behaviour GLSL leaves undefined, where an OpenGL
+/// driver and WebGPU may legitimately draw differently.
+const UNDEFINED: [Code; 4] = [Code::HazardNegativeRemainder, Code::HazardShift, Code::HazardAtan2, Code::HazardDivision];
+
+/// The program's warnings about undefined behaviour, as `path:line: message`.
+fn undefined_behaviour(outcome: &Outcome, c: &Checked) -> Vec<String> {
+    let files: Vec<FileId> = c.units.iter().flat_map(|u| u.program.stages.iter().map(|s| s.syntax.file)).collect();
+    outcome
+        .diagnostics
+        .iter()
+        .filter(|d| UNDEFINED.contains(&d.code) && d.file.is_some_and(|f| files.contains(&f)))
+        .map(|d| {
+            let file = d.file.unwrap_or(FileId(0));
+            let line = d.span.as_ref().map_or(0, |s| outcome.files.line_col(file, s.start).0);
+            format!("{}:{line}: {} ({})", outcome.files.path(file), d.message, d.code.as_str())
+        })
+        .collect()
 }
 
 /// Draws and compares every frame; mismatches become E0503 in `outcome`.
@@ -325,7 +348,7 @@ fn compare_frames(
         let diff = diff::compare(&translated, &reference, plan.size, plan.tolerance);
         let files = write_frames(&plan.dir, &name, i, plan, (&translated, &reference), &diff, inputs, outcome);
         if !diff.matches {
-            outcome.diagnostics.push(mismatch(i, &diff, plan.tolerance, &files, &original.unmatched, file));
+            outcome.diagnostics.push(mismatch(i, &diff, plan, &files, &original.unmatched, file));
         }
         frames.push(FrameVerdict { index: i, time, diff, files });
     }
@@ -365,7 +388,8 @@ fn write_frames(
     files
 }
 
-fn mismatch(i: u32, d: &FrameDiff, tol: Tolerance, files: &[PathBuf], unmatched: &[String], file: FileId) -> Diagnostic {
+fn mismatch(i: u32, d: &FrameDiff, plan: &Plan, files: &[PathBuf], unmatched: &[String], file: FileId) -> Diagnostic {
+    let tol = plan.tolerance;
     let percent = 100.0 * d.over as f64 / d.pixels.max(1) as f64;
     let psnr = d.psnr.map_or("∞".to_string(), |p| format!("{p:.1}"));
     let mut diag = Diagnostic::new(
@@ -382,6 +406,12 @@ fn mismatch(i: u32, d: &FrameDiff, tol: Tolerance, files: &[PathBuf], unmatched:
     }
     if let Some(heat) = files.iter().find(|f| f.to_string_lossy().ends_with("_diff.png")) {
         diag = diag.with_note(format!("heat map: {} (blue within the tolerance, red to yellow beyond it)", heat.display()));
+    }
+    if !plan.undefined.is_empty() {
+        diag = diag.with_note(format!(
+            "the program does what GLSL leaves undefined, where OpenGL and WebGPU may legitimately differ: {}",
+            plan.undefined.join("; ")
+        ));
     }
     if !unmatched.is_empty() {
         diag = diag.with_note(format!("GL reads values the translation does not feed (they stay 0 in GL): {}", unmatched.join(", ")));

@@ -1,6 +1,6 @@
 //! `effectc verify`: every shipped effect and every program of the semantics suite
-//! (`tests/verify/semantics/`, one fragment stage each behind a shared full-screen vertex
-//! stage) draws the same picture through the translation as through the system's OpenGL
+//! (`tests/verify/semantics/`: one fragment stage each behind the shared full-screen vertex
+//! stage, or a directory holding a program's own stages) draws the same picture through the translation as through the system's OpenGL
 //! driver (Mesa's llvmpipe in CI; never skipped there). Programs that do not match yet are
 //! listed in `tests/verify/known_failures.txt`, and an entry that starts matching fails.
 
@@ -12,7 +12,7 @@ use crate::render::have_gpu;
 /// Frame size of the semantics programs (they are written for 64×64).
 const SEMANTICS_SIZE: &str = "64x64";
 /// Programs in the semantics suite.
-const SEMANTICS: usize = 67;
+const SEMANTICS: usize = 68;
 
 /// Whether verify can run here: CI must have a GL driver and an adapter.
 fn can_verify() -> bool {
@@ -60,8 +60,18 @@ fn semantics_programs_match_the_gl_driver() {
         return;
     }
     let dir = Path::new("tests/verify/semantics");
-    let mut programs: Vec<String> =
-        std::fs::read_dir(dir).unwrap().filter_map(|e| e.ok()?.file_name().to_str()?.strip_suffix(".frag").map(str::to_owned)).collect();
+    let mut programs: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .filter_map(|e| {
+            let e = e.ok()?;
+            let name = e.file_name().to_str()?.to_owned();
+            if e.path().is_dir() {
+                Some(name)
+            } else {
+                name.strip_suffix(".frag").map(str::to_owned)
+            }
+        })
+        .collect();
     programs.sort();
     assert_eq!(programs.len(), SEMANTICS, "tests/verify/semantics: expected {SEMANTICS} programs");
     let known = known_failures();
@@ -71,19 +81,15 @@ fn semantics_programs_match_the_gl_driver() {
     let vertex = dir.join("fullscreen.vert");
     let mut wrong = Vec::new();
     for p in &programs {
+        let own = dir.join(p);
         let frag = dir.join(format!("{p}.frag"));
+        // A directory is a program of its own; a fragment stage goes behind the shared vertex stage.
+        let stages: Vec<&str> =
+            if own.is_dir() { vec![own.to_str().unwrap()] } else { vec![vertex.to_str().unwrap(), frag.to_str().unwrap()] };
         let out_dir = scratch("verify-semantics", p);
-        let args = [
-            "verify",
-            vertex.to_str().unwrap(),
-            frag.to_str().unwrap(),
-            "--size",
-            SEMANTICS_SIZE,
-            "--format",
-            "json",
-            "--out",
-            out_dir.to_str().unwrap(),
-        ];
+        let mut args = vec!["verify"];
+        args.extend(stages);
+        args.extend(["--size", SEMANTICS_SIZE, "--format", "json", "--out", out_dir.to_str().unwrap()]);
         let out = effectc(&args);
         let text = stdout(&out);
         let matched = code(&out) == 0 && json_matches(&text);
@@ -108,14 +114,15 @@ fn a_mismatch_is_e0503_with_the_three_pictures() {
     if !can_verify() {
         return;
     }
-    let dir = Path::new("tests/verify/semantics");
     let out_dir = scratch("verify", "mismatch");
-    let vertex = dir.join("fullscreen.vert");
-    let frag = dir.join("short_circuit_and.frag");
+    let vertex = Path::new("tests/verify/semantics/fullscreen.vert");
+    let frag = Path::new("tests/verify/undefined/negative_remainder.frag");
     let out = effectc(&["verify", vertex.to_str().unwrap(), frag.to_str().unwrap(), "--size", "64x64", "--out", out_dir.to_str().unwrap()]);
     let text = stdout(&out);
     assert_eq!(code(&out), 1, "{text}");
     assert!(text.contains("error[E0503]") && text.contains("heat map:"), "{text}");
+    // The check warning about the undefined `%` is there, and the mismatch names it.
+    assert!(text.contains("warning[W0720]") && text.contains("GLSL leaves undefined") && text.contains("(W0720)"), "{text}");
     for suffix in ["", "_gl", "_diff"] {
         assert!(out_dir.join(format!("fullscreen_0000{suffix}.png")).is_file(), "no fullscreen_0000{suffix}.png\n{text}");
     }
@@ -144,4 +151,19 @@ fn vulkan_glsl_is_not_verified() {
     let text = stdout(&out);
     assert_eq!(code(&out), 1, "{text}");
     assert!(text.contains("error[E0504]") && !text.contains("match"), "{text}");
+}
+
+#[test]
+fn undefined_behaviour_is_warned_at_its_line() {
+    let dir = Path::new("tests/verify/undefined");
+    for (file, warning, line) in
+        [("negative_remainder.frag", "W0720", 10), ("shift_out_of_range.frag", "W0721", 9), ("atan_origin.frag", "W0722", 9)]
+    {
+        let vertex = Path::new("tests/verify/semantics/fullscreen.vert");
+        let out = effectc(&["check", "--color", "never", vertex.to_str().unwrap(), dir.join(file).to_str().unwrap()]);
+        let text = stdout(&out);
+        assert_eq!(code(&out), 0, "{file}: warnings only\n{text}");
+        assert!(text.contains(&format!("warning[{warning}]")), "{file}: no {warning}\n{text}");
+        assert!(text.contains(&format!("{file}:{line}:")), "{file}: {warning} not at line {line}\n{text}");
+    }
 }

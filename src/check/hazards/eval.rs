@@ -188,7 +188,12 @@ impl Analyzer<'_> {
                 let same = arg1.is_some_and(|x| c.keys[arg.index()].is_some() && c.keys[arg.index()] == c.keys[x.index()]);
                 let nonzero = self.proven_nonzero(c, state, arg, fun);
                 let out = ops::math(fun, &a, b.as_ref(), d.as_ref(), same, nonzero);
-                if let Some(kind) = out.hazard {
+                // atan(0, 0) in an arm of `?:` is the case the condition leaves out; and only
+                // when y and x are components of one vector that can be zero is (0, 0)
+                // reachable (intervals of two separate values cannot tell).
+                let discarded = out.hazard == Some(ops::Kind::Atan2)
+                    && (c.select_arms[h.index()] || !arg1.is_some_and(|x| self.same_vector_can_vanish(c, state, arg, x)));
+                if let Some(kind) = out.hazard.filter(|_| !discarded) {
                     self.report(Hazard::new(kind, self.span(c, h), &a, b.as_ref()));
                 }
                 if fun == naga::MathFunction::Fract {
@@ -234,7 +239,12 @@ impl Analyzer<'_> {
         let same = c.keys[left.index()].is_some() && c.keys[left.index()] == c.keys[right.index()];
         let out = ops::binary(op, &a, &b, same);
         if let Some(kind) = out.hazard {
-            self.report(Hazard::new(kind, self.span(c, h), &b, None));
+            // A division names its divisor; a remainder both operands; a shift its amount.
+            let hazard = match kind {
+                ops::Kind::NegativeRemainder => Hazard::new(kind, self.span(c, h), &a, Some(&b)),
+                _ => Hazard::new(kind, self.span(c, h), &b, None),
+            };
+            self.report(hazard);
         }
         Val::Num(out.value)
     }
@@ -293,6 +303,37 @@ impl Analyzer<'_> {
         }
         let m = self.num(c, state, source?);
         (m.cols == 4).then_some(m.gain)
+    }
+
+    /// `y` and `x` are components of one vector (`v.y`, `v.x`) whose length can be 0.
+    fn same_vector_can_vanish(&mut self, c: &mut Call<'_>, state: &State, y: Handle<Expression>, x: Handle<Expression>) -> bool {
+        // `v.y` of a value, or a load of `v.y` of a variable.
+        let exprs = &c.fun.expressions;
+        let base = |h: Handle<Expression>| match exprs[h] {
+            Expression::AccessIndex { base, .. } => Some(base),
+            Expression::Load { pointer } => match exprs[pointer] {
+                Expression::AccessIndex { base, .. } => Some(base),
+                _ => None,
+            },
+            _ => None,
+        };
+        let same = |a: Handle<Expression>, b: Handle<Expression>| {
+            a == b || (c.keys[a.index()].is_some() && c.keys[a.index()] == c.keys[b.index()])
+        };
+        match (base(y), base(x)) {
+            (Some(a), Some(b)) if same(a, b) => {
+                // A 2-vector (`atan(d.y, d.x)`), not proven non-zero by a guard on its
+                // length (of a longer vector, the pair's own length is not tracked).
+                let v = self.num(c, state, a);
+                let guarded = c.keys[a.index()].is_some_and(|k| {
+                    let len = math_key(naga::MathFunction::Length, k, None, None);
+                    let dot = math_key(naga::MathFunction::Dot, k, Some(k), None);
+                    [len, dot].iter().any(|key| state.refined.get(key).is_some_and(|r| r.gap > 0.0 || r.iv.lo > 0.0))
+                });
+                v.c.len() == 2 && v.len.lo <= 0.0 && v.gap <= 0.0 && !guarded
+            }
+            _ => false,
+        }
     }
 
     /// Facts from guards: `length(v)` or `dot(v, v)` proven positive by a condition.

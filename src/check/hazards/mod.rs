@@ -105,6 +105,31 @@ impl Hazard {
                 ),
                 "wrap the phase first: `sin(mod(t, 2π / f) * f)`, or give the time uniform a `range`",
             ),
+            Kind::NegativeRemainder => (
+                Code::HazardNegativeRemainder,
+                "integer `%` of a value that can be negative".to_string(),
+                format!(
+                    "the operands lie in {}{}",
+                    describe(a),
+                    b.map(|d| format!(" and {}", describe(d))).unwrap_or_default()
+                ),
+                "GLSL leaves `%` undefined when an operand is negative: OpenGL drivers and WebGPU give different results (`effectc verify` shows them)".to_string(),
+                "keep both operands non-negative (`abs(x) % n`), or write the remainder you mean: `x - n * int(floor(float(x) / float(n)))`",
+            ),
+            Kind::Shift => (
+                Code::HazardShift,
+                "shift by an amount that can be negative or at least 32".to_string(),
+                format!("the amount lies in {}", describe(b.unwrap_or(a))),
+                "GLSL leaves such shifts undefined: WebGPU uses the amount's low 5 bits, drivers differ".to_string(),
+                "bound the amount: `x << clamp(s, 0, 31)`",
+            ),
+            Kind::Atan2 => (
+                Code::HazardAtan2,
+                "`atan(y, x)` where both can be 0".to_string(),
+                format!("y lies in {}{}", describe(a), b.map(|x| format!(", x in {}", describe(x))).unwrap_or_default()),
+                "GLSL leaves atan(0, 0) undefined: drivers return 0, π or NaN".to_string(),
+                "guard the origin: `length(v) > 1e-6 ? atan(v.y, v.x) : 0.0`",
+            ),
         };
         Hazard { code, span, message, label, notes: vec![note], help: help.to_string() }
     }

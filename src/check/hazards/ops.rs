@@ -33,6 +33,12 @@ pub enum Kind {
     Normalize,
     InverseSqrt,
     Trig,
+    /// Integer `%` with an operand that can be negative (undefined in GLSL).
+    NegativeRemainder,
+    /// A shift by an amount that can be negative or at least the width (undefined).
+    Shift,
+    /// `atan(y, x)` with both able to be 0 (undefined).
+    Atan2,
 }
 
 pub struct Out {
@@ -156,7 +162,15 @@ pub fn binary(op: B, a: &Num, b: &Num, same: bool) -> Out {
         B::Multiply => multiply(a, b, same),
         B::Divide | B::Modulo => {
             let zero = b.c.iter().any(|x| x.contains(0.0)) && !(b.c.len() == 1 && b.gap > 0.0);
-            let hazard = (zero && b.known).then_some(Kind::Division);
+            // Negative within a bounded range: a value that may have wrapped around (a loop
+            // counter the analysis cannot bound) spans the whole type and says nothing.
+            let negative = |n: &Num| n.c.iter().any(|x| x.lo < 0.0 && bounded(*x));
+            let signed_remainder = op == B::Modulo && a.kind == ScalarKind::Sint && (negative(a) || negative(b));
+            let hazard = match (zero && b.known, signed_remainder && a.known && b.known) {
+                (true, _) => Some(Kind::Division),
+                (false, true) => Some(Kind::NegativeRemainder),
+                _ => None,
+            };
             let mut r = if op == B::Divide {
                 zip(a, b, |x, y| divide(x, y, b.gap))
             } else {
@@ -200,10 +214,19 @@ pub fn binary(op: B, a: &Num, b: &Num, same: bool) -> Out {
             if a.kind == ScalarKind::Bool {
                 r = zip(a, b, |_, _| Iv::UNIT);
             }
+            let shift = matches!(op, B::ShiftLeft | B::ShiftRight);
+            if shift && b.known && b.c.iter().any(|y| bounded(*y) && (y.lo < 0.0 || y.hi >= 32.0)) {
+                return Out { value: map(&r, |_| Iv::TOP), hazard: Some(Kind::Shift) };
+            }
             r
         }
     };
     ok(if int { wrap(value) } else { value })
+}
+
+/// An integer interval narrower than the whole 32-bit range.
+fn bounded(x: Iv) -> bool {
+    x.lo > f64::from(i32::MIN) && x.hi < f64::from(u32::MAX)
 }
 
 fn divide(x: Iv, y: Iv, gap: f64) -> Iv {
@@ -376,7 +399,7 @@ impl Iv {
 /// the argument of `normalize` non-zero. Builtins the analysis does not model give unknown values.
 pub fn math(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>, same: bool, nonzero: bool) -> Out {
     common(fun, a, b, d)
-        .or_else(|| trigonometric(fun, a))
+        .or_else(|| trigonometric(fun, a, b))
         .or_else(|| exponential(fun, a, b))
         .or_else(|| geometric(fun, a, b, d, same, nonzero))
         .or_else(|| matrix(fun, a, b))
@@ -439,7 +462,7 @@ fn common(fun: M, a: &Num, b: Option<&Num>, d: Option<&Num>) -> Option<Out> {
 }
 
 /// Angle and trigonometric functions; `None` for other builtins.
-fn trigonometric(fun: M, a: &Num) -> Option<Out> {
+fn trigonometric(fun: M, a: &Num, b: Option<&Num>) -> Option<Out> {
     use std::f64::consts::{FRAC_PI_2, PI};
     let value = match fun {
         M::Sin | M::Cos => {
@@ -466,7 +489,12 @@ fn trigonometric(fun: M, a: &Num) -> Option<Out> {
             return Some(Out { value: r, hazard: hazard_if(a, outside, kind) });
         }
         M::Atan => map(a, |x| x.monotone(f64::atan)),
-        M::Atan2 => map(a, |_| Iv::new(-PI, PI)),
+        M::Atan2 => {
+            // Some component where y and x can both be 0.
+            let both_zero = b.is_some_and(|x| a.c.iter().zip(&x.c).any(|(y, x)| y.contains(0.0) && x.contains(0.0)));
+            let known = b.is_some_and(|x| a.known && x.known);
+            return Some(Out { value: map(a, |_| Iv::new(-PI, PI)), hazard: (both_zero && known).then_some(Kind::Atan2) });
+        }
         M::Sinh | M::Cosh | M::Asinh | M::Acosh | M::Atanh | M::Tanh => {
             map(a, |x| if fun == M::Tanh { x.monotone(f64::tanh) } else { Iv::TOP })
         }

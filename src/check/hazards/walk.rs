@@ -146,6 +146,35 @@ pub struct Call<'f> {
     pub returned: Vec<(State, Option<Val>)>,
     /// Stores in a `continuing` block are loop-counter updates.
     pub in_continuing: bool,
+    /// Expressions computed only for an arm of a `?:` (`Select`): GLSL's condition picks
+    /// the arm, so a value undefined in the other one is discarded (`len > 0.0 ? atan(y,
+    /// x) : 0.0`).
+    pub select_arms: Vec<bool>,
+}
+
+/// Which expressions of `fun` lie in the operand tree of a `Select`'s arms.
+fn select_arms(fun: &Function) -> Vec<bool> {
+    let mut arms = vec![false; fun.expressions.len()];
+    let mut stack: Vec<Handle<naga::Expression>> = Vec::new();
+    for (_, e) in fun.expressions.iter() {
+        if let naga::Expression::Select { accept, reject, .. } = e {
+            stack.extend([*accept, *reject]);
+        }
+    }
+    while let Some(h) = stack.pop() {
+        if std::mem::replace(&mut arms[h.index()], true) {
+            continue;
+        }
+        match &fun.expressions[h] {
+            naga::Expression::Math { arg, arg1, arg2, arg3, .. } => stack.extend([Some(*arg), *arg1, *arg2, *arg3].into_iter().flatten()),
+            naga::Expression::Binary { left, right, .. } => stack.extend([*left, *right]),
+            naga::Expression::Unary { expr, .. } | naga::Expression::As { expr, .. } => stack.push(*expr),
+            naga::Expression::AccessIndex { base, .. } => stack.push(*base),
+            naga::Expression::Swizzle { vector, .. } => stack.push(*vector),
+            _ => {}
+        }
+    }
+    arms
 }
 
 /// The analysis of one stage.
@@ -217,7 +246,17 @@ impl<'a> Analyzer<'a> {
             return (state, v);
         }
         let n = fun.expressions.len();
-        let mut c = Call { fun, info, depth, args, values: vec![None; n], keys: vec![None; n], returned: Vec::new(), in_continuing: false };
+        let mut c = Call {
+            fun,
+            info,
+            depth,
+            args,
+            values: vec![None; n],
+            keys: vec![None; n],
+            returned: Vec::new(),
+            in_continuing: false,
+            select_arms: select_arms(fun),
+        };
         for (h, local) in fun.local_variables.iter() {
             let v = match local.init {
                 Some(init) => self.value(&mut c, &state, init),

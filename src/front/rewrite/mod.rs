@@ -14,11 +14,13 @@
 //! matrices), `expressions` (array sizes, scalar swizzles), `header` (what goes before the
 //! first function: the shared block, split textures, built-in replacements),
 //! `initializers` (globals initialised from uniforms or inputs, assigned first in `main`),
-//! `file_scope` (a `;` after a function body).
+//! `file_scope` (a `;` after a function body), `evaluation` (short-circuit operators with
+//! side effects, `continue` in `do … while`).
 
 mod blocks;
 mod calls;
 mod declarations;
+mod evaluation;
 mod expressions;
 mod file_scope;
 mod header;
@@ -111,6 +113,8 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.row_major_uses();
     c.unsized_arrays();
     c.scalar_swizzles(scalar_swizzles);
+    c.lazy_logic();
+    c.do_while_continue();
     c.insert_header();
     c.insert_main_hooks();
     let Ctx { edits, mut diags, limitation, .. } = c;

@@ -17,7 +17,10 @@ mod nodes;
 mod parse;
 mod types;
 
-pub use model::{BlockInfo, Call, DefaultDecl, Function, Global, Member, Param, Referent, StageSyntax, StructDef, Swizzle, Use};
+pub use model::{
+    BlockInfo, Call, DefaultDecl, DoWhileContinue, Function, Global, LazyLogic, Member, Param, Referent, StageSyntax, StructDef, Swizzle,
+    Use,
+};
 pub use nodes::expr_text;
 pub use parse::analyse;
 pub(crate) use parse::vulkan_source;

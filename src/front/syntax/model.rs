@@ -194,6 +194,36 @@ pub struct StageSyntax {
     /// Written in Vulkan GLSL (descriptor sets, push constants, specialization constants,
     /// `gl_VertexIndex`, separate textures and samplers): interfaces match by location only.
     pub vulkan: bool,
+    /// `a && f()` / `a || f()` whose right operand has side effects: naga's GLSL front
+    /// evaluates it even when `a` decides the result, so the rewrite writes `?:`.
+    pub lazy_logic: Vec<LazyLogic>,
+    /// `do { … continue; … } while (c);`: naga's `continue` there skips `c`, so the rewrite
+    /// writes a `for` loop that tests `c` after every iteration but the first.
+    pub do_while_continue: Vec<DoWhileContinue>,
+}
+
+/// A short-circuit operator whose right operand must not run when the left decides.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LazyLogic {
+    /// The left operand as written (with its parentheses).
+    pub left: Range<usize>,
+    /// The `&&` or `||` token.
+    pub op: Range<usize>,
+    /// The right operand as written (with its parentheses).
+    pub right: Range<usize>,
+    /// `&&` (else `||`).
+    pub and: bool,
+}
+
+/// A `do … while` loop whose body has a `continue` of its own.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DoWhileContinue {
+    /// `do` up to the body.
+    pub keyword: Range<usize>,
+    /// The condition expression.
+    pub cond: Range<usize>,
+    /// From the end of the body through the `;` after `while (c)`.
+    pub tail: Range<usize>,
 }
 
 /// A declaration made of qualifiers only: it sets defaults for later declarations.

@@ -130,6 +130,8 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
         unsized_sizes: Vec::new(),
         constant_sizes: Vec::new(),
         vulkan: false,
+        lazy_logic: Vec::new(),
+        do_while_continue: Vec::new(),
     };
     Collector::run(&mut syntax, &tu);
     syntax.vulkan = match env {

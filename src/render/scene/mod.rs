@@ -215,14 +215,7 @@ impl Scene {
         let vertex_buffer =
             (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));
         let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
-        let draw = match (&pulled, &mesh_note) {
-            (Some(p), _) => Draw::Vertices(p.count),
-            (None, MeshNote::OwnVertices) => Draw::Vertices(3),
-            _ => {
-                let bytes: Vec<u8> = mesh.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
-                Draw::Indexed { buffer: buffer_init(gpu, "indices", &bytes, wgpu::BufferUsages::INDEX), count: mesh.indices.len() as u32 }
-            }
-        };
+        let draw = draw_of(gpu, r, pulled.as_ref().map(|p| p.count), &mesh_note, &mesh);
         let uniforms = uniform_buffers(gpu, input, first_file, &mut warnings)?;
         let textures = Textures::create(gpu, input, &mut warnings)?;
         let filled = pulled.as_ref().map(|p| p.buffers()).unwrap_or_default();
@@ -277,6 +270,36 @@ fn replay_of(input: &SceneInput<'_>, vertices: attributes::Interleaved, textures
         inputs: input.translation.reflection.vertex_inputs.iter().map(|v| (v.name.clone(), v.location)).collect(),
         plan_textures: plan.textures.iter().map(|t| (t.user_path.clone(), t.name.clone(), t.sampler_name.clone())).collect(),
     }
+}
+
+/// How wgpu draws: the pulled vertices of a folded geometry program, the program's own
+/// three vertices, or the mesh's triangles (from GL's provoking vertex when `flat`
+/// varyings need it).
+fn draw_of(gpu: &Gpu, r: &crate::back::reflect::Reflection, pulled: Option<u32>, mesh_note: &MeshNote, mesh: &Mesh) -> Draw {
+    let own = matches!(mesh_note, MeshNote::OwnVertices);
+    match (pulled, own, flat_varyings(r)) {
+        (Some(count), _, _) => Draw::Vertices(count),
+        (None, true, false) => Draw::Vertices(3),
+        (None, _, flat) => {
+            let triangles = if own { vec![0, 1, 2] } else { mesh.indices.clone() };
+            let indices = if flat { gl_provoking_first(&triangles) } else { triangles };
+            let bytes: Vec<u8> = indices.iter().flat_map(|i| i.to_le_bytes()).collect();
+            Draw::Indexed { buffer: buffer_init(gpu, "indices", &bytes, wgpu::BufferUsages::INDEX), count: indices.len() as u32 }
+        }
+    }
+}
+
+/// The program passes `flat` varyings from the vertex stage: which vertex provokes them
+/// matters.
+fn flat_varyings(r: &crate::back::reflect::Reflection) -> bool {
+    r.varyings.iter().any(|v| v.interpolation == Some("flat"))
+}
+
+/// Every triangle `(a, b, c)` as `(c, a, b)`: the same triangle, wound the same way, whose
+/// first vertex — the one WebGPU takes `flat` values from — is GL's provoking vertex, the
+/// last.
+fn gl_provoking_first(triangles: &[u32]) -> Vec<u32> {
+    triangles.chunks_exact(3).flat_map(|t| [t[2], t[0], t[1]]).collect()
 }
 
 /// How GL draws the original program: the mesh's triangles, the program's own three

@@ -203,7 +203,12 @@ impl Collector<'_> {
                 }
             }
             ast::ExprData::Unary(_, a) | ast::ExprData::PostInc(a) | ast::ExprData::PostDec(a) => self.expr(a),
-            ast::ExprData::Binary(_, a, b) | ast::ExprData::Assignment(a, _, b) | ast::ExprData::Comma(a, b) => {
+            ast::ExprData::Binary(op, a, b) => {
+                self.lazy_logic(op, a, b);
+                self.expr(a);
+                self.expr(b);
+            }
+            ast::ExprData::Assignment(a, _, b) | ast::ExprData::Comma(a, b) => {
                 self.expr(a);
                 self.expr(b);
             }

@@ -3,6 +3,7 @@
 //! expressions in the submodules. Scopes are tracked so locals never resolve to globals.
 
 mod declarations;
+mod evaluation;
 mod expressions;
 mod specifiers;
 mod statements;

@@ -131,6 +131,7 @@ impl Collector<'_> {
                         self.scoped_statement(body);
                     }
                     ast::IterationStatementData::DoWhile(body, cond) => {
+                        self.do_while(st, body, cond);
                         self.scoped_statement(body);
                         self.expr(cond);
                     }
