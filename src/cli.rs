@@ -263,6 +263,11 @@ pub struct RenderArgs {
     /// textures, meshes, new files below input directories), until interrupted.
     #[arg(long)]
     pub watch: bool,
+    /// Also draw the original GLSL with the system's OpenGL driver and compare every
+    /// frame, as `effectc verify` does (frames, GL frames and heat maps to `--out`, else
+    /// `out/<effect>/verify/`; exit 1 when a frame differs beyond the tolerance).
+    #[arg(long)]
+    pub verify: bool,
 }
 
 #[derive(Debug, clap::Args)]
@@ -307,6 +312,13 @@ pub struct VerifyArgs {
     /// Print the adapter and the GL renderer.
     #[arg(long)]
     pub verbose: bool,
+}
+
+impl RenderArgs {
+    /// `render --verify`: the verify request these flags make (the manifest's tolerance).
+    pub fn verify_request(&self, config: &Config, started: Instant) -> crate::verify::command::VerifyRequest {
+        crate::verify::command::VerifyRequest { render: self.request(config, started), tolerance: None, max_differing: None }
+    }
 }
 
 impl VerifyArgs {
@@ -538,6 +550,21 @@ impl RenderArgs {
     /// Flag combinations clap cannot refuse by itself: `--raw` without `--out -`, and the
     /// flags that write files beside the frames (which a stream has no place for) with it.
     pub fn usage_error(&self) -> Option<String> {
+        if self.verify {
+            let other = [
+                ("--out -", self.streams()),
+                ("--float", self.float),
+                ("--gif", self.gif),
+                ("--contact-sheet", self.contact_sheet),
+                ("--dump-targets", self.dump_targets),
+                ("--watch", self.watch),
+                ("--raw", self.raw),
+            ];
+            if let Some((flag, _)) = other.into_iter().find(|(_, on)| *on) {
+                return Some(format!("`--verify` compares RGBA8 frames written as PNG files and cannot be used with `{flag}`"));
+            }
+            return None;
+        }
         if !self.streams() {
             return self.raw.then(|| "`--raw` needs `--out -`: raw frames are only streamed to stdout".to_string());
         }

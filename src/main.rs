@@ -191,6 +191,9 @@ fn render(args: &RenderArgs, settings: &config::Loaded, changed: Option<&[PathBu
         let message = "`--out -` writes binary frames to stdout, which is a terminal here; pipe it (`| ffmpeg -f image2pipe -i - out.mp4`)";
         return (render_usage_error(message.into()), Vec::new());
     }
+    if args.verify {
+        return verify_run(&args.common, args.verify_request(&settings.config, started), args.verbose, settings);
+    }
     let mut request = args.request(&settings.config, started);
     request.only = changed.map(|c| c.to_vec());
     let c = &args.common;
@@ -225,8 +228,16 @@ fn render(args: &RenderArgs, settings: &config::Loaded, changed: Option<&[PathBu
 }
 
 fn verify(args: &VerifyArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBuf>) {
-    let c = &args.common;
-    let request = args.request(&settings.config);
+    verify_run(&args.common, args.request(&settings.config), args.verbose, settings)
+}
+
+/// `effectc verify`, and `effectc render --verify`.
+fn verify_run(
+    c: &CommonArgs,
+    request: effectc::verify::command::VerifyRequest,
+    verbose: bool,
+    settings: &config::Loaded,
+) -> (ExitCode, Vec<PathBuf>) {
     let mut result = effectc::verify::command::run(&request);
     result.outcome = settle(result.outcome, settings, Reach::Verify);
     let text = match c.format {
@@ -241,7 +252,7 @@ fn verify(args: &VerifyArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBu
         _ => {
             let mut text = String::new();
             if c.format == Format::Human {
-                if let (true, Some(a), Some(g)) = (args.verbose, &result.adapter, &result.gl) {
+                if let (true, Some(a), Some(g)) = (verbose, &result.adapter, &result.gl) {
                     text.push_str(&format!("adapter: {a}\nOpenGL: {g}\n"));
                 }
                 for v in &result.verified {

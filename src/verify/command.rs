@@ -54,6 +54,8 @@ pub struct Verified {
     pub name: String,
     pub size: (u32, u32),
     pub tolerance: Tolerance,
+    /// Channels compared (the output's components: GL leaves the others undefined).
+    pub channels: usize,
     pub frames: Vec<FrameVerdict>,
     /// Every frame within the tolerance.
     pub matches: bool,
@@ -181,6 +183,29 @@ fn tolerance(request: &VerifyRequest, c: &Checked) -> Tolerance {
     }
 }
 
+/// The channels of the compared target that the program writes: the components of the
+/// fragment output at its location, at most the target format's.
+fn written_channels(drawer: &Drawer, output: &str) -> usize {
+    let of = |scene: &crate::render::scene::Scene, location: u32, format: wgpu::TextureFormat| {
+        let written = scene.replay.outputs.iter().find(|(l, _)| *l == location).map_or(4, |(_, c)| *c);
+        let stored = format.components() as u32;
+        written.min(stored).max(1) as usize
+    };
+    match drawer {
+        Drawer::Single { scene, .. } => scene.colors.first().copied().flatten().map_or(4, |f| of(scene, 0, f)),
+        Drawer::Graph(g) => g
+            .pass_views()
+            .iter()
+            .rev()
+            .find_map(|v| {
+                let (location, (_, format)) =
+                    v.colors.iter().enumerate().find_map(|(i, c)| c.filter(|(n, _)| *n == output).map(|c| (i, c)))?;
+                Some(of(v.scene, location as u32, format))
+            })
+            .unwrap_or(4),
+    }
+}
+
 /// The original program drawn by GL: one scene per pass and the targets.
 struct GlDrawer {
     scenes: Vec<GlScene>,
@@ -188,6 +213,9 @@ struct GlDrawer {
     output: String,
     /// GL reads these without a value from the translation (they stay 0 in GL).
     unmatched: Vec<String>,
+    /// Channels of the frame the program writes (a `vec2` output: 2); GL leaves the
+    /// others undefined, so only these are compared.
+    channels: usize,
 }
 
 impl GlDrawer {
@@ -227,7 +255,8 @@ impl GlDrawer {
                 "output0".to_string()
             }
         };
-        Ok(GlDrawer { scenes, frames, output, unmatched })
+        let channels = written_channels(drawer, &output);
+        Ok(GlDrawer { scenes, frames, output, unmatched, channels })
     }
 
     /// Draws one frame with the uniform values the wgpu scenes hold now (after their frame).
@@ -345,15 +374,15 @@ fn compare_frames(
                 return None;
             }
         };
-        let diff = diff::compare(&translated, &reference, plan.size, plan.tolerance);
-        let files = write_frames(&plan.dir, &name, i, plan, (&translated, &reference), &diff, inputs, outcome);
+        let diff = diff::compare(&translated, &reference, plan.size, plan.tolerance, original.channels);
+        let files = write_frames(&plan.dir, &name, i, plan, (&translated, &reference, original.channels), &diff, inputs, outcome);
         if !diff.matches {
             outcome.diagnostics.push(mismatch(i, &diff, plan, &files, &original.unmatched, file));
         }
         frames.push(FrameVerdict { index: i, time, diff, files });
     }
     let matches = frames.iter().all(|f| f.diff.matches);
-    Some(Verified { name, size: plan.size, tolerance: plan.tolerance, frames, matches })
+    Some(Verified { name, size: plan.size, tolerance: plan.tolerance, channels: original.channels, frames, matches })
 }
 
 /// Writes the translation's frame, GL's frame and (when they differ at all) the heat map.
@@ -363,7 +392,7 @@ fn write_frames(
     name: &str,
     i: u32,
     plan: &Plan,
-    (translated, reference): (&[u8], &[u8]),
+    (translated, reference, channels): (&[u8], &[u8], usize),
     diff: &FrameDiff,
     inputs: &BTreeSet<PathBuf>,
     outcome: &mut Outcome,
@@ -371,7 +400,7 @@ fn write_frames(
     let (w, h) = plan.size;
     let mut pictures = vec![(format!("{name}_{i:04}.png"), translated.to_vec()), (format!("{name}_{i:04}_gl.png"), reference.to_vec())];
     if diff.max_channel > 0 {
-        pictures.push((format!("{name}_{i:04}_diff.png"), diff::heat_map(translated, reference, plan.tolerance)));
+        pictures.push((format!("{name}_{i:04}_diff.png"), diff::heat_map(translated, reference, plan.tolerance, channels)));
     }
     let mut files = Vec::new();
     for (file, rgba) in pictures {
@@ -432,6 +461,10 @@ pub fn summary(v: &Verified) -> String {
         v.tolerance.channel,
         v.tolerance.fraction * 100.0
     );
+    if v.channels < 4 {
+        let names = ["red", "green", "blue", "alpha"][..v.channels].join(", ");
+        text.push_str(&format!("  compared {names} only: the output has {} component(s), GL leaves the rest undefined\n", v.channels));
+    }
     for f in &v.frames {
         let psnr = f.diff.psnr.map_or("identical".to_string(), |p| format!("PSNR {p:.1} dB"));
         text.push_str(&format!(

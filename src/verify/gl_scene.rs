@@ -307,7 +307,9 @@ fn upload(gl: &glow::Context, t: &ReplayTexture, sampler: (Filter, Wrap, bool)) 
             ReplayTexture::Image { image, dimension } => {
                 let target = texture_target(dimension);
                 gl.bind_texture(target, Some(texture));
-                let mipmapped = matches!(target, glow::TEXTURE_2D | glow::TEXTURE_CUBE_MAP);
+                // As `render` uploads: a mip chain for every 2D-based texture (arrays and cube
+                // maps too), one level for 1D and 3D.
+                let mipmapped = !matches!(target, glow::TEXTURE_1D | glow::TEXTURE_3D);
                 let mut levels = vec![image.clone()];
                 if mipmapped {
                     levels.extend(image.mip_chain());
@@ -334,8 +336,12 @@ fn upload(gl: &glow::Context, t: &ReplayTexture, sampler: (Filter, Wrap, bool)) 
                                 );
                             }
                         }
-                        glow::TEXTURE_2D_ARRAY | glow::TEXTURE_3D => {
-                            let depth = if target == glow::TEXTURE_3D { 1 } else { level.layers.max(1) as i32 };
+                        glow::TEXTURE_2D_ARRAY | glow::TEXTURE_3D | glow::TEXTURE_CUBE_MAP_ARRAY => {
+                            let depth = match target {
+                                glow::TEXTURE_3D => 1,
+                                glow::TEXTURE_CUBE_MAP_ARRAY => 6,
+                                _ => level.layers.max(1) as i32,
+                            };
                             let data: Vec<u8> = (0..depth as u32).filter_map(layer).flatten().copied().collect();
                             gl.tex_image_3d(
                                 target,

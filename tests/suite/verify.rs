@@ -12,7 +12,7 @@ use crate::render::have_gpu;
 /// Frame size of the semantics programs (they are written for 64×64).
 const SEMANTICS_SIZE: &str = "64x64";
 /// Programs in the semantics suite.
-const SEMANTICS: usize = 68;
+const SEMANTICS: usize = 70;
 
 /// Whether verify can run here: CI must have a GL driver and an adapter.
 fn can_verify() -> bool {
@@ -166,4 +166,17 @@ fn undefined_behaviour_is_warned_at_its_line() {
         assert!(text.contains(&format!("warning[{warning}]")), "{file}: no {warning}\n{text}");
         assert!(text.contains(&format!("{file}:{line}:")), "{file}: {warning} not at line {line}\n{text}");
     }
+}
+
+#[test]
+fn render_verify_compares_like_verify() {
+    if !can_verify() {
+        return;
+    }
+    let out_dir = scratch("verify", "render-verify");
+    let out = effectc(&["render", "--verify", "effects/phong", "--size", "64x64", "--out", out_dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("verified phong: 1/1 frame match"), "{text}");
+    assert!(out_dir.join("phong_0000_gl.png").is_file(), "{text}");
 }

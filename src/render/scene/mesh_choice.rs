@@ -16,6 +16,8 @@ pub(super) enum MeshNote {
     Manifest,
     /// No `[mesh]` and matrices in use: a cube.
     Cube,
+    /// No `[mesh]`, matrices in use and 2D positions: a quad.
+    Quad,
     /// No `[mesh]`, no matrices: a full-screen quad.
     Fullscreen,
     /// No `[mesh]` and no vertex inputs: three vertices, positions made by the shader.
@@ -31,6 +33,7 @@ impl MeshNote {
                 None => "mesh".into(),
             },
             MeshNote::Cube => "mesh cube (guessed)".into(),
+            MeshNote::Quad => "mesh quad (guessed: 2D positions)".into(),
             MeshNote::Fullscreen => "mesh fullscreen_quad (guessed)".into(),
             MeshNote::OwnVertices => "3 vertices without attributes".into(),
         }
@@ -60,7 +63,13 @@ pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>
     }
     let uses_matrices = r.uniform_block.iter().flat_map(|b| &b.members).any(|m| m.glsl_type.starts_with("mat"))
         || r.bindings.iter().any(|b| b.kind == "uniform_buffer" && b.glsl.is_some());
-    let (mesh, note, what) = if uses_matrices {
+    // A 2D position would flatten a cube's faces onto one plane, where they z-fight.
+    let flat_positions = attributes::choose(&r.vertex_inputs, &[])
+        .iter()
+        .any(|c| c.attribute == Some(MeshAttribute::Position) && c.format == wgpu::VertexFormat::Float32x2);
+    let (mesh, note, what) = if uses_matrices && flat_positions {
+        (BuiltinMesh::Quad, MeshNote::Quad, "a unit quad (the program uses matrices and 2D positions)")
+    } else if uses_matrices {
         (BuiltinMesh::Cube, MeshNote::Cube, "a unit cube (the program uses matrices)")
     } else {
         (BuiltinMesh::FullscreenQuad, MeshNote::Fullscreen, "a full-screen quad (the program uses no matrices)")

@@ -155,7 +155,7 @@ impl Scene {
         let choices = attributes::choose(&per_vertex, &explicit);
         let read: Vec<MeshAttribute> = choices.iter().filter_map(|c| c.attribute).collect();
         let (mesh, degenerate) = match input.degenerate {
-            Some(d) if matches!(mesh_note, MeshNote::Manifest | MeshNote::Cube) && d.affects(&read) => {
+            Some(d) if matches!(mesh_note, MeshNote::Manifest | MeshNote::Cube | MeshNote::Quad) && d.affects(&read) => {
                 let (changed, what) = d.apply(&mesh);
                 (changed, Some(what))
             }
@@ -269,6 +269,13 @@ fn replay_of(input: &SceneInput<'_>, vertices: attributes::Interleaved, textures
         depth: false,
         inputs: input.translation.reflection.vertex_inputs.iter().map(|v| (v.name.clone(), v.location)).collect(),
         plan_textures: plan.textures.iter().map(|t| (t.user_path.clone(), t.name.clone(), t.sampler_name.clone())).collect(),
+        outputs: input
+            .translation
+            .reflection
+            .fragment_outputs
+            .iter()
+            .map(|o| (o.location, declared_components(input.program, &o.name, &o.wgsl_type)))
+            .collect(),
     }
 }
 
@@ -300,6 +307,15 @@ fn flat_varyings(r: &crate::back::reflect::Reflection) -> bool {
 /// last.
 fn gl_provoking_first(triangles: &[u32]) -> Vec<u32> {
     triangles.chunks_exact(3).flat_map(|t| [t[2], t[0], t[1]]).collect()
+}
+
+/// The components of fragment output `name` as the GLSL declares it (the translation may
+/// widen a `vec2` output to fill its target), else as reflected.
+fn declared_components(program: &CompiledProgram, name: &str, wgsl_type: &str) -> u32 {
+    let declared = program.stage(crate::stage::StageKind::Fragment).and_then(|f| {
+        f.syntax.globals.iter().find(|g| g.storage == Storage::Out && g.name == name).map(|g| replay::components(&g.ty.base))
+    });
+    declared.unwrap_or_else(|| replay::components(wgsl_type))
 }
 
 /// How GL draws the original program: the mesh's triangles, the program's own three

@@ -28,6 +28,17 @@ pub struct Replay {
     pub inputs: Vec<(String, u32)>,
     /// Samplers: (GLSL path, texture binding name, sampler binding name).
     pub plan_textures: Vec<(String, String, String)>,
+    /// Fragment outputs: (location, components written: 1–4).
+    pub outputs: Vec<(u32, u32)>,
+}
+
+/// The components of a WGSL or GLSL type (`f32` and `float` 1, `vec3<f32>` and `ivec3` 3).
+pub fn components(ty: &str) -> u32 {
+    let ty = ty.trim_start_matches(['i', 'u', 'b', 'd']);
+    match ty.strip_prefix("vec").and_then(|t| t.chars().next()).and_then(|c| c.to_digit(10)) {
+        Some(n) => n,
+        None => 1,
+    }
 }
 
 /// How the original program draws: GL's primitive mode and the vertices.
