@@ -35,10 +35,7 @@ pub struct Replay {
 /// The components of a WGSL or GLSL type (`f32` and `float` 1, `vec3<f32>` and `ivec3` 3).
 pub fn components(ty: &str) -> u32 {
     let ty = ty.trim_start_matches(['i', 'u', 'b', 'd']);
-    match ty.strip_prefix("vec").and_then(|t| t.chars().next()).and_then(|c| c.to_digit(10)) {
-        Some(n) => n,
-        None => 1,
-    }
+    ty.strip_prefix("vec").and_then(|t| t.chars().next()).and_then(|c| c.to_digit(10)).unwrap_or(1)
 }
 
 /// How the original program draws: GL's primitive mode and the vertices.
