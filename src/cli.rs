@@ -198,10 +198,9 @@ pub struct CheckArgs {
     pub watch: bool,
 }
 
+/// Which frames `render` and `verify` draw, and with which uniform values.
 #[derive(Debug, clap::Args)]
-pub struct RenderArgs {
-    #[command(flatten)]
-    pub common: CommonArgs,
+pub struct FrameArgs {
     /// `NAME=VALUE`: a uniform's value (`0.5`, `3`, `true`, `1,0.5,0`), checked against the
     /// declarations like a manifest default; wins over the manifest (repeatable).
     #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parse_set)]
@@ -221,6 +220,25 @@ pub struct RenderArgs {
     /// Frame size `WIDTHxHEIGHT` (default: the manifest's `[render] size`, else 512x512).
     #[arg(long, value_parser = parse_size)]
     pub size: Option<(u32, u32)>,
+}
+
+impl FrameArgs {
+    /// How time advances between frames.
+    pub fn step(&self) -> TimeStep {
+        match (self.fps, self.time_step) {
+            (Some(f), _) => TimeStep::Fps(f),
+            (None, Some(s)) => TimeStep::Seconds(s),
+            (None, None) => TimeStep::Default,
+        }
+    }
+}
+
+#[derive(Debug, clap::Args)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    #[command(flatten)]
+    pub frames: FrameArgs,
     /// Output directory (default: `out/<effect>/frames/`); frames are `<effect>_NNNN.png`.
     /// `-`: stream the frames to stdout instead, one PNG after another (for `ffmpeg -f
     /// image2pipe -i -`); the report goes to stderr.
@@ -274,25 +292,8 @@ pub struct RenderArgs {
 pub struct VerifyArgs {
     #[command(flatten)]
     pub common: CommonArgs,
-    /// `NAME=VALUE`: a uniform's value (`0.5`, `3`, `true`, `1,0.5,0`), checked against the
-    /// declarations like a manifest default; wins over the manifest (repeatable).
-    #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parse_set)]
-    pub set: Vec<(String, String)>,
-    /// Number of frames (default: the manifest's `[render] frames`, else 1).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
-    pub frames: Option<u32>,
-    /// Frames per second of effect time (default: the manifest's `[render] fps`, else 30).
-    #[arg(long, conflicts_with = "time_step", value_parser = parse_positive)]
-    pub fps: Option<f64>,
-    /// Seconds of effect time between frames (instead of --fps).
-    #[arg(long, value_parser = parse_finite, allow_negative_numbers = true)]
-    pub time_step: Option<f64>,
-    /// Effect time of the first frame, in seconds.
-    #[arg(long, default_value_t = 0.0, value_parser = parse_finite, allow_negative_numbers = true)]
-    pub start: f64,
-    /// Frame size `WIDTHxHEIGHT` (default: the manifest's `[render] size`, else 512x512).
-    #[arg(long, value_parser = parse_size)]
-    pub size: Option<(u32, u32)>,
+    #[command(flatten)]
+    pub frames: FrameArgs,
     /// Output directory (default: `out/<effect>/verify/`): per frame `<effect>_NNNN.png`
     /// (the translation), `<effect>_NNNN_gl.png` (the OpenGL driver) and, when they differ
     /// at all, `<effect>_NNNN_diff.png` (a heat map).
@@ -324,16 +325,12 @@ impl RenderArgs {
 impl VerifyArgs {
     /// The request these flags make.
     pub fn request(&self, config: &Config) -> crate::verify::command::VerifyRequest {
-        let step = match (self.fps, self.time_step) {
-            (Some(f), _) => TimeStep::Fps(f),
-            (None, Some(s)) => TimeStep::Seconds(s),
-            (None, None) => TimeStep::Default,
-        };
-        let mut render = render::command::Request::new(InputSpec { values: self.set.clone(), ..self.common.input_spec(config) });
-        render.frames = self.frames;
-        render.step = step;
-        render.start = self.start;
-        render.size = self.size;
+        let f = &self.frames;
+        let mut render = render::command::Request::new(InputSpec { values: f.set.clone(), ..self.common.input_spec(config) });
+        render.frames = f.frames;
+        render.step = f.step();
+        render.start = f.start;
+        render.size = f.size;
         render.out = self.out.clone();
         render.timeout = self.timeout;
         crate::verify::command::VerifyRequest { render, tolerance: self.tolerance, max_differing: self.max_differing }
@@ -512,18 +509,14 @@ impl RenderArgs {
     /// The request these flags make; `started` is when the process started (for the time
     /// to the first frame).
     pub fn request(&self, config: &Config, started: Instant) -> render::command::Request {
-        let step = match (self.fps, self.time_step) {
-            (Some(f), _) => TimeStep::Fps(f),
-            (None, Some(s)) => TimeStep::Seconds(s),
-            (None, None) => TimeStep::Default,
-        };
+        let f = &self.frames;
         render::command::Request {
-            input: InputSpec { values: self.set.clone(), ..self.common.input_spec(config) },
+            input: InputSpec { values: f.set.clone(), ..self.common.input_spec(config) },
             back: TranslateOptions::for_rendering(!self.keep_gl_depth),
-            frames: self.frames,
-            step,
-            start: self.start,
-            size: self.size,
+            frames: f.frames,
+            step: f.step(),
+            start: f.start,
+            size: f.size,
             out: self.out.clone().filter(|_| !self.streams()),
             stream: self.streams().then_some(if self.raw {
                 render::command::StreamFormat::Raw
