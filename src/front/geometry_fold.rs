@@ -410,7 +410,8 @@ fn find_name(text: &str, span: &Range<usize>, name: &str) -> Option<usize> {
 /// draws, without keeping the strip (no arrays indexed at run time, which a GPU compiler
 /// keeps in memory): the wanted list primitive is the `f`-th of the strip that started when
 /// `effectc_made` primitives were complete, and its corner is the strip's vertex `f + k`
-/// (corners 0 and 1 swapped for odd triangles, GL's winding). The vertex is held when
+/// (corners 0 and 1 swapped for odd triangles, GL's winding; each primitive begun at its
+/// last vertex, GL's provoking vertex). The vertex is held when
 /// emitted and kept when the primitive completes; a strip ended earlier drops it.
 fn capture(gs: &Part, output: OutputPrimitive) -> String {
     let mut t = String::new();
@@ -424,8 +425,15 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
     t.push_str("void effectc_emit() {\n    if (effectc_found) {\n        return;\n    }\n");
     t.push_str("    if (effectc_want_primitive >= effectc_strip_start) {\n");
     t.push_str("        uint f = effectc_want_primitive - effectc_strip_start;\n        uint k = effectc_want_corner;\n");
-    if output == OutputPrimitive::TriangleStrip {
-        t.push_str("        if ((f & 1u) == 1u && k < 2u) {\n            k = 1u - k;\n        }\n");
+    // The list primitive starts at GL's provoking vertex, the strip's last of it (WebGPU
+    // takes `flat` values from the first): (a, b, c) drawn as (c, a, b), (a, b) as (b, a).
+    match output {
+        OutputPrimitive::TriangleStrip => {
+            t.push_str("        k = (k + 2u) % 3u;\n");
+            t.push_str("        if ((f & 1u) == 1u && k < 2u) {\n            k = 1u - k;\n        }\n");
+        }
+        OutputPrimitive::LineStrip => t.push_str("        k = 1u - k;\n"),
+        _ => {}
     }
     t.push_str("        if (effectc_strip == f + k) {\n            effectc_cap_Position = effectc_gs_gl_Position;\n");
     t.push_str(

@@ -252,6 +252,11 @@ impl GlDrawer {
                         frames.target(gl, &format!("output{i}"), *f, (target.width, target.height)).map_err(|e| fail(e, FileId(0)))?;
                     }
                 }
+                // A program with no colour output (a depth-only pass, image stores) shows
+                // render's frame as it starts: zeros, never attached.
+                frames
+                    .target(gl, "output0", wgpu::TextureFormat::Rgba8Unorm, (target.width, target.height))
+                    .map_err(|e| fail(e, FileId(0)))?;
                 "output0".to_string()
             }
         };
@@ -312,9 +317,11 @@ struct Plan {
     undefined: Vec<String>,
 }
 
-/// Codes of the check warnings about behaviour GLSL leaves undefined, where an OpenGL
-/// driver and WebGPU may legitimately draw differently.
-const UNDEFINED: [Code; 4] = [Code::HazardNegativeRemainder, Code::HazardShift, Code::HazardAtan2, Code::HazardDivision];
+/// Codes of the check findings about behaviour GLSL leaves undefined (or that WebGPU
+/// cannot have), where an OpenGL driver and WebGPU may legitimately draw differently:
+/// `gl_PointCoord` is undefined outside points, and WebGPU has no point sizes.
+const UNDEFINED: [Code; 5] =
+    [Code::HazardNegativeRemainder, Code::HazardShift, Code::HazardAtan2, Code::HazardDivision, Code::PointCoordConstant];
 
 /// The program's warnings about undefined behaviour, as `path:line: message`.
 fn undefined_behaviour(outcome: &Outcome, c: &Checked) -> Vec<String> {

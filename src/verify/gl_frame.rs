@@ -188,7 +188,16 @@ fn texture(gl: &glow::Context, format: wgpu::TextureFormat, (w, h): (u32, u32)) 
     unsafe {
         let t = gl.create_texture()?;
         gl.bind_texture(glow::TEXTURE_2D, Some(t));
-        gl.tex_image_2d(glow::TEXTURE_2D, 0, internal as i32, w as i32, h as i32, 0, fmt, ty, glow::PixelUnpackData::Slice(None));
+        // Zeros, as wgpu starts every texture: a target nothing writes reads back as zeros.
+        let texel = match (fmt, ty) {
+            (glow::RGBA | glow::RGBA_INTEGER, glow::UNSIGNED_BYTE) => 4,
+            (glow::RGBA | glow::RGBA_INTEGER, _) => 16,
+            (glow::RG, _) => 8,
+            _ => 4,
+        };
+        let zeros = vec![0u8; w as usize * h as usize * texel];
+        gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+        gl.tex_image_2d(glow::TEXTURE_2D, 0, internal as i32, w as i32, h as i32, 0, fmt, ty, glow::PixelUnpackData::Slice(Some(&zeros)));
         gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
         gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
         gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);

@@ -180,3 +180,19 @@ fn render_verify_compares_like_verify() {
     assert!(text.contains("verified phong: 1/1 frame match"), "{text}");
     assert!(out_dir.join("phong_0000_gl.png").is_file(), "{text}");
 }
+
+#[test]
+fn a_driver_error_is_placed_at_the_users_line() {
+    if !can_verify() {
+        return;
+    }
+    let vertex = Path::new("tests/verify/semantics/fullscreen.vert");
+    let frag = Path::new("tests/verify/driver_rejects/late_extension.frag");
+    let out_dir = scratch("verify", "driver-rejects");
+    let out =
+        effectc(&["verify", "--color", "never", vertex.to_str().unwrap(), frag.to_str().unwrap(), "--out", out_dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    assert!(text.contains("error[E0502]") && text.contains("late_extension.frag:5:1"), "{text}");
+    assert!(text.contains("#extension directive is not allowed"), "the driver's own words are kept\n{text}");
+}
