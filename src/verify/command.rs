@@ -338,7 +338,8 @@ fn undefined_behaviour(outcome: &Outcome, c: &Checked) -> Vec<String> {
         .collect()
 }
 
-/// Draws and compares every frame; mismatches become E0503 in `outcome`.
+/// Draws and compares every frame; mismatches become E0503 in `outcome`. The pictures
+/// are encoded and written on a second thread while the next frame draws.
 #[allow(clippy::too_many_arguments)]
 fn compare_frames(
     gpu: &Gpu,
@@ -352,6 +353,38 @@ fn compare_frames(
     outcome: &mut Outcome,
 ) -> Option<Verified> {
     let name = drawer.name().to_owned();
+    let (tx, rx) = std::sync::mpsc::channel::<Vec<(PathBuf, Vec<u8>)>>();
+    let (frames, failed) = std::thread::scope(|s| {
+        let writer = s.spawn(move || write_pictures(rx, plan.size, inputs));
+        let frames = draw_and_compare(gpu, gl, drawer, original, plan, request, file, outcome, &name, &tx);
+        drop(tx);
+        (frames, writer.join().unwrap_or_default())
+    });
+    let mut frames = frames?;
+    let (unwritten, error) = failed;
+    if let Some(e) = error {
+        outcome.io_error = true;
+        outcome.diagnostics.push(Diagnostic::new(Code::OutputIo, e));
+    }
+    frames.iter_mut().for_each(|f| f.files.retain(|p| !unwritten.contains(p)));
+    let matches = frames.iter().all(|f| f.diff.matches);
+    Some(Verified { name, size: plan.size, tolerance: plan.tolerance, channels: original.channels, frames, matches })
+}
+
+/// The frame loop: both drawings, the comparison, the pictures sent to the writer.
+#[allow(clippy::too_many_arguments)]
+fn draw_and_compare(
+    gpu: &Gpu,
+    gl: &GlContext,
+    drawer: &mut Drawer,
+    original: &mut GlDrawer,
+    plan: &Plan,
+    request: &VerifyRequest,
+    file: FileId,
+    outcome: &mut Outcome,
+    name: &str,
+    pictures: &std::sync::mpsc::Sender<Vec<(PathBuf, Vec<u8>)>>,
+) -> Option<Vec<FrameVerdict>> {
     let mut frames = Vec::new();
     for i in 0..plan.frames {
         let time = plan.start + f64::from(i) * plan.step;
@@ -382,46 +415,50 @@ fn compare_frames(
             }
         };
         let diff = diff::compare(&translated, &reference, plan.size, plan.tolerance, original.channels);
-        let files = write_frames(&plan.dir, &name, i, plan, (&translated, &reference, original.channels), &diff, inputs, outcome);
+        let mut frame_pictures = Vec::new();
+        if diff.max_channel > 0 {
+            let heat = diff::heat_map(&translated, &reference, plan.tolerance, original.channels);
+            frame_pictures.push((plan.dir.join(format!("{name}_{i:04}_diff.png")), heat));
+        }
+        frame_pictures.push((plan.dir.join(format!("{name}_{i:04}.png")), translated));
+        frame_pictures.push((plan.dir.join(format!("{name}_{i:04}_gl.png")), reference));
+        let mut files: Vec<PathBuf> = frame_pictures.iter().map(|(p, _)| p.clone()).collect();
+        files.rotate_left(usize::from(diff.max_channel > 0));
         if !diff.matches {
             outcome.diagnostics.push(mismatch(i, &diff, plan, &files, &original.unmatched, file));
         }
+        let _ = pictures.send(frame_pictures);
         frames.push(FrameVerdict { index: i, time, diff, files });
     }
-    let matches = frames.iter().all(|f| f.diff.matches);
-    Some(Verified { name, size: plan.size, tolerance: plan.tolerance, channels: original.channels, frames, matches })
+    Some(frames)
 }
 
-/// Writes the translation's frame, GL's frame and (when they differ at all) the heat map.
-#[allow(clippy::too_many_arguments)]
-fn write_frames(
-    dir: &Path,
-    name: &str,
-    i: u32,
-    plan: &Plan,
-    (translated, reference, channels): (&[u8], &[u8], usize),
-    diff: &FrameDiff,
+/// Encodes and writes the pictures it receives (each frame's in parallel); returns the
+/// files not written and the first error. After a failure nothing more is written (a
+/// full disk stays full), and the error is said once.
+fn write_pictures(
+    rx: std::sync::mpsc::Receiver<Vec<(PathBuf, Vec<u8>)>>,
+    (w, h): (u32, u32),
     inputs: &BTreeSet<PathBuf>,
-    outcome: &mut Outcome,
-) -> Vec<PathBuf> {
-    let (w, h) = plan.size;
-    let mut pictures = vec![(format!("{name}_{i:04}.png"), translated.to_vec()), (format!("{name}_{i:04}_gl.png"), reference.to_vec())];
-    if diff.max_channel > 0 {
-        pictures.push((format!("{name}_{i:04}_diff.png"), diff::heat_map(translated, reference, plan.tolerance, channels)));
-    }
-    let mut files = Vec::new();
-    for (file, rgba) in pictures {
-        let path = dir.join(file);
-        match encode::png_bytes(&rgba, w, h).and_then(|bytes| write_atomic(&path, &bytes, inputs)) {
-            Ok(()) => files.push(path),
-            Err(e) => {
-                outcome.io_error = true;
-                outcome.diagnostics.push(Diagnostic::new(Code::OutputIo, e));
-                break;
-            }
+) -> (Vec<PathBuf>, Option<String>) {
+    use rayon::prelude::*;
+    let mut unwritten = Vec::new();
+    let mut error: Option<String> = None;
+    for pictures in rx {
+        if error.is_some() {
+            unwritten.extend(pictures.into_iter().map(|(p, _)| p));
+            continue;
+        }
+        let failed: Vec<(PathBuf, String)> = pictures
+            .par_iter()
+            .filter_map(|(path, rgba)| encode::png_bytes(rgba, w, h).and_then(|bytes| write_atomic(path, &bytes, inputs)).err().map(|e| (path.clone(), e)))
+            .collect();
+        for (path, e) in failed {
+            unwritten.push(path);
+            error.get_or_insert(e);
         }
     }
-    files
+    (unwritten, error)
 }
 
 fn mismatch(i: u32, d: &FrameDiff, plan: &Plan, files: &[PathBuf], unmatched: &[String], file: FileId) -> Diagnostic {
