@@ -451,7 +451,9 @@ fn write_pictures(
         }
         let failed: Vec<(PathBuf, String)> = pictures
             .par_iter()
-            .filter_map(|(path, rgba)| encode::png_bytes(rgba, w, h).and_then(|bytes| write_atomic(path, &bytes, inputs)).err().map(|e| (path.clone(), e)))
+            .filter_map(|(path, rgba)| {
+                encode::png_bytes(rgba, w, h).and_then(|bytes| write_atomic(path, &bytes, inputs)).err().map(|e| (path.clone(), e))
+            })
             .collect();
         for (path, e) in failed {
             unwritten.push(path);
