@@ -28,7 +28,7 @@
 //! | `E0205` | error    | one uniform / buffer block name declared with different members in two stages |
 //! | `E0206` | error    | a struct used by uniforms defined differently in two stages |
 //! | `E0207` | error    | an output and the input of the same name have different types or array sizes |
-//! | `E0208` | error    | interpolation qualifiers (`flat`, `noperspective`, `smooth`) differ (GLSL before 4.30) |
+//! | `E0208` | error    | interpolation qualifiers (`flat`, `noperspective`, `smooth`) differ, or one stage writes one and the other none (GLSL before 4.30) |
 //! | `E0209` | error    | `centroid` differs (GLSL before 4.30) |
 //! | `E0210` | error    | explicit `layout(location)` values differ |
 //! | `E0211` | error    | interface blocks of the same block name differ (members, order, types, qualifiers, array size, location) |

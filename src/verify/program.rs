@@ -29,7 +29,7 @@ pub fn link(gl: &glow::Context, files: &Files, stages: &[(FileId, StageKind)]) -
                     continue;
                 }
             };
-            gl.shader_source(shader, files.text(file));
+            gl.shader_source(shader, &for_driver(files.text(file)));
             gl.compile_shader(shader);
             if !gl.get_shader_compile_status(shader) {
                 errors.extend(place(files, file, &gl.get_shader_info_log(shader), kind));
@@ -60,6 +60,30 @@ pub fn link(gl: &glow::Context, files: &Files, stages: &[(FileId, StageKind)]) -
             Err(errors)
         }
     }
+}
+
+/// Extensions about `#include`: the front has inlined the files already, and a GL driver
+/// without them (Mesa) refuses the directive.
+const INCLUDE_EXTENSIONS: [&str; 3] =
+    ["GL_GOOGLE_include_directive", "GL_ARB_shading_language_include", "GL_GOOGLE_cpp_style_line_directive"];
+
+/// The stage text as the driver gets it: `#extension` lines for the include extensions
+/// blanked (lines and columns of everything else unchanged).
+fn for_driver(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        let about_include =
+            t.starts_with('#') && t[1..].trim_start().starts_with("extension") && INCLUDE_EXTENSIONS.iter().any(|e| t.contains(e));
+        if about_include {
+            let body = line.trim_end_matches(['\n', '\r']);
+            out.push_str(&" ".repeat(body.len()));
+            out.push_str(&line[body.len()..]);
+        } else {
+            out.push_str(line);
+        }
+    }
+    out
 }
 
 fn shader_type(kind: StageKind) -> u32 {
@@ -142,6 +166,15 @@ fn place(files: &Files, file: FileId, log: &str, kind: StageKind) -> Vec<Diagnos
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn include_extensions_are_blanked_in_place() {
+        let text = "#version 330\r\n#extension GL_GOOGLE_include_directive : require\r\nvoid main() {}\n";
+        let out = for_driver(text);
+        assert_eq!(out.len(), text.len());
+        assert!(!out.contains("extension") && out.contains("void main"), "{out:?}");
+        assert_eq!(for_driver("#extension GL_ARB_gpu_shader5 : enable\n"), "#extension GL_ARB_gpu_shader5 : enable\n");
+    }
 
     #[test]
     fn mesa_nvidia_and_plain_lines_parse() {

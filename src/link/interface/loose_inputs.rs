@@ -121,12 +121,22 @@ impl Pair<'_> {
             None => Interp::Smooth,
         };
         let (ia, ib) = (effective(ga), effective(gb));
-        if ia != ib {
+        // Before 4.30 the qualifiers' presence must match too (GLSL 1.50 §4.3: "the type and
+        // presence of the interpolation qualifiers … must match"): an unqualified integer
+        // output read as a `flat` input fails to link in GL drivers (Mesa) though it means
+        // the same.
+        let presence_differs = !relaxed && ga.interp.is_some() != gb.interp.is_some() && ia == ib;
+        if ia != ib || presence_differs {
             let shown = |g: &Global, i: Interp| match g.interp {
                 Some(_) => format!("`{}`", i.keyword()),
                 None => format!("`{}` (no qualifier)", i.keyword()),
             };
-            let message = format!("`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage", ia.keyword(), ib.keyword());
+            let word = |g: &Global, i: Interp| if g.interp.is_some() { format!("`{}`", i.keyword()) } else { "unqualified".to_string() };
+            let message = if presence_differs {
+                format!("`{name}` is {} in the {at} stage but {} in the {bt} stage", word(ga, ia), word(gb, ib))
+            } else {
+                format!("`{name}` is `{}` in the {at} stage but `{}` in the {bt} stage", ia.keyword(), ib.keyword())
+            };
             let d = if relaxed {
                 Diagnostic::new(Code::InterpolationDiffers, message).with_note(format!(
                     "since GLSL 4.30 the qualifiers may differ and the {bt} stage's `{}` is used; the {at} stage's `{}` has no effect",
@@ -134,9 +144,12 @@ impl Pair<'_> {
                     ia.keyword()
                 ))
             } else {
-                Diagnostic::new(Code::InterpolationMismatch, message).with_note(
-                    "before GLSL 4.30 an output and its input must have the same interpolation qualifier (no qualifier means `smooth`)",
-                )
+                let note = if presence_differs {
+                    "before GLSL 4.30 an output and its input must both have the interpolation qualifier or both lack it: an integer means `flat` either way, but GL drivers (Mesa) refuse to link the pair"
+                } else {
+                    "before GLSL 4.30 an output and its input must have the same interpolation qualifier (no qualifier means `smooth`)"
+                };
+                Diagnostic::new(Code::InterpolationMismatch, message).with_note(note)
             };
             self.out.push(
                 d.at(b.file, gb.name_span.clone(), format!("{} here", shown(gb, ib)))

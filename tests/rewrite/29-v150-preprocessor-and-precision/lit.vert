@@ -20,7 +20,7 @@ in highp vec3 position;
 
 uniform mat4 transformation;
 out mediump vec2 uv;
-out int instance;
+flat out int instance;
 
 void main()
 {
