@@ -119,7 +119,8 @@ pub fn run(request: &VerifyRequest) -> RunResult {
             tolerance,
             undefined,
         };
-        let verified = compare_frames(gpu, gl, &mut drawer, &mut original, &plan, request, &inputs, file, &mut outcome);
+        let run = FrameRun { gpu, gl, plan: &plan, request, file };
+        let verified = compare_frames(&run, &mut drawer, &mut original, &inputs, &mut outcome);
         original.delete(&gl.gl);
         if let Some(v) = verified {
             result.verified.push(v);
@@ -340,23 +341,19 @@ fn undefined_behaviour(outcome: &Outcome, c: &Checked) -> Vec<String> {
 
 /// Draws and compares every frame; mismatches become E0503 in `outcome`. The pictures
 /// are encoded and written on a second thread while the next frame draws.
-#[allow(clippy::too_many_arguments)]
 fn compare_frames(
-    gpu: &Gpu,
-    gl: &GlContext,
+    run: &FrameRun<'_>,
     drawer: &mut Drawer,
     original: &mut GlDrawer,
-    plan: &Plan,
-    request: &VerifyRequest,
     inputs: &BTreeSet<PathBuf>,
-    file: FileId,
     outcome: &mut Outcome,
 ) -> Option<Verified> {
+    let plan = run.plan;
     let name = drawer.name().to_owned();
     let (tx, rx) = std::sync::mpsc::channel::<Vec<(PathBuf, Vec<u8>)>>();
     let (frames, failed) = std::thread::scope(|s| {
         let writer = s.spawn(move || write_pictures(rx, plan.size, inputs));
-        let frames = draw_and_compare(gpu, gl, drawer, original, plan, request, file, outcome, &name, &tx);
+        let frames = draw_and_compare(run, drawer, original, outcome, &name, &tx);
         drop(tx);
         (frames, writer.join().unwrap_or_default())
     });
@@ -371,20 +368,26 @@ fn compare_frames(
     Some(Verified { name, size: plan.size, tolerance: plan.tolerance, channels: original.channels, frames, matches })
 }
 
+/// What every frame of one program is drawn and compared with.
+struct FrameRun<'a> {
+    gpu: &'a Gpu,
+    gl: &'a GlContext,
+    plan: &'a Plan,
+    request: &'a VerifyRequest,
+    /// The file program-wide diagnostics point at.
+    file: FileId,
+}
+
 /// The frame loop: both drawings, the comparison, the pictures sent to the writer.
-#[allow(clippy::too_many_arguments)]
 fn draw_and_compare(
-    gpu: &Gpu,
-    gl: &GlContext,
+    run: &FrameRun<'_>,
     drawer: &mut Drawer,
     original: &mut GlDrawer,
-    plan: &Plan,
-    request: &VerifyRequest,
-    file: FileId,
     outcome: &mut Outcome,
     name: &str,
     pictures: &std::sync::mpsc::Sender<Vec<(PathBuf, Vec<u8>)>>,
 ) -> Option<Vec<FrameVerdict>> {
+    let FrameRun { gpu, gl, plan, request, file } = *run;
     let mut frames = Vec::new();
     for i in 0..plan.frames {
         let time = plan.start + f64::from(i) * plan.step;
