@@ -1,5 +1,6 @@
 //! A headless OpenGL context on the system's driver: EGL's surfaceless platform (Mesa's
-//! llvmpipe on a machine without a GPU, a GPU's own driver where there is one), a 4.5
+//! llvmpipe on a machine without a GPU, a GPU's own driver where there is one; EGL's
+//! default display where a vendor's EGL has no surfaceless platform), a 4.5
 //! compatibility-profile context (GLSL 1.10–4.50 compile in it), made current on the
 //! calling thread, with `glow` for the calls.
 //!
@@ -35,9 +36,12 @@ impl GlContext {
         // SAFETY: loading libEGL runs its initialisers; it is the system's EGL loader.
         let egl = unsafe { egl::DynamicInstance::<egl::EGL1_5>::load_required() }
             .map_err(|e| NoGl(format!("cannot load the system's EGL 1.5 library (libEGL.so.1): {e}")))?;
-        // SAFETY: the surfaceless platform takes no native display.
+        // SAFETY: the surfaceless platform takes no native display; the default display
+        // (a vendor's EGL without Mesa's surfaceless platform) takes the default handle.
         let display = unsafe { egl.get_platform_display(PLATFORM_SURFACELESS, egl::DEFAULT_DISPLAY, &[egl::ATTRIB_NONE]) }
-            .map_err(|e| NoGl(format!("EGL has no surfaceless display: {e}")))?;
+            .ok()
+            .or_else(|| unsafe { egl.get_display(egl::DEFAULT_DISPLAY) })
+            .ok_or_else(|| NoGl("EGL has neither a surfaceless nor a default display".into()))?;
         egl.initialize(display).map_err(|e| NoGl(format!("cannot initialise the EGL display: {e}")))?;
         let made = Self::context(&egl, display);
         let context = match made {
