@@ -100,6 +100,7 @@ impl Ctx<'_> {
         if self.need_mat2_helper {
             h.push_str("mat2 effectc_mat2(vec4 v) { return mat2(v.xy, v.zw); }\n");
         }
+        h.push_str(&super::polyfills::definitions(&self.polyfills));
         if h.is_empty() {
             return;
         }

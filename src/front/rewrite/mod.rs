@@ -15,7 +15,7 @@
 //! first function: the shared block, split textures, built-in replacements),
 //! `initializers` (globals initialised from uniforms or inputs, assigned first in `main`),
 //! `file_scope` (a `;` after a function body), `evaluation` (short-circuit operators with
-//! side effects, `continue` in `do … while`).
+//! side effects, `continue` in `do … while`), `polyfills` (built-ins naga cannot write).
 
 mod blocks;
 mod calls;
@@ -25,6 +25,7 @@ mod expressions;
 mod file_scope;
 mod header;
 mod initializers;
+mod polyfills;
 mod uses;
 mod varyings;
 
@@ -76,6 +77,8 @@ struct Ctx<'a> {
     /// initialised at run time becomes a function there ([`initializers`]).
     header_before: Option<usize>,
     limitation: Option<Limitation>,
+    /// Built-ins called under effectc names ([`polyfills`]), defined in the header.
+    polyfills: Vec<&'static str>,
 }
 
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
@@ -99,6 +102,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
         epilogue: String::new(),
         header_before: None,
         limitation,
+        polyfills: Vec::new(),
     };
     c.version();
     c.declarations();
@@ -113,6 +117,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.row_major_uses();
     c.unsized_arrays();
     c.scalar_swizzles(scalar_swizzles);
+    c.polyfills();
     c.lazy_logic();
     c.do_while_continue();
     c.insert_header();
