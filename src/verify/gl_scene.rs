@@ -67,7 +67,7 @@ impl GlScene {
                 }
                 None => None,
             };
-            let reflection_inputs = &scene_inputs(scene);
+            let reflection_inputs = &replay.inputs;
             for a in 0..gl.get_active_attributes(program.program) {
                 let Some(attr) = gl.get_active_attribute(program.program, a) else { continue };
                 if attr.name.starts_with("gl_") {
@@ -197,11 +197,6 @@ impl GlScene {
             gl.delete_program(self.program.program);
         }
     }
-}
-
-/// The scene's vertex inputs: GLSL name → WGSL location.
-fn scene_inputs(scene: &Scene) -> Vec<(String, u32)> {
-    scene.replay.inputs.clone()
 }
 
 /// The (texture, sampler) binding names of the GLSL sampler `name` in the scene's plan.

@@ -325,11 +325,7 @@ impl Analyzer<'_> {
                 // A 2-vector (`atan(d.y, d.x)`), not proven non-zero by a guard on its
                 // length (of a longer vector, the pair's own length is not tracked).
                 let v = self.num(c, state, a);
-                let guarded = c.keys[a.index()].is_some_and(|k| {
-                    let len = math_key(naga::MathFunction::Length, k, None, None);
-                    let dot = math_key(naga::MathFunction::Dot, k, Some(k), None);
-                    [len, dot].iter().any(|key| state.refined.get(key).is_some_and(|r| r.gap > 0.0 || r.iv.lo > 0.0))
-                });
+                let guarded = c.keys[a.index()].is_some_and(|k| length_proven_positive(state, k));
                 v.c.len() == 2 && v.len.lo <= 0.0 && v.gap <= 0.0 && !guarded
             }
             _ => false,
@@ -341,10 +337,7 @@ impl Analyzer<'_> {
         if fun != naga::MathFunction::Normalize {
             return false;
         }
-        let Some(k) = c.keys[arg.index()] else { return false };
-        let len = math_key(naga::MathFunction::Length, k, None, None);
-        let dot = math_key(naga::MathFunction::Dot, k, Some(k), None);
-        [len, dot].iter().any(|key| state.refined.get(key).is_some_and(|r| r.gap > 0.0 || r.iv.lo > 0.0))
+        c.keys[arg.index()].is_some_and(|k| length_proven_positive(state, k))
     }
 
     fn sample(&mut self, c: &Call<'_>, h: Handle<Expression>, image: Handle<Expression>) -> Val {
@@ -694,4 +687,12 @@ pub fn update(v: &Val, path: &[Step], new: Val) -> Val {
             None => v.forget(),
         },
     }
+}
+
+/// A condition on the path proved `length(v)` or `dot(v, v)` positive, for the vector
+/// whose value key is `k`.
+fn length_proven_positive(state: &State, k: u64) -> bool {
+    let len = math_key(naga::MathFunction::Length, k, None, None);
+    let dot = math_key(naga::MathFunction::Dot, k, Some(k), None);
+    [len, dot].iter().any(|key| state.refined.get(key).is_some_and(|r| r.gap > 0.0 || r.iv.lo > 0.0))
 }

@@ -288,7 +288,7 @@ fn draw_of(gpu: &Gpu, r: &crate::back::reflect::Reflection, pulled: Option<u32>,
         (Some(count), _, _) => Draw::Vertices(count),
         (None, true, false) => Draw::Vertices(3),
         (None, _, flat) => {
-            let triangles = if own { vec![0, 1, 2] } else { mesh.indices.clone() };
+            let triangles = pulled::triangles(mesh, own);
             let indices = if flat { gl_provoking_first(&triangles) } else { triangles };
             let bytes: Vec<u8> = indices.iter().flat_map(|i| i.to_le_bytes()).collect();
             Draw::Indexed { buffer: buffer_init(gpu, "indices", &bytes, wgpu::BufferUsages::INDEX), count: indices.len() as u32 }
@@ -321,15 +321,16 @@ fn declared_components(program: &CompiledProgram, name: &str, wgsl_type: &str) -
 /// How GL draws the original program: the mesh's triangles, the program's own three
 /// vertices, or a geometry stage's input primitives made from them.
 fn replay_draw(r: &crate::back::reflect::Reflection, mesh: &Mesh, own_vertices: bool) -> replay::ReplayDraw {
-    let triangles: Vec<u32> = if own_vertices { vec![0, 1, 2] } else { mesh.indices.clone() };
     match &r.geometry {
         Some(g) => {
-            let count = if own_vertices { 3 } else { mesh.vertex_count() };
-            let indices = pulled::primitive_indices(g.input_primitive, triangles, count, mesh);
+            let indices = pulled::primitive_indices(g.input_primitive, mesh, own_vertices);
             replay::ReplayDraw { primitive: g.input_primitive, count: indices.len() as u32, indices: Some(indices) }
         }
         None if own_vertices => replay::ReplayDraw { primitive: "triangles", indices: None, count: 3 },
-        None => replay::ReplayDraw { primitive: "triangles", count: triangles.len() as u32, indices: Some(triangles) },
+        None => {
+            let triangles = pulled::triangles(mesh, false);
+            replay::ReplayDraw { primitive: "triangles", count: triangles.len() as u32, indices: Some(triangles) }
+        }
     }
 }
 

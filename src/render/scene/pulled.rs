@@ -55,9 +55,8 @@ pub(super) fn for_geometry(
 /// The pulled data of `mesh` (`own_vertices`: the program draws three vertices of its own).
 pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_vertices: bool) -> Pulled {
     use wgpu::VertexFormat as F;
-    let triangles: Vec<u32> = if own_vertices { vec![0, 1, 2] } else { mesh.indices.clone() };
     let vertex_count = if own_vertices { 3 } else { mesh.vertex_count() };
-    let indices = primitive_indices(draw.input_primitive, triangles, vertex_count, mesh);
+    let indices = primitive_indices(draw.input_primitive, mesh, own_vertices);
     let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.map(|a| mesh.attribute(a))).collect();
     let mut vertices = Vec::with_capacity(vertex_count * choices.len() * 16);
     for v in 0..vertex_count {
@@ -83,10 +82,21 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
     }
 }
 
+/// The triangles drawn: the mesh's, or the program's own three vertices.
+pub(crate) fn triangles(mesh: &Mesh, own_vertices: bool) -> Vec<u32> {
+    if own_vertices {
+        vec![0, 1, 2]
+    } else {
+        mesh.indices.clone()
+    }
+}
+
 /// The vertex indices of every input primitive of a geometry stage that reads
-/// `input_primitive`, made from a triangle list as the module doc says (what GL draws with
-/// the matching mode; `effectc verify` draws them so).
-pub(crate) fn primitive_indices(input_primitive: &str, triangles: Vec<u32>, vertex_count: usize, mesh: &Mesh) -> Vec<u32> {
+/// `input_primitive`, made from the triangles drawn as the module doc says (what GL draws
+/// with the matching mode; `effectc verify` draws them so).
+pub(crate) fn primitive_indices(input_primitive: &str, mesh: &Mesh, own_vertices: bool) -> Vec<u32> {
+    let triangles = triangles(mesh, own_vertices);
+    let vertex_count = if own_vertices { 3 } else { mesh.vertex_count() };
     match input_primitive {
         "points" => (0..vertex_count as u32).collect(),
         "lines" => triangles.chunks_exact(3).flat_map(|t| [t[0], t[1], t[1], t[2], t[2], t[0]]).collect(),

@@ -12,8 +12,9 @@ use super::Collector;
 use crate::front::syntax::model::{DoWhileContinue, LazyLogic};
 use crate::front::syntax::nodes::span_of;
 
-/// Built-in functions that change state (everything else built in is pure).
-const IMPURE_BUILTINS: &[&str] = &["atomic", "imageStore", "imageAtomic", "EmitVertex", "EndPrimitive", "Emit", "End", "barrier"];
+/// Prefixes of the built-in functions that change state (`atomicAdd`, `imageStore`,
+/// `EmitVertex`, `EndStreamPrimitive`, `barrier`); everything else built in is pure.
+const IMPURE_BUILTINS: &[&str] = &["atomic", "imageStore", "imageAtomic", "Emit", "End", "barrier"];
 
 impl Collector<'_> {
     /// `a && b` / `a || b` with a side effect in `b`.
