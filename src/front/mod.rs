@@ -20,6 +20,7 @@
 //!   front cannot take a stage glslang accepts; [`program`]: all of it per program.
 
 pub mod builtins;
+pub mod compat;
 pub mod conditionals;
 pub mod edits;
 pub mod geometry_fold;

@@ -10,6 +10,7 @@
 
 use std::collections::{BTreeMap, HashMap};
 
+use crate::front::compat;
 use crate::front::syntax::{dims_text, sampler_parts, GlslType, StageSyntax, Storage};
 use crate::stage::StageKind;
 
@@ -81,6 +82,9 @@ pub struct Plan {
     pub padded_structs: Vec<String>,
     /// Images and atomic counters without a binding of their own → binding (set 0).
     pub opaque: BTreeMap<String, u32>,
+    /// The compatibility profile's built-ins the program uses ([`compat`]): their state is
+    /// in `members`, their varyings in `varyings`.
+    pub compat: compat::ProgramCompat,
 }
 
 /// Name of the filler member of [`Plan::padded_structs`].
@@ -245,9 +249,27 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
             plan.members.push(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
         }
     }
+    plan.compat = compat::analyse(stages);
+    for st in &plan.compat.state {
+        let user_ty = st.glsl_type();
+        let stage = stages.iter().find(|s| compat::stage_uses(s, st.name)).map_or(StageKind::Vertex, |s| s.stage);
+        plan.members.push(BlockMember { name: st.name.to_string(), block_ty: user_ty.clone(), user_ty, repr: Repr::Plain, stage });
+    }
+    plan.block_structs.extend(plan.compat.block_structs.iter().map(|s| s.to_string()));
     number_bindings(&mut plan, stages);
-    plan.varyings = varying_locations(stages);
+    let linked: Vec<String> = plan
+        .compat
+        .varyings
+        .iter()
+        .map(|v| v.name.to_string())
+        .chain(plan.compat.tex_coords.iter().map(|&i| compat::tex_coord_varying(i)))
+        .collect();
+    plan.varyings = varying_locations(stages, &linked);
     describe_block_structs(&mut plan, stages);
+    for name in plan.compat.block_structs.clone() {
+        plan.struct_members.insert(name.to_string(), compat::struct_member_types(name));
+        plan.struct_texts.insert(name.to_string(), compat::struct_text(name).unwrap_or_default().to_string());
+    }
     plan
 }
 
@@ -391,8 +413,9 @@ fn need_struct(name: &str, s: &StageSyntax, out: &mut Vec<String>) {
 }
 
 /// Locations for every varying name across the program. Explicit locations are kept;
-/// the rest are numbered after them in first-seen order, by slot count.
-fn varying_locations(stages: &[StageSyntax]) -> HashMap<String, u32> {
+/// the rest are numbered after them in first-seen order, by slot count, and the
+/// compatibility profile's varyings (`linked`, one slot each) after those.
+fn varying_locations(stages: &[StageSyntax], linked: &[String]) -> HashMap<String, u32> {
     let mut map = HashMap::new();
     let mut used: Vec<(u32, u32)> = Vec::new();
     let is_varying = |s: &StageSyntax, g: &crate::front::syntax::Global| match g.storage {
@@ -424,6 +447,14 @@ fn varying_locations(stages: &[StageSyntax]) -> HashMap<String, u32> {
             used.push((next, next + slots));
             next += slots;
         }
+    }
+    for name in linked {
+        while used.iter().any(|&(a, b)| next < b && a <= next) {
+            next += 1;
+        }
+        map.insert(name.clone(), next);
+        used.push((next, next + 1));
+        next += 1;
     }
     map
 }

@@ -32,6 +32,8 @@ pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, MeshAttribute)]) -> 
             let given = explicit.iter().find(|(name, _)| *name == input.name).map(|(_, attr)| *attr);
             let (attribute, guessed) = match given {
                 Some(a) => (Some(a), None),
+                // The compatibility profile's attributes mean what GL says they mean.
+                None if crate::front::compat::attribute(&input.name).is_some() => (fixed_function(&input.name), None),
                 None => match by_name(&input.name) {
                     Some(a) => (Some(a), Some("by its name")),
                     None => match by_location(input.location, format) {
@@ -43,6 +45,18 @@ pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, MeshAttribute)]) -> 
             Choice { location: input.location, input: input.name.clone(), format, attribute, guessed }
         })
         .collect()
+}
+
+/// The mesh attribute a fixed-function attribute reads (`gl_Vertex` → position); `None`
+/// where the mesh has none, and the input reads GL's current value.
+fn fixed_function(name: &str) -> Option<MeshAttribute> {
+    match name {
+        "gl_Vertex" => Some(MeshAttribute::Position),
+        "gl_Normal" => Some(MeshAttribute::Normal),
+        "gl_Color" => Some(MeshAttribute::Color),
+        "gl_MultiTexCoord0" => Some(MeshAttribute::Uv),
+        _ => None,
+    }
 }
 
 fn by_location(location: u32, format: wgpu::VertexFormat) -> Option<MeshAttribute> {
@@ -157,7 +171,9 @@ pub fn interleave(choices: &[Choice], mesh: &Mesh) -> Interleaved {
     for v in 0..count {
         let start = bytes.len();
         for (c, column) in choices.iter().zip(&columns) {
-            let value = column.as_ref().and_then(|col| col.get(v)).copied().unwrap_or([0.0; 4]);
+            // An input nothing feeds reads zeros; a fixed-function one GL's current value.
+            let unfed = crate::front::compat::attribute(&c.input).map_or([0.0; 4], |a| a.current);
+            let value = column.as_ref().and_then(|col| col.get(v)).copied().unwrap_or(unfed);
             push_vertex_value(&mut bytes, c.format, value);
         }
         bytes.resize(start + stride as usize, 0);

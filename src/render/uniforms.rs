@@ -10,6 +10,7 @@
 use naga::{Handle, Module, ScalarKind, Type, TypeInner};
 
 use crate::back::reflect::write_slot;
+use crate::front::compat;
 use crate::manifest::{Effect, Semantic, UniformValue};
 use crate::render::semantics::{self, FrameState, Guess, Shape};
 
@@ -45,10 +46,12 @@ pub struct Guessed {
 
 /// Builds the buffers of every uniform-address-space global that has a binding.
 /// `overrides` (`--set`, a bench knob, a stress case) win over the effect's values and
-/// over guesses.
+/// over guesses; `initial` (the GLSL initializers of uniforms, [`initial_values`]) give the
+/// value of a uniform the effect does not mention.
 pub fn buffers(
     module: &Module,
     effect: Option<&Effect>,
+    initial: &[(String, UniformValue)],
     overrides: &[(String, UniformValue)],
 ) -> Result<(Vec<UniformBuffer>, Vec<Guessed>), String> {
     let mut out = Vec::new();
@@ -56,7 +59,7 @@ pub fn buffers(
     for (_, g) in module.global_variables.iter() {
         let (naga::AddressSpace::Uniform, Some(rb)) = (g.space, &g.binding) else { continue };
         let mut buffer = UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new() };
-        fill_block(module, g.ty, effect, &mut buffer, &mut guessed)?;
+        fill_block(module, g.ty, effect, initial, &mut buffer, &mut guessed)?;
         for (name, value) in overrides {
             if let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, g.ty, name) {
                 write_slot(module, slot_ty, offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
@@ -75,6 +78,7 @@ fn fill_block(
     module: &Module,
     ty: Handle<Type>,
     effect: Option<&Effect>,
+    initial: &[(String, UniformValue)],
     buffer: &mut UniformBuffer,
     guessed: &mut Vec<Guessed>,
 ) -> Result<(), String> {
@@ -91,7 +95,13 @@ fn fill_block(
         let name = m.name.clone().unwrap_or_default();
         let entries: Vec<_> = effect.map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect()).unwrap_or_default();
         if entries.is_empty() {
-            guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
+            if let Some((_, value)) = initial.iter().find(|(n, _)| *n == name) {
+                write_slot(module, m.ty, m.offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`'s initializer: {e}"))?;
+            } else if compat::state(&name).is_some() {
+                gl_state(module, ty, &name, m.ty, m.offset, buffer)?;
+            } else {
+                guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
+            }
             continue;
         }
         for u in entries {
@@ -107,6 +117,54 @@ fn fill_block(
         }
     }
     Ok(())
+}
+
+/// A compatibility-profile state member (`gl_LightSource`): the scene's matrices every
+/// frame, GL's initial values for the rest. Neither is a guess.
+fn gl_state(module: &Module, block: Handle<Type>, name: &str, ty: Handle<Type>, offset: u32, buffer: &mut UniformBuffer) -> Result<(), String> {
+    let semantic = match name {
+        "gl_ModelViewMatrix" => Some(Semantic::ModelView),
+        "gl_ProjectionMatrix" => Some(Semantic::Projection),
+        "gl_ModelViewProjectionMatrix" => Some(Semantic::ModelViewProjection),
+        "gl_NormalMatrix" => Some(Semantic::NormalMatrix),
+        _ => None,
+    };
+    if let (Some(semantic), Some(shape)) = (semantic, shape_of(module, ty)) {
+        buffer.per_frame.push(SemanticSlot { offset, ty, shape, semantic });
+        return Ok(());
+    }
+    for (path, v) in compat::initial_values(name) {
+        let Some((offset, slot)) = crate::back::reflect::resolve_path(module, block, &path) else { continue };
+        let floats = |xs: &[f32]| UniformValue::List(xs.iter().map(|x| UniformValue::Float(f64::from(*x))).collect());
+        let value = match v.len() {
+            1 => UniformValue::Float(f64::from(v[0])),
+            16 => UniformValue::List(v.chunks(4).map(floats).collect()),
+            _ => floats(&v),
+        };
+        write_slot(module, slot, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{path}`: {e}"))?;
+    }
+    Ok(())
+}
+
+/// The values GLSL initializers give the program's uniforms (`uniform float k = 0.5;`),
+/// read from the constants the rewrite declares for them
+/// ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)).
+pub fn initial_values(program: &crate::front::program::CompiledProgram) -> Vec<(String, UniformValue)> {
+    let mut out: Vec<(String, UniformValue)> = Vec::new();
+    for stage in &program.stages {
+        let Some(v) = &stage.naga else { continue };
+        let module = &v.module;
+        for (_, c) in module.constants.iter() {
+            let Some(name) = c.name.as_deref().and_then(|n| n.strip_prefix(crate::front::rewrite::INITIAL_PREFIX)) else { continue };
+            if out.iter().any(|(n, _)| n == name) {
+                continue;
+            }
+            if let Some(value) = crate::back::reflect::constant_value(module, c.init) {
+                out.push((name.to_string(), value));
+            }
+        }
+    }
+    out
 }
 
 /// `lights[0].color` → `lights`.

@@ -18,6 +18,7 @@ use crate::render::drawer::{build, frame_state, prepare, BuildVariant, Drawer, D
 use crate::render::encode;
 use crate::render::frames::{Frame, FrameError, Pixels};
 use crate::render::scene::ColorMode;
+use crate::render::semantics::FrameState;
 use crate::stage::StageKind;
 
 use super::context::GlContext;
@@ -266,7 +267,9 @@ impl GlDrawer {
     }
 
     /// Draws one frame with the uniform values the wgpu scenes hold now (after their frame).
-    fn draw(&mut self, gl: &glow::Context, drawer: &Drawer) -> Result<Vec<u8>, String> {
+    fn draw(&mut self, gl: &glow::Context, drawer: &Drawer, state: &FrameState) -> Result<Vec<u8>, String> {
+        // SAFETY: the context is current on this thread.
+        unsafe { super::fixed_function::load_matrices(state)? };
         match drawer {
             Drawer::Single { scene, target } => {
                 let names: Vec<String> = (0..scene.colors.len()).map(|i| format!("output{i}")).collect();
@@ -408,7 +411,7 @@ fn draw_and_compare(
                 return None;
             }
         };
-        let reference = match original.draw(&gl.gl, drawer) {
+        let reference = match original.draw(&gl.gl, drawer, &state) {
             Ok(p) => p,
             Err(e) => {
                 outcome.diagnostics.push(

@@ -52,8 +52,9 @@ impl GlContext {
             }
         };
         // SAFETY: the context is current on this thread; the loader returns its functions.
-        let gl =
-            unsafe { glow::Context::from_loader_function(|name| egl.get_proc_address(name).map_or(std::ptr::null(), |f| f as *const _)) };
+        let load = |name: &str| egl.get_proc_address(name).map_or(std::ptr::null(), |f| f as *const std::ffi::c_void);
+        let gl = unsafe { glow::Context::from_loader_function(load) };
+        super::fixed_function::load(load);
         let describe = {
             use glow::HasContext;
             // SAFETY: plain queries on the current context.

@@ -70,10 +70,14 @@ impl GlScene {
             let reflection_inputs = &replay.inputs;
             for a in 0..gl.get_active_attributes(program.program) {
                 let Some(attr) = gl.get_active_attribute(program.program, a) else { continue };
-                if attr.name.starts_with("gl_") {
+                let fixed_function = crate::front::compat::attribute(&attr.name).is_some();
+                if attr.name.starts_with("gl_") && !fixed_function {
                     continue;
                 }
-                let Some(location) = gl.get_attrib_location(program.program, &attr.name) else { continue };
+                let location = gl.get_attrib_location(program.program, &attr.name);
+                if location.is_none() && !fixed_function {
+                    continue;
+                }
                 let wgsl_location = reflection_inputs.iter().find(|(n, _)| *n == attr.name).map(|(_, l)| *l);
                 let per_vertex = wgsl_location.and_then(|l| replay.vertices.attributes.iter().find(|x| x.shader_location == l));
                 let per_instance = wgsl_location
@@ -87,8 +91,13 @@ impl GlScene {
                     }
                 };
                 gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer));
-                gl.enable_vertex_attrib_array(location);
                 let (size, ty, integer) = vertex_format(attribute.format);
+                let Some(location) = location else {
+                    // `gl_Vertex`, `gl_Normal`, …: the legacy arrays.
+                    super::fixed_function::bind_attribute(&attr.name, size, ty, stride as i32, attribute.offset as i32)?;
+                    continue;
+                };
+                gl.enable_vertex_attrib_array(location);
                 if integer {
                     gl.vertex_attrib_pointer_i32(location, size, ty, stride as i32, attribute.offset as i32);
                 } else {

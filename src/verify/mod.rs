@@ -14,6 +14,7 @@
 pub mod command;
 pub mod context;
 pub mod diff;
+pub mod fixed_function;
 pub mod gl_frame;
 pub mod gl_scene;
 pub mod program;

@@ -7,7 +7,7 @@ use std::fmt::Write;
 use std::ops::Range;
 
 use super::varyings::{is_fragment_output, is_vertex_input, LocationAllocator};
-use super::{Ctx, USER_BUFFER_SET, USER_COUNTER_SET, USER_IMAGE_SET, USER_UNIFORM_SET};
+use super::{Ctx, INITIAL_PREFIX, USER_BUFFER_SET, USER_COUNTER_SET, USER_IMAGE_SET, USER_UNIFORM_SET};
 use crate::diag::{Code, Diagnostic};
 use crate::front::plan::{is_unblocked_opaque, location_slots, struct_text};
 use crate::front::syntax::{Referent, Storage};
@@ -31,6 +31,7 @@ impl Ctx<'_> {
         if s.stage == StageKind::Fragment && s.uses.iter().any(|u| u.name == "gl_FragColor" && u.target == Referent::Unresolved) {
             fragment_outputs.reserve(0, 1);
         }
+        self.fixed_function(&mut vertex_inputs);
         for (_, idxs) in by_decl {
             let first = &s.globals[idxs[0]];
             let decl = first.decl_span.clone();
@@ -109,15 +110,27 @@ impl Ctx<'_> {
                     t.texture_binding, t.texture_ty, t.name, t.sampler_binding, t.sampler_ty, t.sampler_name
                 );
             }
-            if g.initializer.is_some() {
-                self.diags.push(
-                    Diagnostic::new(
-                        Code::UniformInitializerIgnored,
-                        format!("initializer of uniform `{}` is ignored", s.original_name(&g.name)),
-                    )
-                    .at(s.file, g.initializer.clone().unwrap_or(g.name_span.clone()), "this value is not used")
-                    .with_help("set the default in the effect manifest's [uniforms] table"),
-                );
+            if let Some(init) = &g.initializer {
+                if s.struct_def(&g.ty.base).is_some() {
+                    self.diags.push(
+                        Diagnostic::new(
+                            Code::UniformInitializerIgnored,
+                            format!("initializer of uniform `{}` is ignored", s.original_name(&g.name)),
+                        )
+                        .at(s.file, init.clone(), "a struct value effectc does not read")
+                        .with_help("set the default in the effect manifest's [uniforms] table"),
+                    );
+                } else {
+                    // GL starts the uniform at its initializer: the renderer reads it here.
+                    let _ = write!(
+                        text,
+                        "const {} {INITIAL_PREFIX}{}{} = {};",
+                        g.ty.base,
+                        g.name,
+                        crate::front::syntax::dims_text(&g.ty),
+                        &s.text[init.clone()]
+                    );
+                }
             }
         }
         self.edits.replace(decl, text);

@@ -97,6 +97,7 @@ impl Ctx<'_> {
             // Cull distances have no WebGPU equivalent; computed, not used.
             h.push_str("float effectc_CullDistance[8];\n");
         }
+        h.push_str(&self.compat_header);
         if self.need_mat2_helper {
             h.push_str("mat2 effectc_mat2(vec4 v) { return mat2(v.xy, v.zw); }\n");
         }

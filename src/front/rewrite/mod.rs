@@ -15,7 +15,8 @@
 //! first function: the shared block, split textures, built-in replacements),
 //! `initializers` (globals initialised from uniforms or inputs, assigned first in `main`),
 //! `file_scope` (a `;` after a function body), `evaluation` (short-circuit operators with
-//! side effects, `continue` in `do … while`), `polyfills` (built-ins naga cannot write).
+//! side effects, `continue` in `do … while`), `polyfills` (built-ins naga cannot write),
+//! `fixed_function` (the compatibility profile's built-ins).
 
 mod blocks;
 mod calls;
@@ -23,6 +24,7 @@ mod declarations;
 mod evaluation;
 mod expressions;
 mod file_scope;
+mod fixed_function;
 mod header;
 mod initializers;
 mod polyfills;
@@ -57,6 +59,10 @@ pub const USER_BUFFER_SET: u32 = 2;
 pub const USER_IMAGE_SET: u32 = 3;
 pub const USER_COUNTER_SET: u32 = 4;
 
+/// Prefix of the constant holding a uniform's GLSL initializer (`uniform float k = 0.5;`
+/// → `const float effectc_initial_k = 0.5;`): the renderer starts the uniform there.
+pub const INITIAL_PREFIX: &str = "effectc_initial_";
+
 /// Prefix of a uniform block member another stage declares and this stage shadows.
 pub const OTHER_STAGE_PREFIX: &str = "effectc_other_";
 
@@ -79,6 +85,8 @@ struct Ctx<'a> {
     limitation: Option<Limitation>,
     /// Built-ins called under effectc names ([`polyfills`]), defined in the header.
     polyfills: Vec<&'static str>,
+    /// Declarations of the compatibility built-ins the stage uses ([`fixed_function`]).
+    compat_header: String,
 }
 
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
@@ -103,6 +111,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
         header_before: None,
         limitation,
         polyfills: Vec::new(),
+        compat_header: String::new(),
     };
     c.version();
     c.declarations();

@@ -63,7 +63,10 @@ impl Ctx<'_> {
                     self.edits.replace(u.span.clone(), text);
                 }
                 Referent::Unresolved => {
-                    if self.limitation.is_none() && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version) {
+                    if self.limitation.is_none()
+                        && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version)
+                        && !crate::front::compat::handles(&u.name, s.stage)
+                    {
                         // naga reports these unevenly ("unknown variable", or a field
                         // lookup failing on `gl_BaryCoordEXT.x`): decide before asking it.
                         self.limitation = Some(Limitation { construct: format!("the built-in `{}`", u.name), span: Some(u.span.clone()) });

@@ -76,6 +76,8 @@ pub enum Draw {
 pub struct Scene {
     pub name: String,
     pub module: naga::Module,
+    /// The values GLSL initializers give uniforms ([`uniforms::initial_values`]).
+    pub initial: Vec<(String, crate::manifest::UniformValue)>,
     pub pipeline: wgpu::RenderPipeline,
     pub vertex_buffer: Option<wgpu::Buffer>,
     /// Per-instance attributes (vertex buffer slot after the mesh's, or 0 without one).
@@ -252,6 +254,7 @@ impl Scene {
             storage,
             degenerate,
             replay,
+            initial: uniforms::initial_values(input.program),
         })
     }
 }
@@ -384,7 +387,7 @@ fn uniform_buffers(
     first_file: FileId,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
-    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect, input.overrides)
+    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect, &uniforms::initial_values(input.program), input.overrides)
         .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
         let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
