@@ -26,6 +26,13 @@ pub struct LeftOut {
 
 /// Runs every pruning step; `uniform_block` names the generated uniform struct.
 pub fn prune(module: &mut Module, uniform_block: &str) -> Vec<LeftOut> {
+    // The constants holding uniform initializers are for the renderer, which reads them
+    // from the front's module: unnamed, compaction drops them (no code reads them).
+    for (_, c) in module.constants.iter_mut() {
+        if c.name.as_deref().is_some_and(|n| n.starts_with(crate::front::rewrite::INITIAL_PREFIX)) {
+            c.name = None;
+        }
+    }
     let mut left = Vec::new();
     left.extend(compact(module));
     let inputs = drop_unread_fragment_inputs(module);

@@ -121,7 +121,8 @@ pub fn state(name: &str) -> Option<&'static State> {
 pub const SCENE_MATRICES: &[&str] = &["gl_ModelViewMatrix", "gl_ProjectionMatrix", "gl_ModelViewProjectionMatrix", "gl_NormalMatrix"];
 
 /// GL's initial values of the state member `name` (the OpenGL 2.1 specification's state
-/// tables; the point size limit is Mesa's), leaf by leaf: (path, components).
+/// tables; derived values and the point size limit as Mesa's driver gives them), leaf by
+/// leaf: (path, components). Leaves not listed start at zero.
 pub fn initial_values(name: &str) -> Vec<(String, Vec<f32>)> {
     let Some(st) = state(name) else { return Vec::new() };
     let elements: Vec<String> = match st.count {
@@ -166,10 +167,11 @@ pub fn initial_values(name: &str) -> Vec<(String, Vec<f32>)> {
                 leaf("diffuse", &bright);
                 leaf("specular", &bright);
                 leaf("position", &[0.0, 0.0, 1.0, 0.0]);
-                leaf("halfVector", &[0.0, 0.0, 1.0, 0.0]);
+                // Mesa derives `halfVector` only while fixed-function lighting is on (a
+                // program replaces it: zero), and keeps the cosine of the initial 180°
+                // cutoff at 0, not -1 ("negative values not admitted").
                 leaf("spotDirection", &[0.0, 0.0, -1.0]);
                 leaf("spotCutoff", &[180.0]);
-                leaf("spotCosCutoff", &[-1.0]);
                 leaf("constantAttenuation", &[1.0]);
             }
             "gl_LightModel" => leaf("ambient", &[0.2, 0.2, 0.2, 1.0]),
@@ -187,37 +189,62 @@ pub fn initial_values(name: &str) -> Vec<(String, Vec<f32>)> {
     out
 }
 
-/// The built-in struct types, as the compatibility profile declares them.
-pub const STRUCTS: &[(&str, &str)] = &[
-    ("gl_DepthRangeParameters", "struct gl_DepthRangeParameters { float near; float far; float diff; };"),
+/// The built-in struct types, as the compatibility profile declares them: name and
+/// members (type, name).
+pub const STRUCTS: &[(&str, &[(&str, &str)])] = &[
+    ("gl_DepthRangeParameters", &[("float", "near"), ("float", "far"), ("float", "diff")]),
     (
         "gl_PointParameters",
-        "struct gl_PointParameters { float size; float sizeMin; float sizeMax; float fadeThresholdSize; \
-         float distanceConstantAttenuation; float distanceLinearAttenuation; float distanceQuadraticAttenuation; };",
+        &[
+            ("float", "size"),
+            ("float", "sizeMin"),
+            ("float", "sizeMax"),
+            ("float", "fadeThresholdSize"),
+            ("float", "distanceConstantAttenuation"),
+            ("float", "distanceLinearAttenuation"),
+            ("float", "distanceQuadraticAttenuation"),
+        ],
     ),
-    ("gl_MaterialParameters", "struct gl_MaterialParameters { vec4 emission; vec4 ambient; vec4 diffuse; vec4 specular; float shininess; };"),
+    (
+        "gl_MaterialParameters",
+        &[("vec4", "emission"), ("vec4", "ambient"), ("vec4", "diffuse"), ("vec4", "specular"), ("float", "shininess")],
+    ),
     (
         "gl_LightSourceParameters",
-        "struct gl_LightSourceParameters { vec4 ambient; vec4 diffuse; vec4 specular; vec4 position; vec4 halfVector; \
-         vec3 spotDirection; float spotExponent; float spotCutoff; float spotCosCutoff; float constantAttenuation; \
-         float linearAttenuation; float quadraticAttenuation; };",
+        &[
+            ("vec4", "ambient"),
+            ("vec4", "diffuse"),
+            ("vec4", "specular"),
+            ("vec4", "position"),
+            ("vec4", "halfVector"),
+            ("vec3", "spotDirection"),
+            ("float", "spotExponent"),
+            ("float", "spotCutoff"),
+            ("float", "spotCosCutoff"),
+            ("float", "constantAttenuation"),
+            ("float", "linearAttenuation"),
+            ("float", "quadraticAttenuation"),
+        ],
     ),
-    ("gl_LightModelParameters", "struct gl_LightModelParameters { vec4 ambient; };"),
-    ("gl_FogParameters", "struct gl_FogParameters { vec4 color; float density; float start; float end; float scale; };"),
-    ("gl_LightModelProducts", "struct gl_LightModelProducts { vec4 sceneColor; };"),
-    ("gl_LightProducts", "struct gl_LightProducts { vec4 ambient; vec4 diffuse; vec4 specular; };"),
+    ("gl_LightModelParameters", &[("vec4", "ambient")]),
+    ("gl_FogParameters", &[("vec4", "color"), ("float", "density"), ("float", "start"), ("float", "end"), ("float", "scale")]),
+    ("gl_LightModelProducts", &[("vec4", "sceneColor")]),
+    ("gl_LightProducts", &[("vec4", "ambient"), ("vec4", "diffuse"), ("vec4", "specular")]),
 ];
 
-/// The definition of the built-in struct `name`.
-pub fn struct_text(name: &str) -> Option<&'static str> {
-    STRUCTS.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
+fn struct_members(name: &str) -> Option<&'static [(&'static str, &'static str)]> {
+    STRUCTS.iter().find(|(n, _)| *n == name).map(|(_, m)| *m)
+}
+
+/// The GLSL definition of the built-in struct `name`.
+pub fn struct_text(name: &str) -> Option<String> {
+    let fields: String = struct_members(name)?.iter().map(|(ty, field)| format!(" {ty} {field};")).collect();
+    Some(format!("struct {name} {{{fields} }};"))
 }
 
 /// The member types of a built-in struct, in order.
 pub fn struct_member_types(name: &str) -> Vec<GlslType> {
-    let Some(text) = struct_text(name) else { return Vec::new() };
-    let body = text.split_once('{').map_or("", |(_, b)| b);
-    body.split(';').filter_map(|field| field.split_whitespace().next()).filter(|t| *t != "}").map(GlslType::scalar).collect()
+    struct_members(name).unwrap_or_default().iter().map(|(ty, _)| GlslType::scalar(ty)).collect()
 }
 
 /// A matrix read in another form: `gl_TextureMatrixInverseTranspose` is
@@ -269,8 +296,7 @@ pub const VARYINGS: &[Varying] = &[
 
 /// Vertex outputs GL reads only with state WebGPU lacks (two-sided colour, user clip
 /// planes): computed in a private variable, not passed on.
-const VERTEX_SINKS: &[(&str, &str)] =
-    &[("gl_BackColor", "vec4"), ("gl_BackSecondaryColor", "vec4"), ("gl_ClipVertex", "vec4")];
+const VERTEX_SINKS: &[(&str, &str)] = &[("gl_BackColor", "vec4"), ("gl_BackSecondaryColor", "vec4"), ("gl_ClipVertex", "vec4")];
 
 /// The vertex-stage link name of one `gl_TexCoord[]` element.
 pub fn tex_coord_varying(i: u32) -> String {
@@ -308,7 +334,17 @@ pub struct ProgramCompat {
 
 /// The built-ins `s` uses that effectc declares: (name, index when a literal, dynamic index).
 fn used(s: &StageSyntax) -> impl Iterator<Item = &crate::front::syntax::Use> {
-    s.uses.iter().filter(move |u| u.target == Referent::Unresolved && handles(&u.name, s.stage))
+    s.uses.iter().filter(move |u| is_builtin_use(s, u) && handles(&u.name, s.stage))
+}
+
+/// A use of a built-in: declared nowhere, or by the stage's redeclaration of it
+/// (`varying vec4 gl_TexCoord[3];`, which GLSL asks for before a variable index).
+pub fn is_builtin_use(s: &StageSyntax, u: &crate::front::syntax::Use) -> bool {
+    match u.target {
+        Referent::Unresolved => true,
+        Referent::Global(g) => s.globals[g].name.starts_with("gl_"),
+        Referent::Param(..) => false,
+    }
 }
 
 /// Whether stage `s` reads or writes the built-in `name`.
@@ -340,9 +376,16 @@ pub fn analyse(stages: &[StageSyntax]) -> ProgramCompat {
                     Some((_, _, Some(k))) if (0..i64::from(MAX_TEXTURE_COORDS)).contains(k) => {
                         tex_coords.insert(*k as u32);
                     }
-                    _ => tex_coords.extend(0..MAX_TEXTURE_COORDS),
+                    // A variable index reads any element the redeclaration sizes.
+                    _ => {
+                        let size = s.global("gl_TexCoord").and_then(|g| g.ty.dims.first().copied().flatten());
+                        tex_coords.extend(0..size.unwrap_or(MAX_TEXTURE_COORDS).min(MAX_TEXTURE_COORDS));
+                    }
                 }
-            } else if let Some(v) = VARYINGS.iter().find(|v| (s.stage == StageKind::Vertex && v.name == name) || (s.stage == StageKind::Fragment && v.fragment_name == name)) {
+            } else if let Some(v) = VARYINGS
+                .iter()
+                .find(|v| (s.stage == StageKind::Vertex && v.name == name) || (s.stage == StageKind::Fragment && v.fragment_name == name))
+            {
                 varyings.insert(v.name);
             }
         }
@@ -353,7 +396,7 @@ pub fn analyse(stages: &[StageSyntax]) -> ProgramCompat {
     let state: Vec<&'static State> = STATE.iter().filter(|st| state.contains(st.name)).collect();
     let mut block_structs = Vec::new();
     for st in &state {
-        if struct_text(st.ty).is_some() && !block_structs.contains(&st.ty) {
+        if struct_members(st.ty).is_some() && !block_structs.contains(&st.ty) {
             block_structs.push(st.ty);
         }
     }
@@ -464,7 +507,7 @@ fn products(s: &StageSyntax, d: &mut StageDeclarations) {
             }
         }
     }
-    let defs: String = structs.iter().filter_map(|t| struct_text(t)).map(|t| format!("{t}\n")).collect();
+    let defs: String = structs.iter().filter_map(|t| struct_text(t)).map(|t| t + "\n").collect();
     d.header.insert_str(0, &defs);
 }
 

@@ -268,7 +268,7 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
     describe_block_structs(&mut plan, stages);
     for name in plan.compat.block_structs.clone() {
         plan.struct_members.insert(name.to_string(), compat::struct_member_types(name));
-        plan.struct_texts.insert(name.to_string(), compat::struct_text(name).unwrap_or_default().to_string());
+        plan.struct_texts.insert(name.to_string(), compat::struct_text(name).unwrap_or_default());
     }
     plan
 }

@@ -121,7 +121,14 @@ fn fill_block(
 
 /// A compatibility-profile state member (`gl_LightSource`): the scene's matrices every
 /// frame, GL's initial values for the rest. Neither is a guess.
-fn gl_state(module: &Module, block: Handle<Type>, name: &str, ty: Handle<Type>, offset: u32, buffer: &mut UniformBuffer) -> Result<(), String> {
+fn gl_state(
+    module: &Module,
+    block: Handle<Type>,
+    name: &str,
+    ty: Handle<Type>,
+    offset: u32,
+    buffer: &mut UniformBuffer,
+) -> Result<(), String> {
     let semantic = match name {
         "gl_ModelViewMatrix" => Some(Semantic::ModelView),
         "gl_ProjectionMatrix" => Some(Semantic::Projection),

@@ -14,6 +14,10 @@ const SEMANTICS_SIZE: &str = "64x64";
 /// Programs in the semantics suite.
 const SEMANTICS: usize = 71;
 
+/// Programs in the compatibility-profile suite (`tests/verify/compat/`: one directory per
+/// program, GLSL 1.10–1.50 reading fixed-function state).
+const COMPAT: usize = 49;
+
 /// Whether verify can run here: CI must have a GL driver and an adapter.
 fn can_verify() -> bool {
     if !have_gpu() {
@@ -98,6 +102,34 @@ fn semantics_programs_match_the_gl_driver() {
             (false, false) => wrong.push(format!("{p}: does not match the GL driver (exit {})\n{text}", code(&out))),
             _ => {}
         }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// Every compatibility-profile program (fixed-function attributes, matrices and their
+/// forms, light, material, fog, point and plane state at GL's initial values, the
+/// fixed-function varyings, uniform initializers) draws what Mesa's GL draws.
+#[test]
+fn compatibility_programs_match_the_gl_driver() {
+    if !can_verify() {
+        return;
+    }
+    let dir = Path::new("tests/verify/compat");
+    let mut programs: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.is_dir()).collect();
+    programs.sort();
+    assert_eq!(programs.len(), COMPAT, "tests/verify/compat: expected {COMPAT} programs");
+    let mut wrong = Vec::new();
+    for p in &programs {
+        let name = name_of(p);
+        let out_dir = scratch("verify-compat", &name);
+        let args = ["verify", p.to_str().unwrap(), "--size", SEMANTICS_SIZE, "--format", "json", "--out", out_dir.to_str().unwrap()];
+        let out = effectc(&args);
+        let text = stdout(&out);
+        if code(&out) != 0 || !json_matches(&text) {
+            wrong.push(format!("{name}: does not match the GL driver (exit {})\n{text}", code(&out)));
+        }
+        // Fixed-function state is GL's, not a guess: no W0401/W0403 for it.
+        assert!(!text.contains("\"W0403\"") && !text.contains("\"W0401\""), "{name}: fixed-function state reported as a guess\n{text}");
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }

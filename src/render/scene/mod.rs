@@ -387,8 +387,9 @@ fn uniform_buffers(
     first_file: FileId,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
-    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect, &uniforms::initial_values(input.program), input.overrides)
-        .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
+    let (uniform_data, guessed) =
+        uniforms::buffers(&input.translation.module, input.effect, &uniforms::initial_values(input.program), input.overrides)
+            .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
         let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
         d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");

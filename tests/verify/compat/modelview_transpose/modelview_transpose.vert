@@ -1,0 +1,2 @@
+#version 120
+varying vec4 c; void main() { c = gl_ModelViewMatrixTranspose * gl_Vertex; gl_Position = ftransform(); }

@@ -1,0 +1,2 @@
+#version 120
+varying vec3 n; void main() { gl_FragColor = vec4(normalize(n) * 0.5 + 0.5, 1.0); }

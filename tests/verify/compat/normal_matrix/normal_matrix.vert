@@ -1,0 +1,2 @@
+#version 120
+varying vec3 n; void main() { n = gl_NormalMatrix * gl_Normal; gl_Position = ftransform(); }
