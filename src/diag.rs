@@ -137,6 +137,8 @@ pub struct Files {
     files: Vec<SourceFile>,
     /// Expanded texts (by their id): where each piece came from, and the file they stand for.
     expansions: std::collections::HashMap<FileId, (FileId, Vec<Segment>)>,
+    /// Texts effectc wrote (a fixed-function vertex stage), read from no file.
+    generated: std::collections::HashSet<FileId>,
 }
 
 impl Files {
@@ -202,6 +204,16 @@ impl Files {
     /// `id` is an expanded text ([`Files::add_expanded`]), not a file of the user's.
     pub fn is_expanded(&self, id: FileId) -> bool {
         self.expansions.contains_key(&id)
+    }
+    /// Registers a text effectc wrote, shown under `name` (no file on disk has it).
+    pub fn add_generated(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
+        self.files.push(SourceFile { path: name.into(), text: text.into() });
+        let id = FileId(self.files.len() - 1);
+        self.generated.insert(id);
+        id
+    }
+    pub fn is_generated(&self, id: FileId) -> bool {
+        self.generated.contains(&id)
     }
     pub fn get(&self, id: FileId) -> &SourceFile {
         &self.files[id.0]

@@ -7,6 +7,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::front::compat;
 use crate::inputs::ProgramInput;
 use crate::manifest::{self, Effect};
 use crate::stage::StageKind;
@@ -21,6 +22,8 @@ pub struct Loaded {
     pub diagnostics: Vec<Diagnostic>,
     /// Some file could not be read at all (exit 2).
     pub io_error: bool,
+    /// The fragment stage given GL's fixed-function vertex stage (it is not alone).
+    pub vertex_added_for: Option<String>,
 }
 
 /// What there is to analyse.
@@ -43,9 +46,18 @@ pub struct PassFiles {
     pub stages: Option<Vec<(FileId, StageKind)>>,
 }
 
-/// Reads the files of `input` into `files`.
-pub fn load(input: &ProgramInput, files: &mut Files) -> Loaded {
-    let mut l = Loaded { name: input.display_name(), effect: None, body: Body::Nothing, diagnostics: Vec::new(), io_error: false };
+/// Reads the files of `input` into `files`. With `fixed_function_vertex`, a program that
+/// is one compatibility-profile fragment stage gets GL's fixed-function vertex stage
+/// ([`compat::fixed_function_vertex_stage`]), as GL draws it.
+pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool) -> Loaded {
+    let mut l = Loaded {
+        name: input.display_name(),
+        effect: None,
+        body: Body::Nothing,
+        diagnostics: Vec::new(),
+        io_error: false,
+        vertex_added_for: None,
+    };
     match input {
         ProgramInput::Manifest(path) => match manifest::load(path, files) {
             Ok(e) => {
@@ -65,6 +77,15 @@ pub fn load(input: &ProgramInput, files: &mut Files) -> Loaded {
         },
         ProgramInput::Stages { files: stages, .. } => {
             l.body = read_all(stages, files, &mut l).map_or(Body::Nothing, Body::Single);
+        }
+    }
+    if let (Body::Single(stages), true) = (&mut l.body, fixed_function_vertex) {
+        if let [(fragment, StageKind::Fragment)] = stages[..] {
+            if let Some(text) = compat::fixed_function_vertex_stage(files.text(fragment)) {
+                let name = format!("{} (GL's fixed-function vertex stage)", files.path(fragment));
+                l.vertex_added_for = Some(files.path(fragment).to_string());
+                stages.insert(0, (files.add_generated(name, text), StageKind::Vertex));
+            }
         }
     }
     l

@@ -101,6 +101,9 @@ pub struct InputSpec {
     pub jobs: Option<usize>,
     /// `--set NAME=VALUE` as typed: uniform values for every program that declares them.
     pub values: Vec<(String, String)>,
+    /// A lone compatibility-profile fragment stage is drawn with GL's fixed-function
+    /// vertex stage (the commands that draw: render, verify, bench, stress).
+    pub fixed_function_vertex: bool,
 }
 
 impl InputSpec {
@@ -115,7 +118,13 @@ impl InputSpec {
         let mut registered = Vec::with_capacity(programs.len());
         for p in &programs {
             let before = out.files.len();
-            loaded.push(load::load(p, &mut out.files));
+            let l = load::load(p, &mut out.files, self.fixed_function_vertex);
+            if let Some(fragment) = &l.vertex_added_for {
+                // Not alone after all: GL's fixed-function vertex stage links with it.
+                let alone = format!("`{fragment}` is checked alone");
+                out.diagnostics.retain(|d| !(d.code == Code::StageAlone && d.message.starts_with(&alone)));
+            }
+            loaded.push(l);
             registered.push(before..out.files.len());
         }
         out.programs = loaded.len();
@@ -132,7 +141,11 @@ impl InputSpec {
         for ((mut c, diags, io_error), ids) in analysed.into_iter().zip(registered) {
             out.io_error |= io_error;
             out.diagnostics.extend(diags);
-            c.read = ids.map(FileId).filter(|id| !out.files.is_expanded(*id)).map(|id| PathBuf::from(out.files.path(id))).collect();
+            c.read = ids
+                .map(FileId)
+                .filter(|id| !out.files.is_expanded(*id) && !out.files.is_generated(*id))
+                .map(|id| PathBuf::from(out.files.path(id)))
+                .collect();
             c.read.extend(c.effect.iter().chain(c.units.iter().filter_map(|u| u.effect.as_ref())).flat_map(assets));
             c.read.sort();
             c.read.dedup();

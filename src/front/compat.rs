@@ -511,6 +511,51 @@ fn products(s: &StageSyntax, d: &mut StageDeclarations) {
     d.header.insert_str(0, &defs);
 }
 
+/// The vertex stage GL runs for a compatibility-profile program that has none: its
+/// fixed-function vertex processing with GL's initial state (identity model-view,
+/// projection and texture matrices; lighting, texture-coordinate generation and two-sided
+/// colour off), which draws a full-window `glRectf(-1, -1, 1, 1)` as given. Written as
+/// GLSL in the fragment stage's own version, for the fragment stage's text; `None` when
+/// that version has no fixed-function vertex stage (core and ES profiles).
+pub fn fixed_function_vertex_stage(fragment_text: &str) -> Option<String> {
+    use std::fmt::Write;
+    let version = crate::front::version::parse_version(fragment_text).ok()?;
+    if !crate::front::builtins::has_compatibility_builtins(&version) {
+        return None;
+    }
+    let mut text = match &version.directive {
+        Some(line) => format!("{}\n", &fragment_text[line.clone()]),
+        None => String::new(),
+    };
+    text.push_str("// GL's fixed-function vertex processing in its initial state\nvoid main() {\n");
+    text.push_str("    gl_Position = gl_Vertex;\n    gl_FrontColor = gl_Color;\n    gl_FrontSecondaryColor = gl_SecondaryColor;\n");
+    // Fog from the fragment's depth (GL's initial fog coordinate source): |eye z|.
+    text.push_str("    gl_FogFragCoord = abs(gl_Vertex.z);\n");
+    for i in tex_coords_read(fragment_text) {
+        let _ = writeln!(text, "    gl_TexCoord[{i}] = gl_MultiTexCoord{i};");
+    }
+    text.push_str("}\n");
+    Some(text)
+}
+
+/// The `gl_TexCoord[]` elements a stage's text indexes: the literal indices, or all of
+/// them where an index is not a literal.
+fn tex_coords_read(text: &str) -> BTreeSet<u32> {
+    let mut read = BTreeSet::new();
+    for (at, _) in text.match_indices("gl_TexCoord") {
+        let rest = text[at + "gl_TexCoord".len()..].trim_start();
+        let Some(inner) = rest.strip_prefix('[') else { continue };
+        let index = inner.split(']').next().unwrap_or("").trim();
+        match index.parse::<u32>() {
+            Ok(i) if i < MAX_TEXTURE_COORDS => {
+                read.insert(i);
+            }
+            _ => read.extend(0..MAX_TEXTURE_COORDS),
+        }
+    }
+    read
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -540,5 +585,17 @@ mod tests {
         assert!(handles("gl_Color", StageKind::Fragment));
         assert!(handles("gl_LightSource", StageKind::Geometry));
         assert!(!handles("gl_FrontColor", StageKind::Geometry));
+    }
+
+    #[test]
+    fn a_compatibility_fragment_stage_gets_gl_fixed_function_vertex_stage() {
+        let v = fixed_function_vertex_stage("#version 120\nvoid main() { gl_FragColor = gl_Color + gl_TexCoord[2]; }\n").unwrap();
+        assert!(v.starts_with("#version 120\n"), "{v}");
+        assert!(v.contains("gl_Position = gl_Vertex;") && v.contains("gl_TexCoord[2] = gl_MultiTexCoord2;"), "{v}");
+        assert!(!v.contains("gl_TexCoord[0]"), "{v}");
+        let all = fixed_function_vertex_stage("void main() { int i = 1; gl_FragColor = gl_TexCoord[i]; }").unwrap();
+        assert_eq!(all.matches("gl_MultiTexCoord").count(), 8, "{all}");
+        assert_eq!(fixed_function_vertex_stage("#version 330 core\nout vec4 c; void main() { c = vec4(1.0); }"), None);
+        assert_eq!(fixed_function_vertex_stage("#version 300 es\nout highp vec4 c; void main() { c = vec4(1.0); }"), None);
     }
 }

@@ -218,6 +218,8 @@ struct GlDrawer {
     /// Channels of the frame the program writes (a `vec2` output: 2); GL leaves the
     /// others undefined, so only these are compared.
     channels: usize,
+    /// GL draws without a vertex stage, with its initial (identity) matrices.
+    fixed_function_vertex: bool,
 }
 
 impl GlDrawer {
@@ -225,10 +227,21 @@ impl GlDrawer {
         let mut frames = GlFrames::new(gl).map_err(|e| vec![Diagnostic::new(Code::GlRejects, e)])?;
         let mut scenes = Vec::new();
         let mut unmatched = Vec::new();
+        let mut fixed_function_vertex = false;
         let fail = |e: String, file: FileId| vec![Diagnostic::new(Code::GlRejects, e).in_file(file)];
         for (pass, scene) in drawer.scenes() {
             let Some(unit) = c.units.iter().find(|u| u.pass == pass) else { continue };
-            let stages: Vec<(FileId, StageKind)> = unit.program.stages.iter().map(|s| (s.syntax.file, s.syntax.stage)).collect();
+            // A vertex stage effectc wrote for a lone fragment stage is what GL does
+            // without one: GL runs its own fixed-function vertex processing instead.
+            let generated = unit.program.stages.iter().any(|s| files.is_generated(s.syntax.file));
+            fixed_function_vertex |= generated;
+            let stages: Vec<(FileId, StageKind)> = unit
+                .program
+                .stages
+                .iter()
+                .filter(|s| !files.is_generated(s.syntax.file))
+                .map(|s| (s.syntax.file, s.syntax.stage))
+                .collect();
             let first = stages[0].0;
             let linked = program::link(gl, files, &stages)?;
             let s = GlScene::new(gl, linked, scene).map_err(|e| fail(e, first))?;
@@ -263,13 +276,13 @@ impl GlDrawer {
             }
         };
         let channels = written_channels(drawer, &output);
-        Ok(GlDrawer { scenes, frames, output, unmatched, channels })
+        Ok(GlDrawer { scenes, frames, output, unmatched, channels, fixed_function_vertex })
     }
 
     /// Draws one frame with the uniform values the wgpu scenes hold now (after their frame).
     fn draw(&mut self, gl: &glow::Context, drawer: &Drawer, state: &FrameState) -> Result<Vec<u8>, String> {
         // SAFETY: the context is current on this thread.
-        unsafe { super::fixed_function::load_matrices(state)? };
+        unsafe { super::fixed_function::load_matrices((!self.fixed_function_vertex).then_some(state))? };
         match drawer {
             Drawer::Single { scene, target } => {
                 let names: Vec<String> = (0..scene.colors.len()).map(|i| format!("output{i}")).collect();

@@ -111,14 +111,17 @@ pub unsafe fn bind_attribute(name: &str, size: i32, ty: u32, stride: i32, offset
     Ok(true)
 }
 
-/// Loads the frame's model-view (view × model) and projection matrices.
+/// Loads the frame's model-view (view × model) and projection matrices, or GL's initial
+/// identity matrices (`None`: a program drawn by GL's fixed-function vertex stage, which
+/// effectc's stand-in draws with its initial state).
 ///
 /// # Safety
 /// A GL context must be current.
-pub unsafe fn load_matrices(state: &FrameState) -> Result<(), String> {
+pub unsafe fn load_matrices(state: Option<&FrameState>) -> Result<(), String> {
     let l = legacy()?;
-    let model_view = (state.view.view * state.model).to_cols_array();
-    let projection = state.view.projection.to_cols_array();
+    let identity = glam::Mat4::IDENTITY;
+    let model_view = state.map_or(identity, |s| s.view.view * s.model).to_cols_array();
+    let projection = state.map_or(identity, |s| s.view.projection).to_cols_array();
     (l.matrix_mode)(PROJECTION);
     (l.load_matrix_f)(projection.as_ptr());
     (l.matrix_mode)(MODELVIEW);

@@ -68,17 +68,28 @@ impl GlScene {
                 None => None,
             };
             let reflection_inputs = &replay.inputs;
-            for a in 0..gl.get_active_attributes(program.program) {
-                let Some(attr) = gl.get_active_attribute(program.program, a) else { continue };
-                let fixed_function = crate::front::compat::attribute(&attr.name).is_some();
-                if attr.name.starts_with("gl_") && !fixed_function {
+            let mut read: Vec<String> = (0..gl.get_active_attributes(program.program))
+                .filter_map(|a| gl.get_active_attribute(program.program, a))
+                .map(|a| a.name)
+                .collect();
+            // Without a vertex stage GL's fixed-function one reads the legacy arrays the
+            // translation's stand-in reads.
+            let legacy: Vec<String> = reflection_inputs
+                .iter()
+                .map(|(n, _)| n.clone())
+                .filter(|n| crate::front::compat::attribute(n).is_some() && !read.contains(n))
+                .collect();
+            read.extend(legacy);
+            for name in read {
+                let fixed_function = crate::front::compat::attribute(&name).is_some();
+                if name.starts_with("gl_") && !fixed_function {
                     continue;
                 }
-                let location = gl.get_attrib_location(program.program, &attr.name);
+                let location = gl.get_attrib_location(program.program, &name);
                 if location.is_none() && !fixed_function {
                     continue;
                 }
-                let wgsl_location = reflection_inputs.iter().find(|(n, _)| *n == attr.name).map(|(_, l)| *l);
+                let wgsl_location = reflection_inputs.iter().find(|(n, _)| *n == name).map(|(_, l)| *l);
                 let per_vertex = wgsl_location.and_then(|l| replay.vertices.attributes.iter().find(|x| x.shader_location == l));
                 let per_instance = wgsl_location
                     .and_then(|l| replay.instances.as_ref().and_then(|i| i.attributes.iter().find(|x| x.shader_location == l)));
@@ -86,7 +97,7 @@ impl GlScene {
                     (_, Some(x), Some(b)) => (b, replay.instances.as_ref().map_or(0, |i| i.stride), x, 1),
                     (Some(x), _, _) => (vbo, replay.vertices.stride, x, 0),
                     _ => {
-                        unfed_inputs.push(attr.name.clone());
+                        unfed_inputs.push(name.clone());
                         continue;
                     }
                 };
@@ -94,7 +105,7 @@ impl GlScene {
                 let (size, ty, integer) = vertex_format(attribute.format);
                 let Some(location) = location else {
                     // `gl_Vertex`, `gl_Normal`, …: the legacy arrays.
-                    super::fixed_function::bind_attribute(&attr.name, size, ty, stride as i32, attribute.offset as i32)?;
+                    super::fixed_function::bind_attribute(&name, size, ty, stride as i32, attribute.offset as i32)?;
                     continue;
                 };
                 gl.enable_vertex_attrib_array(location);

@@ -93,6 +93,8 @@ pub(super) fn report_attributes(
     for c in choices {
         let (code, message) = match (c.attribute, c.guessed) {
             (Some(_), None) => continue,
+            // A fixed-function attribute no array feeds reads GL's current value, as in GL.
+            (None, None) => continue,
             (Some(_), Some(_)) if fullscreen_pass => continue,
             (Some(a), Some(why)) => (Code::AttributeGuessed, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input)),
             (None, _) => (Code::AttributeZero, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),

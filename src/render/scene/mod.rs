@@ -412,8 +412,13 @@ fn uniform_buffers(
 /// A one-line description of the mesh and its attributes, for `--verbose`.
 fn describe(mesh_note: &MeshNote, mesh: &Mesh, choices: &[attributes::Choice], effect: Option<&Effect>) -> String {
     let instances = effect.and_then(|e| e.instances.as_ref());
-    let mut inputs: Vec<String> =
-        choices.iter().map(|c| format!("{} ← {}", c.input, c.attribute.map_or("zeros", MeshAttribute::name))).collect();
+    let mut inputs: Vec<String> = choices
+        .iter()
+        .map(|c| {
+            let unfed = if crate::front::compat::attribute(&c.input).is_some() { "GL's current value" } else { "zeros" };
+            format!("{} ← {}", c.input, c.attribute.map_or(unfed, MeshAttribute::name))
+        })
+        .collect();
     if let Some(d) = instances {
         inputs.extend(d.attributes.iter().map(|a| format!("{} ← per instance", a.input)));
     }
