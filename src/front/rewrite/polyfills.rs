@@ -2,7 +2,9 @@
 //! no `matrixCompMult`; its WGSL writer has no `isnan`, `isinf` or `outerProduct`), called
 //! under effectc names and defined in the header as overloads for every size:
 //! `isnan`/`isinf` from the float's bits (no comparison a compiler could fold away),
-//! `outerProduct` and `matrixCompMult` column by column. (`inverse` stays naga's: its
+//! `outerProduct` and `matrixCompMult` column by column; the integer built-ins GLSL 4.00
+//! added (`uaddCarry`, `usubBorrow`, `umulExtended`, `imulExtended`) from 16-bit halves,
+//! `modf` from `trunc` and `frexp` from the float's bits. (`inverse` stays naga's: its
 //! WGSL writer has it, and a definition of our own would hide the normal-matrix facts the
 //! hazard analysis reads from it.)
 
@@ -11,11 +13,17 @@ use std::fmt::Write;
 use super::Ctx;
 
 /// The built-ins replaced, with the name they are called by.
-const REPLACED: [(&str, &str); 4] = [
+const REPLACED: [(&str, &str); 10] = [
     ("isnan", "effectc_isnan"),
     ("isinf", "effectc_isinf"),
     ("outerProduct", "effectc_outerProduct"),
     ("matrixCompMult", "effectc_matrixCompMult"),
+    ("uaddCarry", "effectc_uaddCarry"),
+    ("usubBorrow", "effectc_usubBorrow"),
+    ("umulExtended", "effectc_umulExtended"),
+    ("imulExtended", "effectc_imulExtended"),
+    ("modf", "effectc_modf"),
+    ("frexp", "effectc_frexp"),
 ];
 
 impl Ctx<'_> {
@@ -29,8 +37,13 @@ impl Ctx<'_> {
                 continue;
             }
             self.edits.replace(c.name_span.clone(), *ours);
-            if !self.polyfills.contains(builtin) {
-                self.polyfills.push(builtin);
+            // imulExtended is written with umulExtended.
+            let needs: &[&'static str] =
+                if *builtin == "imulExtended" { &["umulExtended", "imulExtended"] } else { std::slice::from_ref(builtin) };
+            for b in needs {
+                if !self.polyfills.contains(b) {
+                    self.polyfills.push(b);
+                }
             }
         }
     }
@@ -60,6 +73,8 @@ pub(super) fn definitions(used: &[&str]) -> String {
                     }
                 }
             }
+            "uaddCarry" | "usubBorrow" | "umulExtended" | "imulExtended" | "modf" => integer_and_modf(&mut h, b),
+            "frexp" => frexp(&mut h),
             _ => {
                 // outerProduct(c, r): a matrix of r's size in columns, c's in rows; column i is c * r[i].
                 for rows in 2..=4 {
@@ -74,4 +89,68 @@ pub(super) fn definitions(used: &[&str]) -> String {
         }
     }
     h
+}
+
+/// `uaddCarry`, `usubBorrow`, `umulExtended` (the 64-bit product from four 16-bit
+/// products), `imulExtended` (the unsigned product corrected for negative operands) and
+/// `modf`, for scalars and every vector size.
+fn integer_and_modf(h: &mut String, builtin: &str) {
+    for n in 1..=4 {
+        let (u, i, f) = if n == 1 {
+            ("uint".to_string(), "int".to_string(), "float".to_string())
+        } else {
+            (format!("uvec{n}"), format!("ivec{n}"), format!("vec{n}"))
+        };
+        // 1u where x < y, else 0u.
+        let below = |x: &str, y: &str| if n == 1 { format!("uint({x} < {y})") } else { format!("{u}(lessThan({x}, {y}))") };
+        let _ = match builtin {
+            "uaddCarry" => writeln!(
+                h,
+                "{u} effectc_uaddCarry({u} a, {u} b, out {u} carry) {{ {u} s = a + b; carry = {}; return s; }}",
+                below("s", "a")
+            ),
+            "usubBorrow" => {
+                writeln!(h, "{u} effectc_usubBorrow({u} a, {u} b, out {u} borrow) {{ borrow = {}; return a - b; }}", below("a", "b"))
+            }
+            "umulExtended" => writeln!(
+                h,
+                "void effectc_umulExtended({u} a, {u} b, out {u} msb, out {u} lsb) {{ \
+                 {u} al = a & 0xFFFFu; {u} ah = a >> 16u; {u} bl = b & 0xFFFFu; {u} bh = b >> 16u; \
+                 {u} lh = al * bh; {u} hl = ah * bl; {u} mid = ((al * bl) >> 16u) + (lh & 0xFFFFu) + (hl & 0xFFFFu); \
+                 msb = ah * bh + (lh >> 16u) + (hl >> 16u) + (mid >> 16u); lsb = a * b; }}"
+            ),
+            "imulExtended" => writeln!(
+                h,
+                "void effectc_imulExtended({i} a, {i} b, out {i} msb, out {i} lsb) {{ \
+                 {u} ua = {u}(a); {u} ub = {u}(b); {u} hi; {u} lo; effectc_umulExtended(ua, ub, hi, lo); \
+                 hi -= {} * ub + {} * ua; msb = {i}(hi); lsb = {i}(lo); }}",
+                below("a", &format!("{i}(0)")),
+                below("b", &format!("{i}(0)"))
+            ),
+            _ => writeln!(h, "{f} effectc_modf({f} x, out {f} whole) {{ whole = trunc(x); return x - whole; }}"),
+        };
+    }
+}
+
+/// `frexp`: the exponent field of the float's bits (a denormal scaled up by 2^64 first),
+/// the significand put back between 0.5 and 1 with the sign kept; 0 for 0.
+fn frexp(h: &mut String) {
+    h.push_str(
+        "float effectc_frexp(float x, out int e) { if (x == 0.0) { e = 0; return x; } float y = x; int bias = 0; \
+         if (abs(x) < 1.17549435e-38) { y = x * 18446744073709551616.0; bias = 64; } uint b = floatBitsToUint(y); \
+         e = int((b >> 23u) & 0xFFu) - 126 - bias; return uintBitsToFloat((b & 0x807FFFFFu) | 0x3F000000u); }\n",
+    );
+    for n in 2..=4 {
+        // One local per component: naga's SPIR-V writer fails on an array element passed
+        // as an `out` argument.
+        let locals: Vec<String> = (0..n).map(|k| format!("e{k}")).collect();
+        let parts: Vec<String> = (0..n).map(|k| format!("effectc_frexp(x[{k}], e{k})")).collect();
+        let _ = writeln!(
+            h,
+            "vec{n} effectc_frexp(vec{n} x, out ivec{n} e) {{ int {}; vec{n} r = vec{n}({}); e = ivec{n}({}); return r; }}",
+            locals.join(", "),
+            parts.join(", "),
+            locals.join(", ")
+        );
+    }
 }

@@ -1,5 +1,6 @@
 #version 400 core
-// uaddCarry, usubBorrow, umulExtended, imulExtended.
+// uaddCarry, usubBorrow, umulExtended, imulExtended (non-negative operands; see
+// imul_extended_negative for the sign).
 in vec2 uv;
 out vec4 color;
 
@@ -11,6 +12,6 @@ void main()
     uint d = usubBorrow(p.x, p.y, borrow);
     umulExtended(p.x * 0x10000000u, 0x30u + p.y, hi, lo);
     int ihi, ilo;
-    imulExtended(-int(p.x) * 0x10000000, 0x30, ihi, ilo);
-    color = vec4(float(carry), float(borrow), float(hi & 63u) / 63.0, float(ihi + 64) / 128.0 + float(s & 0u) + float(d & 0u) + float(lo & 0u));
+    imulExtended(int(p.x) * 0x1000000, 0x30 + int(p.y), ihi, ilo);
+    color = vec4(float(carry), float(borrow), float(hi & 63u) / 63.0, float(ihi & 63) / 63.0 + float(s & 0u) + float(d & 0u) + float(lo & 0u));
 }
