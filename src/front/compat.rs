@@ -14,7 +14,8 @@
 //! - **fixed-function varyings**: `gl_FrontColor`, `gl_FrontSecondaryColor`,
 //!   `gl_FogFragCoord` and `gl_TexCoord[]` written by the vertex stage and read by the
 //!   fragment stage as `gl_Color`, `gl_SecondaryColor`, `gl_FogFragCoord`, `gl_TexCoord[]`
-//!   (two-sided colour is off, GL's default: the fragment stage reads the front colours);
+//!   (two-sided colour is off, GL's default: the fragment stage reads the front colours,
+//!   clamped to [0, 1] as GL's initial `CLAMP_VERTEX_COLOR` does);
 //!   back colours and `gl_ClipVertex` are computed and not used;
 //! - `ftransform()` is `gl_ModelViewProjectionMatrix * gl_Vertex`; the implementation
 //!   constants (`gl_MaxLights`, …) are Mesa's.
@@ -236,6 +237,16 @@ fn struct_members(name: &str) -> Option<&'static [(&'static str, &'static str)]>
     STRUCTS.iter().find(|(n, _)| *n == name).map(|(_, m)| *m)
 }
 
+/// The type of member `field` of the built-in struct `name`.
+pub fn struct_member(name: &str, field: &str) -> Option<&'static str> {
+    struct_members(name)?.iter().find(|(_, f)| *f == field).map(|(ty, _)| *ty)
+}
+
+/// The member names of the built-in struct `name` (empty for other types).
+pub fn struct_fields(name: &str) -> Vec<&'static str> {
+    struct_members(name).unwrap_or_default().iter().map(|(_, f)| *f).collect()
+}
+
 /// The GLSL definition of the built-in struct `name`.
 pub fn struct_text(name: &str) -> Option<String> {
     let fields: String = struct_members(name)?.iter().map(|(ty, field)| format!(" {ty} {field};")).collect();
@@ -442,6 +453,10 @@ pub fn declarations(
             }
             for v in &program.varyings {
                 let _ = writeln!(h, "layout(location = {}) out {} {};", varying_location(v.name), v.ty, v.name);
+                if v.ty == "vec4" {
+                    // GL clamps vertex colours to [0, 1] (CLAMP_VERTEX_COLOR starts TRUE).
+                    let _ = write!(d.epilogue, " {0} = clamp({0}, 0.0, 1.0);", v.name);
+                }
             }
             for (name, ty) in VERTEX_SINKS {
                 if stage_uses(s, name) {

@@ -55,7 +55,10 @@ pub fn check_values(mf: FileId, values: &[UniformDefault], stages: &[StageSyntax
 fn default(mf: FileId, what: &str, u: &UniformDefault, decls: &Decls, stages: &[StageSyntax], files: &Files, out: &mut Vec<Diagnostic>) {
     let (base, steps) = parse_path(&u.name).unwrap_or_else(|| (u.name.clone(), Vec::new()));
     let Some(decl) = decls.get(&base) else {
-        out.push(unknown(mf, what, u, &base, decls, stages, files));
+        match super::compat_values::check(mf, u, &base, &steps, stages) {
+            Some(diags) => out.extend(diags),
+            None => out.push(unknown(mf, what, u, &base, decls, stages, files)),
+        }
         return;
     };
     let (ty, shown) = match follow_path(mf, u, decl, &steps) {

@@ -55,6 +55,7 @@
 
 pub mod attributes;
 pub mod blocks;
+mod compat_values;
 pub mod declared;
 pub mod effect_uniforms;
 pub mod graph_rules;

@@ -69,9 +69,39 @@ pub fn buffers(
                 });
             }
         }
+        derive_gl_state(module, g.ty, &mut buffer.bytes);
         out.push(buffer);
     }
     Ok((out, guessed))
+}
+
+/// The compatibility state GL derives from other state, after every value is written:
+/// a light's `spotCosCutoff` from its `spotCutoff` (negative cosines kept at 0, as Mesa
+/// does), `gl_Fog.scale` from the fog's start and end.
+fn derive_gl_state(module: &Module, block: Handle<Type>, bytes: &mut [u8]) {
+    let at = |path: &str| crate::back::reflect::resolve_path(module, block, path).map(|(offset, _)| offset as usize);
+    let get = |bytes: &[u8], o: usize| bytes.get(o..o + 4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]));
+    let set = |bytes: &mut [u8], o: usize, v: f32| {
+        if let Some(b) = bytes.get_mut(o..o + 4) {
+            b.copy_from_slice(&v.to_le_bytes());
+        }
+    };
+    for i in 0..compat::MAX_LIGHTS {
+        if let (Some(cutoff), Some(cos)) =
+            (at(&format!("gl_LightSource[{i}].spotCutoff")), at(&format!("gl_LightSource[{i}].spotCosCutoff")))
+        {
+            if let Some(c) = get(bytes, cutoff) {
+                set(bytes, cos, c.to_radians().cos().max(0.0));
+            }
+        }
+    }
+    if let (Some(start), Some(end), Some(scale)) = (at("gl_Fog.start"), at("gl_Fog.end"), at("gl_Fog.scale")) {
+        if let (Some(s), Some(e)) = (get(bytes, start), get(bytes, end)) {
+            if e != s {
+                set(bytes, scale, 1.0 / (e - s));
+            }
+        }
+    }
 }
 
 fn fill_block(
@@ -94,11 +124,17 @@ fn fill_block(
     for m in &members {
         let name = m.name.clone().unwrap_or_default();
         let entries: Vec<_> = effect.map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect()).unwrap_or_default();
+        if compat::state(&name).is_some() {
+            // GL's initial values first: the manifest may set some members only.
+            gl_state(module, ty, &name, m.ty, m.offset, buffer)?;
+            buffer.per_frame.retain(|s| entries.is_empty() || s.offset != m.offset);
+        }
         if entries.is_empty() {
+            if compat::state(&name).is_some() {
+                continue;
+            }
             if let Some((_, value)) = initial.iter().find(|(n, _)| *n == name) {
                 write_slot(module, m.ty, m.offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`'s initializer: {e}"))?;
-            } else if compat::state(&name).is_some() {
-                gl_state(module, ty, &name, m.ty, m.offset, buffer)?;
             } else {
                 guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
             }

@@ -108,7 +108,7 @@ impl GlFrames {
                 gl.clear_buffer_f32_slice(glow::DEPTH, 0, &[1.0]);
             }
         }
-        gl_scene.draw(gl, scene, &textures);
+        gl_scene.draw(gl, scene, &textures)?;
         // SAFETY: as above.
         unsafe {
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);

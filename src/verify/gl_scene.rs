@@ -152,8 +152,10 @@ impl GlScene {
     /// Draws into the bound framebuffer (viewport and clears done by the caller), with the
     /// uniform values `scene` holds now and earlier passes' targets for its samplers
     /// (`targets`, by sampler name).
-    pub fn draw(&mut self, gl: &glow::Context, scene: &Scene, targets: &BTreeMap<String, glow::Texture>) {
+    pub fn draw(&mut self, gl: &glow::Context, scene: &Scene, targets: &BTreeMap<String, glow::Texture>) -> Result<(), String> {
         self.uniforms.upload(gl, self.program.program, scene);
+        // SAFETY: the context is current.
+        unsafe { super::fixed_function::set_state(super::uniforms::float_reader(scene))? };
         let r = &scene.replay.render;
         // SAFETY: state and draws on the current context with its objects.
         unsafe {
@@ -200,6 +202,7 @@ impl GlScene {
             gl.bind_vertex_array(None);
             gl.depth_mask(true);
         }
+        Ok(())
     }
 
     /// Deletes the GL objects.

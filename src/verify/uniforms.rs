@@ -113,6 +113,11 @@ impl GlUniforms {
                     }
                     continue;
                 }
+                if u.name.starts_with("gl_") {
+                    // GL's own state (`gl_LightSource[0].diffuse`, the light products): set
+                    // through its fixed-function entry points (`fixed_function::set_state`).
+                    continue;
+                }
                 let Some(shape) = shape_of(u.utype) else {
                     out.unmatched.push(format!("{} (a type verify cannot feed yet)", u.name));
                     continue;
@@ -227,6 +232,23 @@ impl GlUniforms {
                 gl.delete_buffer(b.buffer);
             }
         }
+    }
+}
+
+/// Reads float values by GLSL path (`gl_LightSource[0].diffuse`) from the scene's
+/// uniform buffers as they are for the frame just drawn: `None` where no buffer holds it.
+pub fn float_reader(scene: &Scene) -> impl Fn(&str) -> Option<Vec<f32>> + '_ {
+    let globals = uniform_globals(scene);
+    move |path: &str| {
+        let source = find(scene, &globals, path, false)?;
+        let (columns, rows) = match scene.module.types[source.ty].inner {
+            TypeInner::Scalar(_) => (1, 1),
+            TypeInner::Vector { size, .. } => (1, size as u32),
+            TypeInner::Matrix { columns, rows, .. } => (columns as u32, rows as u32),
+            _ => return None,
+        };
+        let shape = Shape { kind: ScalarKind::Float, columns, rows };
+        Some(read(&scene.module, scene, source, shape).into_iter().map(f32::from_bits).collect())
     }
 }
 

@@ -44,9 +44,11 @@ fn is_uniform_name(s: &str) -> bool {
 }
 
 impl Ctx<'_> {
-    /// Names in `[uniforms]` / `[textures]` must be GLSL uniform names.
+    /// Names in `[uniforms]` / `[textures]` must be GLSL uniform names. A `gl_` path may
+    /// name the compatibility profile's uniform state (`gl_LightSource[0].diffuse`), which
+    /// the link checks against what the program reads; a bare `gl_` name is reserved.
     pub(super) fn check_uniform_name(&mut self, name: &str, span: Range<usize>) -> bool {
-        if name.starts_with("gl_") {
+        if name.starts_with("gl_") && !is_uniform_name(name) {
             self.report(Code::ManifestValue, span, format!("`{name}` is a reserved GLSL name"), "names starting with `gl_` are reserved");
             return false;
         }
