@@ -75,8 +75,11 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
         }
     }
     let parse = |text: &str| {
+        // Comments blanked (same length): glsl-lang's lexer stops with "invalid token" on
+        // some (`/**` … `**/` banners, legal C comments).
+        let text = String::from_utf8(version::blank_comments(text)).unwrap_or_else(|_| text.to_string());
         std::panic::catch_unwind(|| {
-            ast::TranslationUnit::parse_with_options(text, &opts).map(|(tu, _, _)| tu).map_err(|e| {
+            ast::TranslationUnit::parse_with_options(&text, &opts).map(|(tu, _, _)| tu).map_err(|e| {
                 let pos = e.pos();
                 let start = usize::from(pos.start());
                 let end = usize::from(pos.end());
