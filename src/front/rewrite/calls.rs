@@ -34,6 +34,22 @@ impl Ctx<'_> {
     pub(super) fn functions(&mut self) {
         let s = self.s;
         for f in &s.functions {
+            for p in f.params.iter().filter(|p| !p.ty.is_sampler()) {
+                // `const in Ray ray`: naga's parser takes no `const` on a parameter; it only
+                // forbids writes, which glslang has checked.
+                let text = &s.text[p.span.clone()];
+                let words = text.split(|c: char| !c.is_ascii_alphanumeric() && c != '_');
+                let mut at = 0;
+                for w in words {
+                    if w == "const" {
+                        self.edits.delete(p.span.start + at..p.span.start + at + w.len());
+                    }
+                    if w == p.ty.base {
+                        break;
+                    }
+                    at += w.len() + 1;
+                }
+            }
             for p in f.params.iter().filter(|p| p.ty.is_sampler()) {
                 let (tex, samp) = crate::front::syntax::sampler_parts(&p.ty.base).expect("sampler");
                 let text = match &p.name {

@@ -4,7 +4,9 @@
 //! `isnan`/`isinf` from the float's bits (no comparison a compiler could fold away),
 //! `outerProduct` and `matrixCompMult` column by column; the integer built-ins GLSL 4.00
 //! added (`uaddCarry`, `usubBorrow`, `umulExtended`, `imulExtended`) from 16-bit halves,
-//! `modf` from `trunc` and `frexp` from the float's bits. (`inverse` stays naga's: its
+//! `modf` from `trunc` and `frexp` from the float's bits; `noise1`–`noise4` as zero, what
+//! Mesa's and most drivers' implementations return (GLSL 4.40 deprecated them). (`inverse`
+//! stays naga's: its
 //! WGSL writer has it, and a definition of our own would hide the normal-matrix facts the
 //! hazard analysis reads from it.)
 
@@ -13,7 +15,7 @@ use std::fmt::Write;
 use super::Ctx;
 
 /// The built-ins replaced, with the name they are called by.
-const REPLACED: [(&str, &str); 10] = [
+const REPLACED: [(&str, &str); 14] = [
     ("isnan", "effectc_isnan"),
     ("isinf", "effectc_isinf"),
     ("outerProduct", "effectc_outerProduct"),
@@ -24,6 +26,10 @@ const REPLACED: [(&str, &str); 10] = [
     ("imulExtended", "effectc_imulExtended"),
     ("modf", "effectc_modf"),
     ("frexp", "effectc_frexp"),
+    ("noise1", "effectc_noise1"),
+    ("noise2", "effectc_noise2"),
+    ("noise3", "effectc_noise3"),
+    ("noise4", "effectc_noise4"),
 ];
 
 impl Ctx<'_> {
@@ -75,6 +81,12 @@ pub(super) fn definitions(used: &[&str]) -> String {
             }
             "uaddCarry" | "usubBorrow" | "umulExtended" | "imulExtended" | "modf" => integer_and_modf(&mut h, b),
             "frexp" => frexp(&mut h),
+            "noise1" | "noise2" | "noise3" | "noise4" => {
+                let result = if *b == "noise1" { "float".to_string() } else { format!("vec{}", &b[5..]) };
+                for arg in ["float", "vec2", "vec3", "vec4"] {
+                    let _ = writeln!(h, "{result} effectc_{b}({arg} x) {{ return {result}(0.0); }}");
+                }
+            }
             _ => {
                 // outerProduct(c, r): a matrix of r's size in columns, c's in rows; column i is c * r[i].
                 for rows in 2..=4 {

@@ -26,8 +26,11 @@ impl Ctx<'_> {
             self.edits.delete(decl);
             return;
         }
-        self.storage_keyword(first);
-        if idxs.len() == 1 {
+        let split = idxs.len() == 1 && first.block.is_none() && !first.ty.is_array() && matrix_shape(&first.ty.base).is_some();
+        if idxs.len() == 1 && !split {
+            // (A matrix split into columns and several names in one declaration are written
+            // out again below, keyword too.)
+            self.storage_keyword(first);
             self.flat_integer_output(first);
         }
         let kind = if is_vertex_input(s, first.storage) {
@@ -37,7 +40,7 @@ impl Ctx<'_> {
         } else {
             None
         };
-        if idxs.len() == 1 && first.block.is_none() && !first.ty.is_array() && matrix_shape(&first.ty.base).is_some() {
+        if split {
             let loc = match (first.location, kind) {
                 (Some(l), _) => l,
                 (None, Some(alloc)) => alloc.next(location_slots(&first.ty, s)),
