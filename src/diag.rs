@@ -139,6 +139,8 @@ pub struct Files {
     expansions: std::collections::HashMap<FileId, (FileId, Vec<Segment>)>,
     /// Texts effectc wrote (a fixed-function vertex stage), read from no file.
     generated: std::collections::HashSet<FileId>,
+    /// Joined texts of several shader objects of one stage: the files, as given.
+    joins: std::collections::HashMap<FileId, Vec<FileId>>,
 }
 
 impl Files {
@@ -161,10 +163,42 @@ impl Files {
         self.expansions.insert(id, (origin, segments));
         id
     }
+    /// Registers the text joining the shader objects `units` of one stage
+    /// (`front::units`), led by `main` (the file with `main`).
+    pub fn add_joined(&mut self, main: FileId, units: &[FileId], text: String, segments: Vec<Segment>) -> FileId {
+        let id = self.add_expanded(main, text, segments);
+        self.joins.insert(id, units.to_vec());
+        id
+    }
+    /// The shader objects a joined text is made of.
+    pub fn units_of(&self, id: FileId) -> Option<&[FileId]> {
+        self.joins.get(&id).map(Vec::as_slice)
+    }
+    /// The joined text of exactly these shader objects (any order).
+    pub fn joined(&self, units: &[FileId]) -> Option<FileId> {
+        let mut want = units.to_vec();
+        want.sort();
+        self.joins
+            .iter()
+            .find(|(_, u)| {
+                let mut u = (*u).clone();
+                u.sort();
+                u == want
+            })
+            .map(|(id, _)| *id)
+    }
     /// Where a span of `id` lies in the user's files: itself, or for an expanded text the
-    /// included (or including) file and offset it came from. A span crossing pieces is cut
-    /// at the end of the piece it starts in.
+    /// included (or including) file and offset it came from (through every level: a
+    /// joined text of files with `#include`s). A span crossing pieces is cut at the end of
+    /// the piece it starts in.
     pub fn resolve(&self, id: FileId, span: Option<Range<usize>>) -> (FileId, Option<Range<usize>>) {
+        let (file, span) = self.resolve_once(id, span);
+        if file != id && self.expansions.contains_key(&file) {
+            return self.resolve(file, span);
+        }
+        (file, span)
+    }
+    fn resolve_once(&self, id: FileId, span: Option<Range<usize>>) -> (FileId, Option<Range<usize>>) {
         let Some((origin, segments)) = self.expansions.get(&id) else { return (id, span) };
         let Some(span) = span else { return (*origin, None) };
         let seg = segments

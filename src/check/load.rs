@@ -96,7 +96,19 @@ fn read_all(stages: &[(PathBuf, StageKind)], files: &mut Files, l: &mut Loaded) 
     let read: Vec<Option<(FileId, StageKind)>> =
         stages.iter().map(|(path, kind)| read_stage(path, files, l).map(|id| (id, *kind))).collect();
     let read: Option<Vec<_>> = read.into_iter().collect();
-    read.filter(|r| !r.is_empty())
+    let read = read.filter(|r| !r.is_empty())?;
+    // Several files of one stage are shader objects GL links into it: effectc's own
+    // analysis reads them joined (`front::units`); the reference compiler, each one.
+    let mut kinds: Vec<StageKind> = read.iter().map(|(_, k)| *k).collect();
+    kinds.sort();
+    kinds.dedup();
+    for kind in kinds {
+        let units: Vec<FileId> = read.iter().filter(|(_, k)| *k == kind).map(|(f, _)| *f).collect();
+        if units.len() > 1 {
+            crate::front::units::join(files, &units);
+        }
+    }
+    Some(read)
 }
 
 /// The passes of a multi-pass effect: each one's view and stage files (a file two passes

@@ -36,4 +36,5 @@ pub mod reference;
 pub mod rewrite;
 pub mod syntax;
 pub mod through_spirv;
+pub mod units;
 pub mod version;

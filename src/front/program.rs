@@ -100,13 +100,28 @@ pub fn compile(
     }
     // glslang decides what is legal; effectc's own findings in a stage it accepts are
     // effectc's limits, not the user's errors ([`accept_what_glslang_accepts`]).
-    let judgement = reference::judge(files, &ordered, options.env);
+    let mut judgement = reference::judge(files, &ordered, options.env);
+    // Shader objects of one stage: effectc reads their joined text (`units`), glslang each.
+    let mut own_order = ordered.clone();
     if let Some(kind) = reference::repeated_stage(&ordered) {
-        diags.extend(units_judged_by_glslang(files, &ordered, kind, judgement));
-        return None;
+        match joined_stages(files, &ordered) {
+            Some(joined) => own_order = joined,
+            None => {
+                diags.extend(units_judged_by_glslang(files, &ordered, kind, judgement));
+                return None;
+            }
+        }
+    }
+    if let Some(j) = &mut judgement {
+        // A joined text is accepted where glslang accepts each of its files.
+        for &(f, _) in own_order.iter().filter(|(f, _)| !ordered.iter().any(|(o, _)| o == f)) {
+            let units = files.units_of(f).unwrap_or_default();
+            let accepted = units.iter().all(|u| j.stage(*u).is_some_and(|v| v.accepted));
+            j.stages.push(reference::StageVerdict { file: f, accepted, errors: Vec::new() });
+        }
     }
     let mut own = Vec::new();
-    let program = compile_own(files, &ordered, options, &mut own);
+    let program = compile_own(files, &own_order, options, &mut own);
     let Some(judgement) = judgement else {
         diags.extend(own);
         return program;
@@ -127,7 +142,9 @@ pub fn compile(
             }
         }
         p.reference = Some(judgement);
-        through_spirv_where_naga_refuses(files, &ordered, dialect, &mut p, diags);
+        if own_order == ordered {
+            through_spirv_where_naga_refuses(files, &ordered, dialect, &mut p, diags);
+        }
         p
     })
 }
@@ -169,6 +186,20 @@ fn through_spirv_where_naga_refuses(
     }
     let files_of: Vec<FileId> = ordered.iter().map(|(f, _)| *f).collect();
     diags.retain(|d| !(d.code == Code::NagaCannotTake && d.file.is_some_and(|f| files_of.contains(&f))));
+}
+
+/// The stages with every repeated stage's files replaced by their joined text
+/// ([`units`](crate::front::units)); `None` when one was not joined.
+fn joined_stages(files: &Files, ordered: &[(FileId, StageKind)]) -> Option<Vec<(FileId, StageKind)>> {
+    let mut out: Vec<(FileId, StageKind)> = Vec::new();
+    for &(f, kind) in ordered {
+        if out.iter().any(|(_, k)| *k == kind) {
+            continue;
+        }
+        let units: Vec<FileId> = ordered.iter().filter(|(_, k)| *k == kind).map(|(u, _)| *u).collect();
+        out.push(if units.len() > 1 { (files.joined(&units)?, kind) } else { (f, kind) });
+    }
+    Some(out)
 }
 
 /// A program with a stage made of several shader objects: glslang compiles each and links

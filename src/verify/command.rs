@@ -240,7 +240,11 @@ impl GlDrawer {
                 .stages
                 .iter()
                 .filter(|s| !files.is_generated(s.syntax.file))
-                .map(|s| (s.syntax.file, s.syntax.stage))
+                // The shader objects of a stage effectc read joined, as GL links them.
+                .flat_map(|s| match files.units_of(s.syntax.file) {
+                    Some(units) => units.iter().map(|u| (*u, s.syntax.stage)).collect::<Vec<_>>(),
+                    None => vec![(s.syntax.file, s.syntax.stage)],
+                })
                 .collect();
             let first = stages[0].0;
             let linked = program::link(gl, files, &stages)?;

@@ -1,5 +1,6 @@
-//! `[stages]`: one shader file per pipeline stage, checked to exist, with a warning when a
-//! file's extension names another stage and an error when compute is mixed with graphics.
+//! `[stages]`: a shader file per pipeline stage (or a list of them: shader objects GL links
+//! into that stage), checked to exist, with a warning when a file's extension names another
+//! stage and an error when compute is mixed with graphics.
 
 use std::ops::Range;
 
@@ -32,20 +33,27 @@ impl Ctx<'_> {
                 continue;
             };
             let what = format!("`stages.{kind}`");
-            let Some(path) = self.file_path(v, &what, Code::StageFileNotFound, "stage file") else {
-                continue;
+            // A list: shader objects GL links into the one stage (one of them has `main`).
+            let files: Vec<&Val<'_>> = match v.get_ref() {
+                toml::de::DeValue::Array(items) if !items.is_empty() => items.iter().collect(),
+                _ => vec![v],
             };
-            let implied = path.extension().and_then(|e| e.to_str()).and_then(StageKind::from_extension);
-            if let Some(other) = implied.filter(|&o| o != kind) {
-                let d = self.report(
-                    Code::StageExtension,
-                    v.span(),
-                    format!("the {kind} stage is a file whose extension means {other}"),
-                    format!("looks like a {other} shader"),
-                );
-                d.help = Some(format!("list it under `{other}` if that is what it is"));
+            for v in files {
+                let Some(path) = self.file_path(v, &what, Code::StageFileNotFound, "stage file") else {
+                    continue;
+                };
+                let implied = path.extension().and_then(|e| e.to_str()).and_then(StageKind::from_extension);
+                if let Some(other) = implied.filter(|&o| o != kind) {
+                    let d = self.report(
+                        Code::StageExtension,
+                        v.span(),
+                        format!("the {kind} stage is a file whose extension means {other}"),
+                        format!("looks like a {other} shader"),
+                    );
+                    d.help = Some(format!("list it under `{other}` if that is what it is"));
+                }
+                stages.push(StageRef { kind, path, span: v.span(), key_span: k.span() });
             }
-            stages.push(StageRef { kind, path, span: v.span(), key_span: k.span() });
         }
         stages.sort_by_key(|s| s.kind);
         if let Some(compute) = stages.iter().find(|s| s.kind == StageKind::Compute) {

@@ -1,0 +1,200 @@
+//! Several shader objects linked into one stage (GL links them as one: a single `main`,
+//! globals and functions shared by name) joined into one text for effectc's own analysis.
+//!
+//! The reference compiler still compiles and links the files one by one, as GL does; the
+//! joined text is registered like an `#include` expansion ([`Files::add_joined`]), so every
+//! span effectc reports in it is shown in the file and line it came from. The join:
+//! - the file with `main` goes last (the others define what it calls; its prototypes of
+//!   them are legal after the definitions);
+//! - one `#version` directive, the first file's (or the first one any file has), at the
+//!   top; the others are blanked, byte for byte;
+//! - a file-scope declaration a file repeats from an earlier one (`varying vec3 normal;` in
+//!   both, which GL links as one variable) is blanked in the later file.
+
+use std::collections::HashSet;
+
+use crate::diag::{FileId, Files, Segment};
+use crate::front::version::{blank_comments, parse_version};
+
+/// Joins `units` (the files of one stage) into one text; returns its id.
+pub fn join(files: &mut Files, units: &[FileId]) -> FileId {
+    let mut ordered: Vec<FileId> = units.to_vec();
+    ordered.sort_by_key(|f| defines_main(files.text(*f)));
+    let mut out = String::new();
+    let mut segments = Vec::new();
+    let directives: Vec<Option<std::ops::Range<usize>>> =
+        ordered.iter().map(|f| parse_version(files.text(*f)).ok().and_then(|v| v.directive)).collect();
+    // The directive goes first: the first file's own place, or lifted from another file.
+    let lifted = match directives.first() {
+        Some(Some(_)) => None,
+        _ => ordered.iter().zip(&directives).find_map(|(f, d)| d.clone().map(|d| (*f, d))),
+    };
+    if let Some((file, d)) = &lifted {
+        let text = &files.text(*file)[d.clone()];
+        segments.push(Segment { at: 0..text.len(), file: *file, start: d.start });
+        out.push_str(text);
+        out.push('\n');
+    }
+    let mut seen: HashSet<String> = HashSet::new();
+    let mut defined: HashSet<String> = HashSet::new();
+    for (i, (file, directive)) in ordered.iter().zip(&directives).enumerate() {
+        let mut text = files.text(*file).as_bytes().to_vec();
+        if let Some(d) = directive.clone().filter(|_| i > 0 || lifted.is_some()) {
+            blank(&mut text, d);
+        }
+        let clean = blank_comments(files.text(*file));
+        for statement in file_scope_statements(&clean) {
+            let key = normalised(&clean[statement.clone()]);
+            // A prototype of a function an earlier file defines (naga's parser refuses a
+            // prototype after the definition), or a declaration repeated from one.
+            let defined_before = prototype_name(&key).is_some_and(|n| defined.contains(n));
+            if !seen.insert(key) || defined_before {
+                blank(&mut text, statement);
+            }
+        }
+        defined.extend(defined_functions(&clean));
+        let start = out.len();
+        out.push_str(&String::from_utf8(text).unwrap_or_else(|_| files.text(*file).to_string()));
+        segments.push(Segment { at: start..out.len(), file: *file, start: 0 });
+        out.push('\n');
+    }
+    let main = *ordered.last().expect("a stage has files");
+    files.add_joined(main, units, out, segments)
+}
+
+/// Same-length spaces over `range` (line ends kept).
+fn blank(text: &mut [u8], range: std::ops::Range<usize>) {
+    for b in &mut text[range] {
+        if *b != b'\n' {
+            *b = b' ';
+        }
+    }
+}
+
+/// Whether `text` (a stage file) defines `main`.
+fn defines_main(text: &str) -> bool {
+    let clean = blank_comments(text);
+    let clean = String::from_utf8_lossy(&clean);
+    clean.match_indices("main").any(|(at, _)| {
+        let before = clean[..at].trim_end();
+        let after = clean[at + 4..].trim_start();
+        before.ends_with("void") && after.starts_with('(')
+    })
+}
+
+/// The spans of file-scope statements ending in `;` (declarations, prototypes), outside
+/// function bodies and preprocessor lines, in the comment-blanked text.
+fn file_scope_statements(clean: &[u8]) -> Vec<std::ops::Range<usize>> {
+    let mut out = Vec::new();
+    let (mut depth, mut start, mut i) = (0i32, 0usize, 0usize);
+    while i < clean.len() {
+        let c = clean[i];
+        let line_start = i == 0 || clean[i - 1] == b'\n';
+        if c == b'#' && (line_start || clean[..i].iter().rev().take_while(|b| **b != b'\n').all(u8::is_ascii_whitespace)) {
+            while i < clean.len() && clean[i] != b'\n' {
+                i += 1;
+            }
+            start = i;
+            continue;
+        }
+        match c {
+            b'{' => depth += 1,
+            b'}' => {
+                depth -= 1;
+                if depth == 0 {
+                    start = i + 1;
+                }
+            }
+            b';' if depth == 0 => {
+                out.push(start..i + 1);
+                start = i + 1;
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    out
+}
+
+/// The function a file-scope statement declares, when it is a prototype (`vec3 f(int a);`).
+fn prototype_name(statement: &str) -> Option<&str> {
+    if statement.contains('=') || statement.contains('{') || !statement.trim_end_matches(';').trim_end().ends_with(')') {
+        return None;
+    }
+    let open = statement.find('(')?;
+    let name = statement[..open].trim_end().rsplit(|c: char| !c.is_ascii_alphanumeric() && c != '_').next()?;
+    (!name.is_empty()).then_some(name)
+}
+
+/// Names of the functions `clean` (comment-blanked) defines: `name(…) {` at file scope.
+fn defined_functions(clean: &[u8]) -> Vec<String> {
+    let text = String::from_utf8_lossy(clean);
+    let bytes = text.as_bytes();
+    let mut out = Vec::new();
+    let mut depth = 0i32;
+    for (i, &c) in bytes.iter().enumerate() {
+        match c {
+            b'{' => {
+                if depth == 0 {
+                    let head = text[..i].trim_end();
+                    if let Some(open) = head.strip_suffix(')').and_then(|h| matching_open(h.as_bytes())) {
+                        let name = head[..open].trim_end().rsplit(|c: char| !c.is_ascii_alphanumeric() && c != '_').next().unwrap_or("");
+                        if !name.is_empty() {
+                            out.push(name.to_string());
+                        }
+                    }
+                }
+                depth += 1;
+            }
+            b'}' => depth -= 1,
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The offset of the `(` that the `)` just after `text` closes.
+fn matching_open(text: &[u8]) -> Option<usize> {
+    let mut depth = 1;
+    for i in (0..text.len()).rev() {
+        match text[i] {
+            b')' => depth += 1,
+            b'(' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// A statement with its whitespace collapsed (so `varying  vec3 n;` repeats `varying vec3 n;`).
+fn normalised(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn helpers_first_one_directive_repeated_declarations_once() {
+        let mut files = Files::new();
+        let main = files.add("a.vert", "#version 120\nvarying vec3 n;\nvec3 f();\nvoid main() { n = f(); gl_Position = vec4(0.0); }\n");
+        let helper = files.add("b.vert", "#version 120\nvarying  vec3 n;\nvec3 f() { return gl_Normal; }\n");
+        let joined = join(&mut files, &[main, helper]);
+        let text = files.text(joined).to_string();
+        assert_eq!(text.matches("#version").count(), 1, "{text}");
+        assert_eq!(text.matches("varying").count(), 1, "{text}");
+        assert!(text.find("return gl_Normal").unwrap() < text.find("void main").unwrap(), "{text}");
+        // Spans map back to the file they came from.
+        let at = text.find("f() { return").unwrap();
+        let (file, span) = files.resolve(joined, Some(at..at + 1));
+        assert_eq!(file, helper);
+        assert_eq!(&files.text(helper)[span.unwrap()], "f");
+        assert_eq!(files.units_of(joined), Some(&[main, helper][..]));
+    }
+}
