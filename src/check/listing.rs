@@ -20,11 +20,15 @@ pub struct UniformInfo {
     pub ty: String,
     /// The manifest's default.
     pub default: Option<UniformValue>,
+    /// The GLSL initializer's value (`uniform float k = 0.5;`): the value where the
+    /// manifest gives none, as in GL.
+    pub initializer: Option<UniformValue>,
     /// `[lo, hi]` from the manifest.
     pub range: Option<(f64, f64)>,
     /// The manifest's semantic, or the one its name suggests (`guessed` is then true).
     pub semantic: Option<Semantic>,
-    /// No manifest value: the renderer guesses one (a semantic by name, else a constant).
+    /// No manifest value and no initializer: the renderer guesses one (a semantic by name,
+    /// else a constant).
     pub guessed: bool,
     /// Some stage reads it.
     pub read: bool,
@@ -39,17 +43,21 @@ fn one(c: &Checked) -> ProgramUniforms {
     let mut uniforms: Vec<UniformInfo> = Vec::new();
     for unit in &c.units {
         let stages: Vec<_> = unit.program.stages.iter().map(|s| s.syntax.clone()).collect();
+        let initial = crate::front::initial_values::of(&unit.program);
         for s in crate::link::declared::settable(&stages) {
             if uniforms.iter().any(|u| u.name == s.name) {
                 continue;
             }
             let entry = unit.effect.as_ref().and_then(|e| e.uniforms.iter().find(|u| u.name == s.name));
             let guess = crate::manifest::guess::semantic_by_name(&s.name, shape(&s.ty), !s.ty.starts_with(['i', 'u', 'b']));
+            let initializer = initial.iter().find(|(n, _)| *n == s.name).map(|(_, v)| v.clone());
+            let guessed = entry.is_none() && initializer.is_none();
             uniforms.push(UniformInfo {
                 default: entry.and_then(|e| e.value.clone()),
+                initializer,
                 range: entry.and_then(|e| e.range),
-                semantic: entry.map_or(guess, |e| e.semantic),
-                guessed: entry.is_none(),
+                semantic: entry.map_or(guess.filter(|_| guessed), |e| e.semantic),
+                guessed,
                 name: s.name,
                 ty: s.ty,
                 read: s.read,
@@ -81,6 +89,9 @@ pub fn text(programs: &[ProgramUniforms]) -> String {
             let mut what = Vec::new();
             if let Some(v) = &u.default {
                 what.push(format!("default {}", serde_json::to_string(v).unwrap_or_default()));
+            }
+            if let (Some(v), None) = (&u.initializer, &u.default) {
+                what.push(format!("initializer {}", serde_json::to_string(v).unwrap_or_default()));
             }
             if let Some((lo, hi)) = u.range {
                 what.push(format!("range [{lo}, {hi}]"));

@@ -26,6 +26,7 @@ pub mod edits;
 pub mod geometry_fold;
 pub mod geometry_layout;
 pub mod includes;
+pub mod initial_values;
 pub mod lexical;
 pub mod limitation;
 pub mod limits;

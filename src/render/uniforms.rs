@@ -46,7 +46,7 @@ pub struct Guessed {
 
 /// Builds the buffers of every uniform-address-space global that has a binding.
 /// `overrides` (`--set`, a bench knob, a stress case) win over the effect's values and
-/// over guesses; `initial` (the GLSL initializers of uniforms, [`initial_values`]) give the
+/// over guesses; `initial` (the GLSL initializers of uniforms, [`front::initial_values`](crate::front::initial_values)) give the
 /// value of a uniform the effect does not mention.
 pub fn buffers(
     module: &Module,
@@ -187,27 +187,6 @@ fn gl_state(
         write_slot(module, slot, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{path}`: {e}"))?;
     }
     Ok(())
-}
-
-/// The values GLSL initializers give the program's uniforms (`uniform float k = 0.5;`),
-/// read from the constants the rewrite declares for them
-/// ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)).
-pub fn initial_values(program: &crate::front::program::CompiledProgram) -> Vec<(String, UniformValue)> {
-    let mut out: Vec<(String, UniformValue)> = Vec::new();
-    for stage in &program.stages {
-        let Some(v) = &stage.naga else { continue };
-        let module = &v.module;
-        for (_, c) in module.constants.iter() {
-            let Some(name) = c.name.as_deref().and_then(|n| n.strip_prefix(crate::front::rewrite::INITIAL_PREFIX)) else { continue };
-            if out.iter().any(|(n, _)| n == name) {
-                continue;
-            }
-            if let Some(value) = crate::back::reflect::constant_value(module, c.init) {
-                out.push((name.to_string(), value));
-            }
-        }
-    }
-    out
 }
 
 /// `lights[0].color` → `lights`.

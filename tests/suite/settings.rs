@@ -225,4 +225,10 @@ fn list_uniforms_shows_types_defaults_and_guesses() {
     let uniforms = &doc["programs"][0]["uniforms"];
     let time = uniforms.as_array().unwrap().iter().find(|u| u["name"] == "iTime").expect("iTime listed");
     assert_eq!((time["type"].as_str(), time["semantic"].as_str(), time["guessed"].as_bool()), (Some("float"), Some("time"), Some(true)));
+    // A GLSL initializer is the value where the manifest gives none, as in GL: not a guess.
+    let out = effectc(&["check", "--list-uniforms", "--format", "json", "tests/verify/compat/uniform_initializers"]);
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let c = doc["programs"][0]["uniforms"].as_array().unwrap().iter().find(|u| u["name"] == "c").expect("c listed").clone();
+    assert_eq!(c["initializer"], serde_json::json!([0.1, 0.5, 0.9]), "{c}");
+    assert_eq!(c["guessed"], false, "{c}");
 }

@@ -534,32 +534,6 @@ pub fn resolve_path(module: &Module, ty: Handle<Type>, path: &str) -> Option<(u3
     Some((offset, cur))
 }
 
-/// The value of a constant expression of `module` (a GLSL initializer naga evaluated):
-/// scalars, vectors, matrices (column by column) and arrays; `None` for what a uniform
-/// value cannot hold (structs, zero values of aggregates).
-pub fn constant_value(module: &Module, expr: Handle<naga::Expression>) -> Option<UniformValue> {
-    use naga::{Expression, Literal};
-    Some(match &module.global_expressions[expr] {
-        Expression::Literal(l) => match *l {
-            Literal::F32(x) => UniformValue::Float(f64::from(x)),
-            Literal::F64(x) => UniformValue::Float(x),
-            Literal::I32(x) => UniformValue::Int(i64::from(x)),
-            Literal::U32(x) => UniformValue::Int(i64::from(x)),
-            Literal::Bool(b) => UniformValue::Bool(b),
-            _ => return None,
-        },
-        Expression::Compose { ty, components } => {
-            if matches!(module.types[*ty].inner, TypeInner::Struct { .. }) {
-                return None;
-            }
-            UniformValue::List(components.iter().map(|c| constant_value(module, *c)).collect::<Option<Vec<_>>>()?)
-        }
-        Expression::Splat { size, value } => UniformValue::List(vec![constant_value(module, *value)?; *size as usize]),
-        Expression::Constant(c) => constant_value(module, module.constants[*c].init)?,
-        _ => return None,
-    })
-}
-
 /// Why a value could not be packed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PackError(pub String);

@@ -76,7 +76,7 @@ pub enum Draw {
 pub struct Scene {
     pub name: String,
     pub module: naga::Module,
-    /// The values GLSL initializers give uniforms ([`uniforms::initial_values`]).
+    /// The values GLSL initializers give uniforms ([`front::initial_values`](crate::front::initial_values)).
     pub initial: Vec<(String, crate::manifest::UniformValue)>,
     pub pipeline: wgpu::RenderPipeline,
     pub vertex_buffer: Option<wgpu::Buffer>,
@@ -254,7 +254,7 @@ impl Scene {
             storage,
             degenerate,
             replay,
-            initial: uniforms::initial_values(input.program),
+            initial: crate::front::initial_values::of(input.program),
         })
     }
 }
@@ -388,7 +388,7 @@ fn uniform_buffers(
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
     let (uniform_data, guessed) =
-        uniforms::buffers(&input.translation.module, input.effect, &uniforms::initial_values(input.program), input.overrides)
+        uniforms::buffers(&input.translation.module, input.effect, &crate::front::initial_values::of(input.program), input.overrides)
             .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
         let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));

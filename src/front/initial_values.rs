@@ -1,0 +1,56 @@
+//! The values GLSL initializers give uniforms (`uniform float k = 0.5;`, GLSL 1.20): GL
+//! starts such a uniform at its initializer. The rewrite declares each as a constant
+//! ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)) that naga evaluates; they
+//! are read back here, for the renderer and `--list-uniforms`.
+
+use naga::{Handle, Module};
+
+use crate::manifest::UniformValue;
+
+/// The values GLSL initializers give the program's uniforms (`uniform float k = 0.5;`),
+/// read from the constants the rewrite declares for them
+/// ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)).
+pub fn of(program: &crate::front::program::CompiledProgram) -> Vec<(String, UniformValue)> {
+    let mut out: Vec<(String, UniformValue)> = Vec::new();
+    for stage in &program.stages {
+        let Some(v) = &stage.naga else { continue };
+        let module = &v.module;
+        for (_, c) in module.constants.iter() {
+            let Some(name) = c.name.as_deref().and_then(|n| n.strip_prefix(crate::front::rewrite::INITIAL_PREFIX)) else { continue };
+            if out.iter().any(|(n, _)| n == name) {
+                continue;
+            }
+            if let Some(value) = constant_value(module, c.init) {
+                out.push((name.to_string(), value));
+            }
+        }
+    }
+    out
+}
+
+/// The value of a constant expression of `module` (a GLSL initializer naga evaluated):
+/// scalars, vectors, matrices (column by column) and arrays; `None` for what a uniform
+/// value cannot hold (structs, zero values of aggregates).
+pub fn constant_value(module: &Module, expr: Handle<naga::Expression>) -> Option<UniformValue> {
+    use naga::{Expression, Literal, TypeInner};
+    Some(match &module.global_expressions[expr] {
+        Expression::Literal(l) => match *l {
+            // The shortest decimal of the f32 (0.1, not 0.10000000149011612): the same bits.
+            Literal::F32(x) => UniformValue::Float(x.to_string().parse().unwrap_or(f64::from(x))),
+            Literal::F64(x) => UniformValue::Float(x),
+            Literal::I32(x) => UniformValue::Int(i64::from(x)),
+            Literal::U32(x) => UniformValue::Int(i64::from(x)),
+            Literal::Bool(b) => UniformValue::Bool(b),
+            _ => return None,
+        },
+        Expression::Compose { ty, components } => {
+            if matches!(module.types[*ty].inner, TypeInner::Struct { .. }) {
+                return None;
+            }
+            UniformValue::List(components.iter().map(|c| constant_value(module, *c)).collect::<Option<Vec<_>>>()?)
+        }
+        Expression::Splat { size, value } => UniformValue::List(vec![constant_value(module, *value)?; *size as usize]),
+        Expression::Constant(c) => constant_value(module, module.constants[*c].init)?,
+        _ => return None,
+    })
+}
