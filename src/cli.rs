@@ -257,9 +257,10 @@ pub struct RenderArgs {
     /// Render into Rgba32Float and count NaN/Inf pixels per frame (masks written; exit 1 if any).
     #[arg(long)]
     pub float: bool,
-    /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop).
-    #[arg(long, default_value = "5", value_parser = parse_timeout, allow_negative_numbers = true)]
-    pub timeout: Duration,
+    /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop;
+    /// default 5, or 30 on a software renderer such as lavapipe).
+    #[arg(long, value_parser = parse_timeout, allow_negative_numbers = true)]
+    pub timeout: Option<Duration>,
     /// Print GPU and CPU milliseconds per frame and the time to the first frame.
     #[arg(long)]
     pub timings: bool,
@@ -307,9 +308,10 @@ pub struct VerifyArgs {
     /// max_differing`, else 0.1).
     #[arg(long, value_parser = parse_percent)]
     pub max_differing: Option<f64>,
-    /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop).
-    #[arg(long, default_value = "5", value_parser = parse_timeout, allow_negative_numbers = true)]
-    pub timeout: Duration,
+    /// Seconds a frame may take on the GPU before the run stops (a shader stuck in a loop;
+    /// default 5, or 30 on a software renderer such as lavapipe).
+    #[arg(long, value_parser = parse_timeout, allow_negative_numbers = true)]
+    pub timeout: Option<Duration>,
     /// Print the adapter and the GL renderer.
     #[arg(long)]
     pub verbose: bool,

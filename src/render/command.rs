@@ -58,7 +58,8 @@ pub struct Request {
     pub contact_sheet: bool,
     pub gif: bool,
     pub float: bool,
-    pub timeout: Duration,
+    /// Seconds a frame may take; `None`: [`Gpu::default_frame_timeout`].
+    pub timeout: Option<Duration>,
     /// Show a progress bar (on a terminal, outside CI).
     pub progress: bool,
     /// When the process started, for the time to the first frame.
@@ -88,7 +89,7 @@ impl Request {
             contact_sheet: false,
             gif: false,
             float: false,
-            timeout: Duration::from_secs(5),
+            timeout: None,
             progress: false,
             started: Instant::now(),
             dump_targets: false,
@@ -301,7 +302,7 @@ fn draw_frames(
         for i in 0..plan.frames {
             let time = plan.start + f64::from(i) * plan.step;
             let state = frame_state(drawer, i, time, plan.step, plan.size);
-            match drawer.draw(gpu, &state, request.timeout) {
+            match drawer.draw(gpu, &state, request.timeout.unwrap_or_else(|| gpu.default_frame_timeout())) {
                 Ok(Frame { pixels, gpu_ms, cpu_ms, dumps }) => {
                     reports.push(FrameReport { index: i, time, gpu_ms, cpu_ms, non_finite: None });
                     if tx.send(Drawn { index: i, pixels, dumps }).is_err() {

@@ -37,6 +37,12 @@ fn kind_rank(t: wgpu::DeviceType) -> u8 {
 }
 
 impl Gpu {
+    /// How long a frame may take when the user does not say: 5 s on a GPU, 30 s on a
+    /// software rasterizer (lavapipe, WARP), where a correct heavy frame takes seconds.
+    pub fn default_frame_timeout(&self) -> std::time::Duration {
+        std::time::Duration::from_secs(if self.info.device_type == wgpu::DeviceType::Cpu { 30 } else { 5 })
+    }
+
     /// Opens the chosen Vulkan adapter.
     pub fn new() -> Result<Gpu, NoGpu> {
         // Mesa's Vulkan loader complains on stderr when this is unset (headless machines,

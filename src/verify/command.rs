@@ -412,7 +412,7 @@ fn draw_and_compare(
     for i in 0..plan.frames {
         let time = plan.start + f64::from(i) * plan.step;
         let state = frame_state(drawer, i, time, plan.step, plan.size);
-        let translated = match drawer.draw(gpu, &state, request.render.timeout) {
+        let translated = match drawer.draw(gpu, &state, request.render.timeout.unwrap_or_else(|| gpu.default_frame_timeout())) {
             Ok(Frame { pixels: Pixels::Rgba8(p), .. }) => p,
             Ok(_) => return None,
             Err(FrameError::Timeout(t)) => {
