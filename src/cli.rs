@@ -489,7 +489,12 @@ impl TranslateArgs {
         targets.dedup();
         translate::Request {
             input: self.common.input_spec(config),
-            back: TranslateOptions { gl_depth: !self.keep_gl_depth, ..TranslateOptions::default() },
+            // 64-bit floats are kept when every target has them (SPIR-V, HLSL).
+            back: TranslateOptions {
+                gl_depth: !self.keep_gl_depth,
+                float64: targets.iter().all(|t| matches!(t, Target::Spv | Target::Spvasm | Target::Hlsl | Target::Reflect | Target::Ir)),
+                ..TranslateOptions::default()
+            },
             targets,
             out: self.out.clone(),
         }

@@ -81,18 +81,21 @@ pub struct TranslateOptions {
     /// Negate clip y so the framebuffer runs bottom-up like GL's (`gl_FragCoord.y`, `dFdy`
     /// as in GL); the renderer flips rows back and treats clockwise faces as front faces.
     pub flip_y: bool,
+    /// Keep 64-bit floats (`double`, `dvec*`): every target asked for has them (SPIR-V with
+    /// the Float64 capability, HLSL); WGSL, MSL and GLSL ES do not.
+    pub float64: bool,
 }
 
 impl Default for TranslateOptions {
     fn default() -> Self {
-        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false }
+        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false, float64: false }
     }
 }
 
 impl TranslateOptions {
     /// What `effectc render` translates with: the render-only adaptations on.
     pub fn for_rendering(gl_depth: bool) -> Self {
-        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true }
+        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, float64: false }
     }
 }
 
@@ -133,7 +136,7 @@ pub fn translate(
         return Err(vec![Diagnostic::new(Code::StageNotValid, "the program has no stages to translate")]);
     };
     let file = first.syntax.file;
-    let modules = stage_modules(program)?;
+    let modules = stage_modules(program, options.float64)?;
     let refs: Vec<(StageKind, &Module)> = modules.iter().map(|(k, m)| (*k, m)).collect();
     let mut module = merge::merge(&refs).map_err(|c| {
         vec![Diagnostic::new(Code::BindingConflict, format!("the stages cannot share one module: {}", c.0))
@@ -146,8 +149,14 @@ pub fn translate(
     if options.widen_outputs {
         fixes::widen_fragment_outputs(&mut module);
     }
-    // Compaction assumes a valid module; prove it first.
-    crate::front::naga_run::validator()
+    // Compaction assumes a valid module; prove it first (with 64-bit floats where every
+    // target has them).
+    let validator = || {
+        let caps = crate::front::naga_run::webgpu_capabilities()
+            | if options.float64 { naga::valid::Capabilities::FLOAT64 } else { naga::valid::Capabilities::empty() };
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps)
+    };
+    validator()
         .validate(&module)
         .map_err(|e| vec![internal_error(file, format!("the merged module does not validate: {}", e.as_inner()))])?;
     let mut left_out = prune::prune(&mut module, UNIFORM_BLOCK);
@@ -170,7 +179,7 @@ pub fn translate(
     }
     fixes::read_only_unwritten_storage(&mut module);
     fixes::narrow_storage_image_access(&mut module);
-    let info = crate::front::naga_run::validator()
+    let info = validator()
         .validate(&module)
         .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
     let reflection = reflect::reflect_program(name, &module, program, effect, left_out);
@@ -187,7 +196,7 @@ pub fn translate(
 /// Each stage's validated module, fixed per stage, in pipeline order (the vertex stage's
 /// is the fold of the vertex and geometry stages when there is a geometry stage); or why
 /// a stage cannot be translated.
-fn stage_modules(program: &CompiledProgram) -> Result<Vec<(StageKind, Module)>, Vec<Diagnostic>> {
+fn stage_modules(program: &CompiledProgram, float64: bool) -> Result<Vec<(StageKind, Module)>, Vec<Diagnostic>> {
     let mut diags = Vec::new();
     let mut modules = Vec::new();
     for stage in &program.stages {
@@ -242,7 +251,12 @@ fn stage_modules(program: &CompiledProgram) -> Result<Vec<(StageKind, Module)>, 
         // A folded geometry stage hands `gl_PrimitiveID` to the fragment stage as a varying.
         let folded_primitive = program.fold().map(|f| f.drawn.primitive_location).filter(|_| kind == StageKind::Fragment);
         let needs_of = |v: &crate::front::naga_run::Validated| -> Vec<String> {
-            v.needs.iter().filter(|n| !(folded_primitive.is_some() && n.as_str() == "PRIMITIVE_INDEX")).cloned().collect()
+            v.needs
+                .iter()
+                .filter(|n| !(folded_primitive.is_some() && n.as_str() == "PRIMITIVE_INDEX"))
+                .filter(|n| !(float64 && n.as_str() == "FLOAT64"))
+                .cloned()
+                .collect()
         };
         if let Some(validated) = stage.naga.as_ref().filter(|v| !needs_of(v).is_empty()) {
             diags.push(
@@ -314,7 +328,11 @@ fn capability_help(needs: &[String]) -> String {
             _ => "arrays of textures, samplers or buffers (binding arrays)",
         })
         .collect();
-    format!("the construct: {}", what.join("; "))
+    let mut help = format!("the construct: {}", what.join("; "));
+    if needs.iter().any(|n| n == "FLOAT64") {
+        help.push_str("; SPIR-V and HLSL have 64-bit floats: `effectc translate --to spv,spvasm,hlsl` keeps them");
+    }
+    help
 }
 
 /// An internal error of the translation (E0305): a bug, not the user's input.

@@ -287,3 +287,28 @@ fn folders_form_the_programs_their_layout_means() {
     let out = effectc(&["check", "--format", "sarif", empty.to_str().unwrap()]);
     assert_eq!(code(&out), 1, "a CI format fails when nothing was checked");
 }
+
+#[test]
+fn doubles_are_kept_for_the_targets_that_have_them() {
+    // `dvec4`/`double` (GLSL 4.00): WGSL, MSL and GLSL ES have no 64-bit floats (E0306, naming
+    // the targets that do); SPIR-V (Float64 capability) and HLSL keep them.
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("doubles");
+    std::fs::create_dir_all(&dir).unwrap();
+    let frag = dir.join("d.frag");
+    std::fs::write(
+        &frag,
+        "#version 400\nuniform dvec4 x;\nuniform double s;\nout vec4 c;\nvoid main() { c = vec4(x * s + dvec4(1.0LF)); }\n",
+    )
+    .unwrap();
+    let out = effectc(&["check", frag.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let out = effectc(&["translate", frag.to_str().unwrap(), "--out", dir.join("wgsl").to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0306") && stdout(&out).contains("--to spv,spvasm,hlsl"), "{}", stdout(&out));
+    let kept = dir.join("kept");
+    let out = effectc(&["translate", frag.to_str().unwrap(), "--to", "spvasm,hlsl", "--out", kept.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let asm = std::fs::read_to_string(kept.join("d.frag.spvasm")).unwrap();
+    assert!(asm.contains("OpCapability Float64") && asm.contains("OpTypeFloat 64"), "{asm}");
+    assert!(std::fs::read_to_string(kept.join("d.hlsl")).unwrap().contains("double4"));
+}
