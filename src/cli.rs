@@ -220,6 +220,10 @@ pub struct FrameArgs {
     /// Frame size `WIDTHxHEIGHT` (default: the manifest's `[render] size`, else 512x512).
     #[arg(long, value_parser = parse_size)]
     pub size: Option<(u32, u32)>,
+    /// GL's uniform rules: a uniform nobody gave a value (manifest, `--set`, GLSL
+    /// initializer) is zero, as in GL, instead of a guess by its name.
+    #[arg(long)]
+    pub gl_defaults: bool,
 }
 
 impl FrameArgs {
@@ -337,6 +341,7 @@ impl VerifyArgs {
         render.step = f.step();
         render.start = f.start;
         render.size = f.size;
+        render.gl_defaults = f.gl_defaults;
         render.out = self.out.clone();
         render.timeout = self.timeout;
         crate::verify::command::VerifyRequest { render, tolerance: self.tolerance, max_differing: self.max_differing }
@@ -543,6 +548,7 @@ impl RenderArgs {
             started,
             dump_targets: self.dump_targets,
             timings: self.timings,
+            gl_defaults: f.gl_defaults,
             only: None,
         }
     }

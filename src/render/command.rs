@@ -66,6 +66,8 @@ pub struct Request {
     pub started: Instant,
     /// Multi-pass effects: write every intermediate target too (nothing pruned or shared).
     pub dump_targets: bool,
+    /// `--gl-defaults`: uniforms nobody set are zero, as in GL (no guesses).
+    pub gl_defaults: bool,
     /// `--timings`: time frames with GPU timestamp queries.
     pub timings: bool,
     /// `--watch` after a change: render only the programs that read one of these files
@@ -75,7 +77,7 @@ pub struct Request {
 
 impl Request {
     /// A request for what `input` names with every flag at its default (the manifest's
-    /// frames, size and frame rate; 5 s timeout; frames to `out/<effect>/frames/`).
+    /// frames, size and frame rate; the adapter's frame timeout; frames to `out/<effect>/frames/`).
     pub fn new(input: check::InputSpec) -> Request {
         Request {
             input,
@@ -93,6 +95,7 @@ impl Request {
             progress: false,
             started: Instant::now(),
             dump_targets: false,
+            gl_defaults: false,
             timings: false,
             only: None,
         }
@@ -105,7 +108,13 @@ impl Request {
 
     /// What building each program takes from these flags.
     pub fn build_settings(&self) -> BuildSettings {
-        BuildSettings { back: self.back, size: self.size, dump_targets: self.dump_targets, timestamps: self.timings }
+        BuildSettings {
+            back: self.back,
+            size: self.size,
+            dump_targets: self.dump_targets,
+            timestamps: self.timings,
+            gl_defaults: self.gl_defaults,
+        }
     }
 }
 

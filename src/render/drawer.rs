@@ -33,6 +33,8 @@ pub struct BuildSettings {
     /// otherwise the wall time of the wait stands in. The queries cost a second readback
     /// per frame, so only `--timings` and `bench` ask for them.
     pub timestamps: bool,
+    /// Uniforms nobody set are zero, as in GL, instead of guessed.
+    pub gl_defaults: bool,
 }
 
 /// Changes a translation before it is built (`stress` instruments it): called with the
@@ -207,7 +209,14 @@ pub(crate) fn build(
                     Some(PassProgram { index: *i, translation: t, wgsl, program: &unit.program, view })
                 })
                 .collect();
-            let options = GraphOptions { mode, flipped_y, dump: settings.dump_targets, output_size: size, degenerate };
+            let options = GraphOptions {
+                mode,
+                flipped_y,
+                dump: settings.dump_targets,
+                output_size: size,
+                degenerate,
+                gl_defaults: settings.gl_defaults,
+            };
             let graph = PassGraph::new(gpu, effect, plan.clone(), &programs, options)?;
             Ok((Drawer::Graph(Box::new(graph)), effect.file))
         }
@@ -225,6 +234,7 @@ pub(crate) fn build(
                 pass: None,
                 degenerate,
                 overrides,
+                gl_defaults: settings.gl_defaults,
             };
             let scene = Scene::new(gpu, &input)?;
             let target = FrameTarget::new(gpu, &scene, (size.0, size.1, mode), settings.timestamps);

@@ -83,8 +83,13 @@ impl<'c> MemoryDrawer<'c> {
         m: MemoryRequest,
         instrument: Option<Instrument<'_>>,
     ) -> Option<Self> {
-        let settings =
-            BuildSettings { back: TranslateOptions::for_rendering(true), size: Some(m.size), dump_targets: false, timestamps: true };
+        let settings = BuildSettings {
+            back: TranslateOptions::for_rendering(true),
+            size: Some(m.size),
+            dump_targets: false,
+            timestamps: true,
+            gl_defaults: false,
+        };
         let prepared = prepare(c, outcome, &settings, instrument)?;
         let mode = if m.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
         match build(gpu, &prepared, c, (m.size, mode), &settings, BuildVariant { overrides, degenerate: m.degenerate }) {
@@ -103,7 +108,7 @@ impl<'c> MemoryDrawer<'c> {
         let c = self.c;
         for (pass, scene) in drawer.scenes_mut() {
             let effect = c.unit(pass).and_then(|u| u.effect.as_ref()).map(|e| with_overrides(e, overrides));
-            let (buffers, _) = uniforms::buffers(&scene.module, effect.as_ref(), &scene.initial, overrides)?;
+            let (buffers, _) = uniforms::buffers(&scene.module, effect.as_ref(), &scene.initial, overrides, true)?;
             for (data, (old, _)) in buffers.into_iter().zip(&mut scene.uniforms) {
                 *old = data;
             }

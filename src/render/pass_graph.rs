@@ -40,6 +40,8 @@ pub struct GraphOptions {
     pub output_size: (u32, u32),
     /// `effectc stress`: passes that draw a mesh draw this variant of it.
     pub degenerate: Option<crate::assets::degenerate::Degenerate>,
+    /// Uniforms nobody set are zero, as in GL (`--gl-defaults`).
+    pub gl_defaults: bool,
 }
 
 /// A pass as it runs every frame.
@@ -126,7 +128,7 @@ impl PassGraph {
         programs: &[PassProgram<'_>],
         options: GraphOptions,
     ) -> Result<PassGraph, Vec<Diagnostic>> {
-        let GraphOptions { mode, flipped_y, dump, output_size, degenerate } = options;
+        let GraphOptions { mode, flipped_y, dump, output_size, degenerate, gl_defaults } = options;
         let output_name = effect.output.as_ref().map(|o| o.name.clone()).unwrap_or_default();
         let textures = create_textures(gpu, &plan, mode);
         let view_of = |target: &str| plan.texture_of(target).map(|i| textures[i].create_view(&Default::default()));
@@ -167,6 +169,7 @@ impl PassGraph {
                 pass: Some(binding),
                 degenerate,
                 overrides: &[],
+                gl_defaults,
             };
             let mut scene = match Scene::new(gpu, &input) {
                 Ok(s) => s,

@@ -47,19 +47,21 @@ pub struct Guessed {
 /// Builds the buffers of every uniform-address-space global that has a binding.
 /// `overrides` (`--set`, a bench knob, a stress case) win over the effect's values and
 /// over guesses; `initial` (the GLSL initializers of uniforms, [`front::initial_values`](crate::front::initial_values)) give the
-/// value of a uniform the effect does not mention.
+/// value of a uniform the effect does not mention. Without `guesses` (`--gl-defaults`) a
+/// uniform nothing gives a value is zero, as in GL.
 pub fn buffers(
     module: &Module,
     effect: Option<&Effect>,
     initial: &[(String, UniformValue)],
     overrides: &[(String, UniformValue)],
+    guesses: bool,
 ) -> Result<(Vec<UniformBuffer>, Vec<Guessed>), String> {
     let mut out = Vec::new();
     let mut guessed = Vec::new();
     for (_, g) in module.global_variables.iter() {
         let (naga::AddressSpace::Uniform, Some(rb)) = (g.space, &g.binding) else { continue };
         let mut buffer = UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new() };
-        fill_block(module, g.ty, effect, initial, &mut buffer, &mut guessed)?;
+        fill_block(module, g.ty, effect, initial, guesses, &mut buffer, &mut guessed)?;
         for (name, value) in overrides {
             if let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, g.ty, name) {
                 write_slot(module, slot_ty, offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
@@ -109,6 +111,7 @@ fn fill_block(
     ty: Handle<Type>,
     effect: Option<&Effect>,
     initial: &[(String, UniformValue)],
+    guesses: bool,
     buffer: &mut UniformBuffer,
     guessed: &mut Vec<Guessed>,
 ) -> Result<(), String> {
@@ -135,7 +138,7 @@ fn fill_block(
             }
             if let Some((_, value)) = initial.iter().find(|(n, _)| *n == name) {
                 write_slot(module, m.ty, m.offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`'s initializer: {e}"))?;
-            } else {
+            } else if guesses {
                 guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
             }
             continue;

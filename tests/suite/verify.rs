@@ -266,3 +266,27 @@ fn every_rewrite_program_matches_the_gl_driver() {
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+#[test]
+fn gl_defaults_leave_unset_uniforms_at_zero_as_gl_does() {
+    // Without a value anywhere, `render` guesses (white for `color`, W0403); with
+    // `--gl-defaults` the uniform is zero, as GL starts it, and the frame still matches GL.
+    if !can_verify() {
+        return;
+    }
+    let dir = scratch("verify-gl-defaults", "program");
+    std::fs::create_dir_all(&dir).unwrap();
+    let vert = dir.join("gd.vert");
+    let frag = dir.join("gd.frag");
+    std::fs::write(&vert, "#version 120\nvoid main() { gl_Position = gl_Vertex; }\n").unwrap();
+    std::fs::write(&frag, "#version 120\nuniform vec4 color;\nuniform float k = 0.5;\nvoid main() { gl_FragColor = color + vec4(k); }\n")
+        .unwrap();
+    let (v, f) = (vert.to_str().unwrap(), frag.to_str().unwrap());
+    let guessed = effectc(&["verify", v, f, "--size", "16x16", "--out", dir.join("guessed").to_str().unwrap()]);
+    assert!(code(&guessed) == 0 && stdout(&guessed).contains("W0403"), "{}", stdout(&guessed));
+    let zero = effectc(&["verify", v, f, "--size", "16x16", "--gl-defaults", "--out", dir.join("zero").to_str().unwrap()]);
+    assert!(code(&zero) == 0 && !stdout(&zero).contains("W0403"), "{}", stdout(&zero));
+    let png = image::open(dir.join("zero/gd_0000.png")).unwrap().to_rgba8();
+    // color = 0, k = its initializer 0.5.
+    assert_eq!(png.get_pixel(8, 8).0, [128, 128, 128, 128]);
+}

@@ -125,6 +125,8 @@ pub struct SceneInput<'a> {
     /// Uniform values over the effect's (`--set`, a bench knob, a stress case); they reach
     /// bare stage files too, which have no effect.
     pub overrides: &'a [(String, crate::manifest::UniformValue)],
+    /// Uniforms nobody set are zero, as in GL, instead of guessed (`--gl-defaults`).
+    pub gl_defaults: bool,
 }
 
 /// What the pass graph decides for one pass's scene.
@@ -387,9 +389,14 @@ fn uniform_buffers(
     first_file: FileId,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
-    let (uniform_data, guessed) =
-        uniforms::buffers(&input.translation.module, input.effect, &crate::front::initial_values::of(input.program), input.overrides)
-            .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
+    let (uniform_data, guessed) = uniforms::buffers(
+        &input.translation.module,
+        input.effect,
+        &crate::front::initial_values::of(input.program),
+        input.overrides,
+        !input.gl_defaults,
+    )
+    .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
         let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
         d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
