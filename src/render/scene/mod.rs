@@ -185,8 +185,12 @@ impl Scene {
         let (depth_format, colors) = match &input.pass {
             Some(p) => (p.depth, p.colors.clone()),
             None => {
-                let depth = render.depth_test && !matches!(mesh_note, MeshNote::Fullscreen);
-                (depth.then_some(wgpu::TextureFormat::Depth32Float), color_formats(r, input.mode.format()))
+                let colors = color_formats(r, input.mode.format());
+                // A pipeline needs an attachment: a program that writes no colour (it only
+                // discards, or stores to images) draws into a depth buffer of its own.
+                let no_color = colors.iter().all(Option::is_none);
+                let depth = no_color || (render.depth_test && !matches!(mesh_note, MeshNote::Fullscreen));
+                (depth.then_some(wgpu::TextureFormat::Depth32Float), colors)
             }
         };
         let depth = depth_format.is_some();
