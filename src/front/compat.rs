@@ -117,8 +117,9 @@ pub fn state(name: &str) -> Option<&'static State> {
     STATE.iter().find(|s| s.name == name)
 }
 
-/// The matrices the scene supplies every frame (GL's matrix stacks as the scene's camera
-/// and model set them); every other piece of state starts at [`initial_values`].
+/// The matrices a scene's camera and model supply every frame (GL's matrix stacks as an
+/// application sets them; identity, GL's initial value, without a scene); every other
+/// piece of state starts at [`initial_values`].
 pub const SCENE_MATRICES: &[&str] = &["gl_ModelViewMatrix", "gl_ProjectionMatrix", "gl_ModelViewProjectionMatrix", "gl_NormalMatrix"];
 
 /// GL's initial values of the state member `name` (the OpenGL 2.1 specification's state

@@ -129,7 +129,7 @@ fn fill_block(
         let entries: Vec<_> = effect.map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect()).unwrap_or_default();
         if compat::state(&name).is_some() {
             // GL's initial values first: the manifest may set some members only.
-            gl_state(module, ty, &name, m.ty, m.offset, buffer)?;
+            gl_state(module, ty, (&name, effect.is_some()), m.ty, m.offset, buffer)?;
             buffer.per_frame.retain(|s| entries.is_empty() || s.offset != m.offset);
         }
         if entries.is_empty() {
@@ -158,16 +158,22 @@ fn fill_block(
     Ok(())
 }
 
-/// A compatibility-profile state member (`gl_LightSource`): the scene's matrices every
-/// frame, GL's initial values for the rest. Neither is a guess.
+/// A compatibility-profile state member (`gl_LightSource`): with a `scene` (a manifest)
+/// the matrices are its camera and model every frame; without one (bare stage files) they
+/// are GL's initial identity matrices, as a program drawing `glRectf(-1, -1, 1, 1)` in a
+/// fresh context has them. The rest takes GL's initial values. None of it is a guess.
 fn gl_state(
     module: &Module,
     block: Handle<Type>,
-    name: &str,
+    (name, scene): (&str, bool),
     ty: Handle<Type>,
     offset: u32,
     buffer: &mut UniformBuffer,
 ) -> Result<(), String> {
+    if compat::SCENE_MATRICES.contains(&name) && !scene {
+        let value = semantics::matrix(glam::Mat4::IDENTITY, shape_of(module, ty).unwrap_or((4, 4)));
+        return write_slot(module, ty, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"));
+    }
     let semantic = match name {
         "gl_ModelViewMatrix" => Some(Semantic::ModelView),
         "gl_ProjectionMatrix" => Some(Semantic::Projection),

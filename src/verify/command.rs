@@ -218,8 +218,9 @@ struct GlDrawer {
     /// Channels of the frame the program writes (a `vec2` output: 2); GL leaves the
     /// others undefined, so only these are compared.
     channels: usize,
-    /// GL draws without a vertex stage, with its initial (identity) matrices.
-    fixed_function_vertex: bool,
+    /// GL draws with its initial (identity) matrices: bare stage files, or a program
+    /// without a vertex stage.
+    initial_matrices: bool,
 }
 
 impl GlDrawer {
@@ -280,13 +281,15 @@ impl GlDrawer {
             }
         };
         let channels = written_channels(drawer, &output);
-        Ok(GlDrawer { scenes, frames, output, unmatched, channels, fixed_function_vertex })
+        // Bare stage files draw with GL's initial matrices (identity), a manifest's scene with its camera.
+        let initial_matrices = fixed_function_vertex || c.effect.is_none();
+        Ok(GlDrawer { scenes, frames, output, unmatched, channels, initial_matrices })
     }
 
     /// Draws one frame with the uniform values the wgpu scenes hold now (after their frame).
     fn draw(&mut self, gl: &glow::Context, drawer: &Drawer, state: &FrameState) -> Result<Vec<u8>, String> {
         // SAFETY: the context is current on this thread.
-        unsafe { super::fixed_function::load_matrices((!self.fixed_function_vertex).then_some(state))? };
+        unsafe { super::fixed_function::load_matrices((!self.initial_matrices).then_some(state))? };
         match drawer {
             Drawer::Single { scene, target } => {
                 let names: Vec<String> = (0..scene.colors.len()).map(|i| format!("output{i}")).collect();

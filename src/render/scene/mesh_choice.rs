@@ -61,8 +61,11 @@ pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>
     if r.vertex_inputs.is_empty() {
         return Ok((Mesh::builtin(BuiltinMesh::FullscreenQuad), MeshNote::OwnVertices));
     }
-    let uses_matrices = r.uniform_block.iter().flat_map(|b| &b.members).any(|m| m.glsl_type.starts_with("mat"))
-        || r.bindings.iter().any(|b| b.kind == "uniform_buffer" && b.glsl.is_some());
+    // GL's own matrices (`gl_ModelViewMatrix`, …) are identity without a manifest, as in a
+    // fresh GL context: the program draws the full-window rectangle `glRectf(-1, -1, 1, 1)`.
+    let uses_matrices =
+        r.uniform_block.iter().flat_map(|b| &b.members).any(|m| m.glsl_type.starts_with("mat") && !m.name.starts_with("gl_"))
+            || r.bindings.iter().any(|b| b.kind == "uniform_buffer" && b.glsl.is_some());
     // A 2D position would flatten a cube's faces onto one plane, where they z-fight.
     let flat_positions = attributes::choose(&r.vertex_inputs, &[])
         .iter()
