@@ -17,6 +17,7 @@
 //! | E0305 | internal: the translated module failed validation or a writer failed |
 //! | E0306 | a target cannot express the program (e.g. `noperspective` in GLSL ES 3.00) |
 
+mod arguments;
 pub mod fixes;
 mod glsl_es;
 mod hlsl;
@@ -206,6 +207,7 @@ fn stage_modules(program: &CompiledProgram, float64: bool) -> Result<Vec<(StageK
             (StageKind::Geometry, Some(Ok(_))) => continue,
             (StageKind::Vertex, Some(Ok(folded))) => {
                 let mut module = folded.naga.module.clone();
+                arguments::copy_partial_pointer_arguments(&mut module, &folded.naga.info);
                 for span in fixes::fix_switch_fallthrough(&mut module) {
                     // The span is in the folded text: back to the stage it came from.
                     let at = span.to_range().and_then(|r| program.user_span_in(&folded.drawn, r));
@@ -280,6 +282,7 @@ fn stage_modules(program: &CompiledProgram, float64: bool) -> Result<Vec<(StageK
             continue;
         };
         let mut module = validated.module.clone();
+        arguments::copy_partial_pointer_arguments(&mut module, &validated.info);
         if let Some(location) = folded_primitive {
             fixes::primitive_id_from_location(&mut module, location);
         }
