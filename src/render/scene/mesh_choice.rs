@@ -61,11 +61,7 @@ pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>
     if r.vertex_inputs.is_empty() {
         return Ok((Mesh::builtin(BuiltinMesh::FullscreenQuad), MeshNote::OwnVertices));
     }
-    // GL's own matrices (`gl_ModelViewMatrix`, …) are identity without a manifest, as in a
-    // fresh GL context: the program draws the full-window rectangle `glRectf(-1, -1, 1, 1)`.
-    let uses_matrices =
-        r.uniform_block.iter().flat_map(|b| &b.members).any(|m| m.glsl_type.starts_with("mat") && !m.name.starts_with("gl_"))
-            || r.bindings.iter().any(|b| b.kind == "uniform_buffer" && b.glsl.is_some());
+    let uses_matrices = transforms_positions(input.program);
     // A 2D position would flatten a cube's faces onto one plane, where they z-fight.
     let flat_positions = attributes::choose(&r.vertex_inputs, &[])
         .iter()
@@ -85,6 +81,29 @@ pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>
         );
     }
     Ok((Mesh::builtin(mesh), note))
+}
+
+/// Whether a stage before the rasterizer reads a matrix of the user's (a loose uniform, a
+/// struct or block member): its positions are then transformed, and a 3D mesh is drawn.
+/// A matrix only the fragment stage reads, or GL's own (`gl_ModelViewMatrix`, identity
+/// without a manifest, as in a fresh GL context), leaves the full-window rectangle
+/// `glRectf(-1, -1, 1, 1)` draws.
+fn transforms_positions(program: &CompiledProgram) -> bool {
+    let is_matrix = |base: &str| base.starts_with("mat") || base.starts_with("dmat");
+    program.stages.iter().filter(|s| matches!(s.syntax.stage, StageKind::Vertex | StageKind::Geometry | StageKind::TessEval)).any(|s| {
+        let st = &s.syntax;
+        let holds_matrix = |ty: &crate::front::syntax::GlslType| {
+            is_matrix(&ty.base) || st.struct_def(&ty.base).is_some_and(|d| d.members.iter().any(|m| is_matrix(&m.ty.base)))
+        };
+        st.globals.iter().enumerate().filter(|(_, g)| g.storage == Storage::Uniform && !g.name.starts_with("gl_")).any(|(i, g)| {
+            let read = || st.uses.iter().any(|u| u.target == crate::front::syntax::Referent::Global(i));
+            match &g.block {
+                // Members of an anonymous block are read by their own names.
+                Some(b) => b.members.iter().any(|m| holds_matrix(&m.ty) && (read() || st.uses.iter().any(|u| u.name == m.name))),
+                None => holds_matrix(&g.ty) && read(),
+            }
+        })
+    })
 }
 
 pub(super) fn report_attributes(
