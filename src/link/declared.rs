@@ -108,6 +108,22 @@ impl<'a> Decls<'a> {
         self.list.iter().find(|d| d.name == name)
     }
 
+    /// A member of an instance-named uniform block addressed as GL names it,
+    /// `BlockName.member` (or by the instance, `instance.member`): its declaration and the
+    /// steps after the member.
+    pub(super) fn block_member<'s>(&self, base: &str, steps: &'s [Step]) -> Option<(Decl<'a>, &'s [Step])> {
+        let (Step::Field(member), rest) = steps.split_first()? else { return None };
+        self.named_blocks.iter().find_map(|nb| {
+            let s = nb.stage;
+            let b = s.globals[nb.index].block.as_ref()?;
+            let named = s.original_name(&b.block_name) == base || b.instance.as_deref().is_some_and(|i| s.original_name(i) == base);
+            let m = b.members.iter().find(|m| named && s.original_name(&m.name) == member)?;
+            let read = is_read(s, nb.index);
+            let name = format!("{}.{member}", s.original_name(&b.block_name));
+            Some((Decl { name, stage: s, ty: &m.ty, sites: vec![(s.file, m.span.clone(), s)], read, in_block: true }, rest))
+        })
+    }
+
     /// Every sampler the manifest can bind: its path (`tex`, `material.diffuse`), the
     /// sampler type and the declaration it lives in.
     pub(super) fn samplers(&self) -> Vec<(String, GlslType, &Decl<'a>)> {

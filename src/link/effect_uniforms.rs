@@ -54,14 +54,24 @@ pub fn check_values(mf: FileId, values: &[UniformDefault], stages: &[StageSyntax
 /// Checks one `[uniforms]` entry (`what` names where it was written) of the file `mf`.
 fn default(mf: FileId, what: &str, u: &UniformDefault, decls: &Decls, stages: &[StageSyntax], files: &Files, out: &mut Vec<Diagnostic>) {
     let (base, steps) = parse_path(&u.name).unwrap_or_else(|| (u.name.clone(), Vec::new()));
-    let Some(decl) = decls.get(&base) else {
-        match super::compat_values::check(mf, u, &base, &steps, stages) {
-            Some(diags) => out.extend(diags),
-            None => out.push(unknown(mf, what, u, &base, decls, stages, files)),
-        }
-        return;
+    let member;
+    let (decl, steps) = match decls.get(&base) {
+        Some(decl) => (decl, &steps[..]),
+        None => match decls.block_member(&base, &steps) {
+            Some((d, rest)) => {
+                member = d;
+                (&member, rest)
+            }
+            None => {
+                match super::compat_values::check(mf, u, &base, &steps, stages) {
+                    Some(diags) => out.extend(diags),
+                    None => out.push(unknown(mf, what, u, &base, decls, stages, files)),
+                }
+                return;
+            }
+        },
     };
-    let (ty, shown) = match follow_path(mf, u, decl, &steps) {
+    let (ty, shown) = match follow_path(mf, u, decl, steps) {
         Ok(found) => found,
         Err(d) => {
             out.push(d);
@@ -269,10 +279,11 @@ fn unknown(mf: FileId, what: &str, u: &UniformDefault, base: &str, decls: &Decls
         let member = b.members.iter().find(|m| s.original_name(&m.name) == base);
         if member.is_some() || bn == base || inst == base {
             let span = member.map_or(b.block_name_span.clone(), |m| m.span.clone());
+            let members: Vec<String> = b.members.iter().map(|m| format!("`{bn}.{}`", s.original_name(&m.name))).collect();
             return d
                 .with_label(s.file, span, format!("in uniform block `{bn}` (instance `{inst}`)"))
-                .with_note("defaults address loose uniforms and members of uniform blocks without an instance name")
-                .with_help(format!("drop the instance name (`uniform {bn} {{ … }};`) so its members become settable by name, or declare the value as a loose uniform"));
+                .with_note("a member of a block with an instance name is addressed as GL names it: `BlockName.member`")
+                .with_help(format!("its members: {}", members.join(", ")));
         }
     }
     // Declared, but not as a uniform?

@@ -61,8 +61,15 @@ pub fn buffers(
     for (_, g) in module.global_variables.iter() {
         let (naga::AddressSpace::Uniform, Some(rb)) = (g.space, &g.binding) else { continue };
         let mut buffer = UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new() };
+        let local = |name: &str| in_block(module, g, name).map(str::to_string);
         fill_block(module, g.ty, effect, initial, guesses, &mut buffer, &mut guessed)?;
-        for (name, value) in overrides {
+        // A named block's members as GL names them (`Block.member`).
+        let named: Vec<(String, UniformValue)> = effect
+            .map(|e| e.uniforms.iter().filter_map(|u| Some((local(&u.name).filter(|l| *l != u.name)?, u.value.clone()?))).collect())
+            .unwrap_or_default();
+        let overrides: Vec<(String, UniformValue)> =
+            named.into_iter().chain(overrides.iter().map(|(n, v)| (local(n).unwrap_or_else(|| n.clone()), v.clone()))).collect();
+        for (name, value) in &overrides {
             if let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, g.ty, name) {
                 write_slot(module, slot_ty, offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
                 buffer.per_frame.retain(|s| s.offset != offset);
@@ -196,6 +203,14 @@ fn gl_state(
         write_slot(module, slot, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{path}`: {e}"))?;
     }
     Ok(())
+}
+
+/// The path inside uniform buffer `g` of a uniform named `name` by GL: a member of a block
+/// with an instance name is `BlockName.member` (or `instance.member`); the block's struct
+/// keeps the block's name in naga.
+fn in_block<'n>(module: &Module, g: &naga::GlobalVariable, name: &'n str) -> Option<&'n str> {
+    let prefixes = [module.types[g.ty].name.as_deref(), g.name.as_deref()];
+    prefixes.into_iter().flatten().find_map(|p| name.strip_prefix(p).and_then(|r| r.strip_prefix('.')))
 }
 
 /// `lights[0].color` → `lights`.

@@ -290,3 +290,30 @@ fn gl_defaults_leave_unset_uniforms_at_zero_as_gl_does() {
     // color = 0, k = its initializer 0.5.
     assert_eq!(png.get_pixel(8, 8).0, [128, 128, 128, 128]);
 }
+
+#[test]
+fn members_of_instance_named_blocks_take_values_by_gl_names() {
+    // `uniform Block { vec4 a; } block_name;`: GL names the member `Block.a`; `--set` and the
+    // manifest take that name (or `block_name.a`), and GL draws the same picture.
+    if !can_verify() {
+        return;
+    }
+    let dir = scratch("verify-named-block", "program");
+    std::fs::create_dir_all(&dir).unwrap();
+    let vert = dir.join("nb.vert");
+    let frag = dir.join("nb.frag");
+    std::fs::write(&vert, "#version 150\nin vec4 position;\nvoid main() { gl_Position = position; }\n").unwrap();
+    std::fs::write(
+        &frag,
+        "#version 150\nlayout(std140) uniform Block { vec4 pad; vec4 a; } block_name;\nout vec4 c;\nvoid main() { c = block_name.a; }\n",
+    )
+    .unwrap();
+    let (v, f) = (vert.to_str().unwrap(), frag.to_str().unwrap());
+    let out = effectc(&["verify", v, f, "--size", "16x16", "--set", "Block.a=0.25,1,0.5,1", "--out", dir.join("o").to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let png = image::open(dir.join("o/nb_0000.png")).unwrap().to_rgba8();
+    assert_eq!(png.get_pixel(8, 8).0, [64, 255, 128, 255]);
+    let wrong = effectc(&["render", v, f, "--set", "Block.b=1", "--out", dir.join("w").to_str().unwrap()]);
+    assert_eq!(code(&wrong), 1, "{}", stdout(&wrong));
+    assert!(stdout(&wrong).contains("`Block.a`"), "{}", stdout(&wrong));
+}
