@@ -86,7 +86,7 @@ fn request(manifest: &Path, size: u32, n: u32, out: &Path) -> Request {
         frames: Some(n),
         size: Some((size, size)),
         out: Some(out.to_path_buf()),
-        timeout: Duration::from_secs(60),
+        timeout: Some(Duration::from_secs(60)),
         ..Request::new(input)
     }
 }

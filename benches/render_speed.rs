@@ -55,7 +55,13 @@ fn main() {
 
 fn request(manifest: &Path, size: u32, frames: u32, out: PathBuf) -> Request {
     let input = InputSpec { paths: vec![manifest.to_path_buf()], ..InputSpec::default() };
-    Request { frames: Some(frames), size: Some((size, size)), out: Some(out), timeout: Duration::from_secs(60), ..Request::new(input) }
+    Request {
+        frames: Some(frames),
+        size: Some((size, size)),
+        out: Some(out),
+        timeout: Some(Duration::from_secs(60)),
+        ..Request::new(input)
+    }
 }
 
 /// effectc's ms/frame in steady state: (t(n + 4 frames) − t(4 frames)) / n, best of

@@ -26,6 +26,7 @@ pub fn bare_loop_ms(gpu: &Gpu, manifest: &Path, size: u32, frames: u32) -> f64 {
         pass: None,
         degenerate: None,
         overrides: &[],
+        gl_defaults: false,
     };
     let mut scene = Scene::new(gpu, &input).expect("scene");
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
