@@ -332,11 +332,8 @@ impl VerifyArgs {
     /// The request these flags make.
     pub fn request(&self, config: &Config) -> crate::verify::command::VerifyRequest {
         let f = &self.frames;
-        let mut render = render::command::Request::new(InputSpec {
-            values: f.set.clone(),
-            fixed_function_vertex: true,
-            ..self.common.input_spec(config)
-        });
+        let mut render =
+            render::command::Request::new(InputSpec { values: f.set.clone(), ..self.common.input_spec(config).for_drawing() });
         render.frames = f.frames;
         render.step = f.step();
         render.start = f.start;
@@ -471,7 +468,7 @@ impl CommonArgs {
         InputSpec {
             paths: self.inputs.clone(),
             stage: self.stage.map(Into::into),
-            front: FrontOptions { strict: self.strict || config.strict, env },
+            front: FrontOptions { strict: self.strict || config.strict, env, doubles_as_floats: false },
             selection: config.selection.clone(),
             jobs: self.jobs.map(|j| j as usize),
             values: Vec::new(),
@@ -528,7 +525,7 @@ impl RenderArgs {
     pub fn request(&self, config: &Config, started: Instant) -> render::command::Request {
         let f = &self.frames;
         render::command::Request {
-            input: InputSpec { values: f.set.clone(), fixed_function_vertex: true, ..self.common.input_spec(config) },
+            input: InputSpec { values: f.set.clone(), ..self.common.input_spec(config).for_drawing() },
             back: TranslateOptions::for_rendering(!self.keep_gl_depth),
             frames: f.frames,
             step: f.step(),
@@ -604,7 +601,7 @@ impl BenchArgs {
     /// The request these flags make.
     pub fn request(&self, config: &Config) -> bench::Request {
         bench::Request {
-            input: InputSpec { values: self.set.clone(), fixed_function_vertex: true, ..self.common.input_spec(config) },
+            input: InputSpec { values: self.set.clone(), ..self.common.input_spec(config).for_drawing() },
             knobs: self.knobs.clone(),
             frames: self.frames,
             size: self.size,
@@ -619,7 +616,7 @@ impl StressArgs {
     /// The request these flags make (masks go to `out/stress/` unless `--out` says otherwise).
     pub fn request(&self, config: &Config) -> stress::Request {
         stress::Request {
-            input: InputSpec { values: self.set.clone(), fixed_function_vertex: true, ..self.common.input_spec(config) },
+            input: InputSpec { values: self.set.clone(), ..self.common.input_spec(config).for_drawing() },
             samples: self.samples,
             seed: self.seed,
             size: self.size,

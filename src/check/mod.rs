@@ -107,6 +107,12 @@ pub struct InputSpec {
 }
 
 impl InputSpec {
+    /// The spec of a command that draws on WebGPU: a lone compatibility fragment stage gets
+    /// GL's fixed-function vertex stage, and doubles are drawn as floats (W0131).
+    pub fn for_drawing(self) -> InputSpec {
+        InputSpec { fixed_function_vertex: true, front: FrontOptions { doubles_as_floats: true, ..self.front }, ..self }
+    }
+
     /// Checks every program the spec names: files are read in input order, then the
     /// programs are analysed in parallel; the report is the same for any number of jobs.
     pub fn check(&self) -> (Outcome, Vec<Checked>) {

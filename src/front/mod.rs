@@ -22,6 +22,7 @@
 pub mod builtins;
 pub mod compat;
 pub mod conditionals;
+pub mod doubles;
 pub mod edits;
 pub mod geometry_fold;
 pub mod geometry_layout;

@@ -28,6 +28,9 @@ pub struct FrontOptions {
     pub strict: bool,
     /// The GLSL dialect (OpenGL or Vulkan), or told by the text.
     pub env: crate::config::TargetEnv,
+    /// Draw 64-bit floats as 32-bit ones ([`doubles`](crate::front::doubles)): the
+    /// commands that draw on WebGPU, which has no f64.
+    pub doubles_as_floats: bool,
 }
 
 /// A stage as compiled by the front.
@@ -397,7 +400,9 @@ fn compile_own(
             compiled.push(CompiledStage { syntax: s, rewritten, naga: None, limitation: None, through_spirv: false });
             continue;
         };
+        let lower = |r: &mut Rewritten| if options.doubles_as_floats { crate::front::doubles::as_floats(&mut r.text) } else { None };
         let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
+        let mut lowered = lower(&mut rewritten);
         let run = |rewritten: &Rewritten, rdiags: &[Diagnostic]| match &rewritten.limitation {
             _ if rdiags.iter().any(Diagnostic::is_error) || !s.has_main => None,
             Some(limit) => Some(Outcome::Limited(limit.clone())),
@@ -417,11 +422,20 @@ fn compile_own(
                 }
                 scalar.extend(new);
                 (rewritten, rdiags) = rewrite::rewrite_with(&s, &plan, options.strict, &scalar);
+                lowered = lower(&mut rewritten);
                 outcome = run(&rewritten, &rdiags);
             }
         }
         dump_rewrite(files, &s, &rewritten);
         diags.extend(rdiags);
+        if let Some(at) = lowered {
+            diags.push(
+                Diagnostic::new(Code::DoublesAsFloats, format!("the {} stage's 64-bit floats are drawn as 32-bit ones", s.stage))
+                    .at(s.file, rewritten.map.range_to_original(at), "drawn as a 32-bit float")
+                    .with_note("WebGPU has no 64-bit floats; the picture is computed at f32 precision (`effectc verify` shows where that differs from GL)")
+                    .with_help("`effectc translate --to spv,spvasm,hlsl` keeps the doubles"),
+            );
+        }
         let mut limitation = None;
         let naga = match outcome {
             None => None,
