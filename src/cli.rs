@@ -332,8 +332,7 @@ impl VerifyArgs {
     /// The request these flags make.
     pub fn request(&self, config: &Config) -> crate::verify::command::VerifyRequest {
         let f = &self.frames;
-        let mut render =
-            render::command::Request::new(InputSpec { values: f.set.clone(), ..self.common.input_spec(config).for_drawing() });
+        let mut render = render::command::Request::new(InputSpec { values: f.set.clone(), ..self.common.input_spec(config).for_drawing() });
         render.frames = f.frames;
         render.step = f.step();
         render.start = f.start;

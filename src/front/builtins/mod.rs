@@ -61,6 +61,11 @@ pub fn has_compatibility_builtins(version: &Version) -> bool {
     !version.is_es() && (version.number <= 130 || version.profile == Profile::Compatibility || version.directive.is_none())
 }
 
+/// Whether `name` is a built-in function of GLSL.
+pub fn is_function(name: &str) -> bool {
+    FUNCTIONS.contains(&name)
+}
+
 /// Whether `name` is a built-in type of GLSL.
 pub fn is_type(name: &str) -> bool {
     TYPES.contains(&name)

@@ -83,26 +83,83 @@ pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>
     Ok((Mesh::builtin(mesh), note))
 }
 
-/// Whether a stage before the rasterizer reads a matrix of the user's (a loose uniform, a
-/// struct or block member): its positions are then transformed, and a 3D mesh is drawn.
-/// A matrix only the fragment stage reads, or GL's own (`gl_ModelViewMatrix`, identity
-/// without a manifest, as in a fresh GL context), leaves the full-window rectangle
-/// `glRectf(-1, -1, 1, 1)` draws.
+/// Whether the program transforms its positions with a matrix of the user's: then a 3D
+/// mesh is drawn. A vertex stage decides by what it writes to `gl_Position`: an expression
+/// of inputs, constants and non-matrix uniforms (`gl_Position = piglit_vertex;`) is drawn
+/// on the full-window rectangle `glRectf(-1, -1, 1, 1)` draws, one reading a user matrix,
+/// a local or a function (which may hold one) on a 3D mesh. GL's own matrices
+/// (`gl_ModelViewMatrix`, identity without a manifest, as in a fresh context) are not the
+/// user's. A geometry or tessellation stage that reads a user matrix transforms too.
 fn transforms_positions(program: &CompiledProgram) -> bool {
-    let is_matrix = |base: &str| base.starts_with("mat") || base.starts_with("dmat");
-    program.stages.iter().filter(|s| matches!(s.syntax.stage, StageKind::Vertex | StageKind::Geometry | StageKind::TessEval)).any(|s| {
-        let st = &s.syntax;
-        let holds_matrix = |ty: &crate::front::syntax::GlslType| {
-            is_matrix(&ty.base) || st.struct_def(&ty.base).is_some_and(|d| d.members.iter().any(|m| is_matrix(&m.ty.base)))
-        };
-        st.globals.iter().enumerate().filter(|(_, g)| g.storage == Storage::Uniform && !g.name.starts_with("gl_")).any(|(i, g)| {
-            let read = || st.uses.iter().any(|u| u.target == crate::front::syntax::Referent::Global(i));
-            match &g.block {
-                // Members of an anonymous block are read by their own names.
-                Some(b) => b.members.iter().any(|m| holds_matrix(&m.ty) && (read() || st.uses.iter().any(|u| u.name == m.name))),
-                None => holds_matrix(&g.ty) && read(),
-            }
+    program.stages.iter().any(|s| match s.syntax.stage {
+        StageKind::Vertex => position_uses_matrix(&s.syntax),
+        StageKind::Geometry | StageKind::TessEval => reads_user_matrix(&s.syntax),
+        _ => false,
+    })
+}
+
+fn is_matrix(base: &str) -> bool {
+    base.starts_with("mat") || base.starts_with("dmat")
+}
+
+/// Whether a stage's own uniform (loose, struct or block member) of matrix type is read.
+fn reads_user_matrix(st: &crate::front::syntax::StageSyntax) -> bool {
+    let holds_matrix = |ty: &crate::front::syntax::GlslType| {
+        is_matrix(&ty.base) || st.struct_def(&ty.base).is_some_and(|d| d.members.iter().any(|m| is_matrix(&m.ty.base)))
+    };
+    st.globals.iter().enumerate().filter(|(_, g)| g.storage == Storage::Uniform && !g.name.starts_with("gl_")).any(|(i, g)| {
+        let read = || st.uses.iter().any(|u| u.target == crate::front::syntax::Referent::Global(i));
+        match &g.block {
+            // Members of an anonymous block are read by their own names.
+            Some(b) => b.members.iter().any(|m| holds_matrix(&m.ty) && (read() || st.uses.iter().any(|u| u.name == m.name))),
+            None => holds_matrix(&g.ty) && read(),
+        }
+    })
+}
+
+/// Whether any value written to `gl_Position` may come through a user matrix (see
+/// [`transforms_positions`]).
+fn position_uses_matrix(st: &crate::front::syntax::StageSyntax) -> bool {
+    use crate::front::syntax::Referent;
+    let writes: Vec<&str> = st
+        .uses
+        .iter()
+        .filter(|u| u.name == "gl_Position" && u.target == Referent::Unresolved)
+        .filter_map(|u| {
+            let rest = st.text.get(u.span.end..)?;
+            let rhs = rest.trim_start().strip_prefix('=').filter(|r| !r.starts_with('='))?;
+            Some(&rhs[..rhs.find(';').unwrap_or(rhs.len())])
         })
+        .collect();
+    if writes.is_empty() {
+        // Written another way (a swizzle, an `out` argument): assume the worst.
+        return reads_user_matrix(st);
+    }
+    let matrix_member = |name: &str| {
+        st.globals.iter().filter(|g| g.storage == Storage::Uniform).any(|g| match &g.block {
+            Some(b) => b.members.iter().any(|m| m.name == name && is_matrix(&m.ty.base)),
+            None => false,
+        })
+    };
+    writes.iter().any(|rhs| {
+        rhs.split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
+            .any(|w| {
+                if crate::front::builtins::is_type(w) || w.starts_with("gl_") || crate::front::builtins::is_function(w) {
+                    return false;
+                }
+                match st.global(w) {
+                    Some(g) => match g.storage {
+                        Storage::Uniform => is_matrix(&g.ty.base) || st.struct_def(&g.ty.base).is_some() || g.block.is_some(),
+                        _ => false,
+                    },
+                    // A local, a user function or a block member: a matrix may be behind it.
+                    None => {
+                        matrix_member(w)
+                            || !st.globals.iter().any(|g| g.block.as_ref().is_some_and(|b| b.members.iter().any(|m| m.name == w)))
+                    }
+                }
+            })
     })
 }
 
