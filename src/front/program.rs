@@ -429,12 +429,7 @@ fn compile_own(
         dump_rewrite(files, &s, &rewritten);
         diags.extend(rdiags);
         if let Some(at) = lowered {
-            diags.push(
-                Diagnostic::new(Code::DoublesAsFloats, format!("the {} stage's 64-bit floats are drawn as 32-bit ones", s.stage))
-                    .at(s.file, rewritten.map.range_to_original(at), "drawn as a 32-bit float")
-                    .with_note("WebGPU has no 64-bit floats; the picture is computed at f32 precision (`effectc verify` shows where that differs from GL)")
-                    .with_help("`effectc translate --to spv,spvasm,hlsl` keeps the doubles"),
-            );
+            diags.push(doubles_as_floats(&s, rewritten.map.range_to_original(at)));
         }
         let mut limitation = None;
         let naga = match outcome {
@@ -465,6 +460,16 @@ fn compile_own(
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation, through_spirv: false });
     }
     Some(CompiledProgram { stages: compiled, plan, folded: None, reference: None })
+}
+
+/// W0131 at the first double the stage draws as a float ([`doubles`](crate::front::doubles)).
+fn doubles_as_floats(s: &StageSyntax, at: Range<usize>) -> Diagnostic {
+    Diagnostic::new(Code::DoublesAsFloats, format!("the {} stage's 64-bit floats are drawn as 32-bit ones", s.stage))
+        .at(s.file, at, "drawn as a 32-bit float")
+        .with_note(
+            "WebGPU has no 64-bit floats; the picture is computed at f32 precision (`effectc verify` shows where that differs from GL)",
+        )
+        .with_help("`effectc translate --to spv,spvasm,hlsl` keeps the doubles")
 }
 
 /// Folds a program's geometry stage into its vertex stage (when it has one), for a program

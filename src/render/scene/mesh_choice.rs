@@ -145,7 +145,10 @@ fn position_uses_matrix(st: &crate::front::syntax::StageSyntax) -> bool {
         rhs.split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
             .filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
             .any(|w| {
-                if crate::front::builtins::is_type(w) || w.starts_with("gl_") || crate::front::builtins::is_function(w) {
+                let constructor = matches!(w, "float" | "int" | "uint" | "bool" | "double")
+                    || w.trim_start_matches(['i', 'u', 'b', 'd']).strip_prefix("vec").is_some_and(|n| matches!(n, "2" | "3" | "4"))
+                    || st.struct_def(w).is_some();
+                if constructor || crate::front::builtins::is_type(w) || w.starts_with("gl_") || crate::front::builtins::is_function(w) {
                     return false;
                 }
                 match st.global(w) {
