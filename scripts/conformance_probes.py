@@ -96,46 +96,36 @@ class NotProbeable(Exception):
 
 # ---------------------------------------------------------------- numbers --
 
+def c_integer(tok):
+    """A C integer literal as strtol(tok, NULL, 0) reads it: (negative, magnitude)."""
+    t = tok.strip()
+    body = t.lstrip("+-")
+    if body.lower().startswith("0x"):
+        v = int(body, 16)
+    elif len(body) > 1 and body.startswith("0"):
+        v = int(body, 8)
+    else:
+        v = int(body, 10)
+    return t.startswith("-"), v
+
+
 def c_strtol(tok):
     """strtol(tok, NULL, 0) as piglit's strtol_hex: 0x.. is a 32-bit pattern."""
     t = tok.strip()
     if t.startswith("0x") or t.startswith("0X"):
         v = int(t, 16) & 0xFFFFFFFF
         return v - (1 << 32) if v >= 1 << 31 else v
-    neg = t.startswith("-")
-    body = t.lstrip("+-")
-    if body.lower().startswith("0x"):
-        v = int(body, 16)
-    elif len(body) > 1 and body.startswith("0"):
-        v = int(body, 8)
-    else:
-        v = int(body, 10)
+    neg, v = c_integer(t)
     return -v if neg else v
 
 
 def c_strtoul(tok):
-    t = tok.strip()
-    neg = t.startswith("-")
-    body = t.lstrip("+-")
-    if body.lower().startswith("0x"):
-        v = int(body, 16)
-    elif len(body) > 1 and body.startswith("0"):
-        v = int(body, 8)
-    else:
-        v = int(body, 10)
+    neg, v = c_integer(tok)
     return (-v) & 0xFFFFFFFF if neg else v
 
 
 def c_strto64(tok, signed):
-    t = tok.strip()
-    neg = t.startswith("-")
-    body = t.lstrip("+-")
-    if body.lower().startswith("0x"):
-        v = int(body, 16)
-    elif len(body) > 1 and body.startswith("0"):
-        v = int(body, 8)
-    else:
-        v = int(body, 10)
+    neg, v = c_integer(tok)
     if neg:
         v = -v
     if signed and v >= 1 << 63:
