@@ -80,8 +80,10 @@ pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool
         }
     }
     if let (Body::Single(stages), true) = (&mut l.body, fixed_function_vertex) {
-        if let [(fragment, StageKind::Fragment)] = stages[..] {
-            if let Some(text) = compat::fixed_function_vertex_stage(files.text(fragment)) {
+        // The fragment stage alone (one file, or several shader objects of it).
+        if let Some(&(fragment, _)) = stages.first().filter(|_| stages.iter().all(|(_, k)| *k == StageKind::Fragment)) {
+            let texts: String = stages.iter().map(|(f, _)| files.text(*f)).collect::<Vec<_>>().join("\n");
+            if let Some(text) = compat::fixed_function_vertex_stage(&texts) {
                 let name = format!("{} (GL's fixed-function vertex stage)", files.path(fragment));
                 l.vertex_added_for = Some(files.path(fragment).to_string());
                 stages.insert(0, (files.add_generated(name, text), StageKind::Vertex));

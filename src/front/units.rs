@@ -37,6 +37,7 @@ pub fn join(files: &mut Files, units: &[FileId]) -> FileId {
     }
     let mut seen: HashSet<String> = HashSet::new();
     let mut defined: HashSet<String> = HashSet::new();
+    let mut variables: HashSet<String> = HashSet::new();
     for (i, (file, directive)) in ordered.iter().zip(&directives).enumerate() {
         let mut text = files.text(*file).as_bytes().to_vec();
         if let Some(d) = directive.clone().filter(|_| i > 0 || lifted.is_some()) {
@@ -46,10 +47,15 @@ pub fn join(files: &mut Files, units: &[FileId]) -> FileId {
         for statement in file_scope_statements(&clean) {
             let key = normalised(&clean[statement.clone()]);
             // A prototype of a function an earlier file defines (naga's parser refuses a
-            // prototype after the definition), or a declaration repeated from one.
+            // prototype after the definition), or a declaration repeated from one (also
+            // with another array size: `vec4 vals[];` and `vec4 vals[2];` are one variable).
             let defined_before = prototype_name(&key).is_some_and(|n| defined.contains(n));
-            if !seen.insert(key) || defined_before {
+            let variable = variable_name(&key).map(str::to_string);
+            let declared_before = variable.as_ref().is_some_and(|v| variables.contains(v));
+            if !seen.insert(key) || defined_before || declared_before {
                 blank(&mut text, statement);
+            } else if let Some(v) = variable {
+                variables.insert(v);
             }
         }
         defined.extend(defined_functions(&clean));
@@ -126,6 +132,19 @@ fn prototype_name(statement: &str) -> Option<&str> {
     (!name.is_empty()).then_some(name)
 }
 
+/// The variable a plain file-scope declaration declares (`varying vec4 c;`, `vec4
+/// vals[2];`): one name, no initializer, no block or struct body, no function.
+fn variable_name(statement: &str) -> Option<&str> {
+    if statement.contains(['(', '{', '=', ',']) {
+        return None;
+    }
+    let body = statement.trim_end_matches(';').trim_end();
+    let body = body.find('[').map_or(body, |b| body[..b].trim_end());
+    let mut words = body.split_whitespace();
+    let name = words.next_back()?;
+    (words.count() >= 1 && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')).then_some(name)
+}
+
 /// Names of the functions `clean` (comment-blanked) defines: `name(…) {` at file scope.
 fn defined_functions(clean: &[u8]) -> Vec<String> {
     let text = String::from_utf8_lossy(clean);
@@ -196,5 +215,10 @@ mod tests {
         assert_eq!(file, helper);
         assert_eq!(&files.text(helper)[span.unwrap()], "f");
         assert_eq!(files.units_of(joined), Some(&[main, helper][..]));
+        // One variable declared with and without its size (GL links them as one).
+        let sized = files.add("c.vert", "#version 120\nvec4 vals[2];\nvoid set();\nvoid main() { vals[1] = gl_Vertex; set(); }\n");
+        let bare = files.add("d.vert", "#version 120\nvec4 vals[];\nvoid set() { gl_Position = vals[1]; }\n");
+        let joined = join(&mut files, &[sized, bare]);
+        assert_eq!(files.text(joined).matches("vals[").count(), 3, "{}", files.text(joined));
     }
 }

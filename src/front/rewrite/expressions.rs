@@ -9,6 +9,25 @@ impl Ctx<'_> {
     /// initializer's length.
     pub(super) fn unsized_arrays(&mut self) {
         let s = self.s;
+        // GLSL 1.10/1.20 size a global declared `float a[];` by the largest constant index
+        // the stage uses (an array nothing indexes has one element).
+        for (i, g) in s.globals.iter().enumerate() {
+            if g.storage != crate::front::syntax::Storage::Private || g.initializer.is_some() || g.ty.dims != [None] {
+                continue;
+            }
+            let largest = s
+                .uses
+                .iter()
+                .filter(|u| u.target == crate::front::syntax::Referent::Global(i))
+                .filter_map(|u| u.index.as_ref().and_then(|(_, _, k)| *k))
+                .max()
+                .unwrap_or(0);
+            let after = &s.text[g.name_span.end..];
+            let open = after.len() - after.trim_start().len();
+            if after[open..].starts_with('[') && after[open + 1..].trim_start().starts_with(']') {
+                self.edits.insert(g.name_span.end + open + 1, (largest + 1).to_string());
+            }
+        }
         for (span, n) in &s.constant_sizes {
             self.edits.replace(span.clone(), n.to_string());
         }
