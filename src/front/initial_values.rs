@@ -20,12 +20,40 @@ pub fn of(program: &crate::front::program::CompiledProgram) -> Vec<(String, Unif
             if out.iter().any(|(n, _)| n == name) {
                 continue;
             }
-            if let Some(value) = constant_value(module, c.init) {
-                out.push((name.to_string(), value));
-            }
+            flatten(module, c.init, name.to_string(), &mut out);
         }
     }
     out
+}
+
+/// The value of constant `expr` at GLSL path `path`: one entry, or for a struct (and an
+/// array of structs) one per member (`s[1].f`).
+fn flatten(module: &Module, expr: Handle<naga::Expression>, path: String, out: &mut Vec<(String, UniformValue)>) {
+    use naga::{Expression, TypeInner};
+    let expr = match &module.global_expressions[expr] {
+        Expression::Constant(c) => module.constants[*c].init,
+        _ => expr,
+    };
+    if let Expression::Compose { ty, components } = &module.global_expressions[expr] {
+        match &module.types[*ty].inner {
+            TypeInner::Struct { members, .. } => {
+                for (m, c) in members.iter().zip(components) {
+                    flatten(module, *c, format!("{path}.{}", m.name.as_deref().unwrap_or_default()), out);
+                }
+                return;
+            }
+            TypeInner::Array { base, .. } if matches!(module.types[*base].inner, TypeInner::Struct { .. }) => {
+                for (i, c) in components.iter().enumerate() {
+                    flatten(module, *c, format!("{path}[{i}]"), out);
+                }
+                return;
+            }
+            _ => {}
+        }
+    }
+    if let Some(value) = constant_value(module, expr) {
+        out.push((path, value));
+    }
 }
 
 /// The value of a constant expression of `module` (a GLSL initializer naga evaluated):

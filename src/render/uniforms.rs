@@ -143,9 +143,13 @@ fn fill_block(
             if compat::state(&name).is_some() {
                 continue;
             }
-            if let Some((_, value)) = initial.iter().find(|(n, _)| *n == name) {
-                write_slot(module, m.ty, m.offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`'s initializer: {e}"))?;
-            } else if guesses {
+            let from_initializer: Vec<&(String, UniformValue)> = initial.iter().filter(|(n, _)| root_name(n) == name).collect();
+            for (path, value) in &from_initializer {
+                // The whole uniform, or a member of a struct one (`s[1].f`).
+                let Some((offset, slot)) = crate::back::reflect::resolve_path(module, ty, path) else { continue };
+                write_slot(module, slot, offset, value, &mut buffer.bytes).map_err(|e| format!("`{path}`'s initializer: {e}"))?;
+            }
+            if from_initializer.is_empty() && guesses {
                 guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
             }
             continue;

@@ -111,26 +111,27 @@ impl Ctx<'_> {
                 );
             }
             if let Some(init) = &g.initializer {
-                if s.struct_def(&g.ty.base).is_some() {
+                if struct_with_array(s, &g.ty.base) {
                     self.diags.push(
                         Diagnostic::new(
                             Code::UniformInitializerIgnored,
                             format!("initializer of uniform `{}` is ignored", s.original_name(&g.name)),
                         )
-                        .at(s.file, init.clone(), "a struct value effectc does not read")
+                        .at(s.file, init.clone(), "a struct with an array of scalars: effectc does not read this value")
+                        .with_note("naga lays the array member out for the uniform block, and the constructor's array does not match it")
                         .with_help("set the default in the effect manifest's [uniforms] table"),
                     );
-                } else {
-                    // GL starts the uniform at its initializer: the renderer reads it here.
-                    let _ = write!(
-                        text,
-                        "const {} {INITIAL_PREFIX}{}{} = {};",
-                        g.ty.base,
-                        g.name,
-                        crate::front::syntax::dims_text(&g.ty),
-                        &s.text[init.clone()]
-                    );
+                    continue;
                 }
+                // GL starts the uniform at its initializer: the renderer reads it here.
+                let _ = write!(
+                    text,
+                    "const {} {INITIAL_PREFIX}{}{} = {};",
+                    g.ty.base,
+                    g.name,
+                    crate::front::syntax::dims_text(&g.ty),
+                    &s.text[init.clone()]
+                );
             }
         }
         self.edits.replace(decl, text);
@@ -149,4 +150,12 @@ impl Ctx<'_> {
             None => self.edits.insert(g.decl_span.start, format!("layout({item}) ")),
         }
     }
+}
+
+/// Whether struct `name` (or a struct it holds) has an array of scalars or 2-vectors,
+/// which the uniform block lays out with a 16-byte stride (std140).
+fn struct_with_array(s: &crate::front::syntax::StageSyntax, name: &str) -> bool {
+    let narrow = |base: &str| matches!(base, "float" | "int" | "uint" | "bool" | "vec2" | "ivec2" | "uvec2" | "bvec2");
+    s.struct_def(name)
+        .is_some_and(|d| d.members.iter().any(|m| (m.ty.is_array() && narrow(&m.ty.base)) || struct_with_array(s, &m.ty.base)))
 }
