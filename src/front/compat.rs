@@ -117,11 +117,6 @@ pub fn state(name: &str) -> Option<&'static State> {
     STATE.iter().find(|s| s.name == name)
 }
 
-/// The matrices a scene's camera and model supply every frame (GL's matrix stacks as an
-/// application sets them; identity, GL's initial value, without a scene); every other
-/// piece of state starts at [`initial_values`].
-pub const SCENE_MATRICES: &[&str] = &["gl_ModelViewMatrix", "gl_ProjectionMatrix", "gl_ModelViewProjectionMatrix", "gl_NormalMatrix"];
-
 /// GL's initial values of the state member `name` (the OpenGL 2.1 specification's state
 /// tables; derived values and the point size limit as Mesa's driver gives them), leaf by
 /// leaf: (path, components). Leaves not listed start at zero.

@@ -59,7 +59,7 @@ fn number(x: f64) -> UniformValue {
     UniformValue::Float(x)
 }
 
-fn floats(xs: &[f64]) -> UniformValue {
+pub(crate) fn floats(xs: &[f64]) -> UniformValue {
     UniformValue::List(xs.iter().map(|x| UniformValue::Float(*x)).collect())
 }
 

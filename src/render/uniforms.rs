@@ -134,13 +134,16 @@ fn fill_block(
     for m in &members {
         let name = m.name.clone().unwrap_or_default();
         let entries: Vec<_> = effect.map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect()).unwrap_or_default();
-        if compat::state(&name).is_some() {
-            // GL's initial values first: the manifest may set some members only.
+        let gl = compat::state(&name).is_some();
+        if gl {
+            // GL's state, at its initial values first: the manifest may set some members only.
             gl_state(module, ty, (&name, effect.is_some()), m.ty, m.offset, buffer)?;
-            buffer.per_frame.retain(|s| entries.is_empty() || s.offset != m.offset);
+            if !entries.is_empty() {
+                buffer.per_frame.retain(|s| s.offset != m.offset);
+            }
         }
         if entries.is_empty() {
-            if compat::state(&name).is_some() {
+            if gl {
                 continue;
             }
             let from_initializer: Vec<&(String, UniformValue)> = initial.iter().filter(|(n, _)| root_name(n) == name).collect();
@@ -181,10 +184,7 @@ fn gl_state(
     offset: u32,
     buffer: &mut UniformBuffer,
 ) -> Result<(), String> {
-    if compat::SCENE_MATRICES.contains(&name) && !scene {
-        let value = semantics::matrix(glam::Mat4::IDENTITY, shape_of(module, ty).unwrap_or((4, 4)));
-        return write_slot(module, ty, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"));
-    }
+    // The matrices an application sets on GL's matrix stacks.
     let semantic = match name {
         "gl_ModelViewMatrix" => Some(Semantic::ModelView),
         "gl_ProjectionMatrix" => Some(Semantic::Projection),
@@ -193,16 +193,19 @@ fn gl_state(
         _ => None,
     };
     if let (Some(semantic), Some(shape)) = (semantic, shape_of(module, ty)) {
+        if !scene {
+            let value = semantics::matrix(glam::Mat4::IDENTITY, shape);
+            return write_slot(module, ty, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"));
+        }
         buffer.per_frame.push(SemanticSlot { offset, ty, shape, semantic });
         return Ok(());
     }
     for (path, v) in compat::initial_values(name) {
         let Some((offset, slot)) = crate::back::reflect::resolve_path(module, block, &path) else { continue };
-        let floats = |xs: &[f32]| UniformValue::List(xs.iter().map(|x| UniformValue::Float(f64::from(*x))).collect());
         let value = match v.len() {
             1 => UniformValue::Float(f64::from(v[0])),
-            16 => UniformValue::List(v.chunks(4).map(floats).collect()),
-            _ => floats(&v),
+            16 => semantics::matrix(glam::Mat4::from_cols_slice(&v), (4, 4)),
+            _ => semantics::floats(&v.iter().map(|x| f64::from(*x)).collect::<Vec<_>>()),
         };
         write_slot(module, slot, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{path}`: {e}"))?;
     }

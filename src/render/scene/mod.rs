@@ -224,7 +224,8 @@ impl Scene {
             (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));
         let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
         let draw = draw_of(gpu, r, pulled.as_ref().map(|p| p.count), &mesh_note, &mesh);
-        let uniforms = uniform_buffers(gpu, input, first_file, &mut warnings)?;
+        let initial = crate::front::initial_values::of(input.program);
+        let uniforms = uniform_buffers(gpu, input, &initial, first_file, &mut warnings)?;
         let textures = Textures::create(gpu, input, &mut warnings)?;
         let filled = pulled.as_ref().map(|p| p.buffers()).unwrap_or_default();
         let (bind_groups, storage) = bind_groups(gpu, &pipeline, r, &uniforms, &textures, &filled);
@@ -260,7 +261,7 @@ impl Scene {
             storage,
             degenerate,
             replay,
-            initial: crate::front::initial_values::of(input.program),
+            initial,
         })
     }
 }
@@ -390,17 +391,12 @@ fn pipeline_error(file: FileId, message: &str) -> Diagnostic {
 fn uniform_buffers(
     gpu: &Gpu,
     input: &SceneInput<'_>,
+    initial: &[(String, crate::manifest::UniformValue)],
     first_file: FileId,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
-    let (uniform_data, guessed) = uniforms::buffers(
-        &input.translation.module,
-        input.effect,
-        &crate::front::initial_values::of(input.program),
-        input.overrides,
-        !input.gl_defaults,
-    )
-    .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
+    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect, initial, input.overrides, !input.gl_defaults)
+        .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
         let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
         d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
