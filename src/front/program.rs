@@ -403,9 +403,11 @@ fn compile_own(
         let lower = |r: &mut Rewritten| if options.doubles_as_floats { crate::front::doubles::as_floats(&mut r.text) } else { None };
         let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
         let mut lowered = lower(&mut rewritten);
+        let oversized = oversized_function(&s, files.text(s.file));
         let run = |rewritten: &Rewritten, rdiags: &[Diagnostic]| match &rewritten.limitation {
             _ if rdiags.iter().any(Diagnostic::is_error) || !s.has_main => None,
             Some(limit) => Some(Outcome::Limited(limit.clone())),
+            None if oversized.is_some() => oversized.clone().map(Outcome::Limited),
             None => Some(naga_run::parse_and_validate(s.file, rewritten, naga_stage, &s.version)),
         };
         let mut outcome = run(&rewritten, &rdiags);
@@ -460,6 +462,33 @@ fn compile_own(
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation, through_spirv: false });
     }
     Some(CompiledProgram { stages: compiled, plan, folded: None, reference: None })
+}
+
+/// Bytes of one function body beyond which naga's GLSL front is not used.
+///
+/// naga's GLSL front types each new expression by walking the function's expressions from
+/// the start again (`Typifier::grow` skips through an iterator), so its time grows with the
+/// square of a function's size: a 100,000-statement `main` took 45 s where glslang takes
+/// under a second. Such a stage goes through glslang's SPIR-V and naga's SPIR-V front
+/// instead ([`through_spirv`]), which is linear. 128 KiB (~6,000 statements) keeps naga's
+/// share under ~0.2 s; real functions are far smaller.
+pub const NAGA_GLSL_FUNCTION_BYTES: usize = 128 << 10;
+
+/// The largest function of `s` (whose text is `text`) when it is over [`NAGA_GLSL_FUNCTION_BYTES`], as what naga
+/// cannot take (within reason) and where.
+fn oversized_function(s: &StageSyntax, text: &str) -> Option<Limitation> {
+    let f = s.functions.iter().filter(|f| f.is_definition).max_by_key(|f| f.span.len())?;
+    // The label covers the header, up to the body's `{`.
+    let header = text.get(f.span.clone()).and_then(|t| t.find('{')).unwrap_or(1);
+    (f.span.len() > NAGA_GLSL_FUNCTION_BYTES).then(|| Limitation {
+        construct: format!(
+            "`{}` in reasonable time: its {} KiB body is past {} KiB, where naga's GLSL front slows with the square of a function's size",
+            f.name,
+            f.span.len() >> 10,
+            NAGA_GLSL_FUNCTION_BYTES >> 10
+        ),
+        span: Some(f.span.start..f.span.start + header),
+    })
 }
 
 /// W0131 at the first double the stage draws as a float ([`doubles`](crate::front::doubles)).

@@ -106,7 +106,8 @@ pub fn string_id(name: &str) -> i64 {
 /// (GLSL ≥ 3.30, ES ≥ 3.00) rather than `L + 1`.
 pub struct LineTable {
     starts: Vec<usize>,
-    logical: Vec<(i64, i64)>,
+    /// The first physical line (index into `starts`) of each logical line.
+    first: std::collections::HashMap<(i64, i64), usize>,
     len: usize,
 }
 
@@ -128,12 +129,17 @@ impl LineTable {
                 }
             }
         }
-        LineTable { starts, logical, len: text.len() }
+        // Looked up once per span of a module: a map, not a search, keeps that linear.
+        let mut first = std::collections::HashMap::with_capacity(logical.len());
+        for (i, l) in logical.into_iter().enumerate() {
+            first.entry(l).or_insert(i);
+        }
+        LineTable { starts, first, len: text.len() }
     }
 
     /// The byte range of the physical line glslang calls `(string, line)`.
     pub fn line_range(&self, string: i64, line: i64) -> Option<Range<usize>> {
-        let i = self.logical.iter().position(|&l| l == (string, line))?;
+        let i = *self.first.get(&(string, line))?;
         let end = self.starts.get(i + 1).copied().unwrap_or(self.len);
         Some(self.starts[i]..end)
     }
