@@ -467,7 +467,7 @@ impl CommonArgs {
         InputSpec {
             paths: self.inputs.clone(),
             stage: self.stage.map(Into::into),
-            front: FrontOptions { strict: self.strict || config.strict, env, doubles_as_floats: false },
+            front: FrontOptions { strict: self.strict || config.strict, env, doubles_as_floats: false, limits: config.limits },
             selection: config.selection.clone(),
             jobs: self.jobs.map(|j| j as usize),
             values: Vec::new(),

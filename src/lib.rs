@@ -5,10 +5,11 @@
 //! (`tests/suite/layout.rs` checks every `crate::` path against this order, and that no
 //! module's own submodules import each other in a cycle).
 //!
-//! 1. [`diag`], [`stage`], [`read`]: every finding is a [`diag::Diagnostic`] with a typed
-//!    code, rendered by one emitter (human, JSON, GitHub annotations, SARIF), silenced by
-//!    suppressions (`diag::suppress`); stage kinds; bounded reads of the files a user's
-//!    input names (regular files only, a size limit, confinement to the project root).
+//! 1. [`diag`], [`stage`], [`limits`], [`read`]: every finding is a [`diag::Diagnostic`]
+//!    with a typed code, rendered by one emitter (human, JSON, GitHub annotations, SARIF),
+//!    silenced by suppressions (`diag::suppress`); stage kinds; how much of an input effectc
+//!    reads and models; bounded reads of the files a user's input names (regular files only,
+//!    a size limit, confinement to the project root and the directories it allows).
 //! 2. [`config`]: the repository's `effectc.toml` (paths read, dialect, codes allowed or
 //!    denied).
 //! 3. [`manifest`]: `effect.toml` → [`manifest::Effect`] (stages, uniform defaults, textures,
@@ -50,6 +51,7 @@ pub mod diag;
 pub mod front;
 pub mod graph;
 pub mod inputs;
+pub mod limits;
 pub mod link;
 pub mod manifest;
 pub mod output;

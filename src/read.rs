@@ -4,13 +4,17 @@
 //! effectc reads pull requests nobody has reviewed: a stage or `#include` of `/dev/zero`
 //! would grow without end, a FIFO would block, and `#include "/proc/self/environ"` would
 //! print the CI job's secrets in a diagnostic's snippet. Every stage and included file goes
-//! through [`bounded`]; included files also through [`confined`].
+//! through [`bounded`]; included files also through [`confined`], which admits the project
+//! root and the directories its `effectc.toml` makes readable (`readable = ["../shared"]`;
+//! never `/proc`, `/etc` and the like).
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-/// Largest stage or included file read (bytes): far above any real shader (the largest
-/// generated stages met are ~2 MB), far below what would exhaust memory.
+/// Largest file read that is no stage (a manifest, `effectc.toml`, a look into a file to
+/// tell its stage): far above any real shader (the largest generated stages met are
+/// ~2 MB), far below what would exhaust memory. Stages and included files have the run's
+/// `[limits] file-bytes` ([`crate::limits::Limits`], the same by default).
 pub const MAX_FILE_BYTES: u64 = 16 << 20;
 
 /// Why a file was not read.
@@ -28,7 +32,10 @@ impl std::fmt::Display for Refused {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Refused::NotAFile(what) => write!(f, "it is {what}, not a regular file"),
-            Refused::TooLarge(limit) => write!(f, "it is larger than effectc's limit of {} MiB per file", limit >> 20),
+            Refused::TooLarge(limit) if limit % (1 << 20) == 0 => {
+                write!(f, "it is larger than effectc's limit of {} MiB per file (`[limits] file-bytes`)", limit >> 20)
+            }
+            Refused::TooLarge(limit) => write!(f, "it is larger than effectc's limit of {limit} bytes per file (`[limits] file-bytes`)"),
             Refused::Io(e) => write!(f, "{e}"),
         }
     }
@@ -56,12 +63,18 @@ pub fn bounded_text_lossy(path: &Path) -> Result<String, Refused> {
     bounded(path, MAX_FILE_BYTES).map(|b| String::from_utf8_lossy(&b).into_owned())
 }
 
-/// The note of a refusal to read outside `root` (E0106): which directory, why, and that
+/// The note of a refusal to read outside `root` (E0106): which directories, why, and that
 /// `what` (the stage, the manifest) is under review.
-pub fn outside_root_note(root: &Path, what: &str) -> String {
+pub fn outside_root_note(root: &Root, what: &str) -> String {
+    let also = if root.readable.is_empty() {
+        String::new()
+    } else {
+        let dirs: Vec<String> = root.readable.iter().map(|d| format!("`{}`", d.display())).collect();
+        format!(" and in {}, which its `effectc.toml` makes readable", dirs.join(", "))
+    };
     format!(
-        "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the {what}'s own): a {what} under review must not read the machine's files",
-        root.display()
+        "effectc reads only files inside `{}` (the nearest directory with an `effectc.toml` or `.git`, else the {what}'s own){also}: a {what} under review must not read the machine's files; `readable = [\"dir\"]` in that `effectc.toml` allows a directory outside it",
+        root.dir.display()
     )
 }
 
@@ -81,20 +94,71 @@ fn kind_of(meta: &std::fs::Metadata) -> &'static str {
     }
 }
 
-/// The project root of a file a user named: the nearest directory above it holding an
-/// `effectc.toml` or a `.git`, else the file's own directory.
-pub fn project_root(file: &Path) -> PathBuf {
-    let file = std::fs::canonicalize(file).unwrap_or_else(|_| file.to_path_buf());
-    let dir = file.parent().map(Path::to_path_buf).unwrap_or_else(|| PathBuf::from("."));
-    dir.ancestors().find(|d| d.join("effectc.toml").is_file() || d.join(".git").exists()).map(Path::to_path_buf).unwrap_or(dir)
+/// Where the files a shader or manifest names may lie: its project root, and the
+/// directories outside it that the root's `effectc.toml` makes readable.
+#[derive(Debug, Clone)]
+pub struct Root {
+    /// The nearest directory above the file holding an `effectc.toml` or a `.git`, else
+    /// the file's own directory.
+    pub dir: PathBuf,
+    /// `readable = [...]` of `dir`'s `effectc.toml`, resolved (each one passed
+    /// [`readable_dir`]; an entry that does not is left out, and `effectc.toml`'s own
+    /// check reports it).
+    pub readable: Vec<PathBuf>,
 }
 
-/// `target` resolved (symlinks, `..`) lies inside `root`: where a file a shader names may be.
-/// A target that does not exist is judged by its path as written, made absolute.
-pub fn confined(target: &Path, root: &Path) -> bool {
+/// The [`Root`] of a file a user named.
+pub fn project_root(file: &Path) -> Root {
+    let file = std::fs::canonicalize(file).unwrap_or_else(|_| file.to_path_buf());
+    let own = file.parent().map(Path::to_path_buf).unwrap_or_else(|| PathBuf::from("."));
+    let dir = own.ancestors().find(|d| d.join(CONFIG).is_file() || d.join(".git").exists()).map(Path::to_path_buf).unwrap_or(own);
+    let readable = readable_of(&dir.join(CONFIG));
+    Root { dir, readable }
+}
+
+/// The settings file whose directory is a project root (`config` reads the rest of it).
+const CONFIG: &str = "effectc.toml";
+
+/// The `readable` directories of the settings file at `config`, those that resolve.
+fn readable_of(config: &Path) -> Vec<PathBuf> {
+    #[derive(serde::Deserialize)]
+    struct Readable {
+        #[serde(default)]
+        readable: Vec<String>,
+    }
+    let Ok(bytes) = bounded(config, MAX_FILE_BYTES) else { return Vec::new() };
+    let Ok(r) = toml::from_str::<Readable>(&String::from_utf8_lossy(&bytes)) else { return Vec::new() };
+    let base = config.parent().unwrap_or(Path::new("."));
+    r.readable.iter().filter_map(|entry| readable_dir(base, entry).ok()).collect()
+}
+
+/// Directories never made readable, nor any directory holding one of them: the machine's
+/// processes, devices and settings, where the job's secrets live.
+const NEVER_READABLE: [&str; 7] = ["/proc", "/sys", "/dev", "/etc", "/run", "/root", "/var/run"];
+
+/// `entry` of `readable = [...]` (relative to `base`, the settings file's directory)
+/// resolved to the directory it names; why not, when it names no directory or one that
+/// may never be read.
+pub fn readable_dir(base: &Path, entry: &str) -> Result<PathBuf, String> {
+    let dir = std::fs::canonicalize(base.join(entry)).map_err(|e| format!("`{entry}` cannot be resolved: {e}"))?;
+    if !dir.is_dir() {
+        return Err(format!("`{entry}` is not a directory"));
+    }
+    let home = std::env::var_os("HOME").map(PathBuf::from);
+    let system = NEVER_READABLE.iter().map(PathBuf::from).chain(home).find(|s| s.starts_with(&dir) || dir.starts_with(s));
+    match system {
+        Some(s) => Err(format!("`{entry}` ({}) would make `{}` readable, which holds the machine's own files", dir.display(), s.display())),
+        None => Ok(dir),
+    }
+}
+
+/// `target` resolved (symlinks, `..`) lies inside `root`'s directory or one it makes
+/// readable: where a file a shader names may be. A target that does not exist is judged by
+/// its path as written, made absolute.
+pub fn confined(target: &Path, root: &Root) -> bool {
     let resolved = std::fs::canonicalize(target).unwrap_or_else(|_| lexically_absolute(target));
-    let root = std::fs::canonicalize(root).unwrap_or_else(|_| lexically_absolute(root));
-    resolved.starts_with(root)
+    let dir = std::fs::canonicalize(&root.dir).unwrap_or_else(|_| lexically_absolute(&root.dir));
+    std::iter::once(&dir).chain(&root.readable).any(|d| resolved.starts_with(d))
 }
 
 /// `path` made absolute with `.` and `..` folded, without touching the file system.
@@ -127,10 +191,22 @@ mod tests {
 
     #[test]
     fn confinement_follows_dot_dot_and_absolute_paths() {
-        let root = Path::new("tests");
-        assert!(confined(Path::new("tests/fail/../rewrite"), root));
-        assert!(!confined(Path::new("tests/../Cargo.toml"), root));
-        assert!(!confined(Path::new("/proc/self/environ"), root));
-        assert!(!confined(Path::new("tests/no/such/../../../../outside.txt"), root));
+        let root = Root { dir: PathBuf::from("tests"), readable: Vec::new() };
+        assert!(confined(Path::new("tests/fail/../rewrite"), &root));
+        assert!(!confined(Path::new("tests/../Cargo.toml"), &root));
+        assert!(!confined(Path::new("/proc/self/environ"), &root));
+        assert!(!confined(Path::new("tests/no/such/../../../../outside.txt"), &root));
+        let also = Root { readable: vec![std::fs::canonicalize("src").unwrap()], ..root };
+        assert!(confined(Path::new("tests/../src/lib.rs"), &also));
+        assert!(!confined(Path::new("tests/../Cargo.toml"), &also));
+    }
+
+    #[test]
+    fn system_directories_are_never_readable() {
+        assert!(readable_dir(Path::new("."), "src").is_ok());
+        assert!(readable_dir(Path::new("."), "Cargo.toml").unwrap_err().contains("not a directory"));
+        for dir in ["/", "/proc/self", "/etc", "/dev", "../../../../../../../../.."] {
+            assert!(readable_dir(Path::new("."), dir).is_err(), "{dir}");
+        }
     }
 }

@@ -24,6 +24,8 @@ pub struct Loaded {
     pub io_error: bool,
     /// The fragment stage given GL's fixed-function vertex stage (it is not alone).
     pub vertex_added_for: Option<String>,
+    /// The most bytes a stage or included file may hold (`[limits] file-bytes`).
+    file_bytes: u64,
 }
 
 /// What there is to analyse.
@@ -48,8 +50,9 @@ pub struct PassFiles {
 
 /// Reads the files of `input` into `files`. With `fixed_function_vertex`, a program that
 /// is one compatibility-profile fragment stage gets GL's fixed-function vertex stage
-/// ([`compat::fixed_function_vertex_stage`]), as GL draws it.
-pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool) -> Loaded {
+/// ([`compat::fixed_function_vertex_stage`]), as GL draws it. No stage or included file
+/// over `file_bytes` is read.
+pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool, file_bytes: u64) -> Loaded {
     let mut l = Loaded {
         name: input.display_name(),
         effect: None,
@@ -57,6 +60,7 @@ pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool
         diagnostics: Vec::new(),
         io_error: false,
         vertex_added_for: None,
+        file_bytes,
     };
     match input {
         ProgramInput::Manifest(path) => match manifest::load(path, files) {
@@ -174,11 +178,11 @@ fn load_passes(effect: &Effect, files: &mut Files, l: &mut Loaded) -> Vec<PassFi
 
 /// Reads one stage file and inlines its `#include`s: the id of the text the front reads.
 fn read_stage(path: &Path, files: &mut Files, l: &mut Loaded) -> Option<FileId> {
-    match crate::read::bounded(path, crate::read::MAX_FILE_BYTES) {
+    match crate::read::bounded(path, l.file_bytes) {
         Ok(bytes) => match String::from_utf8(bytes) {
             Ok(text) => {
                 let id = files.add(path.display().to_string(), text);
-                crate::front::includes::expand(path, id, files, &mut l.diagnostics)
+                crate::front::includes::expand(path, id, files, l.file_bytes, &mut l.diagnostics)
             }
             Err(e) => {
                 let valid = e.utf8_error().valid_up_to();

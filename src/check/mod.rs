@@ -124,7 +124,7 @@ impl InputSpec {
         let mut registered = Vec::with_capacity(programs.len());
         for p in &programs {
             let before = out.files.len();
-            let l = load::load(p, &mut out.files, self.fixed_function_vertex);
+            let l = load::load(p, &mut out.files, self.fixed_function_vertex, self.front.limits.file_bytes);
             if let Some(fragment) = &l.vertex_added_for {
                 // Not alone after all: GL's fixed-function vertex stage links with it.
                 let alone = format!("`{fragment}` is checked alone");
@@ -276,6 +276,7 @@ pub fn check_stages(
             diags.extend(hazards::analyse(effect, p));
         }
     }
+    crate::front::macro_spans::narrow(files, &mut diags);
     (program, diags)
 }
 

@@ -11,10 +11,12 @@
 //! which the front reports (E0104) unless conditional compilation leaves it out (`#ifdef
 //! __cplusplus` in a shared header).
 //!
-//! Confinement: an included file must lie inside the stage's project root
-//! ([`crate::read::project_root`]; `..` and symlinks resolved): one outside it (an absolute
+//! Confinement: an included file must lie inside the stage's project root or a directory
+//! its `effectc.toml` makes readable ([`crate::read::project_root`]; `..` and symlinks
+//! resolved): one outside them (an absolute
 //! path, `/proc/self/environ`, a `..` escape) is E0106 and is never opened. A device, FIFO
-//! or directory, or a file over [`crate::read::MAX_FILE_BYTES`], is E0104 and is not read.
+//! or directory, or a file over the `file-bytes` limit, is E0104 and is not read; a stage
+//! that would grow past that limit with its inclusions inlined is E0107.
 
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
@@ -27,7 +29,7 @@ const MAX_DEPTH: usize = 32;
 
 /// The id the front should read for stage `main` (read from `path`): `main` itself, or its
 /// expanded text when it includes files. Errors are pushed to `diags` (then `None`).
-pub fn expand(path: &Path, main: FileId, files: &mut Files, diags: &mut Vec<Diagnostic>) -> Option<FileId> {
+pub fn expand(path: &Path, main: FileId, files: &mut Files, file_bytes: u64, diags: &mut Vec<Diagnostic>) -> Option<FileId> {
     let text = files.text(main).to_string();
     if !has_include(&text) {
         return Some(main);
@@ -38,6 +40,7 @@ pub fn expand(path: &Path, main: FileId, files: &mut Files, diags: &mut Vec<Diag
         stack: vec![canonical(path)],
         once: HashSet::new(),
         root: crate::read::project_root(path),
+        file_bytes,
         failed: false,
     };
     x.inline(path, main, &text, files, diags);
@@ -62,8 +65,10 @@ struct Expansion {
     stack: Vec<PathBuf>,
     /// Files with `#pragma once` or an include guard already inlined.
     once: HashSet<PathBuf>,
-    /// The directory included files must lie in.
-    root: PathBuf,
+    /// Where included files must lie.
+    root: crate::read::Root,
+    /// The most bytes an included file, and the stage with every inclusion inlined, may hold.
+    file_bytes: u64,
     failed: bool,
 }
 
@@ -100,7 +105,7 @@ impl Expansion {
                 );
                 continue;
             }
-            let bytes = match crate::read::bounded(&target, crate::read::MAX_FILE_BYTES) {
+            let bytes = match crate::read::bounded(&target, self.file_bytes) {
                 Ok(bytes) => bytes,
                 Err(why @ (crate::read::Refused::NotAFile(_) | crate::read::Refused::TooLarge(_))) => {
                     let d = Diagnostic::new(Code::IncludeUnresolved, format!("`{name}` cannot be included: {why}")).at(
@@ -118,6 +123,18 @@ impl Expansion {
                     continue;
                 }
             };
+            if (self.out.len() + bytes.len()) as u64 > self.file_bytes {
+                // Each file is within the limit, but a header included many times (no
+                // guard) multiplies: the stage as the compiler would read it is bounded too.
+                let d = Diagnostic::new(
+                    Code::StageLimit,
+                    format!("with `{name}` inlined here the stage grows past effectc's limit of {} bytes", self.file_bytes),
+                )
+                .at(id, name_span, "included here")
+                .with_note(crate::limits::Limits::how_to_raise("file-bytes"));
+                self.fail(diags, d);
+                return;
+            }
             let included = String::from_utf8_lossy(&bytes).into_owned();
             if guarded(&included) {
                 self.once.insert(key.clone());
@@ -178,7 +195,7 @@ mod tests {
         let mut files = Files::new();
         let id = files.add(path.display().to_string(), main);
         let mut diags = Vec::new();
-        let x = expand(&path, id, &mut files, &mut diags).expect("expands");
+        let x = expand(&path, id, &mut files, crate::read::MAX_FILE_BYTES, &mut diags).expect("expands");
         assert!(diags.is_empty(), "{diags:?}");
         let text = files.text(x).to_string();
         assert_eq!(text.matches("float two()").count(), 1, "pragma once: {text}");
@@ -204,7 +221,7 @@ mod tests {
         let mut files = Files::new();
         let id = files.add(path.display().to_string(), "#include <self.glsl>\n");
         let mut diags = Vec::new();
-        assert!(expand(&path, id, &mut files, &mut diags).is_none());
+        assert!(expand(&path, id, &mut files, crate::read::MAX_FILE_BYTES, &mut diags).is_none());
         assert_eq!(diags[0].code, Code::IncludeUnresolved);
         let resolved = files.resolved(&diags);
         let f = resolved[0].file.unwrap();
@@ -214,7 +231,7 @@ mod tests {
         let main = "#ifdef __cplusplus\n#include <glm/glm.hpp>\n#endif\n#include \"ok.glsl\"\n";
         let id = files.add(path.display().to_string(), main);
         let mut diags = Vec::new();
-        let x = expand(&path, id, &mut files, &mut diags).expect("a missing file is left to the front");
+        let x = expand(&path, id, &mut files, crate::read::MAX_FILE_BYTES, &mut diags).expect("a missing file is left to the front");
         assert_eq!(files.text(x), "#ifdef __cplusplus\n#include <glm/glm.hpp>\n#endif\nfloat one() { return 1.0; }\n");
         std::fs::remove_dir_all(&dir).unwrap();
     }

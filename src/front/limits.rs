@@ -1,46 +1,42 @@
 //! Limits a stage must keep before any compiler reads it (E0107): glslang, glsl-lang, naga
 //! and effectc's own walks recurse once per term of a sum and per expanded macro level, so
 //! an input far beyond real code would exhaust the stack or memory rather than fail.
+//! The values are the run's [`Limits`] (defaults, or `effectc.toml`'s `[limits]`):
 //!
-//! - one statement of more than [`MAX_STATEMENT_TOKENS`] tokens (a sum of ~100,000 terms;
+//! - one statement of more than `statement-tokens` tokens (a sum of ~100,000 terms;
 //!   glslangValidator itself crashes near there, and 10,000 terms are accepted);
-//! - a macro that expands to more than [`MAX_MACRO_TOKENS`] tokens (`#define A1 A0+A0`,
+//! - a macro that expands to more than `macro-tokens` tokens (`#define A1 A0+A0`,
 //!   doubling at each level);
 //! - ([`check_globals`], on the declarations) a uniform or private global array of more than
-//!   [`MAX_ARRAY_ELEMENTS`] elements: GL's uniform storage holds a few thousand (Mesa refuses
-//!   more at link), and effectc models every element.
+//!   `array-elements` elements.
 //!
 //! The first two are counted on the text in one pass, linear in its size.
 
 use std::collections::HashMap;
 
 use crate::diag::{Code, Diagnostic, FileId};
+use crate::limits::Limits;
 
-/// Tokens in one statement (between `;`, `{` and `}`).
-pub const MAX_STATEMENT_TOKENS: usize = 200_000;
-/// Tokens one macro may expand to.
-pub const MAX_MACRO_TOKENS: u64 = 1 << 20;
-
-/// Elements in one uniform or private global array (all dimensions).
-pub const MAX_ARRAY_ELEMENTS: u64 = 1 << 16;
-
-/// The first global of `s` beyond [`MAX_ARRAY_ELEMENTS`], as an error.
-pub fn check_globals(s: &crate::front::syntax::StageSyntax) -> Option<Diagnostic> {
+/// The first global of `s` beyond `limits.array_elements`, as an error.
+pub fn check_globals(s: &crate::front::syntax::StageSyntax, limits: &Limits) -> Option<Diagnostic> {
     use crate::front::syntax::Storage;
+    let most = limits.array_elements;
     s.globals.iter().filter(|g| matches!(g.storage, Storage::Uniform | Storage::Private)).find_map(|g| {
         let elements = g.ty.dims.iter().map(|d| u64::from(d.unwrap_or(1))).fold(1u64, u64::saturating_mul);
-        (elements > MAX_ARRAY_ELEMENTS).then(|| {
-            Diagnostic::new(Code::StageLimit, format!("`{}` has {elements} elements, more than effectc's limit of {MAX_ARRAY_ELEMENTS}", g.name))
+        (elements > most).then(|| {
+            Diagnostic::new(Code::StageLimit, format!("`{}` has {elements} elements, more than effectc's limit of {most}", g.name))
                 .at(s.file, g.name_span.clone(), "declared here")
                 .with_note("GL drivers hold a few thousand uniform components per stage (Mesa refuses more when it links); use a storage buffer or a texture for bulk data")
+                .with_note(Limits::how_to_raise("array-elements"))
         })
     })
 }
 
 /// The first limit the stage `text` (of `file`) breaks, as an error.
-pub fn check(file: FileId, text: &str) -> Option<Diagnostic> {
+pub fn check(file: FileId, text: &str, limits: &Limits) -> Option<Diagnostic> {
+    let (most_tokens, most_macro) = (limits.statement_tokens, limits.macro_tokens);
     let mut statement_start = 0;
-    let mut count = 0usize;
+    let mut count = 0u64;
     let mut defines: Vec<(String, Vec<String>, std::ops::Range<usize>)> = Vec::new();
     let mut line_start = 0;
     for line in logical_lines(text) {
@@ -65,12 +61,13 @@ pub fn check(file: FileId, text: &str) -> Option<Diagnostic> {
             if matches!(token, ";" | "{" | "}") {
                 count = 0;
                 statement_start = at + offset + 1;
-            } else if count > MAX_STATEMENT_TOKENS {
+            } else if count > most_tokens {
                 let end = (at + offset + token.len()).min(statement_start + 80).max(statement_start);
                 return Some(
-                    Diagnostic::new(Code::StageLimit, format!("a statement of more than {MAX_STATEMENT_TOKENS} tokens"))
+                    Diagnostic::new(Code::StageLimit, format!("a statement of more than {most_tokens} tokens"))
                         .at(file, char_floor(text, statement_start)..char_floor(text, end), "this statement")
-                        .with_note("effectc refuses expressions this long before compiling them (glslangValidator itself crashes near 100,000 terms); split the sum into several statements"),
+                        .with_note("effectc refuses expressions this long before compiling them (glslangValidator itself crashes near 100,000 terms); split the sum into several statements")
+                        .with_note(Limits::how_to_raise("statement-tokens")),
                 );
             }
         }
@@ -78,13 +75,14 @@ pub fn check(file: FileId, text: &str) -> Option<Diagnostic> {
     let bodies: HashMap<&str, &[String]> = defines.iter().map(|(n, b, _)| (n.as_str(), b.as_slice())).collect();
     let mut sizes: HashMap<&str, u64> = HashMap::new();
     for (name, _, span) in &defines {
-        if expanded_size(name, &bodies, &mut sizes, &mut Vec::new()) > MAX_MACRO_TOKENS {
+        if expanded_size(name, &bodies, &mut sizes, &mut Vec::new()) > most_macro {
             return Some(
-                Diagnostic::new(Code::StageLimit, format!("`{name}` expands to more than {MAX_MACRO_TOKENS} tokens"))
+                Diagnostic::new(Code::StageLimit, format!("`{name}` expands to more than {most_macro} tokens"))
                     .at(file, span.clone(), "defined here")
                     .with_note(
                         "each level of this macro repeats the one below it: its expansion grows exponentially, which no compiler can read",
-                    ),
+                    )
+                    .with_note(Limits::how_to_raise("macro-tokens")),
             );
         }
     }
@@ -183,17 +181,20 @@ mod tests {
     #[test]
     fn long_sums_and_doubling_macros_are_refused_and_real_code_is_not() {
         let sum = |n: usize| format!("void main() {{ float x = {}; }}\n", vec!["u"; n].join(" + "));
-        assert!(check(FileId(0), &sum(10_000)).is_none(), "glslang-sized sums pass");
-        let d = check(FileId(0), &sum(150_000)).expect("a 150,000-term sum");
+        assert!(check(FileId(0), &sum(10_000), &Limits::default()).is_none(), "glslang-sized sums pass");
+        let d = check(FileId(0), &sum(150_000), &Limits::default()).expect("a 150,000-term sum");
         assert_eq!(d.code, Code::StageLimit);
         let mut macros = String::from("#define A0 u\n");
         for i in 1..=16 {
             macros.push_str(&format!("#define A{i} A{}+A{}\n", i - 1, i - 1));
         }
-        assert!(check(FileId(0), &macros).is_none(), "2^16 tokens pass");
+        assert!(check(FileId(0), &macros, &Limits::default()).is_none(), "2^16 tokens pass");
         macros.push_str("#define A21 A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16+A16\n");
-        assert!(check(FileId(0), &macros).is_some_and(|d| d.message.contains("`A21`")));
+        assert!(check(FileId(0), &macros, &Limits::default()).is_some_and(|d| d.message.contains("`A21`")));
         let continued = "#define F(x) \\\n  (x) * \\\n  (x)\nvoid main() { float y = F(2.0); }\n";
-        assert!(check(FileId(0), continued).is_none());
+        assert!(check(FileId(0), continued, &Limits::default()).is_none());
+        let low = Limits { statement_tokens: 100, ..Limits::default() };
+        let d = check(FileId(0), &sum(60), &low).expect("a lowered limit holds");
+        assert!(d.message.contains("more than 100 tokens") && d.notes.iter().any(|n| n.contains("`statement-tokens`")), "{d:?}");
     }
 }

@@ -13,6 +13,7 @@
 //! - [`limitation`]: a legal construct naga cannot take (the stage is checked, not translated).
 //! - [`limits`]: what a stage must keep before any compiler reads it (statement length, macro
 //!   expansion): the stack and memory stay bounded.
+//! - [`macro_spans`]: a span from a `#define` down to the macro's use narrowed to the use.
 //! - [`reference`]: glslang, the Khronos reference compiler, in process: what is legal,
 //!   with its errors at the user's lines.
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
@@ -31,6 +32,7 @@ pub mod initial_values;
 pub mod lexical;
 pub mod limitation;
 pub mod limits;
+pub mod macro_spans;
 pub mod naga_run;
 pub mod plan;
 pub mod program;

@@ -31,6 +31,8 @@ pub struct FrontOptions {
     /// Draw 64-bit floats as 32-bit ones ([`doubles`](crate::front::doubles)): the
     /// commands that draw on WebGPU, which has no f64.
     pub doubles_as_floats: bool,
+    /// How much of a stage effectc reads and models (E0107 beyond).
+    pub limits: crate::limits::Limits,
 }
 
 /// A stage as compiled by the front.
@@ -96,7 +98,7 @@ pub fn compile(
 ) -> Option<CompiledProgram> {
     let mut ordered: Vec<(FileId, StageKind)> = stages.to_vec();
     ordered.sort_by_key(|(_, k)| *k);
-    let beyond: Vec<Diagnostic> = ordered.iter().filter_map(|(f, _)| limits::check(*f, files.text(*f))).collect();
+    let beyond: Vec<Diagnostic> = ordered.iter().filter_map(|(f, _)| limits::check(*f, files.text(*f), &options.limits)).collect();
     if !beyond.is_empty() {
         diags.extend(beyond);
         return None;
@@ -280,7 +282,13 @@ fn accept_what_glslang_accepts(
             Some(v) if !v.accepted && d.is_error() && limit_of_effectc(d.code) => {
                 let line = line_of(&d);
                 // Both refuse the `#version` line: effectc's message says which version.
-                if d.code == Code::BadVersion || (line.is_some() && v.errors.iter().any(|g| line_of(g) == line)) {
+                // On another line both refuse, effectc's parser and naga's GLSL front say
+                // what they expected (`Constructor expects 3 components, found 2`, over the
+                // whole constructor); naga's validator speaks of its IR (`The pointer [2]
+                // doesn't relate to a valid destination`) and gives way to glslang's words
+                // (`l-value required "u"`).
+                let same_line = line.is_some() && v.errors.iter().any(|g| line_of(g) == line);
+                if d.code == Code::BadVersion || (same_line && !matches!(d.code, Code::NagaValidation | Code::NagaCrashed)) {
                     shown_lines.extend(line);
                     out.push(d);
                 }
@@ -361,20 +369,12 @@ fn compile_own(
     if !ok {
         return None;
     }
-    let beyond: Vec<Diagnostic> = syntaxes.iter().filter_map(limits::check_globals).collect();
+    let beyond: Vec<Diagnostic> = syntaxes.iter().filter_map(|s| limits::check_globals(s, &options.limits)).collect();
     if !beyond.is_empty() {
         diags.extend(beyond);
         return None;
     }
-    for s in &syntaxes {
-        if !s.has_main {
-            diags.push(
-                Diagnostic::new(Code::NoMain, format!("the {} stage has no `main` function", s.stage))
-                    .in_file(s.file)
-                    .with_note("every stage of a GL program needs `void main()`"),
-            );
-        }
-    }
+    diags.extend(syntaxes.iter().filter(|s| !s.has_main).map(no_main));
     let plan = plan::plan(&syntaxes);
     let mut compiled = Vec::new();
     for s in syntaxes {
@@ -462,6 +462,13 @@ fn compile_own(
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation, through_spirv: false });
     }
     Some(CompiledProgram { stages: compiled, plan, folded: None, reference: None })
+}
+
+/// E0103: a stage without `main`.
+fn no_main(s: &StageSyntax) -> Diagnostic {
+    Diagnostic::new(Code::NoMain, format!("the {} stage has no `main` function", s.stage))
+        .in_file(s.file)
+        .with_note("every stage of a GL program needs `void main()`")
 }
 
 /// Bytes of one function body beyond which naga's GLSL front is not used.

@@ -168,3 +168,123 @@ fn the_first_failed_write_stops_the_run_with_one_message() {
         assert!(stdout(&out).contains("0 frames"), "{}", stdout(&out));
     }
 }
+
+#[test]
+fn a_directory_the_settings_make_readable_may_be_included_and_no_other() {
+    let shared = common::scratch("hostile", "readable-shared");
+    std::fs::write(shared.join("lib.glsl"), "float k() { return 2.0; }\n").unwrap();
+    let other = common::scratch("hostile", "readable-other");
+    std::fs::write(other.join("lib.glsl"), "float k() { return 3.0; } // hunter2-other\n").unwrap();
+    let root = common::scratch("hostile", "readable-root");
+    let stage = |dir: &str| {
+        let file = root.join(format!("{dir}.frag"));
+        let text = format!("#version 330\n#extension GL_GOOGLE_include_directive : require\n#include \"../{dir}/lib.glsl\"\nout vec4 c;\nvoid main() {{ c = vec4(k()); }}\n");
+        std::fs::write(&file, text).unwrap();
+        file
+    };
+    let (allowed, refused) = (stage("readable-shared"), stage("readable-other"));
+    std::fs::write(root.join("effectc.toml"), "readable = [\"../readable-shared\"]\n").unwrap();
+    let out = check(&[], &[&allowed]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    refused_in_every_format(&refused, "a sibling the settings do not name");
+    // The settings under review cannot open the machine's own directories.
+    std::fs::write(root.join("effectc.toml"), "readable = [\"/proc\", \"/\", \"../readable-shared\"]\n").unwrap();
+    let out = check(&[], &[&allowed]);
+    assert_eq!(code(&out), 2, "{}", stdout(&out));
+    assert_eq!(stdout(&out).matches("`readable` entry refused").count(), 2, "{}", stdout(&out));
+}
+
+#[test]
+fn every_mistake_in_the_settings_is_reported_at_once() {
+    let dir = common::scratch("hostile", "settings-mistakes");
+    std::fs::write(
+        dir.join("effectc.toml"),
+        "colour = 1\nstrict = \"yes\"\ntarget-env = \"metal\"\n[limits]\nfile-bytes = -1\nnesting = 4\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("p.frag"), "#version 330\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n").unwrap();
+    let out = check(&["--format", "json"], &[&dir.join("p.frag")]);
+    assert_eq!(code(&out), 2, "{}", stdout(&out));
+    for said in
+        ["unknown key `colour`", "`strict` must be", "unknown target-env `metal`", "`file-bytes` must be", "unknown limit `nesting`"]
+    {
+        assert!(stdout(&out).contains(said), "{said}: {}", stdout(&out));
+    }
+}
+
+#[test]
+fn limits_set_in_the_settings_hold_for_stages_statements_and_includes() {
+    let dir = common::scratch("hostile", "settings-limits");
+    std::fs::write(dir.join("effectc.toml"), "[limits]\nstatement-tokens = 500\narray-elements = 8\nfile-bytes = 4096\n").unwrap();
+    let cases = [
+        ("statement.frag", sum(300), "E0107", "`statement-tokens`"),
+        (
+            "array.frag",
+            "#version 330\nuniform float w[9];\nout vec4 c;\nvoid main() { c = vec4(w[0]); }\n".to_string(),
+            "E0107",
+            "`array-elements`",
+        ),
+        (
+            "big.frag",
+            format!("#version 330\nout vec4 c;\n{}void main() {{ c = vec4(1.0); }}\n", "// padding\n".repeat(500)),
+            "E0013",
+            "file-bytes",
+        ),
+    ];
+    for (name, text, code_said, key) in cases {
+        let file = dir.join(name);
+        std::fs::write(&file, text).unwrap();
+        let out = check(&[], &[&file]);
+        assert!(code(&out) != 0 && stdout(&out).contains(code_said) && stdout(&out).contains(key), "{name}: {}", stdout(&out));
+    }
+    // A header included over and over (no guard): each file is small, the stage is not.
+    std::fs::write(dir.join("h.glsl"), format!("{}\n", "// a comment line of a header\n".repeat(40))).unwrap();
+    let file = dir.join("many.frag");
+    let includes = "#include \"h.glsl\"\n".repeat(20);
+    std::fs::write(
+        &file,
+        format!(
+            "#version 330\n#extension GL_GOOGLE_include_directive : require\n{includes}out vec4 c;\nvoid main() {{ c = vec4(1.0); }}\n"
+        ),
+    )
+    .unwrap();
+    let out = check(&[], &[&file]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0107") && stdout(&out).contains("grows past"), "{}", stdout(&out));
+}
+
+/// A `main` of `n` statements.
+fn statements(n: usize) -> String {
+    let body: String = (0..n).map(|i| format!("  x = x * 1.0001 + {}.5;\n", i % 7)).collect();
+    format!("#version 330\nuniform float u;\nout vec4 c;\nvoid main() {{\n  float x = u;\n{body}  c = vec4(x);\n}}\n")
+}
+
+#[test]
+fn a_huge_function_is_checked_and_translated() {
+    // Past 128 KiB a function leaves naga's GLSL front (quadratic in its size) for
+    // glslang's SPIR-V: checked, translated to valid WGSL, and said by nothing but the note.
+    let dir = common::scratch("hostile", "huge-function");
+    let file = dir.join("huge.frag");
+    std::fs::write(&file, statements(8_000)).unwrap();
+    let out = check(&[], &[&file]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains("checked 1 program: 1 note"), "only the stage-alone note: {}", stdout(&out));
+    let target = dir.join("out");
+    let out = common::effectc(&["translate", "--to", "wgsl", "--out", target.to_str().unwrap(), file.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let wgsl = std::fs::read_to_string(target.join("huge.wgsl")).unwrap();
+    assert!(wgsl.matches("1.0001").count() >= 8_000, "every statement kept");
+}
+
+#[test]
+fn a_hazard_in_a_macro_is_shown_at_the_use_not_from_the_define() {
+    let dir = common::scratch("hostile", "macro-span");
+    let file = dir.join("m.frag");
+    let text = "#version 330\n#define D (gl_FragCoord.x - gl_FragCoord.x)\nout vec4 c;\n\n\nvoid main() {\n  float z = 2.0 / D;\n  c = vec4(z);\n}\n";
+    std::fs::write(&file, text).unwrap();
+    let out = check(&["--format", "json"], &[&file]);
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let division = report["diagnostics"].as_array().unwrap().iter().find(|d| d["code"] == "W0710").expect("the division is found");
+    let span = &division["span"];
+    assert_eq!((span["line"].as_u64(), span["end_line"].as_u64()), (Some(7), Some(7)), "{division}");
+}

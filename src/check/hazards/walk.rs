@@ -191,6 +191,9 @@ pub struct Analyzer<'a> {
     pub fresh: u64,
     /// Location outputs of the entry point (joined over its returns).
     pub outputs: HashMap<u32, Val>,
+    /// Each global's value before the stage writes it, made once: a uniform block of
+    /// thousands of members is read member by member, not rebuilt at each read.
+    initials: std::cell::RefCell<HashMap<Handle<naga::GlobalVariable>, std::rc::Rc<Val>>>,
 }
 
 const MAX_ROUNDS: usize = 12;
@@ -198,7 +201,18 @@ const MAX_CALL_DEPTH: usize = 24;
 
 impl<'a> Analyzer<'a> {
     pub fn new(module: &'a Module, info: &'a naga::valid::ModuleInfo, facts: &'a Facts, stage: naga::ShaderStage, text: &'a str) -> Self {
-        Analyzer { module, info, facts, stage, text, hazards: Vec::new(), quiet: 0, fresh: 0, outputs: HashMap::new() }
+        Analyzer {
+            module,
+            info,
+            facts,
+            stage,
+            text,
+            hazards: Vec::new(),
+            quiet: 0,
+            fresh: 0,
+            outputs: HashMap::new(),
+            initials: Default::default(),
+        }
     }
 
     /// Runs the entry point of the stage.
@@ -448,12 +462,22 @@ impl<'a> Analyzer<'a> {
 
     /// Reads the value at `place`.
     pub fn read(&self, state: &State, place: &Place) -> Val {
+        let initial;
         let base = match &place.root {
-            Root::Local(d, h) => state.locals.get(&(*d, *h)).cloned(),
-            Root::Global(g) => Some(state.globals.get(g).cloned().unwrap_or_else(|| self.global_initial(*g))),
+            Root::Local(d, h) => state.locals.get(&(*d, *h)),
+            Root::Global(g) => match state.globals.get(g) {
+                Some(v) => Some(v),
+                None => {
+                    initial = self.global_initial(*g);
+                    Some(&*initial)
+                }
+            },
         };
-        let Some(mut v) = base else { return Val::Agg(Vec::new()) };
-        for step in &place.path {
+        let Some(base) = base else { return Val::Agg(Vec::new()) };
+        // Only the part read is copied, not the whole variable.
+        let Some((first, rest)) = place.path.split_first() else { return base.clone() };
+        let mut v = super::eval::index(base, *first);
+        for step in rest {
             v = super::eval::index(&v, *step);
         }
         v
@@ -463,7 +487,7 @@ impl<'a> Analyzer<'a> {
     pub fn write(&mut self, state: &mut State, place: &Place, v: Val) {
         let current = match &place.root {
             Root::Local(d, h) => state.locals.get(&(*d, *h)).cloned(),
-            Root::Global(g) => Some(state.globals.get(g).cloned().unwrap_or_else(|| self.global_initial(*g))),
+            Root::Global(g) => Some(state.globals.get(g).cloned().unwrap_or_else(|| (*self.global_initial(*g)).clone())),
         };
         let Some(current) = current else { return };
         let updated = super::eval::update(&current, &place.path, v);
@@ -525,7 +549,17 @@ impl<'a> Analyzer<'a> {
         }
     }
 
-    fn global_initial(&self, g: Handle<naga::GlobalVariable>) -> Val {
+    /// The value of global `g` before the stage writes it (made once per analysis).
+    fn global_initial(&self, g: Handle<naga::GlobalVariable>) -> std::rc::Rc<Val> {
+        if let Some(v) = self.initials.borrow().get(&g) {
+            return v.clone();
+        }
+        let v = std::rc::Rc::new(self.make_global_initial(g));
+        self.initials.borrow_mut().insert(g, v.clone());
+        v
+    }
+
+    fn make_global_initial(&self, g: Handle<naga::GlobalVariable>) -> Val {
         let var = &self.module.global_variables[g];
         let inner = &self.module.types[var.ty].inner;
         match var.space {

@@ -9,22 +9,31 @@
 //! deny-warnings = true              # like --deny-warnings
 //! allow = ["W0201"]                 # silenced everywhere
 //! deny = ["W0717"]                  # raised to errors
+//! readable = ["../shared/glsl"]     # directories outside the project root that includes
+//!                                   # and manifests may read (never /proc, /etc, …)
 //! [stages]                          # the stage of extensions effectc does not know
 //! glsl = "fragment"
+//! [limits]                          # what effectc reads at most (see `crate::limits`)
+//! file-bytes = 16777216
 //! ```
+//!
+//! Every mistake in the file is reported at once, each at its key or value
+//! (`config::parse`).
 //!
 //! Globs follow `.gitignore` habits: `*` stays within a directory, `**` crosses them, and a
 //! pattern without `/` matches a file or directory name at any depth.
 
+mod parse;
+
 use std::collections::BTreeMap;
-use std::ops::Range;
 use std::path::{Path, PathBuf};
 
-use globset::{Glob, GlobBuilder, GlobSet, GlobSetBuilder};
+use globset::{Glob, GlobBuilder, GlobSet};
 
 use crate::diag::paths::absolute;
-use crate::diag::suppress::{self, Policy};
+use crate::diag::suppress::Policy;
 use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::limits::Limits;
 use crate::stage::StageKind;
 
 /// The file name searched for.
@@ -97,6 +106,8 @@ pub struct Config {
     pub strict: bool,
     pub deny_warnings: bool,
     pub policy: Policy,
+    /// How much of an input a run reads and models (`[limits]`).
+    pub limits: Limits,
 }
 
 /// A loaded configuration: the settings, and the file's text with the diagnostics about
@@ -167,112 +178,8 @@ pub fn load(explicit: Option<&Path>, inputs: &[PathBuf]) -> Loaded {
     };
     let file = files.add(path.display().to_string(), text.clone());
     let mut diagnostics = Vec::new();
-    let config = parse(&text, file, &path, &mut diagnostics);
+    let config = parse::parse(&text, file, &path, &mut diagnostics);
     Loaded { config, files, diagnostics }
-}
-
-/// The file's keys, as written.
-#[derive(Debug, serde::Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "kebab-case")]
-struct Raw {
-    #[serde(default)]
-    include: Option<Vec<toml::Spanned<String>>>,
-    #[serde(default)]
-    exclude: Vec<toml::Spanned<String>>,
-    #[serde(default)]
-    stages: BTreeMap<String, toml::Spanned<String>>,
-    target_env: Option<toml::Spanned<String>>,
-    #[serde(default)]
-    strict: bool,
-    #[serde(default)]
-    deny_warnings: bool,
-    #[serde(default)]
-    allow: Vec<toml::Spanned<String>>,
-    #[serde(default)]
-    deny: Vec<toml::Spanned<String>>,
-}
-
-/// The settings of `text`; problems go to `diags` (errors for what cannot be used,
-/// W0004 for unknown codes).
-fn parse(text: &str, file: FileId, path: &Path, diags: &mut Vec<Diagnostic>) -> Config {
-    let root = std::env::current_dir().unwrap_or_default().join(path.parent().unwrap_or(Path::new("")));
-    let raw: Raw = match toml::from_str(text) {
-        Ok(r) => r,
-        Err(e) => {
-            let span = e.span().unwrap_or(0..0);
-            diags.push(
-                Diagnostic::new(Code::ConfigInvalid, format!("invalid {FILE_NAME}: {}", e.message()))
-                    .at(file, span, "here")
-                    .with_note("keys: include, exclude, target-env, strict, deny-warnings, allow, deny, [stages]"),
-            );
-            return Config { path: Some(path.to_path_buf()), ..Config::default() };
-        }
-    };
-    let bad = |span: Range<usize>, msg: String, label: &str| Diagnostic::new(Code::ConfigInvalid, msg).at(file, span, label);
-    let mut globs = |list: &[toml::Spanned<String>]| -> Option<GlobSet> {
-        let mut builder = GlobSetBuilder::new();
-        for g in list {
-            match glob(g.get_ref()) {
-                Ok(glob) => {
-                    builder.add(glob);
-                }
-                Err(e) => diags.push(bad(g.span(), format!("invalid glob `{}`: {e}", g.get_ref()), "this pattern")),
-            }
-        }
-        builder.build().ok()
-    };
-    let include = raw.include.as_deref().and_then(&mut globs);
-    let exclude = if raw.exclude.is_empty() { None } else { globs(&raw.exclude) };
-    let mut stages = BTreeMap::new();
-    for (ext, stage) in &raw.stages {
-        match StageKind::from_name(&stage.get_ref().replace('-', "_")) {
-            Some(k) => {
-                stages.insert(ext.trim_start_matches('.').to_string(), k);
-            }
-            None => {
-                let names: Vec<&str> = StageKind::ALL.iter().map(|k| k.name()).collect();
-                diags.push(
-                    bad(stage.span(), format!("unknown stage `{}`", stage.get_ref()), "not a stage")
-                        .with_help(format!("one of: {}", names.join(", "))),
-                );
-            }
-        }
-    }
-    let target_env = match raw.target_env.as_ref().map(|t| (t.get_ref().as_str(), t.span())) {
-        None | Some(("auto", _)) => TargetEnv::Auto,
-        Some(("opengl", _)) => TargetEnv::OpenGl,
-        Some(("vulkan", _)) => TargetEnv::Vulkan,
-        Some((other, span)) => {
-            diags.push(bad(span, format!("unknown target-env `{other}`"), "not a dialect").with_help("one of: auto, opengl, vulkan"));
-            TargetEnv::Auto
-        }
-    };
-    let mut codes = |list: &[toml::Spanned<String>], denying: bool| -> Vec<Code> {
-        let mut out = Vec::new();
-        for c in list {
-            match c.get_ref().parse::<Code>() {
-                Ok(code) if code.severity() == crate::diag::Severity::Error && !denying => {
-                    diags.push(Diagnostic::new(Code::SuppressionInvalid, format!("`{code}` is an error; errors cannot be allowed")).at(
-                        file,
-                        c.span(),
-                        "an error",
-                    ))
-                }
-                Ok(code) => out.push(code),
-                Err(_) => diags.push(suppress::unknown_code(file, c.span(), c.get_ref())),
-            }
-        }
-        out
-    };
-    let policy = Policy { allow: codes(&raw.allow, false), deny: codes(&raw.deny, true), origin: path.display().to_string() };
-    Config {
-        path: Some(path.to_path_buf()),
-        selection: Selection { root, include, exclude, stages },
-        target_env,
-        strict: raw.strict,
-        deny_warnings: raw.deny_warnings,
-        policy,
-    }
 }
 
 /// One pattern, `.gitignore`-style: without a `/` it matches a name at any depth.
@@ -291,7 +198,7 @@ mod tests {
         let mut files = Files::new();
         let id = files.add("effectc.toml", text);
         let mut diags = Vec::new();
-        let c = parse(text, id, Path::new("effectc.toml"), &mut diags);
+        let c = parse::parse(text, id, Path::new("effectc.toml"), &mut diags);
         (c, diags)
     }
 
@@ -321,7 +228,7 @@ mod tests {
         assert_eq!(c.policy.deny, [Code::HazardTrig]);
         assert_eq!(c.selection.stage_of(Path::new("a.glsl")), Some(StageKind::Fragment));
         let codes: Vec<Code> = diags.iter().map(|d| d.code).collect();
-        assert_eq!(codes, [Code::ConfigInvalid, Code::SuppressionInvalid, Code::SuppressionInvalid], "{diags:#?}");
+        assert_eq!(codes, [Code::SuppressionInvalid, Code::SuppressionInvalid, Code::ConfigInvalid], "{diags:#?}");
         assert!(diags.iter().any(|d| d.help.as_deref().is_some_and(|h| h.contains("W0718"))), "lowercase w0718 suggests W0718");
         let (_, diags) = parsed("colour = 1\n");
         assert_eq!(diags[0].code, Code::ConfigInvalid);
