@@ -145,6 +145,10 @@ pub struct CommonArgs {
     /// Programs analysed at once (default: one per core).
     #[arg(long, short = 'j', value_parser = clap::value_parser!(u32).range(1..=256))]
     pub jobs: Option<u32>,
+    /// Defines a macro in every stage read, after its `#version` line (repeatable):
+    /// `-D VERTEX`, `--define QUALITY=3`.
+    #[arg(long = "define", short = 'D', value_name = "NAME[=VALUE]", value_parser = crate::stage::parse_define)]
+    pub defines: Vec<crate::stage::Define>,
 }
 
 /// GLSL dialects accepted by `--target-env`.
@@ -472,6 +476,7 @@ impl CommonArgs {
             jobs: self.jobs.map(|j| j as usize),
             values: Vec::new(),
             fixed_function_vertex: false,
+            defines: self.defines.clone(),
         }
     }
 }

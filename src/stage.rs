@@ -1,4 +1,5 @@
-//! Shader stages: what they are called in manifests, file extensions and naga.
+//! Shader stages: what they are called in manifests, file extensions and naga; macros
+//! defined for a stage from outside its text (`--define`, a manifest's `define`).
 
 use std::fmt;
 
@@ -70,8 +71,43 @@ impl StageKind {
     }
 }
 
+/// One macro: its name and its replacement text (`1` when none was given).
+pub type Define = (String, String);
+
+/// `NAME` or `NAME=VALUE` as typed; why not, when the name is no macro name GLSL allows.
+pub fn parse_define(typed: &str) -> Result<Define, String> {
+    let (name, value) = typed.split_once('=').map_or((typed, "1"), |(n, v)| (n, v));
+    let name = name.trim();
+    let identifier = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !identifier {
+        return Err(format!("`{name}` is not a macro name (letters, digits and `_`, not starting with a digit)"));
+    }
+    if name.starts_with("GL_") || name.contains("__") {
+        return Err(format!("`{name}` is reserved: GLSL keeps names starting with `GL_` or holding `__` for itself"));
+    }
+    if value.contains('\n') {
+        return Err(format!("the value of `{name}` spans lines"));
+    }
+    Ok((name.to_string(), value.trim().to_string()))
+}
+
 impl fmt::Display for StageKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
     }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn macros_are_parsed_as_typed_and_reserved_names_refused() {
+        assert_eq!(parse_define("VERTEX"), Ok(("VERTEX".into(), "1".into())));
+        assert_eq!(parse_define("QUALITY=3"), Ok(("QUALITY".into(), "3".into())));
+        assert_eq!(parse_define("TINT=vec3(1.0, 0.5, 0.0)"), Ok(("TINT".into(), "vec3(1.0, 0.5, 0.0)".into())));
+        assert!(parse_define("3D").is_err() && parse_define("GL_FOO").is_err() && parse_define("A__B").is_err() && parse_define("").is_err());
+    }
+
 }

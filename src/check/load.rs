@@ -10,7 +10,7 @@ use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::compat;
 use crate::inputs::ProgramInput;
 use crate::manifest::{self, Effect};
-use crate::stage::StageKind;
+use crate::stage::{Define, StageKind};
 
 /// A program whose files are read.
 #[derive(Debug)]
@@ -26,6 +26,20 @@ pub struct Loaded {
     pub vertex_added_for: Option<String>,
     /// The most bytes a stage or included file may hold (`[limits] file-bytes`).
     file_bytes: u64,
+    /// Macros defined in every stage (`--define`), before a stage's own.
+    defines: Vec<Define>,
+}
+
+/// How a program's files are read.
+#[derive(Debug, Clone, Copy)]
+pub struct Reading<'a> {
+    /// A program that is one compatibility-profile fragment stage gets GL's fixed-function
+    /// vertex stage ([`compat::fixed_function_vertex_stage`]), as GL draws it.
+    pub fixed_function_vertex: bool,
+    /// No stage or included file over this many bytes is read.
+    pub file_bytes: u64,
+    /// `--define`: macros defined in every stage.
+    pub defines: &'a [Define],
 }
 
 /// What there is to analyse.
@@ -48,11 +62,8 @@ pub struct PassFiles {
     pub stages: Option<Vec<(FileId, StageKind)>>,
 }
 
-/// Reads the files of `input` into `files`. With `fixed_function_vertex`, a program that
-/// is one compatibility-profile fragment stage gets GL's fixed-function vertex stage
-/// ([`compat::fixed_function_vertex_stage`]), as GL draws it. No stage or included file
-/// over `file_bytes` is read.
-pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool, file_bytes: u64) -> Loaded {
+/// Reads the files of `input` into `files` as `how` says.
+pub fn load(input: &ProgramInput, files: &mut Files, how: &Reading<'_>) -> Loaded {
     let mut l = Loaded {
         name: input.display_name(),
         effect: None,
@@ -60,7 +71,8 @@ pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool
         diagnostics: Vec::new(),
         io_error: false,
         vertex_added_for: None,
-        file_bytes,
+        file_bytes: how.file_bytes,
+        defines: how.defines.to_vec(),
     };
     match input {
         ProgramInput::Manifest(path) => match manifest::load(path, files) {
@@ -69,7 +81,7 @@ pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool
                 l.body = if e.is_multi_pass() {
                     Body::Passes(load_passes(&e, files, &mut l))
                 } else {
-                    let stages: Vec<(PathBuf, StageKind)> = e.stages.iter().map(|s| (s.path.clone(), s.kind)).collect();
+                    let stages: Vec<(PathBuf, StageKind, &[Define])> = e.stages.iter().map(|s| (s.path.clone(), s.kind, &s.defines[..])).collect();
                     read_all(&stages, files, &mut l).map_or(Body::Nothing, Body::Single)
                 };
                 l.effect = Some(e);
@@ -79,11 +91,13 @@ pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool
                 l.diagnostics.extend(diags);
             }
         },
-        ProgramInput::Stages { files: stages, .. } => {
-            l.body = read_all(stages, files, &mut l).map_or(Body::Nothing, Body::Single);
+        ProgramInput::Stages { files: stages, defines, .. } => {
+            let of_kind = |k: StageKind| defines.iter().find(|(d, _)| *d == k).map_or(&[][..], |(_, list)| &list[..]);
+            let stages: Vec<(PathBuf, StageKind, &[Define])> = stages.iter().map(|(p, k)| (p.clone(), *k, of_kind(*k))).collect();
+            l.body = read_all(&stages, files, &mut l).map_or(Body::Nothing, Body::Single);
         }
     }
-    if let (Body::Single(stages), true) = (&mut l.body, fixed_function_vertex) {
+    if let (Body::Single(stages), true) = (&mut l.body, how.fixed_function_vertex) {
         // The fragment stage alone (one file, or several shader objects of it).
         if let Some(&(fragment, _)) = stages.first().filter(|_| stages.iter().all(|(_, k)| *k == StageKind::Fragment)) {
             let texts: String = stages.iter().map(|(f, _)| files.text(*f)).collect::<Vec<_>>().join("\n");
@@ -98,9 +112,9 @@ pub fn load(input: &ProgramInput, files: &mut Files, fixed_function_vertex: bool
 }
 
 /// Every stage file, or `None` when one of them could not be read.
-fn read_all(stages: &[(PathBuf, StageKind)], files: &mut Files, l: &mut Loaded) -> Option<Vec<(FileId, StageKind)>> {
+fn read_all(stages: &[(PathBuf, StageKind, &[Define])], files: &mut Files, l: &mut Loaded) -> Option<Vec<(FileId, StageKind)>> {
     let read: Vec<Option<(FileId, StageKind)>> =
-        stages.iter().map(|(path, kind)| read_stage(path, files, l).map(|id| (id, *kind))).collect();
+        stages.iter().map(|(path, kind, defines)| read_stage(path, defines, files, l).map(|id| (id, *kind))).collect();
     let read: Option<Vec<_>> = read.into_iter().collect();
     let read = read.filter(|r| !r.is_empty())?;
     // Several files of one stage are shader objects GL links into it: effectc's own
@@ -120,7 +134,7 @@ fn read_all(stages: &[(PathBuf, StageKind)], files: &mut Files, l: &mut Loaded) 
 /// The passes of a multi-pass effect: each one's view and stage files (a file two passes
 /// share is read once).
 fn load_passes(effect: &Effect, files: &mut Files, l: &mut Loaded) -> Vec<PassFiles> {
-    let mut read: HashMap<PathBuf, Option<FileId>> = HashMap::new();
+    let mut read: HashMap<(PathBuf, Vec<Define>), Option<FileId>> = HashMap::new();
     let mut passes = Vec::new();
     for pass in &effect.passes {
         let reused = match &pass.reuse {
@@ -157,11 +171,12 @@ fn load_passes(effect: &Effect, files: &mut Files, l: &mut Loaded) -> Vec<PassFi
         let mut stages = Vec::new();
         let mut readable = true;
         for s in &view.stages {
-            let id = match read.get(&s.path) {
+            let key = (s.path.clone(), s.defines.clone());
+            let id = match read.get(&key) {
                 Some(id) => *id,
                 None => {
-                    let id = read_stage(&s.path, files, l);
-                    read.insert(s.path.clone(), id);
+                    let id = read_stage(&s.path, &s.defines, files, l);
+                    read.insert(key, id);
                     id
                 }
             };
@@ -176,13 +191,16 @@ fn load_passes(effect: &Effect, files: &mut Files, l: &mut Loaded) -> Vec<PassFi
     passes
 }
 
-/// Reads one stage file and inlines its `#include`s: the id of the text the front reads.
-fn read_stage(path: &Path, files: &mut Files, l: &mut Loaded) -> Option<FileId> {
+/// Reads one stage file, inlines its `#include`s and writes the run's and the stage's
+/// `defines` after its `#version` line: the id of the text the front reads.
+fn read_stage(path: &Path, defines: &[Define], files: &mut Files, l: &mut Loaded) -> Option<FileId> {
     match crate::read::bounded(path, l.file_bytes) {
         Ok(bytes) => match String::from_utf8(bytes) {
             Ok(text) => {
                 let id = files.add(path.display().to_string(), text);
-                crate::front::includes::expand(path, id, files, l.file_bytes, &mut l.diagnostics)
+                let expanded = crate::front::includes::expand(path, id, files, l.file_bytes, &mut l.diagnostics)?;
+                let all: Vec<Define> = l.defines.iter().chain(defines).cloned().collect();
+                Some(crate::front::defines::apply(files, expanded, &all))
             }
             Err(e) => {
                 let valid = e.utf8_error().valid_up_to();

@@ -104,6 +104,8 @@ pub struct InputSpec {
     /// A lone compatibility-profile fragment stage is drawn with GL's fixed-function
     /// vertex stage (the commands that draw: render, verify, bench, stress).
     pub fixed_function_vertex: bool,
+    /// `--define`: macros defined in every stage read (before a stage's own defines).
+    pub defines: Vec<crate::stage::Define>,
 }
 
 impl InputSpec {
@@ -124,7 +126,12 @@ impl InputSpec {
         let mut registered = Vec::with_capacity(programs.len());
         for p in &programs {
             let before = out.files.len();
-            let l = load::load(p, &mut out.files, self.fixed_function_vertex, self.front.limits.file_bytes);
+            let reading = load::Reading {
+                fixed_function_vertex: self.fixed_function_vertex,
+                file_bytes: self.front.limits.file_bytes,
+                defines: &self.defines,
+            };
+            let l = load::load(p, &mut out.files, &reading);
             if let Some(fragment) = &l.vertex_added_for {
                 // Not alone after all: GL's fixed-function vertex stage links with it.
                 let alone = format!("`{fragment}` is checked alone");

@@ -4,6 +4,8 @@
 //! - [`conditionals`]: `#if`/`#ifdef` resolved for the user's `#version`, with GL's predefined
 //!   macros (inactive groups blanked).
 //! - [`includes`]: `#include`d files inlined into a stage, with the map back to each file.
+//! - [`defines`]: macros defined from outside a stage (`--define`, a manifest's `define`,
+//!   the single-file two-stage format) written after its `#version` line.
 //! - [`lexical`]: same-length masks for legal GLSL glsl-lang cannot lex (wide hex literals,
 //!   `debugPrintfEXT`, explicit arithmetic types, buffer references).
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
@@ -23,6 +25,7 @@
 pub mod builtins;
 pub mod compat;
 pub mod conditionals;
+pub mod defines;
 pub mod doubles;
 pub mod edits;
 pub mod geometry_fold;

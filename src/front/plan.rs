@@ -64,7 +64,10 @@ pub struct TextureBinding {
 /// Bindings and locations shared by all stages of a program.
 #[derive(Debug, Clone, Default)]
 pub struct Plan {
+    /// The shared block's members (added only through `push_member`, which indexes them).
     pub members: Vec<BlockMember>,
+    /// Index into `members` by name: thousands of uniforms are looked up at every use.
+    member_index: HashMap<String, usize>,
     /// Struct names the block needs, in dependency order.
     pub block_structs: Vec<String>,
     pub textures: Vec<TextureBinding>,
@@ -92,7 +95,12 @@ pub const STRUCT_ALIGN_FILLER: &str = "effectc_align16";
 
 impl Plan {
     pub fn member(&self, name: &str) -> Option<&BlockMember> {
-        self.members.iter().find(|m| m.name == name)
+        self.member_index.get(name).map(|&i| &self.members[i])
+    }
+    /// Adds a member of the shared block (the first of a name is the one found by name).
+    fn push_member(&mut self, m: BlockMember) {
+        self.member_index.entry(m.name.clone()).or_insert(self.members.len());
+        self.members.push(m);
     }
     pub fn texture(&self, user_path: &str) -> Option<&TextureBinding> {
         self.textures.iter().find(|t| t.user_path == user_path)
@@ -246,14 +254,14 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
                 need_struct(&g.ty.base, s, &mut plan.block_structs);
             }
             let (block_ty, repr) = repr_for(&g.ty);
-            plan.members.push(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
+            plan.push_member(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
         }
     }
     plan.compat = compat::analyse(stages);
-    for st in &plan.compat.state {
+    for st in plan.compat.state.clone() {
         let user_ty = st.glsl_type();
         let stage = stages.iter().find(|s| compat::stage_uses(s, st.name)).map_or(StageKind::Vertex, |s| s.stage);
-        plan.members.push(BlockMember { name: st.name.to_string(), block_ty: user_ty.clone(), user_ty, repr: Repr::Plain, stage });
+        plan.push_member(BlockMember { name: st.name.to_string(), block_ty: user_ty.clone(), user_ty, repr: Repr::Plain, stage });
     }
     plan.block_structs.extend(plan.compat.block_structs.iter().map(|s| s.to_string()));
     number_bindings(&mut plan, stages);

@@ -4,7 +4,9 @@
 //! - a directory contributes every `effect.toml` below it, plus stage files no manifest
 //!   there names, grouped by directory and program stem (`sun.vert` + `sun.frag`,
 //!   `sun.vert.glsl` + `sun_fs.glsl`); a `.glsl` file the name does not place is placed by
-//!   its text ([`stage_names`], note N0003 with the evidence); a folder with one vertex
+//!   its text ([`stage_names`], note N0003 with the evidence), or is one program of both
+//!   stages when it holds them behind `#if defined(VERTEX)` … `#elif defined(FRAGMENT)`
+//!   (the emulator packs' format: read twice, each macro defined in turn); a folder with one vertex
 //!   stage pairs it with each fragment stage that has no vertex stage of its own (note
 //!   N0001); a stage left alone gets note N0002 (no link rule ran); a folder with no program
 //!   at all is warning W0006;
@@ -20,7 +22,7 @@ use std::path::{Path, PathBuf};
 
 use crate::config::Selection;
 use crate::diag::{Code, Diagnostic};
-use crate::stage::StageKind;
+use crate::stage::{Define, StageKind};
 
 pub mod stage_names;
 
@@ -28,7 +30,9 @@ pub mod stage_names;
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum ProgramInput {
     Manifest(PathBuf),
-    Stages { name: String, files: Vec<(PathBuf, StageKind)> },
+    /// Stage files; `defines` are macros defined for the stages of a kind (the single-file
+    /// two-stage format: `VERTEX` for the vertex stage, `FRAGMENT` for the fragment stage).
+    Stages { name: String, files: Vec<(PathBuf, StageKind)>, defines: Vec<(StageKind, Vec<Define>)> },
 }
 
 impl ProgramInput {
@@ -75,6 +79,13 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
         } else if is_manifest(input) {
             programs.push(ProgramInput::Manifest(input.clone()));
         } else {
+            // The text's two stages win over a name that seems to give one (`blur-vert.glsl`
+            // is often a vertical blur); `--stage` wins over both.
+            if let Some((program, note)) = forced.is_none().then(|| two_stage_file(input)).flatten() {
+                diags.push(note);
+                programs.push(program);
+                continue;
+            }
             match stage_of(input, forced).or_else(|| selection.stage_of(input)) {
                 Some(kind) => loose.push((input.clone(), kind)),
                 None => match stage_from_text(input) {
@@ -94,7 +105,7 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
     if loose_named {
         let kinds: BTreeSet<StageKind> = loose.iter().map(|(_, k)| *k).collect();
         if kinds.len() == loose.len() || units_of_one_program(&loose) {
-            programs.push(ProgramInput::Stages { name: program_name(&loose), files: loose });
+            programs.push(ProgramInput::Stages { name: program_name(&loose), files: loose, defines: Vec::new() });
         } else {
             programs.extend(group_by_stem(loose));
         }
@@ -203,7 +214,7 @@ fn group_by_stem(files: Vec<(PathBuf, StageKind)>) -> Vec<ProgramInput> {
         .into_values()
         .map(|mut files| {
             files.sort_by_key(|(_, k)| *k);
-            ProgramInput::Stages { name: program_name(&files), files }
+            ProgramInput::Stages { name: program_name(&files), files, defines: Vec::new() }
         })
         .collect()
 }
@@ -211,6 +222,7 @@ fn group_by_stem(files: Vec<(PathBuf, StageKind)>) -> Vec<ProgramInput> {
 fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
     let mut manifests = Vec::new();
     let mut stage_files = Vec::new();
+    let mut two_stage = Vec::new();
     let mut diags = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
@@ -235,6 +247,9 @@ fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Dia
             }
             if p.file_name().is_some_and(|n| n == "effect.toml") {
                 manifests.push(p);
+            } else if let Some((program, note)) = two_stage_file(&p) {
+                diags.push(note);
+                two_stage.push(program);
             } else if let Some(kind) = stage_of(&p, None).or_else(|| selection.stage_of(&p)) {
                 stage_files.push((p, kind));
             } else if let Some((kind, note)) = stage_from_text(&p) {
@@ -246,12 +261,38 @@ fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Dia
     manifests.sort();
     // Stage files in a directory that has a manifest belong to it.
     let manifest_dirs: BTreeSet<PathBuf> = manifests.iter().filter_map(|m| m.parent().map(Path::to_path_buf)).collect();
-    stage_files.retain(|(p, _)| !p.parent().is_some_and(|d| manifest_dirs.contains(d)));
+    let in_manifest_dir = |p: &Path| p.parent().is_some_and(|d| manifest_dirs.contains(d));
+    stage_files.retain(|(p, _)| !in_manifest_dir(p));
+    two_stage.retain(|p| !matches!(p, ProgramInput::Stages { files, .. } if in_manifest_dir(&files[0].0)));
     let mut programs: Vec<ProgramInput> = manifests.into_iter().map(ProgramInput::Manifest).collect();
     let mut groups = group_by_stem(stage_files);
     diags.extend(pair_with_the_folders_vertex_stage(&mut groups));
     programs.extend(groups);
+    programs.extend(two_stage);
     (programs, diags)
+}
+
+/// A `.glsl` file holding a vertex and a fragment stage behind the macros its host code
+/// defines ([`stage_names::two_stage_macros`]): one program of the file read twice, each
+/// time with one stage's macro defined, and the note (N0003) saying so.
+fn two_stage_file(path: &Path) -> Option<(ProgramInput, Diagnostic)> {
+    if !path.extension().is_some_and(|e| e.eq_ignore_ascii_case("glsl")) {
+        return None;
+    }
+    let text = crate::read::bounded_text_lossy(path).ok()?;
+    let (vertex, fragment) = stage_names::two_stage_macros(&without_comments(&text))?;
+    let name = path.file_stem().map_or_else(|| path.display().to_string(), |s| s.to_string_lossy().into_owned());
+    let defined = |m: &str| vec![(m.to_string(), "1".to_string())];
+    let program = ProgramInput::Stages {
+        name,
+        files: vec![(path.to_path_buf(), StageKind::Vertex), (path.to_path_buf(), StageKind::Fragment)],
+        defines: vec![(StageKind::Vertex, defined(vertex)), (StageKind::Fragment, defined(fragment))],
+    };
+    let note = Diagnostic::new(
+        Code::StageFromText,
+        format!("`{}` holds a vertex and a fragment stage behind `{vertex}` and `{fragment}`: it is read as both, with each macro defined in turn", path.display()),
+    );
+    Some((program, note))
 }
 
 /// The stage a `.glsl` file's text shows, with the note (N0003) naming the evidence.

@@ -76,6 +76,38 @@ fn contains_word(text: &str, word: &str) -> bool {
     })
 }
 
+/// A file that holds two stages behind conditionals on macros the host code defines
+/// (`#if defined(VERTEX)` … `#elif defined(FRAGMENT)`, the emulator packs' format): the
+/// vertex stage's macro and the fragment stage's. The known pairs are the ones shader
+/// packs use: `VERTEX`/`FRAGMENT`, `VERTEX_SHADER`/`FRAGMENT_SHADER`, `VS`/`FS`,
+/// `_VERTEX_`/`_FRAGMENT_`, `COMPILING_VS`/`COMPILING_FS`.
+pub fn two_stage_macros(text: &str) -> Option<(&'static str, &'static str)> {
+    const PAIRS: [(&str, &str); 5] = [
+        ("VERTEX", "FRAGMENT"),
+        ("VERTEX_SHADER", "FRAGMENT_SHADER"),
+        ("VS", "FS"),
+        ("_VERTEX_", "_FRAGMENT_"),
+        ("COMPILING_VS", "COMPILING_FS"),
+    ];
+    let tested: Vec<&str> = text.lines().filter_map(conditional_macro).collect();
+    PAIRS.into_iter().find(|(v, f)| tested.contains(v) && tested.contains(f))
+}
+
+/// The macro a `#ifdef M`, `#if defined(M)`, `#if defined M` or `#elif defined(M)` line
+/// tests.
+fn conditional_macro(line: &str) -> Option<&str> {
+    let d = line.trim_start().strip_prefix('#')?.trim_start();
+    let rest = if let Some(r) = d.strip_prefix("ifdef") {
+        r
+    } else {
+        let r = d.strip_prefix("elif").or_else(|| d.strip_prefix("if"))?.trim_start();
+        r.strip_prefix("defined")?
+    };
+    let name = rest.trim_start().trim_start_matches('(').trim_start();
+    let end = name.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(name.len());
+    (end > 0).then(|| &name[..end])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -108,5 +140,13 @@ mod tests {
         let both = "void main() { gl_Position = vec4(0.0); gl_FragColor = vec4(1.0); }\n";
         assert_eq!(from_text(both).map(|(k, _)| k), Some(StageKind::Vertex), "gl_Position decides");
         assert_eq!(from_text("// gl_Position = gl_FragColor;\nvoid main() { }\n"), None, "comments are no evidence");
+    }
+    #[test]
+    fn two_stage_files_are_told_by_their_conditionals() {
+        let retro = "#if defined(VERTEX)\nvoid main() {}\n#elif defined(FRAGMENT)\nvoid main() {}\n#endif\n";
+        assert_eq!(two_stage_macros(retro), Some(("VERTEX", "FRAGMENT")));
+        assert_eq!(two_stage_macros("#ifdef VERTEX_SHADER\n#endif\n#ifdef FRAGMENT_SHADER\n#endif\n"), Some(("VERTEX_SHADER", "FRAGMENT_SHADER")));
+        assert_eq!(two_stage_macros("#ifdef VERTEX\n#endif\n"), None, "one stage only");
+        assert_eq!(two_stage_macros("#if defined VS\n#else\n#endif\n#ifdef FS\n#endif\n"), Some(("VS", "FS")));
     }
 }

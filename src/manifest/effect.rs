@@ -73,4 +73,6 @@ pub struct StageRef {
     pub span: Range<usize>,
     /// Span of the stage key (`vertex`).
     pub key_span: Range<usize>,
+    /// Macros defined for this stage (`{ file = "x.glsl", define = { VERTEX = 1 } }`).
+    pub defines: Vec<crate::stage::Define>,
 }

@@ -200,6 +200,10 @@ pub struct StageSyntax {
     /// `do { … continue; … } while (c);`: naga's `continue` there skips `c`, so the rewrite
     /// writes a `for` loop that tests `c` after every iteration but the first.
     pub do_while_continue: Vec<DoWhileContinue>,
+    /// The first global of each name (index into `globals`), made once the stage is read
+    /// ([`StageSyntax::index_globals`]): a stage of thousands of uniforms is looked up by
+    /// name at every use.
+    pub global_index: HashMap<String, usize>,
 }
 
 /// A short-circuit operator whose right operand must not run when the left decides.
@@ -236,7 +240,17 @@ pub struct DefaultDecl {
 
 impl StageSyntax {
     pub fn global(&self, name: &str) -> Option<&Global> {
+        if !self.global_index.is_empty() {
+            return self.global_index.get(name).map(|&i| &self.globals[i]);
+        }
         self.globals.iter().find(|g| g.name == name)
+    }
+    /// Indexes the globals by name (the first of each name), once they are all collected.
+    pub fn index_globals(&mut self) {
+        self.global_index.clear();
+        for (i, g) in self.globals.iter().enumerate() {
+            self.global_index.entry(g.name.clone()).or_insert(i);
+        }
     }
     pub fn struct_def(&self, name: &str) -> Option<&StructDef> {
         self.structs.iter().find(|s| s.name == name)

@@ -135,8 +135,10 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
         vulkan: false,
         lazy_logic: Vec::new(),
         do_while_continue: Vec::new(),
+        global_index: HashMap::new(),
     };
     Collector::run(&mut syntax, &tu);
+    syntax.index_globals();
     syntax.vulkan = match env {
         TargetEnv::Auto => looks_like_vulkan(&syntax, original),
         TargetEnv::OpenGl => false,

@@ -1,15 +1,16 @@
 //! `[stages]`: a shader file per pipeline stage (or a list of them: shader objects GL links
-//! into that stage), checked to exist, with a warning when a file's extension names another
+//! into that stage; each one a path, or `{ file = "x.glsl", define = { VERTEX = 1 } }` with
+//! macros defined for it), checked to exist, with a warning when a file's extension names another
 //! stage and an error when compute is mixed with graphics.
 
 use std::ops::Range;
 
-use toml::de::DeTable;
+use toml::de::{DeTable, DeValue};
 
 use super::{entries, key, Ctx, Key, Val};
 use crate::diag::Code;
 use crate::manifest::StageRef;
-use crate::stage::StageKind;
+use crate::stage::{Define, StageKind};
 
 impl Ctx<'_> {
     /// The `[stages]` key and its value: a table that lists at least one stage.
@@ -39,6 +40,14 @@ impl Ctx<'_> {
                 _ => vec![v],
             };
             for v in files {
+                // `"x.glsl"`, or `{ file = "x.glsl", define = { VERTEX = 1 } }`.
+                let (v, defines) = match v.get_ref() {
+                    toml::de::DeValue::Table(t) => match self.stage_with_defines(t, v, &what) {
+                        Some(found) => found,
+                        None => continue,
+                    },
+                    _ => (v, Vec::new()),
+                };
                 let Some(path) = self.file_path(v, &what, Code::StageFileNotFound, "stage file") else {
                     continue;
                 };
@@ -52,7 +61,7 @@ impl Ctx<'_> {
                     );
                     d.help = Some(format!("list it under `{other}` if that is what it is"));
                 }
-                stages.push(StageRef { kind, path, span: v.span(), key_span: k.span() });
+                stages.push(StageRef { kind, path, span: v.span(), key_span: k.span(), defines });
             }
         }
         stages.sort_by_key(|s| s.kind);
@@ -74,5 +83,45 @@ impl Ctx<'_> {
             }
         }
         stages
+    }
+
+    /// A stage written as a table: its `file` value and its `define`d macros.
+    fn stage_with_defines<'v, 'i>(&mut self, t: &'v DeTable<'i>, whole: &'v Val<'i>, what: &str) -> Option<(&'v Val<'i>, Vec<Define>)> {
+        let mut file = None;
+        let mut defines = Vec::new();
+        for (k, v) in entries(t) {
+            match key(k) {
+                "file" => file = Some(v),
+                "define" => {
+                    let Some(table) = self.table(v, &format!("{what}.define")) else { continue };
+                    for (name, value) in entries(table) {
+                        let text = match value.get_ref() {
+                            DeValue::String(s) => s.to_string(),
+                            DeValue::Integer(i) => i.as_str().to_string(),
+                            DeValue::Float(f) => f.as_str().to_string(),
+                            DeValue::Boolean(b) => b.to_string(),
+                            _ => {
+                                self.wrong_type(value, &format!("`{}`", key(name)), "a string, number or boolean");
+                                continue;
+                            }
+                        };
+                        match crate::stage::parse_define(&format!("{}={text}", key(name))) {
+                            Ok(d) => defines.push(d),
+                            Err(why) => {
+                                self.report(Code::ManifestValue, name.span(), why, "not a macro name");
+                            }
+                        }
+                    }
+                }
+                other => self.unknown_key(other, k.span(), &format!("in {what}"), &["file", "define"]),
+            }
+        }
+        match file {
+            Some(f) => Some((f, defines)),
+            None => {
+                self.report(Code::ManifestMissing, whole.span(), format!("{what} needs a `file`"), "no `file` here");
+                None
+            }
+        }
     }
 }
