@@ -196,6 +196,10 @@ pub struct CheckArgs {
     /// before the diagnostics; with `--format json`, under `programs`.
     #[arg(long)]
     pub list_uniforms: bool,
+    /// List the programs formed (their stage files, the macros defined for them, and why
+    /// they were grouped) before the diagnostics; JSON always has them under `formed`.
+    #[arg(long)]
+    pub verbose: bool,
     /// Run again whenever an input changes (stage files, manifests, included files,
     /// textures, meshes, new files below input directories), until interrupted.
     #[arg(long)]

@@ -326,11 +326,16 @@ fn check(args: &CheckArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBuf>
     let c = &args.common;
     let (outcome, checked) = c.input_spec(&settings.config).check();
     let outcome = settle(outcome, settings, Reach::Check);
-    let text = match (args.list_uniforms, c.format) {
+    let mut text = match (args.list_uniforms, c.format) {
         (true, Format::Json) => report_json("programs", &effectc::check::listing::uniforms(&checked), &None, &outcome),
         (true, _) => effectc::check::listing::text(&effectc::check::listing::uniforms(&checked)) + &diagnostics_text(c, &outcome),
         (false, _) => diagnostics_text(c, &outcome),
     };
+    match c.format {
+        Format::Json => text = with_key(&text, "formed", &outcome.formed),
+        Format::Human if args.verbose => text.insert_str(0, &effectc::check::formation::text(&outcome.formed)),
+        _ => {}
+    }
     if print(&text).is_err() {
         return (ExitCode::from(2), Vec::new());
     }
@@ -390,6 +395,13 @@ fn report_json(key: &str, reports: &impl serde::Serialize, adapter: &Option<Stri
     let diagnostics: serde_json::Value = serde_json::from_str(&diag::render_json(&outcome.diagnostics, &outcome.files)).unwrap_or_default();
     let mut doc = serde_json::json!({ "version": 1, "adapter": adapter, "diagnostics": diagnostics });
     doc[key] = serde_json::to_value(reports).unwrap_or_default();
+    serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
+}
+
+/// The JSON document `json` with `value` under `key`.
+fn with_key(json: &str, key: &str, value: &impl serde::Serialize) -> String {
+    let mut doc: serde_json::Value = serde_json::from_str(json).unwrap_or_default();
+    doc[key] = serde_json::to_value(value).unwrap_or_default();
     serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
 }
 

@@ -92,6 +92,20 @@ pub fn parse_define(typed: &str) -> Result<Define, String> {
     Ok((name.to_string(), value.trim().to_string()))
 }
 
+/// A macro written in TOML (`define = { NAME = VALUE }` in a manifest or `effectc.toml`):
+/// a string, number or boolean value, as its text; why not otherwise.
+pub fn define_from_toml(name: &str, value: &toml::de::DeValue<'_>) -> Result<Define, String> {
+    use toml::de::DeValue;
+    let text = match value {
+        DeValue::String(s) => s.to_string(),
+        DeValue::Integer(i) => i.as_str().to_string(),
+        DeValue::Float(f) => f.as_str().to_string(),
+        DeValue::Boolean(b) => b.to_string(),
+        _ => return Err(format!("`{name}` must be a string, number or boolean")),
+    };
+    parse_define(&format!("{name}={text}"))
+}
+
 impl fmt::Display for StageKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
@@ -107,7 +121,8 @@ mod tests {
         assert_eq!(parse_define("VERTEX"), Ok(("VERTEX".into(), "1".into())));
         assert_eq!(parse_define("QUALITY=3"), Ok(("QUALITY".into(), "3".into())));
         assert_eq!(parse_define("TINT=vec3(1.0, 0.5, 0.0)"), Ok(("TINT".into(), "vec3(1.0, 0.5, 0.0)".into())));
-        assert!(parse_define("3D").is_err() && parse_define("GL_FOO").is_err() && parse_define("A__B").is_err() && parse_define("").is_err());
+        assert!(
+            parse_define("3D").is_err() && parse_define("GL_FOO").is_err() && parse_define("A__B").is_err() && parse_define("").is_err()
+        );
     }
-
 }

@@ -28,6 +28,8 @@
 //!   `--config`), paths in diagnostics relative to the working directory.
 //! - [`stream`]: `effectc render --out -`: PNG and raw frames on stdout (ffmpeg reads
 //!   them), the report on stderr, misuse refused, a closed pipe.
+//! - [`programs`]: `--define`, a manifest stage's `define`, the single-file two-stage format,
+//!   `[[program]]` in `effectc.toml`, and the programs formed listed (`--verbose`, JSON).
 //! - [`stress`]: `effectc stress` finds seed hazards at the ends of ranges; shipped effects
 //!   are clean.
 //! - [`through_spirv`]: legal programs naga's GLSL front refuses go through glslang's SPIR-V;
@@ -62,6 +64,8 @@ mod layout;
 mod passes;
 #[path = "suite/pixels.rs"]
 mod pixels;
+#[path = "suite/programs.rs"]
+mod programs;
 #[path = "suite/render.rs"]
 mod render;
 #[path = "suite/rewrite.rs"]

@@ -14,13 +14,21 @@
 //!
 //! Recipe: byte 0 holds flags (bit 0: add a vertex stage, bit 1: `#version 330 core`), then
 //! up to [`MAX_PARTS`] parts, each an opcode byte and its parameters (see [`Part::read`]);
-//! bytes past the end read as 0. `EFFECTC_FUZZ_DUMP=path` writes the generated stage there.
+//! bytes past the end read as 0. `EFFECTC_FUZZ_DUMP=path` writes the generated stage there
+//! and what `check` said to `path.txt`.
+//!
+//! `EFFECTC_FUZZ_SKIP_KNOWN_SLOW=1` keeps recipes away from shapes already known to take
+//! exponential or cubic time (so a run finds something new rather than them again): at
+//! most 6 nested loops (deeper levels become `if`s), fans of at most 16 functions, and at
+//! most 256 functions defined after their callers, no use of a macro that expands past the
+//! statement limit (naga's GLSL front lowers a sum recursively, one frame per term).
 #![no_main]
 use std::fmt::Write as _;
 
 use effectc::check::{check_stages, ANALYSIS_STACK};
 use effectc::diag::{render_human, render_json, Code, Diagnostic, Files};
 use effectc::front::program::FrontOptions;
+use effectc::limits::Limits;
 use effectc::stage::StageKind;
 use libfuzzer_sys::fuzz_target;
 
@@ -34,13 +42,21 @@ const MAX_UNIFORMS: u64 = 5_000;
 const MAX_MEMBERS: u64 = 2_000;
 const MAX_MACRO_LEVELS: u64 = 24;
 const MAX_ARRAY: u64 = 100_000_000;
-/// effectc's limits (src/front/limits.rs).
-const MACRO_TOKEN_LIMIT: u64 = 1 << 20;
-const ARRAY_ELEMENT_LIMIT: u64 = 1 << 16;
+/// effectc's default limits (src/limits.rs), which the recipes straddle.
+const MACRO_TOKEN_LIMIT: u64 = Limits::DEFAULT.macro_tokens;
+const ARRAY_ELEMENT_LIMIT: u64 = Limits::DEFAULT.array_elements;
 /// glslang's bison stack holds 10,000 entries: a legal stage deeper than this estimate (in
 /// parser stack entries, see [`Gen::stack`]) may be refused by glslang with E0105, which
 /// is a documented limit, not a finding.
 const GLSLANG_STACK_BUDGET: u64 = 8_000;
+
+/// With `EFFECTC_FUZZ_SKIP_KNOWN_SLOW`: nested loops (the hazard analysis walks each loop's
+/// body once per round, so its time is exponential in loop depth), functions in a fan (it
+/// walks each call's body anew: 2^n paths), functions defined after their callers
+/// (glslang's `checkCallGraphBodies`, cubic).
+const KNOWN_SLOW_LOOPS: u64 = 6;
+const KNOWN_SLOW_FAN: u64 = 16;
+const KNOWN_SLOW_REVERSED: u64 = 256;
 
 /// Bytes read in order; past the end, zeros.
 struct Reader<'a>(&'a [u8]);
@@ -161,6 +177,9 @@ struct Gen {
     limit: Option<String>,
     /// A `uniform`/global array past the limit: refused once effectc's parser reads the stage.
     array_limit: Option<String>,
+    /// `EFFECTC_FUZZ_SKIP_KNOWN_SLOW` is set; loops opened so far.
+    skip_known_slow: bool,
+    loops: u64,
 }
 
 fn take(spent: &mut u64, max: u64, want: u64) -> u64 {
@@ -191,7 +210,15 @@ impl Gen {
         let depth = take(&mut self.depth, MAX_DEPTH, depth);
         for i in 0..depth {
             let u = U[(i % 4) as usize];
-            let (open, close, cost) = match (u64::from(first) + i * u64::from(step)) % 6 {
+            let mut kind = (u64::from(first) + i * u64::from(step)) % 6;
+            if matches!(kind, 2..=4) {
+                if self.skip_known_slow && self.loops >= KNOWN_SLOW_LOOPS {
+                    kind = 0;
+                } else {
+                    self.loops += 1;
+                }
+            }
+            let (open, close, cost) = match kind {
                 0 => (format!("if (x > {i}.0) {{\n"), "}\n".to_string(), 7),
                 1 => (format!("if (x > {u}) {{ x += 1.0; }} else {{\n"), "}\n".to_string(), 8),
                 2 => (format!("for (int i{p}_{i} = 0; i{p}_{i} < 2; ++i{p}_{i}) {{\n"), "}\n".to_string(), 9),
@@ -245,7 +272,14 @@ impl Gen {
     }
 
     fn functions(&mut self, p: usize, count: u64, shape: u8) {
-        let n = take(&mut self.functions, MAX_FUNCTIONS, count);
+        let mut n = take(&mut self.functions, MAX_FUNCTIONS, count);
+        if self.skip_known_slow {
+            n = n.min(match shape % 5 {
+                1 => KNOWN_SLOW_FAN,
+                3 => KNOWN_SLOW_REVERSED,
+                _ => n,
+            });
+        }
         if n == 0 {
             return;
         }
@@ -339,7 +373,7 @@ impl Gen {
         self.defines.push_str(&lines.concat());
         if largest > MACRO_TOKEN_LIMIT {
             self.limit.get_or_insert(format!("macro {} expands to {largest} tokens", name(levels)));
-        } else if used {
+        } else if used && !(self.skip_known_slow && largest > Limits::DEFAULT.statement_tokens) {
             let _ = writeln!(self.body, "x += {};", name(levels));
         }
     }
@@ -494,12 +528,16 @@ struct Said {
     stage_limit: bool,
 }
 
-fn check(stages: Vec<(&'static str, String, StageKind)>) -> Said {
+fn check(stages: Vec<(&'static str, String, StageKind)>, dump: Option<std::ffi::OsString>) -> Said {
     let mut files = Files::new();
     let ids: Vec<_> = stages.into_iter().map(|(name, text, kind)| (files.add(name, text), kind)).collect();
     let (_, diags) = check_stages(&files, &ids, None, FrontOptions::default());
     let human = render_human(&diags, &files, false);
     let json = render_json(&diags, &files);
+    if let Some(mut path) = dump {
+        path.push(".txt");
+        let _ = std::fs::write(path, &human);
+    }
     assert!(diags.is_empty() || (!human.is_empty() && json.contains("\"code\"")), "diagnostics that do not render");
     let errors: Vec<String> = diags.iter().filter(|d| d.is_error()).map(|d| format!("{}: {}", d.code, d.message)).collect();
     let stage_limit = diags.iter().any(|d: &Diagnostic| d.code == Code::StageLimit && d.code.to_string() == "E0107" && d.is_error());
@@ -513,12 +551,14 @@ fuzz_target!(|data: &[u8]| {
     while !r.0.is_empty() && parts.len() < MAX_PARTS {
         parts.push(Part::read(&mut r));
     }
-    let mut g = Gen { legal: true, ..Gen::default() };
+    let skip_known_slow = std::env::var_os("EFFECTC_FUZZ_SKIP_KNOWN_SLOW").is_some();
+    let mut g = Gen { legal: true, skip_known_slow, ..Gen::default() };
     for (p, part) in parts.iter().enumerate() {
         g.part(p, part);
     }
     let frag = g.stage(flags & 2 != 0);
-    if let Some(path) = std::env::var_os("EFFECTC_FUZZ_DUMP") {
+    let dump = std::env::var_os("EFFECTC_FUZZ_DUMP");
+    if let Some(path) = &dump {
         let _ = std::fs::write(path, &frag);
     }
     let mut stages = vec![("fuzz.frag", frag, StageKind::Fragment)];
@@ -526,7 +566,7 @@ fuzz_target!(|data: &[u8]| {
         stages.push(("fuzz.vert", "#version 330\nin vec4 p;\nvoid main() { gl_Position = p; }\n".to_string(), StageKind::Vertex));
     }
     // The check runs as `effectc` runs it: on a thread with the analysis stack.
-    let worker = std::thread::Builder::new().stack_size(ANALYSIS_STACK).spawn(move || check(stages)).expect("spawn the analysis thread");
+    let worker = std::thread::Builder::new().stack_size(ANALYSIS_STACK).spawn(move || check(stages, dump)).expect("spawn the analysis thread");
     let said = worker.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
     let limit = g.limit.clone().or(if g.legal { g.array_limit.clone() } else { None });
     if let Some(why) = &limit {

@@ -81,7 +81,8 @@ pub fn load(input: &ProgramInput, files: &mut Files, how: &Reading<'_>) -> Loade
                 l.body = if e.is_multi_pass() {
                     Body::Passes(load_passes(&e, files, &mut l))
                 } else {
-                    let stages: Vec<(PathBuf, StageKind, &[Define])> = e.stages.iter().map(|s| (s.path.clone(), s.kind, &s.defines[..])).collect();
+                    let stages: Vec<(PathBuf, StageKind, &[Define])> =
+                        e.stages.iter().map(|s| (s.path.clone(), s.kind, &s.defines[..])).collect();
                     read_all(&stages, files, &mut l).map_or(Body::Nothing, Body::Single)
                 };
                 l.effect = Some(e);

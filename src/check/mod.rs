@@ -3,6 +3,7 @@
 //! One bad program never stops the others. The outcome says whether any input could not
 //! be read (exit 2) and holds every diagnostic for the emitters.
 
+pub mod formation;
 pub mod hazards;
 pub mod listing;
 mod load;
@@ -29,6 +30,8 @@ pub struct Outcome {
     pub io_error: bool,
     /// Every file the programs read ([`Checked::read`] of all of them).
     pub read: Vec<PathBuf>,
+    /// The programs formed, and why ([`formation`]).
+    pub formed: Vec<formation::Formation>,
 }
 
 /// A checked program, kept for later steps (translate, render, stress, bench): the one
@@ -132,6 +135,7 @@ impl InputSpec {
                 defines: &self.defines,
             };
             let l = load::load(p, &mut out.files, &reading);
+            out.formed.push(formation::of(p, l.effect.as_ref(), &self.defines));
             if let Some(fragment) = &l.vertex_added_for {
                 // Not alone after all: GL's fixed-function vertex stage links with it.
                 let alone = format!("`{fragment}` is checked alone");

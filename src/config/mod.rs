@@ -15,6 +15,11 @@
 //! glsl = "fragment"
 //! [limits]                          # what effectc reads at most (see `crate::limits`)
 //! file-bytes = 16777216
+//! [[program]]                       # programs as the host code links them
+//! name = "lit"
+//! vertex = "data/PCN.vert"
+//! fragment = ["data/Diffuse*.frag"] # one program per file matched
+//! define = { MAX_LIGHTS = 4 }
 //! ```
 //!
 //! Every mistake in the file is reported at once, each at its key or value
@@ -50,7 +55,8 @@ pub enum TargetEnv {
     Vulkan,
 }
 
-/// Which paths a run reads, and the stage of extensions effectc does not know.
+/// Which paths a run reads, the stage of extensions effectc does not know, and the
+/// programs the file declares.
 #[derive(Debug, Clone, Default)]
 pub struct Selection {
     /// The directory the globs are relative to (absolute).
@@ -59,6 +65,24 @@ pub struct Selection {
     pub exclude: Option<GlobSet>,
     /// Extension (without the dot) → stage.
     pub stages: BTreeMap<String, StageKind>,
+    /// `[[program]]`: programs formed as declared, not guessed from names.
+    pub programs: Vec<DeclaredProgram>,
+}
+
+/// One `[[program]]`: for each stage, the files that may fill it (paths or globs, relative
+/// to the settings file); one program is formed per combination of them
+/// (`vertex = "PCN.vert"`, `fragment = ["Diffuse*.frag"]`: one program per fragment file,
+/// each with `PCN.vert`).
+#[derive(Debug, Clone)]
+pub struct DeclaredProgram {
+    /// `name`, or the programs are named after their files.
+    pub name: Option<String>,
+    /// Stage → its patterns, as written.
+    pub stages: Vec<(StageKind, Vec<String>)>,
+    /// `define = { NAME = VALUE }`: macros defined in every stage of it.
+    pub defines: Vec<crate::stage::Define>,
+    /// Which `[[program]]` of the file it is (from 1), for messages.
+    pub number: usize,
 }
 
 impl Selection {
@@ -183,7 +207,7 @@ pub fn load(explicit: Option<&Path>, inputs: &[PathBuf]) -> Loaded {
 }
 
 /// One pattern, `.gitignore`-style: without a `/` it matches a name at any depth.
-fn glob(pattern: &str) -> Result<Glob, globset::Error> {
+pub fn glob(pattern: &str) -> Result<Glob, globset::Error> {
     let p = pattern.trim_start_matches("./");
     let anchored = p.trim_end_matches('/');
     let full = if anchored.contains('/') { anchored.trim_start_matches('/').to_string() } else { format!("**/{anchored}") };

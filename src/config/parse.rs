@@ -12,7 +12,7 @@ use globset::{GlobSet, GlobSetBuilder};
 use toml::de::{DeTable, DeValue};
 use toml::Spanned;
 
-use super::{glob, Config, Selection, TargetEnv, FILE_NAME};
+use super::{glob, Config, DeclaredProgram, Selection, TargetEnv, FILE_NAME};
 use crate::diag::suppress::{self, Policy};
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::limits::Limits;
@@ -21,7 +21,8 @@ use crate::stage::StageKind;
 type Val<'i> = Spanned<DeValue<'i>>;
 
 /// The keys at the top of the file.
-const KEYS: [&str; 10] = ["include", "exclude", "target-env", "strict", "deny-warnings", "allow", "deny", "readable", "stages", "limits"];
+const KEYS: [&str; 11] =
+    ["include", "exclude", "target-env", "strict", "deny-warnings", "allow", "deny", "readable", "stages", "limits", "program"];
 
 /// The settings of `text` (the file at `path`, registered as `file`); problems go to
 /// `diags` (errors for what cannot be used, W0004 for unknown codes).
@@ -61,6 +62,7 @@ pub(super) fn parse(text: &str, file: FileId, path: &Path, diags: &mut Vec<Diagn
             "readable" => w.readable(v, &dir),
             "stages" => config.selection.stages = w.stages(v),
             "limits" => config.limits = w.limits(v),
+            "program" => config.selection.programs = w.programs(v),
             other => {
                 let d = w.bad(k.span(), format!("unknown key `{other}` in {FILE_NAME}"), "not a setting");
                 w.diags.push(d.with_note(format!("keys: {}", KEYS.join(", "))));
@@ -195,6 +197,75 @@ impl Walk<'_> {
                     let names: Vec<&str> = StageKind::ALL.iter().map(|k| k.name()).collect();
                     let d = self.bad(stage.span(), format!("unknown stage `{}`", stage.get_ref()), "not a stage");
                     self.diags.push(d.with_help(format!("one of: {}", names.join(", "))));
+                }
+            }
+        }
+        out
+    }
+
+    /// `[[program]]`: an array of tables, each with a pattern list per stage.
+    fn programs(&mut self, v: &Val<'_>) -> Vec<DeclaredProgram> {
+        let DeValue::Array(items) = v.get_ref() else {
+            self.wrong_type(v, "program", "an array of tables (`[[program]]`)");
+            return Vec::new();
+        };
+        let mut out = Vec::new();
+        for (i, item) in items.iter().enumerate() {
+            let DeValue::Table(t) = item.get_ref() else {
+                self.wrong_type(item, "program", "a table");
+                continue;
+            };
+            let mut p = DeclaredProgram { name: None, stages: Vec::new(), defines: Vec::new(), number: i + 1 };
+            let mut entries: Vec<_> = t.iter().collect();
+            entries.sort_by_key(|(k, _)| k.span().start);
+            for (k, value) in entries {
+                let key = k.get_ref().as_ref();
+                match (key, StageKind::from_name(&key.replace('-', "_"))) {
+                    ("name", _) => p.name = self.string(value, "name").map(|s| s.into_inner()),
+                    ("define", _) => p.defines = self.defines(value),
+                    (_, Some(kind)) => {
+                        let patterns = match value.get_ref() {
+                            DeValue::String(_) => self.string(value, key).into_iter().collect(),
+                            _ => self.strings(value, key).unwrap_or_default(),
+                        };
+                        for pattern in &patterns {
+                            if let Err(e) = glob(pattern.get_ref()) {
+                                let d = self.bad(pattern.span(), format!("invalid glob `{}`: {e}", pattern.get_ref()), "this pattern");
+                                self.diags.push(d);
+                            }
+                        }
+                        p.stages.push((kind, patterns.into_iter().map(|s| s.into_inner()).collect()));
+                    }
+                    (other, None) => {
+                        let stages: Vec<&str> = StageKind::ALL.iter().map(|k| k.name()).collect();
+                        let d = self.bad(k.span(), format!("unknown key `{other}` in a [[program]]"), "not a stage or setting");
+                        self.diags.push(d.with_help(format!("keys: name, define, {}", stages.join(", "))));
+                    }
+                }
+            }
+            if p.stages.is_empty() {
+                let d = self.bad(item.span(), "a [[program]] names no stage".into(), "this program");
+                self.diags.push(d.with_help("e.g. `vertex = \"a.vert\"` and `fragment = [\"*.frag\"]`"));
+                continue;
+            }
+            out.push(p);
+        }
+        out
+    }
+
+    /// `define = { NAME = VALUE }`: each value a string, number or boolean.
+    fn defines(&mut self, v: &Val<'_>) -> Vec<crate::stage::Define> {
+        let DeValue::Table(t) = v.get_ref() else {
+            self.wrong_type(v, "define", "a table of NAME = value");
+            return Vec::new();
+        };
+        let mut out = Vec::new();
+        for (name, value) in t.iter() {
+            match crate::stage::define_from_toml(name.get_ref(), value.get_ref()) {
+                Ok(d) => out.push(d),
+                Err(why) => {
+                    let d = self.bad(name.span(), why, "not a macro");
+                    self.diags.push(d);
                 }
             }
         }

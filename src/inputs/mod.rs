@@ -24,6 +24,7 @@ use crate::config::Selection;
 use crate::diag::{Code, Diagnostic};
 use crate::stage::{Define, StageKind};
 
+pub mod declared;
 pub mod stage_names;
 
 /// One program to check.
@@ -31,8 +32,43 @@ pub mod stage_names;
 pub enum ProgramInput {
     Manifest(PathBuf),
     /// Stage files; `defines` are macros defined for the stages of a kind (the single-file
-    /// two-stage format: `VERTEX` for the vertex stage, `FRAGMENT` for the fragment stage).
-    Stages { name: String, files: Vec<(PathBuf, StageKind)>, defines: Vec<(StageKind, Vec<Define>)> },
+    /// two-stage format: `VERTEX` for the vertex stage, `FRAGMENT` for the fragment stage);
+    /// `formed` says why these files make one program.
+    Stages {
+        name: String,
+        files: Vec<(PathBuf, StageKind)>,
+        defines: Vec<(StageKind, Vec<Define>)>,
+        formed: Formed,
+    },
+}
+
+/// Why stage files were grouped into one program.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Formed {
+    /// Named together on the command line.
+    Named,
+    /// One folder and one stem (`sun.vert` + `sun.frag`), or a file alone.
+    Stem,
+    /// A fragment stage with the one vertex stage of its folder (note N0001).
+    FolderVertex,
+    /// One file holding both stages behind `VERTEX`/`FRAGMENT` macros.
+    TwoStages,
+    /// A `[[program]]` of `effectc.toml`.
+    Declared,
+}
+
+impl Formed {
+    /// In words, for `--verbose` and JSON.
+    pub fn describe(self, files: usize) -> &'static str {
+        match self {
+            _ if files == 1 => "alone: no other stage has its stem, and nothing pairs it",
+            Formed::Named => "named together on the command line",
+            Formed::Stem => "one folder and one stem",
+            Formed::FolderVertex => "a fragment stage with the one vertex stage of its folder",
+            Formed::TwoStages => "one file holding both stages, read with each stage's macro defined",
+            Formed::Declared => "declared by a [[program]] in effectc.toml",
+        }
+    }
 }
 
 impl ProgramInput {
@@ -60,6 +96,18 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
     let mut programs = Vec::new();
     let mut diags = Vec::new();
     let mut loose: Vec<(PathBuf, StageKind)> = Vec::new();
+    let declared = declared::resolve(selection);
+    diags.extend(declared.diagnostics.iter().cloned());
+    let mut emitted = vec![false; declared.programs.len()];
+    // The declared programs `held` says an input holds, once each.
+    let mut emit = |programs: &mut Vec<ProgramInput>, held: &dyn Fn(&[PathBuf]) -> bool| {
+        for (i, (p, paths)) in declared.programs.iter().enumerate() {
+            if !emitted[i] && held(paths) {
+                emitted[i] = true;
+                programs.push(p.clone());
+            }
+        }
+    };
     for input in inputs {
         let meta = match std::fs::metadata(input) {
             Ok(m) => m,
@@ -73,7 +121,9 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
             continue;
         }
         if meta.is_dir() {
-            let (p, d) = collect_dir(input, selection);
+            let dir = crate::diag::paths::absolute(input);
+            emit(&mut programs, &|paths| paths.iter().all(|f| f.starts_with(&dir)));
+            let (p, d) = collect_dir(input, selection, &declared.files);
             programs.extend(p);
             diags.extend(d);
         } else if is_manifest(input) {
@@ -101,11 +151,19 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
             }
         }
     }
-    let loose_named = !loose.is_empty();
-    if loose_named {
+    // A named file a `[[program]]` uses is checked in the programs declared with it.
+    let (in_declared, rest): (Vec<_>, Vec<_>) =
+        loose.into_iter().partition(|(p, _)| declared.files.contains(&crate::diag::paths::absolute(p)));
+    for (p, _) in &in_declared {
+        let file = crate::diag::paths::absolute(p);
+        emit(&mut programs, &|paths| paths.contains(&file));
+    }
+    let loose = rest;
+    let loose_named = !loose.is_empty() || !in_declared.is_empty();
+    if !loose.is_empty() {
         let kinds: BTreeSet<StageKind> = loose.iter().map(|(_, k)| *k).collect();
         if kinds.len() == loose.len() || units_of_one_program(&loose) {
-            programs.push(ProgramInput::Stages { name: program_name(&loose), files: loose, defines: Vec::new() });
+            programs.push(ProgramInput::Stages { name: program_name(&loose), files: loose, defines: Vec::new(), formed: Formed::Named });
         } else {
             programs.extend(group_by_stem(loose));
         }
@@ -214,12 +272,13 @@ fn group_by_stem(files: Vec<(PathBuf, StageKind)>) -> Vec<ProgramInput> {
         .into_values()
         .map(|mut files| {
             files.sort_by_key(|(_, k)| *k);
-            ProgramInput::Stages { name: program_name(&files), files, defines: Vec::new() }
+            ProgramInput::Stages { name: program_name(&files), files, defines: Vec::new(), formed: Formed::Stem }
         })
         .collect()
 }
 
-fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
+/// The programs below `dir`; files in `declared` (used by a `[[program]]`) form no other.
+fn collect_dir(dir: &Path, selection: &Selection, declared: &BTreeSet<PathBuf>) -> (Vec<ProgramInput>, Vec<Diagnostic>) {
     let mut manifests = Vec::new();
     let mut stage_files = Vec::new();
     let mut two_stage = Vec::new();
@@ -262,7 +321,9 @@ fn collect_dir(dir: &Path, selection: &Selection) -> (Vec<ProgramInput>, Vec<Dia
     // Stage files in a directory that has a manifest belong to it.
     let manifest_dirs: BTreeSet<PathBuf> = manifests.iter().filter_map(|m| m.parent().map(Path::to_path_buf)).collect();
     let in_manifest_dir = |p: &Path| p.parent().is_some_and(|d| manifest_dirs.contains(d));
-    stage_files.retain(|(p, _)| !in_manifest_dir(p));
+    let is_declared = |p: &Path| declared.contains(&crate::diag::paths::absolute(p));
+    stage_files.retain(|(p, _)| !in_manifest_dir(p) && !is_declared(p));
+    two_stage.retain(|p| !matches!(p, ProgramInput::Stages { files, .. } if is_declared(&files[0].0)));
     two_stage.retain(|p| !matches!(p, ProgramInput::Stages { files, .. } if in_manifest_dir(&files[0].0)));
     let mut programs: Vec<ProgramInput> = manifests.into_iter().map(ProgramInput::Manifest).collect();
     let mut groups = group_by_stem(stage_files);
@@ -287,6 +348,7 @@ fn two_stage_file(path: &Path) -> Option<(ProgramInput, Diagnostic)> {
         name,
         files: vec![(path.to_path_buf(), StageKind::Vertex), (path.to_path_buf(), StageKind::Fragment)],
         defines: vec![(StageKind::Vertex, defined(vertex)), (StageKind::Fragment, defined(fragment))],
+        formed: Formed::TwoStages,
     };
     let note = Diagnostic::new(
         Code::StageFromText,
@@ -326,7 +388,7 @@ fn pair_with_the_folders_vertex_stage(groups: &mut Vec<ProgramInput>) -> Vec<Dia
     let mut notes = Vec::new();
     let mut paired_vertex: BTreeSet<PathBuf> = BTreeSet::new();
     for g in groups.iter_mut() {
-        let ProgramInput::Stages { files, .. } = g else { continue };
+        let ProgramInput::Stages { files, formed, .. } = g else { continue };
         let kinds: BTreeSet<StageKind> = files.iter().map(|(_, k)| *k).collect();
         if !kinds.contains(&StageKind::Fragment) || kinds.contains(&StageKind::Vertex) || kinds.contains(&StageKind::Compute) {
             continue;
@@ -338,6 +400,7 @@ fn pair_with_the_folders_vertex_stage(groups: &mut Vec<ProgramInput>) -> Vec<Dia
         ));
         files.push((vertex.clone(), StageKind::Vertex));
         files.sort_by_key(|(_, k)| *k);
+        *formed = Formed::FolderVertex;
         paired_vertex.insert(vertex.clone());
     }
     // A vertex stage now checked with its fragment stages is no program of its own.

@@ -145,7 +145,10 @@ mod tests {
     fn two_stage_files_are_told_by_their_conditionals() {
         let retro = "#if defined(VERTEX)\nvoid main() {}\n#elif defined(FRAGMENT)\nvoid main() {}\n#endif\n";
         assert_eq!(two_stage_macros(retro), Some(("VERTEX", "FRAGMENT")));
-        assert_eq!(two_stage_macros("#ifdef VERTEX_SHADER\n#endif\n#ifdef FRAGMENT_SHADER\n#endif\n"), Some(("VERTEX_SHADER", "FRAGMENT_SHADER")));
+        assert_eq!(
+            two_stage_macros("#ifdef VERTEX_SHADER\n#endif\n#ifdef FRAGMENT_SHADER\n#endif\n"),
+            Some(("VERTEX_SHADER", "FRAGMENT_SHADER"))
+        );
         assert_eq!(two_stage_macros("#ifdef VERTEX\n#endif\n"), None, "one stage only");
         assert_eq!(two_stage_macros("#if defined VS\n#else\n#endif\n#ifdef FS\n#endif\n"), Some(("VS", "FS")));
     }

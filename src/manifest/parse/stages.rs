@@ -5,7 +5,7 @@
 
 use std::ops::Range;
 
-use toml::de::{DeTable, DeValue};
+use toml::de::DeTable;
 
 use super::{entries, key, Ctx, Key, Val};
 use crate::diag::Code;
@@ -95,20 +95,10 @@ impl Ctx<'_> {
                 "define" => {
                     let Some(table) = self.table(v, &format!("{what}.define")) else { continue };
                     for (name, value) in entries(table) {
-                        let text = match value.get_ref() {
-                            DeValue::String(s) => s.to_string(),
-                            DeValue::Integer(i) => i.as_str().to_string(),
-                            DeValue::Float(f) => f.as_str().to_string(),
-                            DeValue::Boolean(b) => b.to_string(),
-                            _ => {
-                                self.wrong_type(value, &format!("`{}`", key(name)), "a string, number or boolean");
-                                continue;
-                            }
-                        };
-                        match crate::stage::parse_define(&format!("{}={text}", key(name))) {
+                        match crate::stage::define_from_toml(key(name), value.get_ref()) {
                             Ok(d) => defines.push(d),
                             Err(why) => {
-                                self.report(Code::ManifestValue, name.span(), why, "not a macro name");
+                                self.report(Code::ManifestValue, name.span(), why, "not a macro");
                             }
                         }
                     }

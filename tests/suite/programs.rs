@@ -1,0 +1,99 @@
+//! Programs as the user means them: `--define`, a manifest stage's `define`, the
+//! single-file two-stage format, `[[program]]` in `effectc.toml`, and the list of formed
+//! programs (`check --verbose`, JSON `formed`). Inputs are generated here.
+
+use crate::common::{self, code, effectc, stdout};
+
+const VERT: &str = "#version 330\nin vec3 p;\nin vec3 n;\nout vec3 normal;\nvoid main() { normal = n; gl_Position = vec4(p, 1.0); }\n";
+
+fn frag(input: &str) -> String {
+    format!("#version 330\nin vec3 {input};\nout vec4 c;\nvoid main() {{ c = vec4({input} * LIGHTS, 1.0); }}\n")
+}
+
+#[test]
+fn defines_reach_every_stage_and_a_manifest_stage_has_its_own() {
+    let dir = common::scratch("programs", "defines");
+    let file = dir.join("a.frag");
+    std::fs::write(&file, "#version 330\nout vec4 c;\nvoid main() { c = vec4(QUALITY * 0.25); }\n").unwrap();
+    let out = effectc(&["check", "--color", "never", file.to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "QUALITY is undeclared without the define: {}", stdout(&out));
+    let out = effectc(&["check", "--color", "never", "-D", "QUALITY=3", file.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let out = effectc(&["check", "--define", "GL_X", file.to_str().unwrap()]);
+    assert_eq!(code(&out), 2, "a reserved name is a usage error");
+
+    std::fs::write(
+        dir.join("both.glsl"),
+        format!(
+            "#version 330\n#ifdef VS\n{}#else\n{}#endif\n",
+            VERT.replace("#version 330\n", ""),
+            frag("normal").replace("#version 330\n", "")
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("effect.toml"),
+        "name = \"lit\"\n[stages]\nvertex = { file = \"both.glsl\", define = { VS = 1 } }\nfragment = { file = \"both.glsl\", define = { LIGHTS = 2 } }\n",
+    )
+    .unwrap();
+    let out = effectc(&["check", "--color", "never", "--verbose", dir.join("effect.toml").to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains("(defined: VS=1)") && stdout(&out).contains("(defined: LIGHTS=2)"), "{}", stdout(&out));
+}
+
+#[test]
+fn a_file_holding_two_stages_is_one_program_and_its_link_is_checked() {
+    let dir = common::scratch("programs", "two-stage");
+    let body = |input: &str| {
+        format!(
+            "#version 130\n#if defined(VERTEX)\nin vec4 VertexCoord;\nout vec2 uv;\nvoid main() {{ uv = VertexCoord.xy; gl_Position = VertexCoord; }}\n#elif defined(FRAGMENT)\nin vec2 {input};\nout vec4 c;\nvoid main() {{ c = vec4({input}, 0.0, 1.0); }}\n#endif\n"
+        )
+    };
+    // `blur-vert.glsl` is a vertical blur holding both stages, not a vertex stage.
+    std::fs::write(dir.join("blur-vert.glsl"), body("uv")).unwrap();
+    std::fs::write(dir.join("typo.glsl"), body("vu")).unwrap();
+    let out = effectc(&["check", "--color", "never", "--format", "json", dir.to_str().unwrap()]);
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let formed = doc["formed"].as_array().unwrap();
+    assert_eq!(formed.len(), 2, "{doc}");
+    for f in formed {
+        assert_eq!(f["stages"].as_array().unwrap().len(), 2, "{f}");
+        assert!(f["why"].as_str().unwrap().contains("both stages"), "{f}");
+    }
+    let errors: Vec<&serde_json::Value> = doc["diagnostics"].as_array().unwrap().iter().filter(|d| d["severity"] == "error").collect();
+    assert_eq!(errors.len(), 1, "only the typo's link fails: {errors:?}");
+    assert_eq!(errors[0]["code"], "E0202");
+    assert!(errors[0]["file"].as_str().unwrap().ends_with("typo.glsl"));
+}
+
+#[test]
+fn declared_programs_pair_one_vertex_stage_with_many_and_say_so() {
+    let dir = common::scratch("programs", "declared");
+    let data = dir.join("data");
+    std::fs::create_dir_all(&data).unwrap();
+    std::fs::write(data.join("PCN.vert"), VERT).unwrap();
+    std::fs::write(data.join("Diffuse.frag"), frag("normal")).unwrap();
+    std::fs::write(data.join("Phong.frag"), frag("normal")).unwrap();
+    std::fs::write(data.join("Toon.frag"), frag("normall")).unwrap();
+    std::fs::write(data.join("Other.vert"), VERT).unwrap();
+    std::fs::write(
+        dir.join("effectc.toml"),
+        "[[program]]\nname = \"lit\"\nvertex = \"data/PCN.vert\"\nfragment = [\"data/*.frag\"]\ndefine = { LIGHTS = 2 }\n[[program]]\nvertex = \"data/None*.vert\"\nfragment = \"data/Phong.frag\"\n",
+    )
+    .unwrap();
+    // Two vertex stages in the folder: without the declaration nothing would pair them.
+    let out = effectc(&["check", "--color", "never", "--verbose", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    assert!(text.contains("programs formed: 4"), "{text}");
+    for name in ["lit/Diffuse", "lit/Phong", "lit/Toon"] {
+        assert!(text.contains(&format!("{name}: declared by a [[program]]")), "{name}: {text}");
+    }
+    assert!(text.contains("E0202") && text.contains("normall"), "the injected typo is caught: {text}");
+    assert!(text.contains("W0006") && text.contains("matches no file"), "a pattern matching nothing is said: {text}");
+    assert!(text.contains("Other.vert` is checked alone"), "the undeclared stage is still checked: {text}");
+    // A file named on the command line is checked in the program declared with it.
+    let out = effectc(&["check", "--color", "never", "--verbose", data.join("Phong.frag").to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains("lit/Phong: declared") && !stdout(&out).contains("N0002"), "{}", stdout(&out));
+}
