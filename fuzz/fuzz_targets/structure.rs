@@ -19,7 +19,7 @@
 //!
 //! `EFFECTC_FUZZ_SKIP_KNOWN_SLOW=1` keeps recipes away from shapes already known to take
 //! exponential or cubic time (so a run finds something new rather than them again): at
-//! most 6 nested loops (deeper levels become `if`s), fans of at most 16 functions, and at
+//! most 3 nested loops (deeper levels become `if`s), fans of at most 16 functions, and at
 //! most 256 functions defined after their callers, no use of a macro that expands past the
 //! statement limit (naga's GLSL front lowers a sum recursively, one frame per term).
 #![no_main]
@@ -54,7 +54,7 @@ const GLSLANG_STACK_BUDGET: u64 = 8_000;
 /// body once per round, so its time is exponential in loop depth), functions in a fan (it
 /// walks each call's body anew: 2^n paths), functions defined after their callers
 /// (glslang's `checkCallGraphBodies`, cubic).
-const KNOWN_SLOW_LOOPS: u64 = 6;
+const KNOWN_SLOW_LOOPS: u64 = 3;
 const KNOWN_SLOW_FAN: u64 = 16;
 const KNOWN_SLOW_REVERSED: u64 = 256;
 
@@ -220,7 +220,7 @@ impl Gen {
             }
             let (open, close, cost) = match kind {
                 0 => (format!("if (x > {i}.0) {{\n"), "}\n".to_string(), 7),
-                1 => (format!("if (x > {u}) {{ x += 1.0; }} else {{\n"), "}\n".to_string(), 8),
+                1 => (format!("if (x > {u}) {{ x += 1.0; }} else {{\n"), "}\n".to_string(), 9),
                 2 => (format!("for (int i{p}_{i} = 0; i{p}_{i} < 2; ++i{p}_{i}) {{\n"), "}\n".to_string(), 9),
                 3 => (format!("while (x < {i}.0) {{ x += 1.0;\n"), "}\n".to_string(), 7),
                 4 => ("do {\n".to_string(), format!("}} while (x < {u});\n"), 5),

@@ -33,8 +33,8 @@ pub fn of(input: &ProgramInput, effect: Option<&crate::manifest::Effect>, global
     let shown_path = |p: &std::path::Path| crate::diag::paths::display_path(&p.display().to_string(), cwd.as_deref());
     match input {
         ProgramInput::Manifest(path) => Formation {
-            name: input.display_name(),
-            why: format!("the stages `{}` lists", path.display()),
+            name: shown_path(path),
+            why: format!("the stages `{}` lists", shown_path(path)),
             stages: effect
                 .map(|e| {
                     e.stages.iter().map(|s| FormedStage { stage: s.kind, file: shown_path(&s.path), defines: shown(&s.defines) }).collect()
@@ -42,7 +42,8 @@ pub fn of(input: &ProgramInput, effect: Option<&crate::manifest::Effect>, global
                 .unwrap_or_default(),
         },
         ProgramInput::Stages { name, files, defines, formed } => Formation {
-            name: name.clone(),
+            // Named after its files' folder, or by `[[program]]`: shown as paths are.
+            name: shown_path(std::path::Path::new(name)),
             why: formed.describe(files.len()).to_string(),
             stages: files
                 .iter()

@@ -116,20 +116,37 @@ fn files_that_include_each_other_behind_guards_are_no_cycle() {
 
 #[test]
 fn manifest_paths_stay_inside_the_project_root() {
+    // A pull request's manifest tries every path-taking field with every way out of the
+    // root: an absolute path, a `..` escape, a symlink inside the root pointing out, and the
+    // job's environment. Each is E0106 (exit 1) and nothing of the target is printed.
     let outside = common::scratch("hostile", "manifest-outside");
     std::fs::write(outside.join("secret.frag"), "// hunter2-outside\nvoid main() {}\n").unwrap();
+    std::fs::write(outside.join("effect.toml"), "name = \"hunter2-outside\"\n[stages]\nfragment = \"secret.frag\"\n").unwrap();
     let root = common::scratch("hostile", "manifest-pull-request");
     std::fs::write(root.join("effectc.toml"), "").unwrap();
     std::fs::write(root.join("a.vert"), "#version 330\nin vec3 p;\nvoid main() { gl_Position = vec4(p, 1.0); }\n").unwrap();
-    let fields = [
-        ("[stages]\nvertex = \"a.vert\"\nfragment = \"../manifest-outside/secret.frag\"\n", "stage"),
-        ("[stages]\nvertex = \"a.vert\"\n[textures]\nt = { file = \"/proc/self/environ\" }\n", "texture"),
-        ("[stages]\nvertex = \"a.vert\"\n[mesh]\nobj = \"/proc/self/environ\"\n", "mesh"),
+    std::fs::write(root.join("a.frag"), "#version 330\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n").unwrap();
+    std::os::unix::fs::symlink(&outside, root.join("link")).unwrap();
+    let ways_out = [
+        (outside.join("secret.frag").display().to_string(), outside.display().to_string(), "an absolute path"),
+        ("../manifest-outside/secret.frag".to_string(), "../manifest-outside".to_string(), "a `..` escape"),
+        ("link/secret.frag".to_string(), "link".to_string(), "a symlink out"),
+        ("/proc/self/environ".to_string(), "/proc/self".to_string(), "the job's environment"),
     ];
-    for (body, what) in fields {
-        let manifest = root.join("effect.toml");
-        std::fs::write(&manifest, format!("name = \"leak\"\n{body}")).unwrap();
-        refused_in_every_format(&manifest, what);
+    for (file, dir, way) in &ways_out {
+        let fields = [
+            (format!("[stages]\nvertex = \"a.vert\"\nfragment = \"{file}\"\n"), "stage"),
+            (format!("[stages]\nvertex = {{ file = \"{file}\", define = {{ A = 1 }} }}\nfragment = \"a.frag\"\n"), "stage with defines"),
+            (format!("[stages]\nvertex = \"a.vert\"\nfragment = \"a.frag\"\n[textures]\nt = {{ file = \"{file}\" }}\n"), "texture"),
+            (format!("[stages]\nvertex = \"a.vert\"\nfragment = \"a.frag\"\n[mesh]\nobj = \"{file}\"\n"), "mesh"),
+            (format!("output = \"o\"\n[targets]\no = {{}}\n[[passes]]\nname = \"p\"\nstages = {{ vertex = \"a.vert\", fragment = \"{file}\" }}\ntargets = [\"o\"]\n"), "pass stage"),
+            (format!("output = \"o\"\n[targets]\no = {{}}\n[[passes]]\nname = \"p\"\neffect = \"{dir}\"\ntargets = [\"o\"]\n"), "pass effect"),
+        ];
+        for (body, what) in fields {
+            let manifest = root.join("effect.toml");
+            std::fs::write(&manifest, format!("name = \"leak\"\n{body}")).unwrap();
+            refused_in_every_format(&manifest, &format!("{what}, {way}"));
+        }
     }
 }
 

@@ -288,8 +288,15 @@ impl Ctx<'_> {
     fn reused_effect(&mut self, v: &Val<'_>) -> Option<std::path::PathBuf> {
         let rel = self.string(v, "`passes.effect`")?;
         let mut path = self.dir.join(rel);
+        if !self.confined(&path, v, rel, "the reused effect") {
+            return None;
+        }
         if path.is_dir() {
             path = path.join("effect.toml");
+            // Its `effect.toml` may itself be a link out.
+            if !self.confined(&path, v, rel, "the reused effect") {
+                return None;
+            }
         }
         if !path.is_file() {
             let d = self.report(Code::AssetNotFound, v.span(), format!("effect not found: `{rel}`"), "no effect.toml here");

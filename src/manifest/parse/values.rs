@@ -103,6 +103,19 @@ impl Ctx<'_> {
         }
     }
 
+    /// `path` (written `rel` at `v`) lies inside the manifest's project root or a directory
+    /// it makes readable; else E0106, and the path is never opened.
+    pub(super) fn confined(&mut self, path: &std::path::Path, v: &Val<'_>, rel: &str, noun: &str) -> bool {
+        let root = crate::read::project_root(&self.dir.join("effect.toml"));
+        if crate::read::confined(path, &root) {
+            return true;
+        }
+        let d =
+            self.report(Code::OutsideRoot, v.span(), format!("{noun} `{rel}` lies outside the project root"), "outside the project root");
+        d.notes.push(crate::read::outside_root_note(&root, "manifest"));
+        false
+    }
+
     /// A path relative to the manifest directory that must name an existing file inside the
     /// project root ([`crate::read::project_root`]; E0106 outside it, never opened).
     pub(super) fn file_path(&mut self, v: &Val<'_>, what: &str, code: Code, noun: &str) -> Option<PathBuf> {
@@ -112,15 +125,7 @@ impl Ctx<'_> {
             return None;
         }
         let path = self.dir.join(rel);
-        let root = crate::read::project_root(&self.dir.join("effect.toml"));
-        if !crate::read::confined(&path, &root) {
-            let d = self.report(
-                Code::OutsideRoot,
-                v.span(),
-                format!("{noun} `{rel}` lies outside the project root"),
-                "outside the project root",
-            );
-            d.notes.push(crate::read::outside_root_note(&root, "manifest"));
+        if !self.confined(&path, v, rel, noun) {
             return None;
         }
         if !path.is_file() {
