@@ -480,7 +480,14 @@ impl CommonArgs {
             jobs: self.jobs.map(|j| j as usize),
             values: Vec::new(),
             fixed_function_vertex: false,
-            defines: self.defines.clone(),
+            // The settings' macros, then the command line's (which win for a name both give).
+            defines: config
+                .defines
+                .iter()
+                .filter(|(n, _)| !self.defines.iter().any(|(m, _)| m == n))
+                .chain(&self.defines)
+                .cloned()
+                .collect(),
         }
     }
 }

@@ -9,6 +9,7 @@
 //! deny-warnings = true              # like --deny-warnings
 //! allow = ["W0201"]                 # silenced everywhere
 //! deny = ["W0717"]                  # raised to errors
+//! define = { PARAMETER_UNIFORM = 1 }  # macros in every stage, as the host code defines them
 //! readable = ["../shared/glsl"]     # directories outside the project root that includes
 //!                                   # and manifests may read (never /proc, /etc, …)
 //! [stages]                          # the stage of extensions effectc does not know
@@ -132,6 +133,9 @@ pub struct Config {
     pub policy: Policy,
     /// How much of an input a run reads and models (`[limits]`).
     pub limits: Limits,
+    /// `define = { NAME = VALUE }`: macros defined in every stage (as `--define`, which
+    /// adds to them and wins for a name both give).
+    pub defines: Vec<crate::stage::Define>,
 }
 
 /// A loaded configuration: the settings, and the file's text with the diagnostics about

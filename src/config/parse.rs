@@ -21,8 +21,8 @@ use crate::stage::StageKind;
 type Val<'i> = Spanned<DeValue<'i>>;
 
 /// The keys at the top of the file.
-const KEYS: [&str; 11] =
-    ["include", "exclude", "target-env", "strict", "deny-warnings", "allow", "deny", "readable", "stages", "limits", "program"];
+const KEYS: [&str; 12] =
+    ["include", "exclude", "target-env", "strict", "deny-warnings", "allow", "deny", "readable", "define", "stages", "limits", "program"];
 
 /// The settings of `text` (the file at `path`, registered as `file`); problems go to
 /// `diags` (errors for what cannot be used, W0004 for unknown codes).
@@ -60,6 +60,7 @@ pub(super) fn parse(text: &str, file: FileId, path: &Path, diags: &mut Vec<Diagn
             "allow" => config.policy.allow = w.strings(v, "allow").map(|l| w.codes(&l, false)).unwrap_or_default(),
             "deny" => config.policy.deny = w.strings(v, "deny").map(|l| w.codes(&l, true)).unwrap_or_default(),
             "readable" => w.readable(v, &dir),
+            "define" => config.defines = w.defines(v),
             "stages" => config.selection.stages = w.stages(v),
             "limits" => config.limits = w.limits(v),
             "program" => config.selection.programs = w.programs(v),

@@ -21,6 +21,13 @@ fn defines_reach_every_stage_and_a_manifest_stage_has_its_own() {
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     let out = effectc(&["check", "--define", "GL_X", file.to_str().unwrap()]);
     assert_eq!(code(&out), 2, "a reserved name is a usage error");
+    // The settings define it for every stage; the command line wins for the same name.
+    std::fs::write(dir.join("effectc.toml"), "define = { QUALITY = \"nope\" }\n").unwrap();
+    let out = effectc(&["check", "--color", "never", file.to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "`nope` is undeclared: {}", stdout(&out));
+    let out = effectc(&["check", "--color", "never", "-D", "QUALITY=2", file.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    std::fs::remove_file(dir.join("effectc.toml")).unwrap();
 
     std::fs::write(
         dir.join("both.glsl"),
