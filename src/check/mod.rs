@@ -171,6 +171,7 @@ impl InputSpec {
         }
         out.read.sort();
         out.read.dedup();
+        unique_names(&mut checked);
         if !self.values.is_empty() {
             set_values::apply(&self.values, &mut out, &mut checked);
         }
@@ -256,6 +257,33 @@ fn assets(effect: &Effect) -> Vec<PathBuf> {
         out.push(p.clone());
     }
     out
+}
+
+/// Programs of bare stage files are named after their first file's stem, so one vertex
+/// stage paired with several fragment stages (a folder's, or a `[[program]]`'s) gave them
+/// one name, and each one's outputs overwrote the last's. Such names get the program's own
+/// (`PCN-Diffuse`, `PCN-Phong`), or a number when that does not tell them apart.
+fn unique_names(checked: &mut [Checked]) {
+    let mut count: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+    for c in checked.iter().filter(|c| c.effect.is_none()) {
+        for u in &c.units {
+            *count.entry(u.name.clone()).or_default() += 1;
+        }
+    }
+    let mut taken: HashSet<String> = count.iter().filter(|(_, n)| **n == 1).map(|(k, _)| k.clone()).collect();
+    for c in checked.iter_mut().filter(|c| c.effect.is_none()) {
+        let own = Path::new(&c.name).file_name().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        for u in c.units.iter_mut().filter(|u| count.get(&u.name).is_some_and(|n| *n > 1)) {
+            let mut name = if own.is_empty() || own == u.name { u.name.clone() } else { format!("{}-{own}", u.name) };
+            let mut n = 2;
+            while taken.contains(&name) {
+                name = format!("{}-{n}", u.name);
+                n += 1;
+            }
+            taken.insert(name.clone());
+            u.name = name;
+        }
+    }
 }
 
 /// The name of a program from bare stage files: its first file's stem.

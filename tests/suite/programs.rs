@@ -99,6 +99,15 @@ fn declared_programs_pair_one_vertex_stage_with_many_and_say_so() {
     assert!(text.contains("E0202") && text.contains("normall"), "the injected typo is caught: {text}");
     assert!(text.contains("W0006") && text.contains("matches no file"), "a pattern matching nothing is said: {text}");
     assert!(text.contains("Other.vert` is checked alone"), "the undeclared stage is still checked: {text}");
+    // One vertex stage in several programs: each program's outputs keep their own name.
+    std::fs::remove_file(data.join("Toon.frag")).unwrap();
+    let out_dir = dir.join("out");
+    let out = effectc(&["translate", "--to", "wgsl", "--out", out_dir.to_str().unwrap(), dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let mut written: Vec<String> =
+        std::fs::read_dir(&out_dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    written.sort();
+    assert_eq!(written, ["Other.wgsl", "PCN-Diffuse.wgsl", "PCN-Phong.wgsl"], "{}", stdout(&out));
     // A file named on the command line is checked in the program declared with it.
     let out = effectc(&["check", "--color", "never", "--verbose", data.join("Phong.frag").to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
