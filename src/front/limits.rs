@@ -3,14 +3,17 @@
 //! an input far beyond real code would exhaust the stack or memory rather than fail.
 //! The values are the run's [`Limits`] (defaults, or `effectc.toml`'s `[limits]`):
 //!
-//! - one statement of more than `statement-tokens` tokens (a sum of ~100,000 terms;
+//! - one statement of more than `statement-tokens` tokens, macros expanded (a sum of ~100,000 terms;
 //!   glslangValidator itself crashes near there, and 10,000 terms are accepted);
 //! - a macro that expands to more than `macro-tokens` tokens (`#define A1 A0+A0`,
 //!   doubling at each level);
+//! - a stage of more than `stage-tokens` tokens, macros expanded: what the compilers read,
+//!   and what their memory grows with (~500 bytes a token);
 //! - ([`check_globals`], on the declarations) a uniform or private global array of more than
 //!   `array-elements` elements.
 //!
-//! The first two are counted on the text in one pass, linear in its size.
+//! A statement's and the stage's tokens count each macro as what it expands to. They are
+//! counted on the text in one pass, linear in its size.
 
 use std::collections::HashMap;
 
@@ -34,10 +37,13 @@ pub fn check_globals(s: &crate::front::syntax::StageSyntax, limits: &Limits) -> 
 
 /// The first limit the stage `text` (of `file`) breaks, as an error.
 pub fn check(file: FileId, text: &str, limits: &Limits) -> Option<Diagnostic> {
-    let (most_tokens, most_macro) = (limits.statement_tokens, limits.macro_tokens);
+    let (most_tokens, most_macro, most_stage) = (limits.statement_tokens, limits.macro_tokens, limits.stage_tokens);
     let mut statement_start = 0;
     let mut count = 0u64;
-    let mut defines: Vec<(String, Vec<String>, std::ops::Range<usize>)> = Vec::new();
+    let mut stage = 0u64;
+    let mut defines: Vec<(String, std::ops::Range<usize>)> = Vec::new();
+    let mut bodies: HashMap<String, Vec<String>> = HashMap::new();
+    let mut sizes: HashMap<String, u64> = HashMap::new();
     let mut line_start = 0;
     for line in logical_lines(text) {
         let (at, body) = (line_start, line);
@@ -52,29 +58,44 @@ pub fn check(file: FileId, text: &str, limits: &Limits) -> Option<Diagnostic> {
                 // A function-like macro's parameters are not part of its body.
                 let body_text = if after.starts_with('(') { after.find(')').map_or("", |i| &after[i + 1..]) } else { after };
                 let indent = body.len() - trimmed.len();
-                defines.push((name, tokens(body_text).map(|(t, _)| t.to_string()).collect(), at + indent..at + body.trim_end().len()));
+                bodies.insert(name.clone(), tokens(body_text).map(|(t, _)| t.to_string()).collect());
+                sizes.clear();
+                defines.push((name, at + indent..at + body.trim_end().len()));
             }
             continue;
         }
         for (token, offset) in tokens(body) {
-            count += 1;
+            // A macro counts as what it expands to: what the compilers will read.
+            let weight = if bodies.contains_key(token) { expanded_size(token, &bodies, &mut sizes, &mut Vec::new()) } else { 1 };
+            count = count.saturating_add(weight);
+            stage = stage.saturating_add(weight);
+            let end = (at + offset + token.len()).min(statement_start + 80).max(statement_start);
+            let here = char_floor(text, statement_start)..char_floor(text, end);
             if matches!(token, ";" | "{" | "}") {
                 count = 0;
                 statement_start = at + offset + 1;
             } else if count > most_tokens {
-                let end = (at + offset + token.len()).min(statement_start + 80).max(statement_start);
                 return Some(
-                    Diagnostic::new(Code::StageLimit, format!("a statement of more than {most_tokens} tokens"))
-                        .at(file, char_floor(text, statement_start)..char_floor(text, end), "this statement")
+                    Diagnostic::new(Code::StageLimit, format!("a statement of more than {most_tokens} tokens (its macros expanded)"))
+                        .at(file, here, "this statement")
                         .with_note("effectc refuses expressions this long before compiling them (glslangValidator itself crashes near 100,000 terms); split the sum into several statements")
                         .with_note(Limits::how_to_raise("statement-tokens")),
                 );
             }
+            if stage > most_stage {
+                return Some(
+                    Diagnostic::new(
+                        Code::StageLimit,
+                        format!("the stage expands to more than {most_stage} tokens (its includes inlined, its macros expanded)"),
+                    )
+                    .at(file, here, "the limit is passed here")
+                    .with_note("each token costs the compilers memory: a stage this large would take more than a gigabyte to check")
+                    .with_note(Limits::how_to_raise("stage-tokens")),
+                );
+            }
         }
     }
-    let bodies: HashMap<&str, &[String]> = defines.iter().map(|(n, b, _)| (n.as_str(), b.as_slice())).collect();
-    let mut sizes: HashMap<&str, u64> = HashMap::new();
-    for (name, _, span) in &defines {
+    for (name, span) in &defines {
         if expanded_size(name, &bodies, &mut sizes, &mut Vec::new()) > most_macro {
             return Some(
                 Diagnostic::new(Code::StageLimit, format!("`{name}` expands to more than {most_macro} tokens"))
@@ -89,29 +110,24 @@ pub fn check(file: FileId, text: &str, limits: &Limits) -> Option<Diagnostic> {
     None
 }
 
-/// Tokens `name` expands to (object-like expansion of its body; memoised, cycles count 1).
-fn expanded_size<'a>(
-    name: &'a str,
-    bodies: &HashMap<&'a str, &'a [String]>,
-    sizes: &mut HashMap<&'a str, u64>,
-    open: &mut Vec<&'a str>,
-) -> u64 {
+/// Tokens `name` expands to (object-like expansion of its body; memoised in `sizes`,
+/// cycles count 1).
+fn expanded_size(name: &str, bodies: &HashMap<String, Vec<String>>, sizes: &mut HashMap<String, u64>, open: &mut Vec<String>) -> u64 {
     if let Some(s) = sizes.get(name) {
         return *s;
     }
     let Some(body) = bodies.get(name) else { return 1 };
-    if open.contains(&name) {
+    if open.iter().any(|o| o == name) {
         return 1;
     }
-    open.push(name);
+    open.push(name.to_string());
     let mut total: u64 = 0;
-    for t in body.iter() {
-        let t: &'a str = t.as_str();
-        let size = if bodies.contains_key(t) { expanded_size(t, bodies, sizes, open) } else { 1 };
+    for t in body {
+        let size = if bodies.contains_key(t.as_str()) { expanded_size(t, bodies, sizes, open) } else { 1 };
         total = total.saturating_add(size);
     }
     open.pop();
-    sizes.insert(name, total);
+    sizes.insert(name.to_string(), total);
     total
 }
 
@@ -193,6 +209,17 @@ mod tests {
         assert!(check(FileId(0), &macros, &Limits::default()).is_some_and(|d| d.message.contains("`A21`")));
         let continued = "#define F(x) \\\n  (x) * \\\n  (x)\nvoid main() { float y = F(2.0); }\n";
         assert!(check(FileId(0), continued, &Limits::default()).is_none());
+        // A macro counts as its expansion: a 2^18-term sum written as one word is refused.
+        let mut used = String::from("#define A0 u\n");
+        for i in 1..=17 {
+            used.push_str(&format!("#define A{i} A{}+A{}\n", i - 1, i - 1));
+        }
+        used.push_str("void main() { float x = A17; }\n");
+        let d = check(FileId(0), &used, &Limits::default()).expect("a statement of 2^18 terms");
+        assert!(d.message.contains("macros expanded"), "{}", d.message);
+        let stage = Limits { stage_tokens: 50, ..Limits::default() };
+        let d = check(FileId(0), &sum(30), &stage).expect("a stage past its tokens");
+        assert!(d.notes.iter().any(|n| n.contains("`stage-tokens`")), "{d:?}");
         let low = Limits { statement_tokens: 100, ..Limits::default() };
         let d = check(FileId(0), &sum(60), &low).expect("a lowered limit holds");
         assert!(d.message.contains("more than 100 tokens") && d.notes.iter().any(|n| n.contains("`statement-tokens`")), "{d:?}");
