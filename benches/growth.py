@@ -52,7 +52,7 @@ def uniforms(n):
 
 
 SHAPES = [
-    ("statements in main", statements, 6250),
+    ("statements in main", statements, 4500),
     ("terms of one sum", sum_terms, 1250),
     ("functions", functions, 250),
     ("nested ifs", nested_ifs, 80),
@@ -103,7 +103,7 @@ def main():
         # Translation of the longest shape: WGSL and SPIR-V written from the same IR.
         before = None
         for k in range(5):
-            n = 6250 << k
+            n = 4500 << k
             path = os.path.join(tmp, f"t{n}.frag")
             with open(path, "w") as f:
                 f.write(statements(n))

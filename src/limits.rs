@@ -7,14 +7,13 @@
 //! file-bytes = 16777216          # a stage or included file (16 MiB)
 //! statement-tokens = 200000      # one statement (a sum of ~100,000 terms)
 //! macro-tokens = 1048576         # what one macro may expand to (2^20)
-//! stage-tokens = 1500000         # the stage, includes inlined and macros expanded
+//! stage-tokens = 600000          # the stage, includes inlined and macros expanded
 //! array-elements = 65536         # one uniform or private global array
 //! ```
 //!
 //! The defaults sit far above real shaders (the largest generated stages met are ~2 MB,
 //! the longest statements a few thousand tokens) and keep what any admitted stage costs
-//! under a gigabyte: the stage's tokens, macros expanded, bound the compilers' memory
-//! (a 4 MiB stage of dense statements, 1.4 million tokens, takes ~650 MB).
+//! under a gigabyte: the stage's tokens, macros expanded, bound the compilers' memory.
 //! Nesting depth has no limit of effectc's own: glslang's parser refuses nesting past its
 //! stack (~1,400 nested `if`s, ~10,000 parentheses: "memory exhausted"), and every walk of
 //! effectc's runs on a stack sized for what glslang accepts.
@@ -30,7 +29,8 @@ pub struct Limits {
     /// Tokens one macro may expand to (`#define A1 A0+A0` doubling at each level).
     pub macro_tokens: u64,
     /// Tokens of a stage with its includes inlined and its macros expanded: the compilers'
-    /// memory grows with them (~500 bytes a token; 1.5 million take ~700 MB).
+    /// memory grows with them, 0.4–1.4 KB a token by the code's shape (long sums cost
+    /// most: three 99,000-term sums, 594,000 tokens, take 0.8 GB to check, 0.9 to translate).
     pub stage_tokens: u64,
     /// Elements in one uniform or private global array (all dimensions): GL's uniform
     /// storage holds a few thousand (Mesa refuses more at link), and effectc models each.
@@ -46,7 +46,7 @@ impl Default for Limits {
 impl Limits {
     /// The limits of a run that sets none.
     pub const DEFAULT: Limits =
-        Limits { file_bytes: 16 << 20, statement_tokens: 200_000, macro_tokens: 1 << 20, stage_tokens: 1_500_000, array_elements: 1 << 16 };
+        Limits { file_bytes: 16 << 20, statement_tokens: 200_000, macro_tokens: 1 << 20, stage_tokens: 600_000, array_elements: 1 << 16 };
 
     /// Each limit's key in `[limits]`, with its value in `self`.
     pub fn named(&self) -> [(&'static str, u64); 5] {

@@ -8,7 +8,7 @@
 //! - a macro that expands to more than `macro-tokens` tokens (`#define A1 A0+A0`,
 //!   doubling at each level);
 //! - a stage of more than `stage-tokens` tokens, macros expanded: what the compilers read,
-//!   and what their memory grows with (~500 bytes a token);
+//!   and what their memory grows with (0.4–1.4 KB a token);
 //! - ([`check_globals`], on the declarations) a uniform or private global array of more than
 //!   `array-elements` elements.
 //!

@@ -259,14 +259,22 @@ fn program_name(files: &[(PathBuf, StageKind)]) -> String {
     }
 }
 
+/// Stage files grouped by folder and stem. A compute stage never joins graphics stages of
+/// its stem (`cloth.comp` beside `cloth.vert` is a program of its own), and a file whose
+/// stage the text told keeps the stem before its inner extension (`tess.cont.glsl` is of
+/// program `tess`).
 fn group_by_stem(files: Vec<(PathBuf, StageKind)>) -> Vec<ProgramInput> {
-    let mut groups: BTreeMap<(PathBuf, String), Vec<(PathBuf, StageKind)>> = BTreeMap::new();
+    let mut groups: BTreeMap<(PathBuf, String, bool), Vec<(PathBuf, StageKind)>> = BTreeMap::new();
     for (path, kind) in files {
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        let stem = stage_names::from_name(&path)
-            .map(|(_, stem)| stem)
-            .unwrap_or_else(|| path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default());
-        groups.entry((dir, stem)).or_default().push((path, kind));
+        let stem = stage_names::from_name(&path).map(|(_, stem)| stem).unwrap_or_else(|| {
+            let stem = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+            match stem.split_once('.') {
+                Some((outer, _)) if !outer.is_empty() => outer.to_string(),
+                _ => stem,
+            }
+        });
+        groups.entry((dir, stem, kind == StageKind::Compute)).or_default().push((path, kind));
     }
     groups
         .into_values()

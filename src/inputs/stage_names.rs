@@ -56,7 +56,12 @@ pub fn from_text(text: &str) -> Option<(StageKind, &'static str)> {
         (tess_control, StageKind::TessControl, "it writes `gl_TessLevelOuter`"),
         (tess_eval, StageKind::TessEval, "it reads `gl_TessCoord`"),
         (position && !geometry && !tess_eval && !tess_control, StageKind::Vertex, "it writes `gl_Position`"),
-        (fragment && !position, StageKind::Fragment, "it writes a fragment output and no `gl_Position`"),
+        // `out vec4` is any stage's output: the other stages' built-ins tell them first.
+        (
+            fragment && !position && !geometry && !tess_eval && !tess_control,
+            StageKind::Fragment,
+            "it writes a fragment output and no `gl_Position`",
+        ),
         (has("local_size_x") && !position && !fragment, StageKind::Compute, "it declares `local_size_x`"),
     ];
     let mut shown = rules.iter().filter(|(yes, _, _)| *yes);

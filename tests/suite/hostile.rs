@@ -291,6 +291,12 @@ fn a_huge_function_is_checked_and_translated() {
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     let wgsl = std::fs::read_to_string(target.join("huge.wgsl")).unwrap();
     assert!(wgsl.matches("1.0001").count() >= 8_000, "every statement kept");
+    // Past 600,000 tokens (80,000 statements of 8) the stage is refused before compiling:
+    // the compilers' memory grows with its tokens.
+    std::fs::write(&file, statements(80_000)).unwrap();
+    let out = check(&[], &[&file]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0107") && stdout(&out).contains("`stage-tokens`"), "{}", stdout(&out));
 }
 
 #[test]

@@ -113,3 +113,31 @@ fn declared_programs_pair_one_vertex_stage_with_many_and_say_so() {
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     assert!(stdout(&out).contains("lit/Phong: declared") && !stdout(&out).contains("N0002"), "{}", stdout(&out));
 }
+
+#[test]
+fn a_compute_stage_stands_apart_and_told_stages_keep_their_stem() {
+    let dir = common::scratch("programs", "stems");
+    std::fs::write(dir.join("cloth.vert"), VERT).unwrap();
+    std::fs::write(dir.join("cloth.frag"), frag("normal").replace(" * LIGHTS", "")).unwrap();
+    std::fs::write(dir.join("cloth.comp"), "#version 430\nlayout(local_size_x = 1) in;\nvoid main() {}\n").unwrap();
+    // `x.cont.glsl`: an inner extension effectc does not know; the text tells the stage.
+    std::fs::write(dir.join("tess.vert.glsl"), "#version 410\nin vec4 p;\nout vec4 vp;\nvoid main() { vp = p; }\n").unwrap();
+    std::fs::write(
+        dir.join("tess.cont.glsl"),
+        "#version 410\nlayout(vertices = 3) out;\nin vec4 vp[];\nout vec4 cp[];\nvoid main() { cp[gl_InvocationID] = vp[gl_InvocationID]; gl_TessLevelOuter[0] = 1.0; gl_TessLevelOuter[1] = 1.0; gl_TessLevelOuter[2] = 1.0; gl_TessLevelInner[0] = 1.0; }\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("tess.eval.glsl"), "#version 410\nlayout(triangles) in;\nin vec4 cp[];\nvoid main() { gl_Position = gl_TessCoord.x * cp[0] + gl_TessCoord.y * cp[1] + gl_TessCoord.z * cp[2]; }\n").unwrap();
+    std::fs::write(dir.join("tess.frag.glsl"), "#version 410\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n").unwrap();
+    let out = effectc(&["check", "--format", "json", dir.to_str().unwrap()]);
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mut shapes: Vec<Vec<String>> = doc["formed"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["stages"].as_array().unwrap().iter().map(|s| s["stage"].as_str().unwrap().to_string()).collect())
+        .collect();
+    shapes.sort();
+    assert_eq!(shapes, [vec!["compute"], vec!["vertex", "fragment"], vec!["vertex", "tess_control", "tess_eval", "fragment"]], "{doc}");
+    assert_eq!(code(&out), 0, "{doc}");
+}
