@@ -148,6 +148,7 @@ codes! {
     LayerSelected => "N0105", "`gl_Layer`/`gl_ViewportIndex` select which primitives a draw keeps (WebGPU cannot route them)",
     ReferenceOnly => "N0106", "a stage the reference compiler accepts and effectc's own analysis cannot read: checked by glslang only",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
+    HazardAnalysisStopped => "N0701", "the static hazard analysis of a stage stopped at its work limit: its warnings are incomplete",
     // Warnings.
     StageExtension => "W0001", "stage file extension names another stage",
     DefaultOutOfRange => "W0002", "uniform default outside its declared range",

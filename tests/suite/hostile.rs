@@ -311,3 +311,28 @@ fn a_hazard_in_a_macro_is_shown_at_the_use_not_from_the_define() {
     let span = &division["span"];
     assert_eq!((span["line"].as_u64(), span["end_line"].as_u64()), (Some(7), Some(7)), "{division}");
 }
+
+#[test]
+fn the_hazard_analysis_stops_at_its_work_limit_and_says_so() {
+    // Nested loops are iterated to a fixpoint round after round, calls are walked at every
+    // call site: 12 nested loops took 125 s, and a fan of 40 functions each calling the
+    // previous two 24 s. The analysis now stops at its work limit with note N0701.
+    let dir = common::scratch("hostile", "hazard-work");
+    let loops: String = (0..12).map(|i| format!("for (int i{i} = 0; i{i} < 4; i{i}++) {{\n")).collect();
+    let nested = format!(
+        "#version 330\nuniform float u;\nout vec4 c;\nvoid main() {{ float x = u;\n{loops}x += 1.0 / (x - 1.0);\n{}c = vec4(x); }}\n",
+        "}\n".repeat(12)
+    );
+    let fan: String =
+        (1..40).map(|i| format!("float f{i}(float x) {{ return f{}(x) + f{}(x * 0.5); }}\n", i - 1, (i as i32 - 2).max(0))).collect();
+    let fans = format!(
+        "#version 330\nuniform float u;\nout vec4 c;\nfloat f0(float x) {{ return sqrt(x); }}\n{fan}void main() {{ c = vec4(f39(u)); }}\n"
+    );
+    for (name, text) in [("nested.frag", nested), ("fan.frag", fans)] {
+        let file = dir.join(name);
+        std::fs::write(&file, text).unwrap();
+        let out = check(&[], &[&file]);
+        assert_eq!(code(&out), 0, "{name}: {}", stdout(&out));
+        assert!(stdout(&out).contains("N0701"), "{name}: {}", stdout(&out));
+    }
+}

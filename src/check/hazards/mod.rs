@@ -255,10 +255,20 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
         let hazards = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, text);
             a.run_entry();
-            (a.hazards, a.outputs)
+            (a.hazards, a.outputs, a.stopped)
         }));
         // The analysis must never take `check` down; a bug in it loses its warnings only.
-        let Ok((hazards, outputs)) = hazards else { continue };
+        let Ok((hazards, outputs, stopped)) = hazards else { continue };
+        if stopped {
+            out.push(
+                Diagnostic::new(Code::HazardAnalysisStopped, format!("the hazard analysis of the {kind} stage stopped at its work limit"))
+                    .in_file(s.syntax.file)
+                    .with_note(format!(
+                        "loops nested deeply, or calls fanning out, take work growing exponentially; after {} steps the rest of the stage was not analysed, so its warnings are incomplete",
+                        walk::WORK_LIMIT
+                    )),
+            );
+        }
         if kind == StageKind::Vertex {
             f.varyings = outputs.into_iter().filter_map(|(l, v)| v.num().cloned().map(|n| (l, varying(n)))).collect();
         }

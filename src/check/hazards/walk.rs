@@ -67,6 +67,11 @@ pub struct State {
 }
 
 impl State {
+    /// Entries held (what a join walks).
+    pub fn size(&self) -> u64 {
+        (self.locals.len() + self.globals.len() + self.versions.len() + self.stored.len() + self.refined.len()) as u64
+    }
+
     pub fn dead() -> State {
         State {
             locals: HashMap::new(),
@@ -194,7 +199,18 @@ pub struct Analyzer<'a> {
     /// Each global's value before the stage writes it, made once: a uniform block of
     /// thousands of members is read member by member, not rebuilt at each read.
     initials: std::cell::RefCell<HashMap<Handle<naga::GlobalVariable>, std::rc::Rc<Val>>>,
+    /// Work done (statements walked, state entries joined) and the most allowed
+    /// ([`WORK_LIMIT`]): nested loops iterate to a fixpoint round after round and calls are
+    /// walked at every call site, so the work can grow exponentially with nesting. Past the
+    /// limit the rest of the stage is taken as unreachable (no warning, false or true) and
+    /// `stopped` is set (note N0701).
+    work: u64,
+    pub stopped: bool,
 }
+
+/// Work units one stage's analysis may take: real shaders take a few thousand to a few
+/// hundred thousand; 8 nested loops about 2 million (0.4 s).
+pub const WORK_LIMIT: u64 = 4_000_000;
 
 const MAX_ROUNDS: usize = 12;
 const MAX_CALL_DEPTH: usize = 24;
@@ -212,6 +228,8 @@ impl<'a> Analyzer<'a> {
             fresh: 0,
             outputs: HashMap::new(),
             initials: Default::default(),
+            work: 0,
+            stopped: false,
         }
     }
 
@@ -310,6 +328,11 @@ impl<'a> Analyzer<'a> {
     }
 
     fn statement(&mut self, c: &mut Call<'_>, stmt: &Statement, span: naga::Span, mut state: State, exits: &mut Exits) -> State {
+        self.work += 1;
+        if self.work > WORK_LIMIT {
+            self.stopped = true;
+            return State::dead();
+        }
         match stmt {
             Statement::Emit(range) => {
                 for h in range.clone() {
@@ -323,6 +346,7 @@ impl<'a> Analyzer<'a> {
                 let no = self.refine(c, state, *condition, false);
                 let a = self.block(c, accept, yes, exits);
                 let b = self.block(c, reject, no, exits);
+                self.work += a.size() + b.size();
                 a.join(&b, &mut self.fresh)
             }
             Statement::Switch { cases, .. } => {
