@@ -324,7 +324,7 @@ fn the_hazard_analysis_stops_at_its_work_limit_and_says_so() {
         "}\n".repeat(12)
     );
     let fan: String =
-        (1..40).map(|i| format!("float f{i}(float x) {{ return f{}(x) + f{}(x * 0.5); }}\n", i - 1, (i as i32 - 2).max(0))).collect();
+        (1..40u32).map(|i| format!("float f{i}(float x) {{ return f{}(x) + f{}(x * 0.5); }}\n", i - 1, i.saturating_sub(2))).collect();
     let fans = format!(
         "#version 330\nuniform float u;\nout vec4 c;\nfloat f0(float x) {{ return sqrt(x); }}\n{fan}void main() {{ c = vec4(f39(u)); }}\n"
     );
