@@ -18,7 +18,18 @@ pub fn input_paths(outcome: &Outcome, inputs: &[PathBuf]) -> BTreeSet<PathBuf> {
 /// so readers never see a half-written file. Refuses to replace an input.
 pub fn write_atomic(path: &Path, bytes: &[u8], inputs: &BTreeSet<PathBuf>) -> Result<(), String> {
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create `{}`: {e}", dir.display()))?;
+    std::fs::create_dir_all(dir).map_err(|e| {
+        // An `--out` naming a file (`--out effect.toml`): say what is in the way.
+        let in_way = dir.ancestors().find(|a| a.is_file());
+        match in_way {
+            Some(file) => format!(
+                "cannot write into `{}`: `{}` is a file, and the outputs go into a directory (`--out` names the directory)",
+                dir.display(),
+                file.display()
+            ),
+            None => format!("cannot create `{}`: {e}", dir.display()),
+        }
+    })?;
     if let Ok(canonical) = std::fs::canonicalize(path) {
         if inputs.contains(&canonical) {
             return Err(format!("refusing to write `{}`: it is one of the inputs", path.display()));

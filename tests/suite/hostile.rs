@@ -177,6 +177,7 @@ fn the_first_failed_write_stops_the_run_with_one_message() {
     let out = common::effectc(&["translate", "--to", "wgsl,spv,reflect", "--out", out_dir.to_str().unwrap(), "effects/sun"]);
     assert_eq!(code(&out), 2, "{}", stdout(&out));
     assert_eq!(stdout(&out).matches("E0014").count(), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("is a file, and the outputs go into a directory"), "says what is in the way: {}", stdout(&out));
     assert!(!stdout(&out).contains("translated sun"), "{}", stdout(&out));
     if crate::render::have_gpu() {
         let out = common::effectc(&["render", "--frames", "3", "--size", "16x16", "--out", out_dir.to_str().unwrap(), "effects/sun"]);
