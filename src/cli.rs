@@ -376,7 +376,8 @@ pub struct BenchArgs {
     /// Frames per value (effect time advances 1/8 s per frame).
     #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub frames: u32,
-    /// Frame size `WIDTHxHEIGHT`.
+    /// Frame size `WIDTHxHEIGHT` (256x256, not render's 512x512: a sweep draws every value
+    /// `--frames` x `--repeats` times, and error against time needs no more pixels).
     #[arg(long, value_parser = parse_size, default_value = "256x256")]
     pub size: (u32, u32),
     /// Renders of every value (ms/frame median and spread over all of them).
@@ -385,7 +386,8 @@ pub struct BenchArgs {
     /// Write the error-against-time curve of every knob as an SVG.
     #[arg(long)]
     pub plot: Option<PathBuf>,
-    /// Seconds a frame may take before the run stops.
+    /// Seconds a frame may take before the run stops (10, between render's 5 on a GPU and
+    /// 30 on a software renderer: its frames are small, see `--size`).
     #[arg(long, default_value = "10", value_parser = parse_timeout, allow_negative_numbers = true)]
     pub timeout: Duration,
 }
@@ -404,13 +406,15 @@ pub struct StressArgs {
     /// Seed of the random points.
     #[arg(long, default_value_t = 1)]
     pub seed: u32,
-    /// Frame size `WIDTHxHEIGHT`.
+    /// Frame size `WIDTHxHEIGHT` (128x128, not render's 512x512: every case of every
+    /// uniform range is drawn, and a NaN or Inf shows at any size).
     #[arg(long, value_parser = parse_size, default_value = "128x128")]
     pub size: (u32, u32),
     /// Where masks of failing cases go (default `out/stress/`).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Seconds a frame may take before the run stops.
+    /// Seconds a frame may take before the run stops (10, between render's 5 on a GPU and
+    /// 30 on a software renderer: its frames are small, see `--size`).
     #[arg(long, default_value = "10", value_parser = parse_timeout, allow_negative_numbers = true)]
     pub timeout: Duration,
 }
