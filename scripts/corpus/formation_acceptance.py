@@ -655,6 +655,15 @@ GL_STAGE = {"VERTEX": "vertex", "FRAGMENT": "fragment", "GEOMETRY": "geometry"}
 LOADSHADER = re.compile(r'LoadShader\s*\(\s*GL_(VERTEX|GEOMETRY|FRAGMENT)_SHADER\s*,\s*"([^"]+)"\s*\)|CreateProgram\s*\(')
 
 
+def add_host(hosts, kinds, key, src, kind):
+    """Records the host program `key` (a frozenset of (stage, file)), found in `src` by the
+    rule `kind`."""
+    info = hosts.setdefault(key, {"sources": set(), "fragment": None})
+    info["sources"].add(src)
+    info["fragment"] = next((p for st, p in key if st == "fragment"), None)
+    kinds.setdefault(kind, set()).add(key)
+
+
 def strip_c(src):
     return C_TOKEN.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)) if m.group(0)[0] == "/" else m.group(0), src)
 
@@ -715,11 +724,7 @@ def gltut_hosts(root):
                 unresolved.append(f"{src}: {name}")
                 return
             key.append((stage, p))
-        key = frozenset(key)
-        info = hosts.setdefault(key, {"sources": set(), "fragment": None})
-        info["sources"].add(src)
-        info["fragment"] = next((p for st, p in key if st == "fragment"), None)
-        kinds.setdefault(kind, set()).add(key)
+        add_host(hosts, kinds, frozenset(key), src, kind)
 
     tuts = sorted(d for d in os.listdir(root) if d.startswith("Tut ") and os.path.isdir(os.path.join(root, d)))
     no_files = []
@@ -851,11 +856,7 @@ def mcnopper_hosts(root):
                         problems.append(f"{src}: {p} not in the tree")
                         return
                     key.append((stage, p))
-                key = frozenset(key)
-                info = hosts.setdefault(key, {"sources": set(), "fragment": None})
-                info["sources"].add(src)
-                info["fragment"] = next((p for st, p in key if st == "fragment"), None)
-                kinds.setdefault(kind, set()).add(key)
+                add_host(hosts, kinds, frozenset(key), src, kind)
 
             for m in GLUS.finditer(text):
                 g = m.groups()

@@ -69,15 +69,19 @@ pub fn check(file: FileId, text: &str, limits: &Limits) -> Option<Diagnostic> {
             let weight = if bodies.contains_key(token) { expanded_size(token, &bodies, &mut sizes, &mut Vec::new()) } else { 1 };
             count = count.saturating_add(weight);
             stage = stage.saturating_add(weight);
-            let end = (at + offset + token.len()).min(statement_start + 80).max(statement_start);
-            let here = char_floor(text, statement_start)..char_floor(text, end);
+            // The statement's first 80 bytes, made only when a limit is reported.
+            let start = statement_start;
+            let here = move || {
+                let end = (at + offset + token.len()).min(start + 80).max(start);
+                char_floor(text, start)..char_floor(text, end)
+            };
             if matches!(token, ";" | "{" | "}") {
                 count = 0;
                 statement_start = at + offset + 1;
             } else if count > most_tokens {
                 return Some(
                     Diagnostic::new(Code::StageLimit, format!("a statement of more than {most_tokens} tokens (its macros expanded)"))
-                        .at(file, here, "this statement")
+                        .at(file, here(), "this statement")
                         .with_note("effectc refuses expressions this long before compiling them (glslangValidator itself crashes near 100,000 terms); split the sum into several statements")
                         .with_note(Limits::how_to_raise("statement-tokens")),
                 );
@@ -88,7 +92,7 @@ pub fn check(file: FileId, text: &str, limits: &Limits) -> Option<Diagnostic> {
                         Code::StageLimit,
                         format!("the stage expands to more than {most_stage} tokens (its includes inlined, its macros expanded)"),
                     )
-                    .at(file, here, "the limit is passed here")
+                    .at(file, here(), "the limit is passed here")
                     .with_note("each token costs the compilers memory: a stage this large would take more than a gigabyte to check")
                     .with_note(Limits::how_to_raise("stage-tokens")),
                 );

@@ -131,14 +131,15 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
         } else {
             // The text's two stages win over a name that seems to give one (`blur-vert.glsl`
             // is often a vertical blur); `--stage` wins over both.
-            if let Some((program, note)) = forced.is_none().then(|| two_stage_file(input)).flatten() {
+            let text = glsl_text(input);
+            if let Some((program, note)) = text.as_deref().filter(|_| forced.is_none()).and_then(|t| two_stage_file(input, t)) {
                 diags.push(note);
                 programs.push(program);
                 continue;
             }
             match stage_of(input, forced).or_else(|| selection.stage_of(input)) {
                 Some(kind) => loose.push((input.clone(), kind)),
-                None => match stage_from_text(input) {
+                None => match text.as_deref().and_then(|t| stage_from_text(input, t)) {
                     Some((kind, note)) => {
                         diags.push(note);
                         loose.push((input.clone(), kind));
@@ -314,12 +315,15 @@ fn collect_dir(dir: &Path, selection: &Selection, declared: &BTreeSet<PathBuf>) 
             }
             if p.file_name().is_some_and(|n| n == "effect.toml") {
                 manifests.push(p);
-            } else if let Some((program, note)) = two_stage_file(&p) {
+                continue;
+            }
+            let text = glsl_text(&p);
+            if let Some((program, note)) = text.as_deref().and_then(|t| two_stage_file(&p, t)) {
                 diags.push(note);
                 two_stage.push(program);
             } else if let Some(kind) = stage_of(&p, None).or_else(|| selection.stage_of(&p)) {
                 stage_files.push((p, kind));
-            } else if let Some((kind, note)) = stage_from_text(&p) {
+            } else if let Some((kind, note)) = text.as_deref().and_then(|t| stage_from_text(&p, t)) {
                 diags.push(note);
                 stage_files.push((p, kind));
             }
@@ -341,15 +345,11 @@ fn collect_dir(dir: &Path, selection: &Selection, declared: &BTreeSet<PathBuf>) 
     (programs, diags)
 }
 
-/// A `.glsl` file holding a vertex and a fragment stage behind the macros its host code
+/// A `.glsl` file (whose `text` is given) holding a vertex and a fragment stage behind the macros its host code
 /// defines ([`stage_names::two_stage_macros`]): one program of the file read twice, each
 /// time with one stage's macro defined, and the note (N0003) saying so.
-fn two_stage_file(path: &Path) -> Option<(ProgramInput, Diagnostic)> {
-    if !path.extension().is_some_and(|e| e.eq_ignore_ascii_case("glsl")) {
-        return None;
-    }
-    let text = crate::read::bounded_text_lossy(path).ok()?;
-    let (vertex, fragment) = stage_names::two_stage_macros(&without_comments(&text))?;
+fn two_stage_file(path: &Path, text: &str) -> Option<(ProgramInput, Diagnostic)> {
+    let (vertex, fragment) = stage_names::two_stage_macros(&without_comments(text))?;
     let name = path.file_stem().map_or_else(|| path.display().to_string(), |s| s.to_string_lossy().into_owned());
     let defined = |m: &str| vec![(m.to_string(), "1".to_string())];
     let program = ProgramInput::Stages {
@@ -365,13 +365,18 @@ fn two_stage_file(path: &Path) -> Option<(ProgramInput, Diagnostic)> {
     Some((program, note))
 }
 
-/// The stage a `.glsl` file's text shows, with the note (N0003) naming the evidence.
-fn stage_from_text(path: &Path) -> Option<(StageKind, Diagnostic)> {
+/// The text of a `.glsl` file, read once for what its text tells ([`two_stage_file`],
+/// [`stage_from_text`]); `None` for other files and unreadable ones.
+fn glsl_text(path: &Path) -> Option<String> {
     if !path.extension().is_some_and(|e| e.eq_ignore_ascii_case("glsl")) {
         return None;
     }
-    let text = crate::read::bounded_text_lossy(path).ok()?;
-    let (kind, why) = stage_names::from_text(&text)?;
+    crate::read::bounded_text_lossy(path).ok()
+}
+
+/// The stage a `.glsl` file's text shows, with the note (N0003) naming the evidence.
+fn stage_from_text(path: &Path, text: &str) -> Option<(StageKind, Diagnostic)> {
+    let (kind, why) = stage_names::from_text(text)?;
     Some((kind, Diagnostic::new(Code::StageFromText, format!("`{}` is read as a {kind} stage: {why}", path.display()))))
 }
 
