@@ -324,7 +324,12 @@ fn stress(args: &StressArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBu
 
 fn check(args: &CheckArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBuf>) {
     let c = &args.common;
-    let (outcome, checked) = c.input_spec(&settings.config).check();
+    let (mut outcome, checked) = c.input_spec(&settings.config).check();
+    // A manifest's lint says what its render would: guessed inputs, uniforms, textures.
+    for program in &checked {
+        outcome.diagnostics.extend(effectc::render::preview::warnings(program, false));
+    }
+    diag::sort(&mut outcome.diagnostics);
     let outcome = settle(outcome, settings, Reach::Check);
     let mut text = match (args.list_uniforms, c.format) {
         (true, Format::Json) => report_json("programs", &effectc::check::listing::uniforms(&checked), &None, &outcome),

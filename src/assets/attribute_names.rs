@@ -18,7 +18,9 @@ pub fn by_name(name: &str) -> Option<MeshAttribute> {
         Some(MeshAttribute::Normal)
     } else if has(&["pos"]) {
         Some(MeshAttribute::Position)
-    } else if rest_has(&["uv", "tex", "coord", "st0"]) || n == "st" || n.ends_with("_st") {
+    } else if rest_has(&["uv", "tex", "st0"]) || (has(&["coord"]) && !has(&["vert"])) || n == "st" || n.ends_with("_st") {
+        // A bare "coord" is a texture coordinate; a vertex's coordinate (`VertexCoord`,
+        // the emulator packs' position) is a position.
         Some(MeshAttribute::Uv)
     } else if has(&["color", "colour", "col"]) {
         Some(MeshAttribute::Color)
@@ -49,6 +51,10 @@ mod tests {
             ("aBitangent", MeshAttribute::Bitangent),
             ("aColor", MeshAttribute::Color),
             ("vertexColour", MeshAttribute::Color),
+            // The emulator packs' full-screen pass: the vertex's coordinate is its position.
+            ("VertexCoord", MeshAttribute::Position),
+            ("TexCoord", MeshAttribute::Uv),
+            ("coord", MeshAttribute::Uv),
         ] {
             assert_eq!(by_name(name), Some(attr), "{name}");
         }

@@ -18,6 +18,8 @@
 //! - [`sink`]: where frames go (PNG files, or a PNG or raw stream on stdout), encoded on
 //!   a pool and written in order.
 //! - [`command`]: `effectc render`.
+//! - [`preview`]: the warnings a render of a manifest would give, without a device (for
+//!   `effectc check`).
 //! - [`memory`]: a program built once and drawn in memory with other uniform values
 //!   (`effectc bench`, `effectc stress`).
 
@@ -30,6 +32,7 @@ pub mod encode;
 pub mod frames;
 pub mod memory;
 pub mod pass_graph;
+pub mod preview;
 pub mod scene;
 pub mod semantics;
 pub mod sink;

@@ -137,8 +137,11 @@ impl PassGraph {
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         for p in programs {
             let decl = &effect.passes[p.index];
-            let sampled: BTreeMap<String, (wgpu::TextureView, Filter)> =
-                decl.samples.iter().filter_map(|s| Some((s.sampler.clone(), (view_of(&s.target.name)?, s.filter)))).collect();
+            let sampled: BTreeMap<String, (wgpu::TextureView, Filter, String)> = decl
+                .samples
+                .iter()
+                .filter_map(|s| Some((s.sampler.clone(), (view_of(&s.target.name)?, s.filter, s.target.name.clone()))))
+                .collect();
             let attached = &plan.attached[p.index];
             let colors: Vec<Option<wgpu::TextureFormat>> = decl
                 .targets
@@ -307,6 +310,10 @@ impl PassGraph {
                 targets.join(", "),
                 if reads.is_empty() { String::new() } else { format!("; reads {}", reads.join(", ")) }
             ));
+            // What feeds each input, uniform and sampler of the pass (`--verbose`).
+            if let Some(running) = self.passes.iter().find(|p| p.index == i) {
+                text.push_str(&format!("    {}\n", running.scene.describe));
+            }
         }
         for (k, t) in self.plan.textures.iter().enumerate() {
             let users: Vec<String> = t

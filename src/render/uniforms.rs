@@ -23,6 +23,9 @@ pub struct UniformBuffer {
     pub bytes: Vec<u8>,
     /// Slots rewritten every frame.
     pub per_frame: Vec<SemanticSlot>,
+    /// What each uniform (a block member, by its GLSL path) receives, for `--verbose`:
+    /// `the manifest's value`, `semantic time`, `its initializer`, a guess.
+    pub sources: Vec<(String, String)>,
 }
 
 #[derive(Debug, Clone)]
@@ -60,7 +63,8 @@ pub fn buffers(
     let mut guessed = Vec::new();
     for (_, g) in module.global_variables.iter() {
         let (naga::AddressSpace::Uniform, Some(rb)) = (g.space, &g.binding) else { continue };
-        let mut buffer = UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new() };
+        let mut buffer =
+            UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new(), sources: Vec::new() };
         let local = |name: &str| in_block(module, g, name).map(str::to_string);
         fill_block(module, g.ty, effect, initial, guesses, &mut buffer, &mut guessed)?;
         // A named block's members as GL names them (`Block.member`).
@@ -73,6 +77,7 @@ pub fn buffers(
             if let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, g.ty, name) {
                 write_slot(module, slot_ty, offset, value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
                 buffer.per_frame.retain(|s| s.offset != offset);
+                set_source(&mut buffer.sources, name, "an override".into());
                 guessed.retain(|gu| {
                     gu.name != name.as_str() && !name.starts_with(&format!("{}.", gu.name)) && !name.starts_with(&format!("{}[", gu.name))
                 });
@@ -82,6 +87,15 @@ pub fn buffers(
         out.push(buffer);
     }
     Ok((out, guessed))
+}
+
+/// Records what `name` receives, replacing what it received before (a manifest value
+/// over a GL state member, an override over both).
+fn set_source(sources: &mut Vec<(String, String)>, name: &str, from: String) {
+    match sources.iter_mut().find(|(n, _)| n == name) {
+        Some(entry) => entry.1 = from,
+        None => sources.push((name.to_string(), from)),
+    }
 }
 
 /// The compatibility state GL derives from other state, after every value is written:
@@ -135,7 +149,11 @@ fn fill_block(
         let name = m.name.clone().unwrap_or_default();
         let entries: Vec<_> = effect.map(|e| e.uniforms.iter().filter(|u| root_name(&u.name) == name).collect()).unwrap_or_default();
         let gl = compat::state(&name).is_some();
+        if name.starts_with("effectc_pad") {
+            continue;
+        }
         if gl {
+            buffer.sources.push((name.clone(), "GL's state".into()));
             // GL's state, at its initial values first: the manifest may set some members only.
             gl_state(module, ty, (&name, effect.is_some()), m.ty, m.offset, buffer)?;
             if !entries.is_empty() {
@@ -152,13 +170,24 @@ fn fill_block(
                 let Some((offset, slot)) = crate::back::reflect::resolve_path(module, ty, path) else { continue };
                 write_slot(module, slot, offset, value, &mut buffer.bytes).map_err(|e| format!("`{path}`'s initializer: {e}"))?;
             }
-            if from_initializer.is_empty() && guesses {
-                guess_member(module, &name, m.ty, m.offset, buffer, guessed)?;
-            }
+            let from = if !from_initializer.is_empty() {
+                "its initializer".to_string()
+            } else if guesses {
+                guess_member(module, &name, m.ty, m.offset, buffer, guessed)?
+            } else {
+                "zero".to_string()
+            };
+            buffer.sources.push((name, from));
             continue;
         }
         for u in entries {
             let Some((offset, slot_ty)) = crate::back::reflect::resolve_path(module, ty, &u.name) else { continue };
+            let from = match (&u.value, u.semantic) {
+                (Some(_), _) => "the manifest's value".to_string(),
+                (None, Some(s)) => format!("semantic {}", s.name()),
+                (None, None) => continue,
+            };
+            set_source(&mut buffer.sources, &u.name, from);
             match (&u.value, u.semantic) {
                 (Some(v), _) => write_slot(module, slot_ty, offset, v, &mut buffer.bytes).map_err(|e| format!("`{}`: {e}", u.name))?,
                 (None, Some(s)) => {
@@ -226,6 +255,8 @@ fn root_name(path: &str) -> &str {
     &path[..end]
 }
 
+/// Guesses the value of uniform `name` (a block member) by its name and type, and says
+/// what it received.
 fn guess_member(
     module: &Module,
     name: &str,
@@ -233,10 +264,7 @@ fn guess_member(
     offset: u32,
     buffer: &mut UniformBuffer,
     guessed: &mut Vec<Guessed>,
-) -> Result<(), String> {
-    if name.starts_with("effectc_pad") {
-        return Ok(());
-    }
+) -> Result<String, String> {
     let Some(shape) = shape_of(module, ty) else {
         // Structs and arrays: every leaf is guessed by its own name.
         let mut leaves = Vec::new();
@@ -244,21 +272,22 @@ fn guess_member(
         leaves.dedup();
         let what = if leaves.is_empty() { "zero".to_string() } else { format!("{}; everything else zero", leaves.join(", ")) };
         guessed.push(Guessed { name: name.into(), what, aggregate: true });
-        return Ok(());
+        return Ok("a guess for each member".into());
     };
     match semantics::guess(name, shape, is_float(module, ty)) {
         Guess::Semantic(s) => {
             buffer.per_frame.push(SemanticSlot { offset, ty, shape, semantic: s });
             guessed.push(Guessed { name: name.into(), what: format!("the semantic `{}` (by its name)", s.name()), aggregate: false });
+            Ok(format!("semantic {} (guessed by its name)", s.name()))
         }
         Guess::Constant(value, what) => {
             if value != UniformValue::Int(0) {
                 write_slot(module, ty, offset, &value, &mut buffer.bytes).map_err(|e| format!("`{name}`: {e}"))?;
             }
             guessed.push(Guessed { name: name.into(), what: what.into(), aggregate: false });
+            Ok(format!("{what} (guessed)"))
         }
     }
-    Ok(())
 }
 
 /// Guesses a constant for every scalar, vector and matrix inside a struct or array,

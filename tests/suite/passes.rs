@@ -101,3 +101,57 @@ fn translate_writes_one_program_per_running_pass() {
     let wgsl = std::fs::read_to_string(dir.join("passes.scene.wgsl")).unwrap();
     assert!(wgsl.contains("OUT_texCoord"), "{wgsl}");
 }
+
+/// A full-screen pass in the emulator packs' style: `VertexCoord`/`TexCoord` inputs and an
+/// `MVPMatrix`, none of them in effectc's documented names, none given in the manifest.
+fn unmapped_fullscreen_pass(dir: &std::path::Path) -> std::path::PathBuf {
+    std::fs::create_dir_all(dir).unwrap();
+    let manifest = "name = \"fx\"\noutput = \"final\"\n[targets]\nscene = { format = \"rgba8\" }\nfinal = { format = \"rgba8\" }\n\
+                    [[passes]]\nname = \"scene\"\nstages = { vertex = \"a.vert\", fragment = \"a.frag\" }\ndraw = \"fullscreen\"\n\
+                    targets = [\"scene\"]\n[[passes]]\nname = \"post\"\nstages = { vertex = \"post.vert\", fragment = \"post.frag\" }\n\
+                    draw = \"fullscreen\"\nsamples = { Source = \"scene\" }\ntargets = [\"final\"]\n";
+    std::fs::write(dir.join("effect.toml"), manifest).unwrap();
+    let plain_vert = "#version 330\nin vec2 position;\nin vec2 texCoord;\nout vec2 uv;\nvoid main() { uv = texCoord; gl_Position = vec4(position, 0.0, 1.0); }\n";
+    std::fs::write(dir.join("a.vert"), plain_vert).unwrap();
+    std::fs::write(dir.join("a.frag"), "#version 330\nin vec2 uv;\nout vec4 c;\nvoid main() { c = vec4(uv, 0.5, 1.0); }\n").unwrap();
+    let post = "#version 330\nin vec4 VertexCoord;\nin vec4 TexCoord;\nin vec4 COLOR;\nuniform mat4 MVPMatrix;\nout vec2 uv;\n\
+                void main() { gl_Position = MVPMatrix * VertexCoord; uv = TexCoord.xy + COLOR.xy; }\n";
+    std::fs::write(dir.join("post.vert"), post).unwrap();
+    let frag = "#version 330\nin vec2 uv;\nuniform sampler2D Source;\nout vec4 c;\nvoid main() { c = texture(Source, uv); }\n";
+    std::fs::write(dir.join("post.frag"), frag).unwrap();
+    dir.join("effect.toml")
+}
+
+#[test]
+fn a_fullscreen_pass_with_unmapped_inputs_warns_in_check_and_render_alike() {
+    let dir = scratch("passes", "unmapped");
+    let manifest = unmapped_fullscreen_pass(&dir);
+    let m = manifest.to_str().unwrap();
+    let codes_of = |text: &str| -> Vec<String> {
+        let mut codes: Vec<String> = text.lines().filter_map(|l| l.strip_prefix("warning[")).map(|l| l[..5].to_string()).collect();
+        codes.sort();
+        codes
+    };
+    let checked = effectc(&["check", "--color", "never", m]);
+    let text = stdout(&checked);
+    assert_eq!(code(&checked), 0, "{text}");
+    // The documented names (`position`, `texCoord`) are the contract; the others are guesses.
+    assert!(text.contains("vertex input `VertexCoord` reads the mesh's position (guessed by its name)"), "{text}");
+    assert!(text.contains("vertex input `COLOR` reads the mesh's color"), "{text}");
+    assert!(text.contains("uniform `MVPMatrix` has no value in the manifest"), "{text}");
+    assert!(!text.contains("`TexCoord`") && !text.contains("`position`") && !text.contains("`Source` has no texture"), "{text}");
+    let denied = effectc(&["check", "--deny-warnings", m]);
+    assert_eq!(code(&denied), 1, "guessed pass inputs fail a lint that denies warnings");
+    if !have_gpu() {
+        return;
+    }
+    let out = dir.join("frames");
+    let rendered = effectc(&["render", "--color", "never", "--verbose", "--size", "32x32", m, "--out", out.to_str().unwrap()]);
+    let render_text = stdout(&rendered);
+    assert_eq!(code(&rendered), 0, "{render_text}");
+    assert_eq!(codes_of(&render_text), codes_of(&text), "check reports what render reports:\n{text}\n---\n{render_text}");
+    // `--verbose` shows what feeds each pass's inputs, uniforms and samplers.
+    assert!(render_text.contains("inputs: VertexCoord ← position (guessed), TexCoord ← uv, COLOR ← color (guessed)"), "{render_text}");
+    assert!(render_text.contains("uniforms: MVPMatrix ← semantic mvp (guessed by its name)"), "{render_text}");
+    assert!(render_text.contains("samplers: Source ← target scene"), "{render_text}");
+}

@@ -91,8 +91,10 @@ fn mistakes_in_suppressions_are_warnings() {
 fn manifests_take_hash_comments() {
     let dir = program("manifest", &vertex("", " // effectc: allow(W0201)"));
     std::fs::write(dir.join("a.frag"), FRAGMENT.replace("out vec4 frag;", "out vec4 frag;\nuniform float nobody;")).unwrap();
+    // A complete manifest (its mesh and attribute given): check reports no render guesses.
     let manifest =
-        "name = \"m\"\n[stages]\nvertex = \"a.vert\"\nfragment = \"a.frag\"\n[uniforms]\n# effectc: allow(W0223)\nnobody = 1.0\n";
+        "name = \"m\"\n[stages]\nvertex = \"a.vert\"\nfragment = \"a.frag\"\n[uniforms]\n# effectc: allow(W0223)\nnobody = 1.0\n\
+                    [mesh]\nbuiltin = \"fullscreen_quad\"\nattributes = { position = \"position\" }\n";
     std::fs::write(dir.join("effect.toml"), manifest).unwrap();
     let (_, got) = codes(&[path(&dir.join("effect.toml"))]);
     assert_eq!(got, ["W0221"], "W0223 at `nobody` in the manifest is silenced, W0221 in the shader is not");

@@ -9,10 +9,10 @@ use crate::manifest::{BuiltinMesh, Effect, MeshAttribute, MeshSource};
 use crate::render::attributes;
 use crate::stage::StageKind;
 
-use super::SceneInput;
+use super::plan::PlanInput;
 
 /// How the mesh was chosen.
-pub(super) enum MeshNote {
+pub(crate) enum MeshNote {
     Manifest,
     /// No `[mesh]` and matrices in use: a cube.
     Cube,
@@ -34,13 +34,17 @@ impl MeshNote {
             },
             MeshNote::Cube => "mesh cube (guessed)".into(),
             MeshNote::Quad => "mesh quad (guessed: 2D positions)".into(),
-            MeshNote::Fullscreen => "mesh fullscreen_quad (guessed)".into(),
+            MeshNote::Fullscreen => match effect.and_then(|e| e.mesh.as_ref()).map(|m| &m.source) {
+                // A full-screen pass, or `mesh = "fullscreen_quad"`.
+                Some(MeshSource::Builtin(b)) => format!("mesh {}", b.name()),
+                _ => "mesh fullscreen_quad (guessed)".into(),
+            },
             MeshNote::OwnVertices => "3 vertices without attributes".into(),
         }
     }
 }
 
-pub(super) fn choose_mesh(input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result<(Mesh, MeshNote), Vec<Diagnostic>> {
+pub(super) fn choose_mesh(input: &PlanInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result<(Mesh, MeshNote), Vec<Diagnostic>> {
     if let Some(decl) = input.effect.and_then(|e| e.mesh.as_ref()) {
         let mesh = match &decl.source {
             MeshSource::Builtin(b) => Mesh::builtin(*b),
@@ -166,18 +170,12 @@ fn position_uses_matrix(st: &crate::front::syntax::StageSyntax) -> bool {
     })
 }
 
-pub(super) fn report_attributes(
-    program: &CompiledProgram,
-    choices: &[attributes::Choice],
-    fullscreen_pass: bool,
-    warnings: &mut Vec<Diagnostic>,
-) {
+pub(super) fn report_attributes(program: &CompiledProgram, choices: &[attributes::Choice], warnings: &mut Vec<Diagnostic>) {
     for c in choices {
         let (code, message) = match (c.attribute, c.guessed) {
             (Some(_), None) => continue,
             // A fixed-function attribute no array feeds reads GL's current value, as in GL.
             (None, None) => continue,
-            (Some(_), Some(_)) if fullscreen_pass => continue,
             (Some(a), Some(why)) => (Code::AttributeGuessed, format!("vertex input `{}` reads the mesh's {a} (guessed {why})", c.input)),
             (None, _) => (Code::AttributeZero, format!("vertex input `{}` matches no mesh attribute: it reads zeros", c.input)),
         };
@@ -187,6 +185,16 @@ pub(super) fn report_attributes(
             "map it in the manifest: [mesh.attributes] `{} = \"{example}\"` (attributes: position, normal, uv, tangent, bitangent, color)",
             c.input
         )));
+    }
+}
+
+/// The attribute of effectc's full-screen triangle an input of this name is documented to
+/// read (`position`, `texCoord`, `uv`); other names are matched by a guess, and warned about.
+pub(super) fn documented_fullscreen_input(name: &str) -> Option<MeshAttribute> {
+    match name.to_ascii_lowercase().as_str() {
+        "position" => Some(MeshAttribute::Position),
+        "texcoord" | "uv" => Some(MeshAttribute::Uv),
+        _ => None,
     }
 }
 

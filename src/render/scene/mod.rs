@@ -7,12 +7,13 @@
 
 mod bindings;
 mod mesh_choice;
+pub(crate) mod plan;
 pub(crate) mod pulled;
 pub mod replay;
 mod textures;
 
 use bindings::{bind_groups, buffer_init};
-use mesh_choice::{at_declaration, choose_mesh, report_attributes, MeshNote};
+use mesh_choice::MeshNote;
 use textures::Textures;
 
 use std::collections::BTreeMap;
@@ -26,7 +27,7 @@ use crate::front::syntax::Storage;
 use crate::manifest::{Blend, CameraDecl, Cull, Effect, Filter, MeshAttribute, ModelDecl};
 use crate::render::attributes;
 use crate::render::device::{color_formats, topology, Gpu, PipelineSpec};
-use crate::render::uniforms::{self, UniformBuffer};
+use crate::render::uniforms::UniformBuffer;
 
 /// The colour format frames are rendered into.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -135,8 +136,23 @@ pub struct PassBinding<'a> {
     pub colors: Vec<Option<wgpu::TextureFormat>>,
     /// The depth attachment's format, when the pass has one.
     pub depth: Option<wgpu::TextureFormat>,
-    /// Sampler uniforms bound to earlier targets: the target's view and the filter.
-    pub sampled: &'a BTreeMap<String, (wgpu::TextureView, Filter)>,
+    /// Sampler uniforms bound to earlier targets: the target's view, the filter and the
+    /// target's name.
+    pub sampled: &'a BTreeMap<String, (wgpu::TextureView, Filter, String)>,
+}
+
+impl SceneInput<'_> {
+    /// What the scene's CPU-side decisions are made from.
+    pub(crate) fn plan_input(&self) -> plan::PlanInput<'_> {
+        plan::PlanInput {
+            translation: self.translation,
+            program: self.program,
+            effect: self.effect,
+            pass: self.pass.as_ref().map(|p| p.sampled.iter().map(|(s, (_, _, t))| (s.clone(), t.clone())).collect()),
+            overrides: self.overrides,
+            gl_defaults: self.gl_defaults,
+        }
+    }
 }
 
 impl Scene {
@@ -149,14 +165,11 @@ impl Scene {
         let t = input.translation;
         let r = &t.reflection;
         let first_file = input.program.stages[0].syntax.file;
-        let mut warnings = Vec::new();
         drawable(r, input.pass.is_some()).map_err(|d| vec![d.in_file(first_file)])?;
-        let (mesh, mesh_note) = choose_mesh(input, &mut warnings)?;
-        let explicit = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.attributes.clone()).unwrap_or_default();
+        let plan_input = input.plan_input();
+        let plan::Plan { mesh, mesh_note, choices, uniforms: uniform_data, textures: texture_plan, warnings, describe } =
+            plan::plan(&plan_input)?;
         let instances = input.effect.and_then(|e| e.instances.as_ref());
-        let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
-        let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
-        let choices = attributes::choose(&per_vertex, &explicit);
         let read: Vec<MeshAttribute> = choices.iter().filter_map(|c| c.attribute).collect();
         let (mesh, degenerate) = match input.degenerate {
             Some(d) if matches!(mesh_note, MeshNote::Manifest | MeshNote::Cube | MeshNote::Quad) && d.affects(&read) => {
@@ -165,10 +178,6 @@ impl Scene {
             }
             _ => (mesh, None),
         };
-        // A full-screen pass draws effectc's triangle, whose attributes (position, uv) are
-        // documented: matching them by name is the contract, not a guess worth a warning.
-        let fullscreen_pass = input.pass.is_some() && matches!(mesh_note, MeshNote::Fullscreen);
-        report_attributes(input.program, &choices, fullscreen_pass, &mut warnings);
         let mut interleaved = attributes::interleave(&choices, &mesh);
         let instanced = instances.and_then(|d| attributes::instance_buffer(&r.vertex_inputs, d));
         // A folded geometry program pulls its primitives from two storage buffers instead.
@@ -225,14 +234,19 @@ impl Scene {
         let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
         let draw = draw_of(gpu, r, pulled.as_ref().map(|p| p.count), &mesh_note, &mesh);
         let initial = crate::front::initial_values::of(input.program);
-        let uniforms = uniform_buffers(gpu, input, &initial, first_file, &mut warnings)?;
-        let textures = Textures::create(gpu, input, &mut warnings)?;
+        let uniforms: Vec<(UniformBuffer, wgpu::Buffer)> = uniform_data
+            .into_iter()
+            .map(|u| {
+                let b = buffer_init(gpu, "uniforms", &u.bytes, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
+                (u, b)
+            })
+            .collect();
+        let textures = Textures::create(gpu, input, &texture_plan)?;
         let filled = pulled.as_ref().map(|p| p.buffers()).unwrap_or_default();
         let (bind_groups, storage) = bind_groups(gpu, &pipeline, r, &uniforms, &textures, &filled);
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }
-        let describe = describe(&mesh_note, &mesh, &choices, input.effect);
         let replay = replay::Replay {
             draw: replay_draw(r, &mesh, own_vertices),
             instances: instanced.clone(),
@@ -384,57 +398,4 @@ fn pipeline_error(file: FileId, message: &str) -> Diagnostic {
         .in_file(file)
         .with_note(message.trim().to_string())
         .with_note("the WGSL effectc renders is what `effectc translate --to wgsl` writes")
-}
-
-/// The uniform buffers of a scene: the manifest's values, semantics and guesses (each
-/// guess reported at its declaration).
-fn uniform_buffers(
-    gpu: &Gpu,
-    input: &SceneInput<'_>,
-    initial: &[(String, crate::manifest::UniformValue)],
-    first_file: FileId,
-    warnings: &mut Vec<Diagnostic>,
-) -> Result<Vec<(UniformBuffer, wgpu::Buffer)>, Vec<Diagnostic>> {
-    let (uniform_data, guessed) = uniforms::buffers(&input.translation.module, input.effect, initial, input.overrides, !input.gl_defaults)
-        .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
-    for g in guessed {
-        let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
-        d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
-        let help = if g.aggregate {
-            format!("give its members values in [uniforms]: `\"{}.<member>\" = …` (arrays: `\"{}[0]\"`)", g.name, g.name)
-        } else {
-            format!("give it a value in [uniforms]: `{} = …` or `{{ semantic = \"…\" }}`", toml_key(&g.name))
-        };
-        warnings.push(d.with_help(help));
-    }
-    Ok(uniform_data
-        .into_iter()
-        .map(|u| {
-            let b = buffer_init(gpu, "uniforms", &u.bytes, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
-            (u, b)
-        })
-        .collect())
-}
-
-/// A one-line description of the mesh and its attributes, for `--verbose`.
-fn describe(mesh_note: &MeshNote, mesh: &Mesh, choices: &[attributes::Choice], effect: Option<&Effect>) -> String {
-    let instances = effect.and_then(|e| e.instances.as_ref());
-    let mut inputs: Vec<String> = choices
-        .iter()
-        .map(|c| {
-            let unfed = if crate::front::compat::attribute(&c.input).is_some() { "GL's current value" } else { "zeros" };
-            format!("{} ← {}", c.input, c.attribute.map_or(unfed, MeshAttribute::name))
-        })
-        .collect();
-    if let Some(d) = instances {
-        inputs.extend(d.attributes.iter().map(|a| format!("{} ← per instance", a.input)));
-    }
-    format!(
-        "{}; {} vertices, {} triangles{}; inputs: {}",
-        mesh_note.describe(effect),
-        mesh.vertex_count(),
-        mesh.triangle_count(),
-        instances.map(|d| format!(", {} instances", d.count)).unwrap_or_default(),
-        inputs.join(", ")
-    )
 }

@@ -1,19 +1,18 @@
 //! A scene's textures and samplers: the manifest's images and generators uploaded with
-//! mipmaps, cube maps, targets of earlier passes, and placeholders (reported) for samplers
-//! the manifest leaves open.
+//! mipmaps, cube maps, targets of earlier passes, and placeholders for samplers the
+//! manifest leaves open, as [`super::plan`] chose (and reported) them.
 
 use std::collections::BTreeMap;
 
 use crate::assets::texture::{self, TexelImage};
 use crate::back::reflect::BindingInfo;
 use crate::diag::{Code, Diagnostic, FileId};
-use crate::front::syntax::Storage;
-use crate::manifest::{Filter, TextureKind, TextureSource, Wrap};
+use crate::manifest::{Filter, TextureSource, Wrap};
 use crate::render::device::Gpu;
 
-use super::mesh_choice::at_declaration;
+use super::plan::TextureChoice;
 use super::replay::ReplayTexture;
-use super::{toml_key, SceneInput};
+use super::SceneInput;
 
 /// Textures and samplers by binding name.
 pub(super) struct Textures {
@@ -26,9 +25,13 @@ pub(super) struct Textures {
 }
 
 impl Textures {
-    pub(super) fn create(gpu: &Gpu, input: &SceneInput<'_>, warnings: &mut Vec<Diagnostic>) -> Result<Textures, Vec<Diagnostic>> {
+    pub(super) fn create(
+        gpu: &Gpu,
+        input: &SceneInput<'_>,
+        plan: &BTreeMap<String, TextureChoice<'_>>,
+    ) -> Result<Textures, Vec<Diagnostic>> {
         let r = &input.translation.reflection;
-        let plan = &input.program.plan;
+        let program_plan = &input.program.plan;
         let mut views = BTreeMap::new();
         let mut samplers = BTreeMap::new();
         let mut replay = BTreeMap::new();
@@ -36,36 +39,31 @@ impl Textures {
         for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
             match b.kind {
                 "texture" => {
-                    let user = plan.textures.iter().find(|t| t.name == b.name).map(|t| t.user_path.clone());
-                    let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
-                    if let Some((view, _)) = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u)) {
-                        views.insert(b.name.clone(), view.clone());
-                        replay.insert(b.name.clone(), ReplayTexture::Target(user.clone().unwrap_or_default()));
-                        continue;
-                    }
+                    let Some(choice) = plan.get(&b.name) else { continue };
                     let dimension = b.dimension.unwrap_or("2d");
-                    let view = match (decl, b.sample_type) {
-                        // A multisampled texture cannot be uploaded: it is a cleared target.
-                        (_, sample_type) if b.multisampled => {
-                            let name = user.clone().unwrap_or_else(|| b.name.clone());
-                            let d = Diagnostic::new(
-                                Code::TexturePlaceholder,
-                                format!("sampler `{name}` is multisampled: it reads a placeholder cleared to magenta"),
-                            );
-                            let d = at_declaration(d, input.program, &name, Storage::Uniform, "this sampler");
-                            warnings.push(d.with_note("only render targets are multisampled; an image file cannot fill one"));
-                            replay.insert(b.name.clone(), ReplayTexture::Multisampled { depth: sample_type == Some("depth") });
-                            multisampled_placeholder(gpu, b, sample_type == Some("depth"))
+                    let view = match choice {
+                        TextureChoice::Target(_) => {
+                            let Some(user) = program_plan.textures.iter().find(|t| t.name == b.name).map(|t| &t.user_path) else {
+                                continue;
+                            };
+                            let Some((view, _, _)) = input.pass.as_ref().and_then(|p| p.sampled.get(user)) else { continue };
+                            // The replay binds the target its sampler reads by the sampler's name.
+                            replay.insert(b.name.clone(), ReplayTexture::Target(user.clone()));
+                            view.clone()
                         }
-                        (_, Some("depth")) => {
+                        TextureChoice::Multisampled { depth } => {
+                            replay.insert(b.name.clone(), ReplayTexture::Multisampled { depth: *depth });
+                            multisampled_placeholder(gpu, b, *depth)
+                        }
+                        TextureChoice::Depth => {
                             replay.insert(b.name.clone(), ReplayTexture::Depth { dimension });
                             depth_placeholder(gpu, b)
                         }
-                        (_, Some(kind @ ("sint" | "uint"))) => {
-                            replay.insert(b.name.clone(), ReplayTexture::Integer { unsigned: kind == "uint", dimension });
+                        TextureChoice::Integer { unsigned } => {
+                            replay.insert(b.name.clone(), ReplayTexture::Integer { unsigned: *unsigned, dimension });
                             integer_placeholder(gpu, b)
                         }
-                        (Some(decl), _) => {
+                        TextureChoice::Image(decl) => {
                             let image = load(decl).map_err(|e| {
                                 let file = input.effect.map(|e| e.file).unwrap_or(FileId(0));
                                 vec![Diagnostic::new(Code::AssetLoad, format!("cannot load texture `{}`: {e}", decl.name)).at(
@@ -78,25 +76,8 @@ impl Textures {
                             replay.insert(b.name.clone(), ReplayTexture::Image { image, dimension });
                             view
                         }
-                        (None, _) => {
-                            let kind = if b.dimension == Some("cube") { TextureKind::Cube } else { TextureKind::D2 };
-                            let name = user.clone().unwrap_or_else(|| b.name.clone());
-                            let d = Diagnostic::new(
-                                Code::TexturePlaceholder,
-                                format!(
-                                    "sampler `{name}` has no texture in the manifest: it reads a placeholder {}",
-                                    match kind {
-                                        TextureKind::Cube => "sky-gradient cube map",
-                                        TextureKind::D2 => "magenta and black checker",
-                                    }
-                                ),
-                            );
-                            let d = at_declaration(d, input.program, &name, Storage::Uniform, "this sampler");
-                            let key = toml_key(&name);
-                            warnings.push(
-                                d.with_help(format!("bind it in [textures]: `{key} = \"image.png\"` or `{{ generate = \"noise\" }}`")),
-                            );
-                            let image = texture::placeholder(kind);
+                        TextureChoice::Placeholder(kind) => {
+                            let image = texture::placeholder(*kind);
                             let view = upload(gpu, &image, b);
                             replay.insert(b.name.clone(), ReplayTexture::Image { image, dimension });
                             view
@@ -105,12 +86,12 @@ impl Textures {
                     views.insert(b.name.clone(), view);
                 }
                 "sampler" | "comparison_sampler" => {
-                    let user = plan.textures.iter().find(|t| t.sampler_name == b.name).map(|t| t.user_path.clone());
+                    let user = program_plan.textures.iter().find(|t| t.sampler_name == b.name).map(|t| t.user_path.clone());
                     let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
                     let target = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u));
                     let (filter, wrap) = match target {
                         // Targets are read like GL render textures: clamped at the edges.
-                        Some((_, filter)) => (*filter, Wrap::Clamp),
+                        Some((_, filter, _)) => (*filter, Wrap::Clamp),
                         None => decl.map(|d| (d.filter, d.wrap)).unwrap_or_default(),
                     };
                     samplers.insert(b.name.clone(), sampler(gpu, filter, wrap, b.kind == "comparison_sampler"));
