@@ -18,6 +18,9 @@
 //! - [`completions`]: `effectc completions SHELL` and `effectc man`.
 //! - [`codes`]: the README's Diagnostics table lists every diagnostic code, and no stale one.
 //! - [`robust`]: truncated, mutated and garbage input never panics.
+//! - [`reflection`]: the reflection JSON names every uniform member (struct fields and
+//!   arrays too) and binding as the WGSL declares them, every pass's targets and reads; a
+//!   buffer packed from the JSON alone renders effectc's frame.
 //! - [`render`]: `effectc render` frames, determinism, float NaN/Inf, timeout, limits, OBJ.
 //! - [`layout`]: the tree's shape: layers import downward, no submodule cycles, file and
 //!   function sizes.
@@ -66,6 +69,8 @@ mod passes;
 mod pixels;
 #[path = "suite/programs.rs"]
 mod programs;
+#[path = "suite/reflection.rs"]
+mod reflection;
 #[path = "suite/render.rs"]
 mod render;
 #[path = "suite/rewrite.rs"]

@@ -15,7 +15,10 @@ pub fn translate_units(c: &Checked, options: TranslateOptions) -> Vec<(Result<Tr
     }
     c.running()
         .map(|unit| {
-            let result = translate_unit(unit, options);
+            let mut result = translate_unit(unit, options);
+            if let (Ok(t), Some(effect)) = (&mut result, c.multi_pass()) {
+                t.reflection.pass = back::reflect::pass_info(effect, unit.pass, c.plan.as_ref());
+            }
             let dir = match c.multi_pass() {
                 Some(effect) => effect.name.clone(),
                 None => result.as_ref().map(|t| t.name.clone()).unwrap_or_default(),

@@ -221,7 +221,14 @@ mod tests {
 
     /// A vertex input as the reflection describes it.
     fn input(location: u32, name: &str, format: &str) -> InterfaceVar {
-        InterfaceVar { location, name: name.into(), wgsl_type: String::new(), format: Some(format.into()), interpolation: None }
+        InterfaceVar {
+            location,
+            name: name.into(),
+            wgsl_name: None,
+            wgsl_type: String::new(),
+            format: Some(format.into()),
+            interpolation: None,
+        }
     }
 
     #[test]

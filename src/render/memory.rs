@@ -116,6 +116,27 @@ impl<'c> MemoryDrawer<'c> {
         Ok(())
     }
 
+    /// Replaces the bytes of uniform buffers with `bytes(pass, group, binding)` where it
+    /// gives some: a buffer a program packed on its own, from the reflection JSON (the
+    /// semantic slots are still rewritten every frame). Returns how many were replaced.
+    pub fn set_uniform_bytes(&mut self, bytes: &dyn Fn(usize, u32, u32) -> Option<Vec<u8>>) -> Result<usize, String> {
+        let Some(drawer) = self.drawer.as_mut() else { return Err("the device is still busy with a frame that timed out".into()) };
+        let mut replaced = 0;
+        for (pass, scene) in drawer.scenes_mut() {
+            for (data, _) in &mut scene.uniforms {
+                let Some(mut new) = bytes(pass, data.group, data.binding) else { continue };
+                if new.len() > data.bytes.len() {
+                    return Err(format!("{} bytes for a buffer of {}", new.len(), data.bytes.len()));
+                }
+                // The buffer is the block's size rounded up to 16 bytes, as wgpu wants.
+                new.resize(data.bytes.len(), 0);
+                data.bytes = new;
+                replaced += 1;
+            }
+        }
+        Ok(replaced)
+    }
+
     /// Draws the request's frames from effect time `start`. Probe counts start from zero.
     pub fn render(&mut self, gpu: &Gpu, outcome: &mut Outcome, start: f64) -> Option<MemoryRun> {
         let MemoryRequest { size, frames, step, timeout, .. } = self.m;

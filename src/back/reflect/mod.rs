@@ -13,11 +13,19 @@ use serde::Serialize;
 
 use crate::back::merge::visit_statements;
 
+mod block;
 mod images;
+mod names;
+mod pass;
 use crate::back::prune::LeftOut;
-use crate::front::plan::{Plan, Repr, UNIFORM_BLOCK};
+use crate::front::plan::UNIFORM_BLOCK;
+use crate::front::program::CompiledProgram;
 use crate::manifest::{Effect, UniformValue};
+pub use block::{ArrayLayout, Fill, UniformBlock, UniformMember};
+use block::{BlockSources, GlslFields};
 use images::describe_image;
+use names::WgslNames;
+pub use pass::{pass_info, PassInfo, PassRead, PassTarget, TargetExtent};
 
 /// Version of the reflection JSON schema (documented in the README).
 pub const SCHEMA_VERSION: u32 = 1;
@@ -36,6 +44,9 @@ pub struct Reflection {
     /// A program with a geometry stage: how to draw its folded vertex stage.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub geometry: Option<GeometryDraw>,
+    /// One pass of a multi-pass effect: its targets and the targets it reads.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pass: Option<PassInfo>,
 }
 
 /// How to draw a program whose geometry stage is folded into the vertex stage: no vertex
@@ -87,7 +98,7 @@ pub fn reflect_program(
     effect: Option<&Effect>,
     left_out: Vec<LeftOut>,
 ) -> Reflection {
-    let mut reflection = reflect(name, module, &program.plan, effect, left_out);
+    let mut reflection = reflect(name, module, program, effect, left_out);
     if let Some((draw, inputs)) = program.fold().and_then(|f| geometry_draw(&f.drawn)) {
         reflection.geometry = Some(draw);
         reflection.vertex_inputs = inputs;
@@ -114,6 +125,7 @@ pub fn geometry_draw(lowered: &crate::front::geometry_fold::Lowered) -> Option<(
             InterfaceVar {
                 location: *location,
                 name: name.clone(),
+                wgsl_name: None,
                 wgsl_type: if *components == 1 { scalar.to_string() } else { format!("vec{components}<{scalar}>") },
                 format: Some(if *components == 1 { format.to_string() } else { format!("{format}x{components}") }),
                 interpolation: None,
@@ -153,8 +165,11 @@ pub struct EntryPointInfo {
 pub struct BindingInfo {
     pub group: u32,
     pub binding: u32,
-    /// Name in the emitted code.
+    /// Name in the module: the GLSL name, or effectc's (`tex_sampler` for the sampler half
+    /// of a combined sampler, `struct_member` for a flattened one).
     pub name: String,
+    /// The name the WGSL declares (naga adds `_` to names ending in a digit: `tex0_`).
+    pub wgsl_name: String,
     /// `uniform_buffer`, `storage_buffer`, `texture`, `storage_texture`, `sampler`, `comparison_sampler`.
     pub kind: &'static str,
     /// Textures: `1d`, `2d`, `2d_array`, `3d`, `cube`, `cube_array`.
@@ -183,46 +198,13 @@ pub struct BindingInfo {
 }
 
 #[derive(Debug, Clone, Serialize)]
-pub struct UniformBlock {
-    pub name: String,
-    pub group: u32,
-    pub binding: u32,
-    pub size: u32,
-    pub members: Vec<UniformMember>,
-    /// Which manifest entry fills which bytes.
-    pub fills: Vec<Fill>,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct UniformMember {
-    pub name: String,
-    /// Type as the user declared it in GLSL.
-    pub glsl_type: String,
-    /// Type in the emitted code (WGSL spelling).
-    pub wgsl_type: String,
-    pub offset: u32,
-    pub size: u32,
-    /// How the GLSL value is stored: `plain`, `bool_as_uint`, `padded_to_vec4`, `mat2_as_vec4`, `mat2_array_as_vec4_array`.
-    pub repr: &'static str,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct Fill {
-    /// Manifest uniform name (`minBI`, `lights[0].color`).
-    pub uniform: String,
-    /// Byte range `[start, end)` in the block.
-    pub bytes: [u32; 2],
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub value: Option<UniformValue>,
-    /// Filled per frame by the renderer instead of a value.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub semantic: Option<String>,
-}
-
-#[derive(Debug, Clone, Serialize)]
 pub struct InterfaceVar {
     pub location: u32,
     pub name: String,
+    /// The name the WGSL declares; absent where it declares none (a lone return value,
+    /// inputs a folded geometry program pulls from storage buffers).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub wgsl_name: Option<String>,
     pub wgsl_type: String,
     /// Vertex inputs: the wgpu vertex format (`float32x3`).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -327,18 +309,29 @@ fn interpolation_name(b: &Binding) -> Option<&'static str> {
     }
 }
 
-/// Location-bound members of an entry point's inputs or output (struct or plain).
-fn located(module: &Module, items: &[(Option<String>, Handle<Type>, Option<Binding>)]) -> Vec<(u32, String, Handle<Type>, Binding)> {
+/// One location-bound input or output: location, name, WGSL name, type, binding.
+type Located = (u32, String, Option<String>, Handle<Type>, Binding);
+
+/// Location-bound members of an entry point's inputs or output (struct or plain), with the
+/// names the WGSL gives them (`wgsl_name(i)` for the plain item `i`).
+fn located(
+    module: &Module,
+    names: &WgslNames,
+    items: &[(Option<String>, Handle<Type>, Option<Binding>)],
+    wgsl_name: impl Fn(usize) -> Option<String>,
+) -> Vec<Located> {
     let mut out = Vec::new();
-    for (name, ty, binding) in items {
+    for (i, (name, ty, binding)) in items.iter().enumerate() {
         match binding {
-            Some(b @ Binding::Location { location, .. }) => out.push((*location, name.clone().unwrap_or_default(), *ty, b.clone())),
+            Some(b @ Binding::Location { location, .. }) => {
+                out.push((*location, name.clone().unwrap_or_default(), wgsl_name(i), *ty, b.clone()))
+            }
             Some(_) => {}
             None => {
                 if let TypeInner::Struct { members, .. } = &module.types[*ty].inner {
-                    for m in members {
+                    for (j, m) in members.iter().enumerate() {
                         if let Some(b @ Binding::Location { location, .. }) = &m.binding {
-                            out.push((*location, m.name.clone().unwrap_or_default(), m.ty, b.clone()));
+                            out.push((*location, m.name.clone().unwrap_or_default(), names.member(*ty, j), m.ty, b.clone()));
                         }
                     }
                 }
@@ -349,13 +342,23 @@ fn located(module: &Module, items: &[(Option<String>, Handle<Type>, Option<Bindi
     out
 }
 
-fn varying(module: &Module, (location, name, ty, b): (u32, String, Handle<Type>, Binding)) -> InterfaceVar {
-    InterfaceVar { location, name, wgsl_type: type_name(module, ty), format: None, interpolation: interpolation_name(&b) }
+fn varying(module: &Module, (location, name, wgsl_name, ty, b): Located) -> InterfaceVar {
+    InterfaceVar { location, name, wgsl_name, wgsl_type: type_name(module, ty), format: None, interpolation: interpolation_name(&b) }
 }
 
 /// Builds the reflection of a pruned, validated module.
-pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>, left_out: Vec<LeftOut>) -> Reflection {
+pub fn reflect(name: &str, module: &Module, program: &CompiledProgram, effect: Option<&Effect>, left_out: Vec<LeftOut>) -> Reflection {
     let vis = visibility(module);
+    let plan = &program.plan;
+    let names = WgslNames::of(module);
+    let initial = crate::front::initial_values::of(program);
+    let fields: GlslFields = program
+        .stages
+        .iter()
+        .flat_map(|s| &s.syntax.structs)
+        .flat_map(|d| d.members.iter().map(move |m| ((d.name.clone(), m.name.clone()), m.ty.to_string())))
+        .collect();
+    let sources = BlockSources { plan, effect, initial: &initial, names: &names, fields: &fields };
     let mut bindings = Vec::new();
     let mut uniform_block = None;
     for (h, g) in module.global_variables.iter() {
@@ -365,6 +368,7 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
             group: rb.group,
             binding: rb.binding,
             name: gname.clone(),
+            wgsl_name: names.global(h).unwrap_or_else(|| gname.clone()),
             kind: "uniform_buffer",
             dimension: None,
             sample_type: None,
@@ -389,7 +393,7 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
                 info.size = Some(*span);
                 let tname = module.types[g.ty].name.clone().unwrap_or_default();
                 if tname == UNIFORM_BLOCK && g.space == AddressSpace::Uniform {
-                    uniform_block = Some(block_of(module, g.ty, rb, plan, effect));
+                    uniform_block = Some(block::block_of(module, g.ty, rb, &sources));
                 } else {
                     info.glsl = Some(tname);
                 }
@@ -407,30 +411,35 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
     let mut vertex_inputs = Vec::new();
     let mut varyings = Vec::new();
     let mut fragment_outputs = Vec::new();
-    for ep in &module.entry_points {
+    for (ep_index, ep) in module.entry_points.iter().enumerate() {
         let args: Vec<_> = ep.function.arguments.iter().map(|a| (a.name.clone(), a.ty, a.binding.clone())).collect();
         let result: Vec<_> = ep.function.result.iter().map(|r| (None, r.ty, r.binding.clone())).collect();
+        let argument = |i| names.argument(ep_index, i);
+        let located_args = || located(module, &names, &args, argument);
+        let located_result = || located(module, &names, &result, |_| None);
         match ep.stage {
             naga::ShaderStage::Vertex => {
-                for (location, name, ty, _) in located(module, &args) {
+                for (location, name, wgsl_name, ty, _) in located_args() {
                     vertex_inputs.push(InterfaceVar {
                         location,
                         name,
+                        wgsl_name,
                         wgsl_type: type_name(module, ty),
                         format: vertex_format(module, ty),
                         interpolation: None,
                     });
                 }
-                varyings.extend(located(module, &result).into_iter().map(|v| varying(module, v)));
+                varyings.extend(located_result().into_iter().map(|v| varying(module, v)));
             }
             naga::ShaderStage::Fragment => {
                 if !module.entry_points.iter().any(|e| e.stage == naga::ShaderStage::Vertex) {
-                    varyings.extend(located(module, &args).into_iter().map(|v| varying(module, v)));
+                    varyings.extend(located_args().into_iter().map(|v| varying(module, v)));
                 }
-                for (location, name, ty, _) in located(module, &result) {
+                for (location, name, wgsl_name, ty, _) in located_result() {
                     fragment_outputs.push(InterfaceVar {
                         location,
                         name,
+                        wgsl_name,
                         wgsl_type: type_name(module, ty),
                         format: None,
                         interpolation: None,
@@ -451,54 +460,8 @@ pub fn reflect(name: &str, module: &Module, plan: &Plan, effect: Option<&Effect>
         fragment_outputs,
         left_out,
         geometry: None,
+        pass: None,
     }
-}
-
-fn repr_name(r: &Repr) -> &'static str {
-    match r {
-        Repr::Plain => "plain",
-        Repr::Bool { .. } => "bool_as_uint",
-        Repr::Padded { .. } => "padded_to_vec4",
-        Repr::Mat2 => "mat2_as_vec4",
-        Repr::Mat2Array => "mat2_array_as_vec4_array",
-    }
-}
-
-fn block_of(module: &Module, ty: Handle<Type>, rb: &naga::ResourceBinding, plan: &Plan, effect: Option<&Effect>) -> UniformBlock {
-    let (members, size) = match &module.types[ty].inner {
-        TypeInner::Struct { members, span } => (members.clone(), *span),
-        _ => (Vec::new(), 0),
-    };
-    let mut layouter = naga::proc::Layouter::default();
-    let _ = layouter.update(module.to_ctx());
-    let out_members = members
-        .iter()
-        .map(|m| {
-            let name = m.name.clone().unwrap_or_default();
-            let pm = plan.member(&name);
-            UniformMember {
-                glsl_type: pm.map(|p| p.user_ty.to_string()).unwrap_or_else(|| type_name(module, m.ty)),
-                wgsl_type: type_name(module, m.ty),
-                offset: m.offset,
-                size: layouter[m.ty].size,
-                repr: pm.map(|p| repr_name(&p.repr)).unwrap_or("plain"),
-                name,
-            }
-        })
-        .collect();
-    let mut fills = Vec::new();
-    if let Some(effect) = effect {
-        for u in &effect.uniforms {
-            let Some((offset, t)) = resolve_path(module, ty, &u.name) else { continue };
-            fills.push(Fill {
-                uniform: u.name.clone(),
-                bytes: [offset, offset + layouter[t].size],
-                value: u.value.clone(),
-                semantic: u.semantic.map(|s| s.name().to_string()),
-            });
-        }
-    }
-    UniformBlock { name: UNIFORM_BLOCK.to_string(), group: rb.group, binding: rb.binding, size, members: out_members, fills }
 }
 
 /// Byte offset and type of a GLSL path (`a`, `a.b`, `a[2].c`) inside struct `ty`.
