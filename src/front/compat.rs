@@ -318,7 +318,7 @@ pub fn handles(name: &str, stage: StageKind) -> bool {
         || PRODUCTS.iter().any(|p| p.0 == name)
         || CONSTANTS.iter().any(|c| c.0 == name)
         || (stage == StageKind::Vertex && (attribute(name).is_some() || VARYINGS.iter().any(|v| v.name == name)))
-        || (stage == StageKind::Vertex && VERTEX_SINKS.iter().any(|v| v.0 == name))
+        || (matches!(stage, StageKind::Vertex | StageKind::Geometry) && VERTEX_SINKS.iter().any(|v| v.0 == name))
         || (stage == StageKind::Fragment && VARYINGS.iter().any(|v| v.fragment_name == name))
         || (in_vertex_or_fragment && name == "gl_TexCoord")
 }
@@ -454,12 +454,9 @@ pub fn declarations(
                     let _ = write!(d.epilogue, " {0} = clamp({0}, 0.0, 1.0);", v.name);
                 }
             }
-            for (name, ty) in VERTEX_SINKS {
-                if stage_uses(s, name) {
-                    let _ = writeln!(h, "{ty} {name};");
-                }
-            }
+            sinks(s, h);
         }
+        StageKind::Geometry => sinks(s, h),
         StageKind::Fragment => {
             for v in program.varyings.iter().filter(|v| stage_uses(s, v.fragment_name)) {
                 let _ = writeln!(h, "layout(location = {}) in {} {};", varying_location(v.name), v.ty, v.fragment_name);
@@ -489,6 +486,17 @@ pub fn declarations(
     }
     products(s, &mut d);
     d
+}
+
+/// The private stand-ins of the [`VERTEX_SINKS`] `s` writes (a geometry stage writes them
+/// too, for the vertices it emits).
+fn sinks(s: &StageSyntax, h: &mut String) {
+    use std::fmt::Write;
+    for (name, ty) in VERTEX_SINKS {
+        if stage_uses(s, name) {
+            let _ = writeln!(h, "{ty} {name};");
+        }
+    }
 }
 
 /// The light products `s` reads, computed first in `main` as GL derives them: a light

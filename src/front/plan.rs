@@ -441,8 +441,15 @@ fn varying_locations(stages: &[StageSyntax], linked: &[String]) -> HashMap<Strin
             }
         }
     }
+    // Once a geometry stage is folded, the varyings between the vertex and geometry stages
+    // are private: the fragment stage's inputs are numbered first, so the ones WebGPU passes
+    // start at location 0 (a wide vertex → geometry interface would push them past its limit).
+    let mut order: Vec<&StageSyntax> = stages.iter().collect();
+    if stages.iter().any(|s| s.stage == StageKind::Geometry) {
+        order.sort_by_key(|s| s.stage != StageKind::Fragment);
+    }
     let mut next = 0u32;
-    for s in stages {
+    for s in order {
         for g in s.globals.iter().filter(|g| is_varying(s, g)) {
             if map.contains_key(&g.name) {
                 continue;

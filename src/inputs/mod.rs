@@ -383,7 +383,9 @@ fn stage_from_text(path: &Path, text: &str) -> Option<(StageKind, Diagnostic)> {
 /// In a folder with exactly one vertex stage, each program with a fragment stage and no
 /// vertex stage gets that vertex stage (the common one-vertex-many-fragments layout, where
 /// the host code links `PCN.vert` with `Diffuse.frag`, `Phong.frag`, …); the vertex stage
-/// no longer stands alone. A note (N0001) names each pairing.
+/// no longer stands alone. Where that makes one program in the folder and the folder's one
+/// geometry stage stands alone, it joins that program too (`pass.vert`, `explode.geom`,
+/// `shade.frag`). A note (N0001) names each pairing.
 fn pair_with_the_folders_vertex_stage(groups: &mut Vec<ProgramInput>) -> Vec<Diagnostic> {
     let files_of = |p: &ProgramInput| match p {
         ProgramInput::Stages { files, .. } => files.clone(),
@@ -398,6 +400,20 @@ fn pair_with_the_folders_vertex_stage(groups: &mut Vec<ProgramInput>) -> Vec<Dia
             }
         }
     }
+    let mut lone_geometry: BTreeMap<PathBuf, Vec<PathBuf>> = BTreeMap::new();
+    for g in groups.iter() {
+        if let [(path, StageKind::Geometry)] = files_of(g).as_slice() {
+            lone_geometry.entry(dir_of(path)).or_default().push(path.clone());
+        }
+    }
+    let mut paired_in_dir: BTreeMap<PathBuf, usize> = BTreeMap::new();
+    for g in groups.iter() {
+        let files = files_of(g);
+        let kinds: BTreeSet<StageKind> = files.iter().map(|(_, k)| *k).collect();
+        if kinds.contains(&StageKind::Fragment) && !kinds.contains(&StageKind::Vertex) && !kinds.contains(&StageKind::Compute) {
+            *paired_in_dir.entry(dir_of(&files[0].0)).or_default() += 1;
+        }
+    }
     let mut notes = Vec::new();
     let mut paired_vertex: BTreeSet<PathBuf> = BTreeSet::new();
     for g in groups.iter_mut() {
@@ -406,17 +422,32 @@ fn pair_with_the_folders_vertex_stage(groups: &mut Vec<ProgramInput>) -> Vec<Dia
         if !kinds.contains(&StageKind::Fragment) || kinds.contains(&StageKind::Vertex) || kinds.contains(&StageKind::Compute) {
             continue;
         }
-        let Some([vertex]) = vertex_by_dir.get(&dir_of(&files[0].0)).map(Vec::as_slice) else { continue };
-        notes.push(Diagnostic::new(
-            Code::PairedInFolder,
-            format!("`{}` is paired with `{}`, the one vertex stage of its folder", files[0].0.display(), vertex.display()),
-        ));
+        let dir = dir_of(&files[0].0);
+        let Some([vertex]) = vertex_by_dir.get(&dir).map(Vec::as_slice) else { continue };
+        let geometry = match lone_geometry.get(&dir).map(Vec::as_slice) {
+            Some([geometry]) if paired_in_dir.get(&dir) == Some(&1) && !kinds.contains(&StageKind::Geometry) => Some(geometry),
+            _ => None,
+        };
+        let message = match geometry {
+            Some(geometry) => format!(
+                "`{}` is paired with `{}` and `{}`, the one vertex and geometry stages of its folder",
+                files[0].0.display(),
+                vertex.display(),
+                geometry.display()
+            ),
+            None => format!("`{}` is paired with `{}`, the one vertex stage of its folder", files[0].0.display(), vertex.display()),
+        };
+        notes.push(Diagnostic::new(Code::PairedInFolder, message));
+        if let Some(geometry) = geometry {
+            files.push((geometry.clone(), StageKind::Geometry));
+            paired_vertex.insert(geometry.clone());
+        }
         files.push((vertex.clone(), StageKind::Vertex));
         files.sort_by_key(|(_, k)| *k);
         *formed = Formed::FolderVertex;
         paired_vertex.insert(vertex.clone());
     }
-    // A vertex stage now checked with its fragment stages is no program of its own.
+    // A vertex (or geometry) stage now checked with its fragment stages is no program of its own.
     groups.retain(|g| !matches!(g, ProgramInput::Stages { files, .. } if files.len() == 1 && paired_vertex.contains(&files[0].0)));
     notes
 }

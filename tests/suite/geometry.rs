@@ -91,11 +91,12 @@ fn what_is_not_folded_is_named_and_what_folds_differently_is_marked() {
     let adjacency = GeometryLayout { input: InputPrimitive::TrianglesAdjacency, ..layout };
     assert!(lower(&vs, &gs, adjacency, Pulling::Attributes, None).unwrap().text.contains("effectc_gl_in[6];"));
     // gl_PrimitiveID written by the geometry stage travels to the fragment stage as a flat
-    // varying after the stage's outputs (shaded: locations 2 and 3).
+    // varying after the stage's outputs (shaded: locations 0 and 1, the fragment stage's
+    // inputs being numbered first).
     let primitive_id = gs.replace("EmitVertex();", "gl_PrimitiveID = 7; EmitVertex();");
     let folded = lower(&vs, &primitive_id, layout, Pulling::Attributes, None).unwrap();
-    assert_eq!(folded.primitive_location, 4);
-    assert!(folded.text.contains("layout(location = 4) flat out uint effectc_out_primitive;"), "{}", folded.text);
+    assert_eq!(folded.primitive_location, 2);
+    assert!(folded.text.contains("layout(location = 2) flat out uint effectc_out_primitive;"), "{}", folded.text);
     // In the vertex stage of a geometry program it is named.
     let in_vertex = vs.replace("void main() {", "void main() {\n    gl_Layer = 1;");
     assert_eq!(

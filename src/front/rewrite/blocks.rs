@@ -5,11 +5,12 @@
 use std::collections::BTreeMap;
 use std::ops::Range;
 
-use super::varyings::matrix_shape;
+use super::io_blocks::awkward_member;
 use super::Ctx;
 use crate::front::limitation::Limitation;
 use crate::front::plan::STRUCT_ALIGN_FILLER;
 use crate::front::syntax::{Referent, Storage};
+use crate::stage::StageKind;
 
 impl Ctx<'_> {
     /// Sampler members leave struct definitions (they became their own bindings); structs
@@ -53,21 +54,16 @@ impl Ctx<'_> {
     /// parser takes none of them: locations follow the block's, integers are flat anyway).
     pub(super) fn defaults_and_layouts(&mut self) {
         let s = self.s;
-        let io_block_array =
-            s.globals.iter().filter(|g| matches!(g.storage, Storage::In | Storage::Out) && !g.name.starts_with("gl_")).find_map(|g| {
-                let b = g.block.as_ref()?;
-                // An array member is fine last (nothing follows it to collide with).
-                let n = b.members.len();
-                b.members
-                    .iter()
-                    .enumerate()
-                    .find(|(i, m)| (m.ty.is_array() && i + 1 < n) || matrix_shape(&m.ty.base).is_some())
-                    .map(|(_, m)| (b.block_name.clone(), m.span.clone()))
-            });
+        // A geometry stage's blocks are passed by the geometry fold, which takes them.
+        let io_block_array = s
+            .globals
+            .iter()
+            .filter(|g| s.stage != StageKind::Geometry && !self.flattens(g))
+            .find_map(|g| awkward_member(g).map(|m| (g.name.clone(), m.span.clone())));
         if let (None, Some((block, span))) = (&self.limitation, io_block_array) {
             // naga's GLSL front gives every member of an interface block one location, so
             // an array member collides with the member after it; and it takes no matrix
-            // varyings.
+            // varyings. Blocks of the shapes `flattens` takes are passed as loose varyings.
             self.limitation = Some(Limitation {
                 construct: format!(
                     "an array or matrix member of the interface block `{}` (naga gives each member one location and no matrix varyings)",
@@ -86,6 +82,7 @@ impl Ctx<'_> {
         for g in &s.globals {
             by_decl.entry(g.decl_span.start).or_insert(g);
         }
+        by_decl.retain(|_, g| !self.flattens(g));
         for g in by_decl.values() {
             let is_block = g.block.is_some();
             let drop = |name: &str| match name {

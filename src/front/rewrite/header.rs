@@ -4,6 +4,7 @@
 
 use std::fmt::Write;
 
+use super::uses::names_builtin;
 use super::{Ctx, OTHER_STAGE_PREFIX};
 use crate::front::plan::{block_size_align, UNIFORM_BLOCK};
 use crate::front::syntax::{dims_text, Referent, Storage};
@@ -68,7 +69,7 @@ impl Ctx<'_> {
                 }
             }
         }
-        let unresolved = |n: &str| s.uses.iter().any(|u| u.name == n && u.target == Referent::Unresolved);
+        let unresolved = |n: &str| s.uses.iter().any(|u| u.name == n && names_builtin(s, u));
         if s.stage == StageKind::Fragment && unresolved("gl_FragColor") {
             h.push_str("layout(location = 0) out vec4 effectc_FragColor;\n");
         }
@@ -89,11 +90,11 @@ impl Ctx<'_> {
             // WebGPU draws points one pixel wide: the size is computed but not used.
             h.push_str("float effectc_PointSize;\n");
         }
-        if s.stage == StageKind::Vertex && unresolved("gl_ClipDistance") {
+        if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && unresolved("gl_ClipDistance") {
             // User clip planes need a WebGPU feature; the distances are computed, not used.
             h.push_str("float effectc_ClipDistance[8];\n");
         }
-        if s.stage == StageKind::Vertex && unresolved("gl_CullDistance") {
+        if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && unresolved("gl_CullDistance") {
             // Cull distances have no WebGPU equivalent; computed, not used.
             h.push_str("float effectc_CullDistance[8];\n");
         }

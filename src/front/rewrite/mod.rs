@@ -27,6 +27,7 @@ mod file_scope;
 mod fixed_function;
 mod header;
 mod initializers;
+mod io_blocks;
 mod polyfills;
 mod uses;
 mod varyings;

@@ -8,7 +8,7 @@ use super::Ctx;
 use crate::diag::{Code, Diagnostic};
 use crate::front::limitation::Limitation;
 use crate::front::plan::Repr;
-use crate::front::syntax::{GlslType, Referent, Storage};
+use crate::front::syntax::{GlslType, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -16,6 +16,7 @@ impl Ctx<'_> {
         let s = self.s;
         for u in &s.uses {
             match &u.target {
+                Referent::Global(_) if names_builtin(s, u) => self.builtin_use(u),
                 Referent::Global(gi) => {
                     let g = &s.globals[*gi];
                     if g.storage != Storage::Uniform || g.block.is_some() {
@@ -234,10 +235,23 @@ impl Ctx<'_> {
                         .with_note("WebGPU has no point sprites (and no `gl_PointSize`); draw a quad per point to keep a sprite's texture coordinates"),
                 );
             }
-            ("gl_ClipDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
-            ("gl_CullDistance", StageKind::Vertex) => self.edits.replace(u.span.clone(), "effectc_CullDistance"),
+            ("gl_ClipDistance", StageKind::Vertex | StageKind::Geometry) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
+            ("gl_CullDistance", StageKind::Vertex | StageKind::Geometry) => self.edits.replace(u.span.clone(), "effectc_CullDistance"),
             _ => {}
         }
+    }
+}
+
+/// Whether `u` names a built-in variable: one declared nowhere, or one the stage redeclares
+/// (`out float gl_ClipDistance[2];`: the rewrite drops the redeclaration).
+pub(super) fn names_builtin(s: &StageSyntax, u: &crate::front::syntax::Use) -> bool {
+    match u.target {
+        Referent::Unresolved => true,
+        Referent::Global(i) => {
+            let g = &s.globals[i];
+            g.name.starts_with("gl_") && g.block.is_none() && matches!(g.storage, Storage::In | Storage::Out)
+        }
+        Referent::Param(..) => false,
     }
 }
 

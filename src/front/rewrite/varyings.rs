@@ -26,8 +26,19 @@ impl Ctx<'_> {
             self.edits.delete(decl);
             return;
         }
-        let split = idxs.len() == 1 && first.block.is_none() && !first.ty.is_array() && matrix_shape(&first.ty.base).is_some();
+        if self.flattens(first) {
+            self.flatten_block(first);
+            return;
+        }
+        // A geometry stage's matrix outputs stay whole: the geometry fold passes them at each
+        // `EmitVertex()`, where columns copied at the end of `main` would come too late.
+        let split = idxs.len() == 1
+            && first.block.is_none()
+            && !first.ty.is_array()
+            && matrix_shape(&first.ty.base).is_some()
+            && self.s.stage != StageKind::Geometry;
         if idxs.len() == 1 && !split {
+            self.drop_invariant(first);
             // (A matrix split into columns and several names in one declaration are written
             // out again below, keyword too.)
             self.storage_keyword(first);
@@ -98,6 +109,17 @@ impl Ctx<'_> {
         } else {
             for (c, n) in names.iter().enumerate() {
                 let _ = write!(self.epilogue, " {n} = {}[{c}];", g.name);
+            }
+        }
+    }
+
+    /// `invariant` leaves a user's varying: naga takes it only on `gl_Position`, and it
+    /// asks for the same value in every program computing it the same way, which one
+    /// translated program does not change.
+    fn drop_invariant(&mut self, g: &crate::front::syntax::Global) {
+        if let Some(span) = &g.invariant {
+            if !g.name.starts_with("gl_") {
+                self.edits.delete(span.clone());
             }
         }
     }

@@ -66,6 +66,8 @@ pub struct Global {
     pub location: Option<u32>,
     pub interp: Option<Interp>,
     pub centroid: bool,
+    /// The `invariant` qualifier's span, when written on the declaration.
+    pub invariant: Option<Range<usize>>,
     pub block: Option<BlockInfo>,
     /// Other names share this declaration.
     pub shares_decl: bool,

@@ -59,6 +59,21 @@ impl GlslType {
         matches!(self.base.as_str(), "int" | "uint")
             || ["ivec", "uvec"].iter().any(|p| self.base.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")))
     }
+    /// The index suffix of every element (`[1][0]`), in order; one empty suffix for a
+    /// non-array. Unsized dimensions count one element.
+    pub fn element_suffixes(&self) -> Vec<String> {
+        let mut out = vec![String::new()];
+        for d in &self.dims {
+            out = out.iter().flat_map(|e| (0..d.unwrap_or(1)).map(move |i| format!("{e}[{i}]"))).collect();
+        }
+        out
+    }
+    /// `dst = src;` element by element for an array (naga's GLSL front gives an array in a
+    /// struct the std140 stride and one outside it the natural one, and refuses to assign
+    /// one to the other whole).
+    pub fn copy(&self, dst: &str, src: &str) -> String {
+        self.element_suffixes().iter().map(|e| format!(" {dst}{e} = {src}{e};")).collect()
+    }
     /// Opaque (sampler) base type.
     pub fn is_sampler(&self) -> bool {
         sampler_parts(&self.base).is_some()

@@ -24,7 +24,7 @@ impl Collector<'_> {
             ast::DeclarationData::Block(b) => {
                 let q = self.qualifiers(Some(&b.qualifier));
                 let layout_items = q.layout_items.clone();
-                let Quals { interp, centroid, storage, layout_span, layout, .. } = q;
+                let Quals { interp, centroid, invariant, storage, layout_span, layout, .. } = q;
                 let members = self.members(&b.fields);
                 let (instance, instance_span, instance_dims) = match &b.identifier {
                     Some(id) => (
@@ -49,6 +49,7 @@ impl Collector<'_> {
                     location,
                     interp,
                     centroid,
+                    invariant,
                     block: Some(BlockInfo { block_name, block_name_span, instance, instance_span, instance_dims, members }),
                     shares_decl: false,
                     initializer: None,
@@ -59,7 +60,7 @@ impl Collector<'_> {
                 let head = &list.head;
                 let q = self.qualifiers(head.ty.qualifier.as_ref());
                 let layout_items = q.layout_items.clone();
-                let Quals { interp, centroid, storage, layout_span, layout, .. } = q;
+                let Quals { interp, centroid, invariant, storage, layout_span, layout, .. } = q;
                 if let (Some(a), Some(init)) = (&head.array_specifier, &head.initializer) {
                     self.unsized_from_initializer(a, init);
                 }
@@ -101,6 +102,7 @@ impl Collector<'_> {
                             location: location_of(&layout),
                             interp,
                             centroid,
+                            invariant: invariant.clone(),
                             block: None,
                             shares_decl: shares,
                             initializer: init.map(span_of),

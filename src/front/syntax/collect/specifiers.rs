@@ -152,6 +152,7 @@ impl Collector<'_> {
                         }
                     }
                 }
+                ast::TypeQualifierSpecData::Invariant => out.invariant = Some(span_of(spec)),
                 _ => {}
             }
         }
@@ -164,6 +165,8 @@ impl Collector<'_> {
 pub(super) struct Quals {
     pub(super) interp: Option<Interp>,
     pub(super) centroid: bool,
+    /// The `invariant` qualifier's span.
+    pub(super) invariant: Option<Range<usize>>,
     pub(super) storage: Option<(Storage, Range<usize>)>,
     pub(super) layout_span: Option<Range<usize>>,
     pub(super) layout: Vec<(String, Option<i64>)>,

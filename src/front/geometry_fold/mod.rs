@@ -25,9 +25,14 @@
 //! The `gl_PrimitiveID` the geometry stage writes reaches a fragment stage that reads it as a
 //! flat varying ([`Lowered::primitive_location`]; WebGPU has the built-in only as a feature).
 //!
-//! Not folded (an error naming the construct): output blocks without an instance name,
-//! array or matrix varyings, vertex inputs other than scalars and vectors, `gl_Layer`/`gl_ViewportIndex`/
-//! `gl_PrimitiveID` in the vertex stage of a geometry program.
+//! The varyings between the two stages become private variables ([`interface`]): arrays,
+//! matrices and blocks (named or not) pass as GL passes them, matched by location.
+//!
+//! Not folded (an error naming the construct): varyings of struct type, arrays of blocks
+//! other than the geometry stage's inputs, vertex inputs other than scalars and vectors,
+//! `gl_Layer`/`gl_ViewportIndex`/`gl_PrimitiveID` in the vertex stage of a geometry program.
+
+mod interface;
 
 use std::fmt::Write as _;
 use std::ops::Range;
@@ -39,6 +44,7 @@ use crate::front::geometry_layout::{GeometryLayout, OutputPrimitive};
 use crate::front::naga_run::Validated;
 use crate::front::syntax::{self, Global, GlslType, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
+use interface::{next_location, private_varying, Leaf};
 
 /// Name of the storage buffer of vertex indices (three, two or one per input primitive),
 /// as the translated code names it (its block type is `EffectcIndices`).
@@ -151,7 +157,9 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, origi
             }
         }
     }
-    text.push_str("struct effectc_PerVertex { vec4 gl_Position; float gl_PointSize; };\n");
+    // `gl_ClipDistance[]` only where read: it is 8 × 16 bytes of private memory per corner.
+    let clip = if gs_part.reads_clip_distance { " float gl_ClipDistance[8];" } else { "" };
+    writeln!(text, "struct effectc_PerVertex {{ vec4 gl_Position; float gl_PointSize;{clip} }};").unwrap();
     writeln!(text, "effectc_PerVertex effectc_gl_in[{corners}];").unwrap();
     text.push_str(
         "vec4 effectc_vs_gl_Position; float effectc_vs_gl_PointSize; vec4 effectc_gs_gl_Position; float effectc_gs_gl_PointSize;\n",
@@ -176,11 +184,6 @@ pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, origi
     Ok(Lowered { text, layout, pulling, vertex_inputs, input_types, pieces, primitive_location, selects_layer, selects_viewport })
 }
 
-/// The first location after every output's (a block takes one per member).
-fn next_location(outputs: &[Varying]) -> u32 {
-    outputs.iter().map(|o| o.location + (o.members.len() as u32).max(1)).max().unwrap_or(0)
-}
-
 /// One stage's text with its interface made private and its names prefixed.
 struct Part {
     prefix: &'static str,
@@ -191,24 +194,23 @@ struct Part {
     map: OffsetMap,
     /// Vertex stage: its inputs (location, user name, components, GLSL type).
     inputs: Vec<(u32, String, u32, String)>,
-    /// Outputs: (location, prefixed name, type, interpolation qualifier, block members).
-    outputs: Vec<Varying>,
-    /// Geometry stage: its inputs, as `outputs`.
-    ins: Vec<Varying>,
+    /// Its outputs, made private.
+    outputs: Vec<Leaf>,
+    /// Geometry stage: its inputs, made private (arrays over the corners).
+    ins: Vec<Leaf>,
     /// Geometry stage: which of `gl_Layer` and `gl_ViewportIndex` it uses.
     selects: std::collections::BTreeSet<String>,
+    /// The built-in outputs the rewrite made private globals ([`PRIVATE_BUILTINS`]) that the
+    /// stage declares.
+    private_builtins: Vec<&'static str>,
+    /// Geometry stage: it reads `gl_in[].gl_ClipDistance`.
+    reads_clip_distance: bool,
 }
 
-/// A varying made private: where it was, what it is now called, its type.
-#[derive(Clone)]
-struct Varying {
-    location: u32,
-    name: String,
-    ty: GlslType,
-    interp: String,
-    /// For a block: its members (name, type, interpolation qualifier).
-    members: Vec<(String, GlslType, String)>,
-}
+/// Built-in outputs WebGPU lacks that the rewrite computes in a private float global (the
+/// global's name, the `gl_in[]` member it feeds, its array length).
+const PRIVATE_BUILTINS: [(&str, &str, Option<u32>); 2] =
+    [("effectc_PointSize", "gl_PointSize", None), ("effectc_ClipDistance", "gl_ClipDistance", Some(8))];
 
 impl Part {
     /// `geometry`: the vertex stage's shared declarations (dropped here) and `gl_in`'s length.
@@ -229,6 +231,9 @@ impl Part {
             inputs: Vec::new(),
             outputs: Vec::new(),
             ins: Vec::new(),
+            private_builtins: Vec::new(),
+            reads_clip_distance: geometry.is_some()
+                && s.uses.iter().any(|u| u.name == "gl_in" && u.field.as_ref().is_some_and(|(f, _)| f == "gl_ClipDistance")),
         };
         if let Some(start) = text.find("#version") {
             let end = text[start..].find('\n').map_or(text.len(), |e| start + e);
@@ -248,6 +253,9 @@ impl Part {
         };
         for g in &s.globals {
             let renamed = format!("{prefix}{}", g.name);
+            if let Some((name, _, _)) = PRIVATE_BUILTINS.iter().find(|(n, _, _)| *n == g.name) {
+                part.private_builtins.push(name);
+            }
             match g.storage {
                 _ if is_shared(g) => {
                     if geometry.is_some_and(|(shared, _)| shared.contains(&g.name.as_str())) {
@@ -263,11 +271,11 @@ impl Part {
                 }
                 Storage::In | Storage::Out | Storage::Varying => {
                     let as_written = original.and_then(|o| o.globals.iter().find(|x| x.name == g.name && x.storage == g.storage));
-                    let varying = private_varying(g, as_written, &renamed, geometry.map(|(_, n)| n), &mut part.declarations)?;
+                    let leaves = private_varying(g, s, as_written, &renamed, geometry.map(|(_, n)| n), &mut part.declarations)?;
                     if g.storage == Storage::Out || (g.storage == Storage::Varying && geometry.is_none()) {
-                        part.outputs.push(varying);
+                        part.outputs.extend(leaves);
                     } else {
-                        part.ins.push(varying);
+                        part.ins.extend(leaves);
                     }
                     delete(&mut edits, &g.decl_span);
                 }
@@ -336,60 +344,6 @@ fn components(ty: &GlslType) -> Option<u32> {
     }
 }
 
-/// Declares a varying as a private global (a struct for a block; an array of `corners` for
-/// a geometry input) and describes it; `as_written` is the declaration in the user's text.
-fn private_varying(
-    g: &Global,
-    as_written: Option<&Global>,
-    renamed: &str,
-    corners: Option<u32>,
-    out: &mut String,
-) -> Result<Varying, String> {
-    let interp = g.interp.map(|i| i.keyword().to_string()).unwrap_or_default();
-    let array = match (corners, g.storage) {
-        (Some(n), Storage::In) => format!("[{n}]"),
-        _ if g.ty.is_array() || g.block.as_ref().is_some_and(|b| !b.instance_dims.is_empty()) => {
-            return Err(format!("the array varying `{}`", g.name))
-        }
-        _ => String::new(),
-    };
-    let location = g.location.ok_or_else(|| format!("the varying `{}` without a location", g.name))?;
-    match &g.block {
-        None => {
-            let ty = if corners.is_some() && g.storage == Storage::In { g.ty.element() } else { g.ty.clone() };
-            if components(&ty).is_none()
-                && !matches!(ty.base.as_str(), "int" | "uint" | "ivec2" | "ivec3" | "ivec4" | "uvec2" | "uvec3" | "uvec4")
-            {
-                return Err(format!("the varying `{}` of type `{}`", g.name, ty.base));
-            }
-            writeln!(out, "{} {renamed}{array};", ty.base).unwrap();
-            Ok(Varying { location, name: renamed.to_string(), ty, interp, members: Vec::new() })
-        }
-        Some(b) => {
-            let Some(instance) = &b.instance else { return Err(format!("the block `{}` without an instance name", b.block_name)) };
-            // Uses name the instance; the struct is named after it too (an input and an
-            // output block may share a block name), both prefixed.
-            let prefix = &renamed[..renamed.len() - g.name.len()];
-            let (struct_name, renamed) = (format!("{prefix}{instance}_block"), format!("{prefix}{instance}"));
-            let written = as_written.and_then(|w| w.block.as_ref());
-            let block_interp = as_written.and_then(|w| w.interp).or(g.interp);
-            let mut members = Vec::new();
-            write!(out, "struct {struct_name} {{").unwrap();
-            for m in &b.members {
-                if m.ty.is_array() || m.ty.base.starts_with("mat") {
-                    return Err(format!("the block member `{}.{}`", b.block_name, m.name));
-                }
-                write!(out, " {} {};", m.ty.base, m.name).unwrap();
-                let interp =
-                    written.and_then(|w| w.members.iter().find(|x| x.name == m.name)).and_then(|x| x.interp).or(m.interp).or(block_interp);
-                members.push((m.name.clone(), m.ty.clone(), interp.map(|i| i.keyword().to_string()).unwrap_or_default()));
-            }
-            writeln!(out, " }};\n{struct_name} {renamed}{array};").unwrap();
-            Ok(Varying { location, name: renamed.to_string(), ty: GlslType::scalar(&struct_name), interp, members })
-        }
-    }
-}
-
 /// Where `name` is written in the definition at `span`: the first `name` followed by `(`.
 fn find_name(text: &str, span: &Range<usize>, name: &str) -> Option<usize> {
     let body = &text[span.clone()];
@@ -418,8 +372,8 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
     t.push_str("uint effectc_want_primitive; uint effectc_want_corner; bool effectc_found; bool effectc_held;\n");
     t.push_str("uint effectc_strip; uint effectc_made; uint effectc_strip_start;\n");
     t.push_str("vec4 effectc_cap_Position; int effectc_cap_Layer; int effectc_cap_ViewportIndex; int effectc_cap_PrimitiveID;\n");
-    for o in &gs.outputs {
-        writeln!(t, "{} effectc_cap_{};", o.ty.base, o.name).unwrap();
+    for (i, o) in gs.outputs.iter().enumerate() {
+        writeln!(t, "{} effectc_cap_{i}{};", o.ty.base, syntax::dims_text(&o.ty)).unwrap();
     }
     let n = output.list_vertices();
     t.push_str("void effectc_emit() {\n    if (effectc_found) {\n        return;\n    }\n");
@@ -439,8 +393,8 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
     t.push_str(
         "            effectc_cap_Layer = effectc_gs_gl_Layer;\n            effectc_cap_ViewportIndex = effectc_gs_gl_ViewportIndex;\n            effectc_cap_PrimitiveID = effectc_gs_gl_PrimitiveID;\n",
     );
-    for o in &gs.outputs {
-        writeln!(t, "            effectc_cap_{0} = {0};", o.name).unwrap();
+    for (i, o) in gs.outputs.iter().enumerate() {
+        writeln!(t, "           {}", o.ty.copy(&format!("effectc_cap_{i}"), &o.access(None))).unwrap();
     }
     t.push_str("            effectc_held = true;\n        }\n    }\n");
     writeln!(t, "    effectc_strip += 1u;\n    if (effectc_strip >= {n}u) {{\n        effectc_made += 1u;\n    }}").unwrap();
@@ -455,16 +409,12 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
 fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Result<String, String> {
     let mut t = String::new();
     let mut assign = String::new();
-    for o in &gs.outputs {
-        if o.members.is_empty() {
-            writeln!(t, "layout(location = {}) {} out {} effectc_out_{};", o.location, o.interp, o.ty.base, o.location).unwrap();
-            writeln!(assign, "        effectc_out_{} = effectc_cap_{};", o.location, o.name).unwrap();
-        } else {
-            for (k, (m, ty, interp)) in o.members.iter().enumerate() {
-                let location = o.location + k as u32;
-                writeln!(t, "layout(location = {location}) {interp} out {} effectc_out_{location};", ty.base).unwrap();
-                writeln!(assign, "        effectc_out_{location} = effectc_cap_{}.{m};", o.name).unwrap();
-            }
+    for (i, o) in gs.outputs.iter().enumerate() {
+        // naga wants integer outputs `flat` (GL never interpolates them).
+        let interp = if o.interp.is_empty() && o.ty.is_integer() { "flat" } else { o.interp.as_str() };
+        for (location, ty, part) in o.locations() {
+            writeln!(t, "layout(location = {location}) {interp} out {ty} effectc_out_{location};").unwrap();
+            writeln!(assign, "        effectc_out_{location} = effectc_cap_{i}{part};").unwrap();
         }
     }
     writeln!(t, "layout(location = {}) flat out uint effectc_out_primitive;", next_location(&gs.outputs)).unwrap();
@@ -514,21 +464,17 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
             }
         }
         writeln!(t, "    {}main();", vs.prefix).unwrap();
-        writeln!(
-            t,
-            "    effectc_gl_in[{k}].gl_Position = effectc_vs_gl_Position;\n    effectc_gl_in[{k}].gl_PointSize = effectc_vs_gl_PointSize;"
-        )
-        .unwrap();
+        writeln!(t, "    effectc_gl_in[{k}].gl_Position = effectc_vs_gl_Position;").unwrap();
+        for (private, member, length) in PRIVATE_BUILTINS {
+            if vs.private_builtins.contains(&private) && (member != "gl_ClipDistance" || gs.reads_clip_distance) {
+                let ty = GlslType { base: "float".into(), dims: length.into_iter().map(Some).collect() };
+                writeln!(t, "   {}", ty.copy(&format!("effectc_gl_in[{k}].{member}"), &format!("{}{private}", vs.prefix))).unwrap();
+            }
+        }
         for i in &gs.ins {
             // An input no vertex output feeds is undefined in GL: it stays zero here.
-            let Some(o) = vs.outputs.iter().find(|o| o.location == i.location) else { continue };
-            if i.members.is_empty() {
-                writeln!(t, "    {}[{k}] = {};", i.name, o.name).unwrap();
-            } else {
-                for ((m, _, _), (vm, _, _)) in i.members.iter().zip(&o.members) {
-                    writeln!(t, "    {}[{k}].{m} = {}.{vm};", i.name, o.name).unwrap();
-                }
-            }
+            let Some(statements) = interface::feed(i, k, &vs.outputs) else { continue };
+            writeln!(t, "   {statements}").unwrap();
         }
     }
     writeln!(t, "    {}main();", gs.prefix).unwrap();
