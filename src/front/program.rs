@@ -392,8 +392,12 @@ fn compile_own(
             // A geometry stage is rewritten to 4.50 like the others (the shared uniform
             // block, the plan's locations, sampler splits): the text the fold starts from.
             let rewritten = (s.stage == StageKind::Geometry).then(|| {
-                let (rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
+                let (mut rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
                 diags.extend(rdiags);
+                // The commands that draw take its doubles as floats too, as the other stages'.
+                if let Some(at) = options.doubles_as_floats.then(|| crate::front::doubles::as_floats(&mut rewritten.text)).flatten() {
+                    diags.push(doubles_as_floats(&s, rewritten.map.range_to_original(at)));
+                }
                 dump_rewrite(files, &s, &rewritten);
                 rewritten
             });

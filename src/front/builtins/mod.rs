@@ -7,6 +7,7 @@
 //! `glsl_lists` holds GLSL's names, `naga_lists` the ones naga knows; the questions asked
 //! of them are here.
 
+pub mod constants;
 mod glsl_lists;
 mod naga_lists;
 

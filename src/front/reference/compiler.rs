@@ -118,9 +118,7 @@ fn create(text: &str, kind: StageKind, dialect: Dialect, spirv: Option<&SpirvSet
         return None;
     }
     let code = c_text(text);
-    let resource: *const sys::glslang_resource_t =
-        // SAFETY: `ResourceLimits` is `repr(transparent)` over `glslang_resource_t`.
-        (&glslang::limits::DEFAULT_LIMITS as *const glslang::limits::ResourceLimits).cast();
+    let resource: *const sys::glslang_resource_t = crate::front::builtins::constants::limits();
     let vulkan = (sys::glslang_client_t::Vulkan, sys::glslang_target_client_version_t::Vulkan1_0, sys::glslang_target_language_t::SPIRV);
     let (client, client_version, target, default_version) = match (dialect, spirv) {
         (Dialect::OpenGl, None) => {

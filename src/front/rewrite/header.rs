@@ -6,11 +6,39 @@ use std::fmt::Write;
 
 use super::uses::names_builtin;
 use super::{Ctx, OTHER_STAGE_PREFIX};
+use crate::front::builtins::constants;
 use crate::front::plan::{block_size_align, UNIFORM_BLOCK};
 use crate::front::syntax::{dims_text, Referent, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
+    /// GLSL's implementation constants naga does not declare, at the reference compiler's
+    /// values, before the first declaration (array sizes may name them). Found in the
+    /// text: sizes in declarations are no recorded uses.
+    pub(super) fn insert_constants(&mut self) {
+        let s = self.s;
+        let mut declared = std::collections::BTreeSet::new();
+        let mut text = String::new();
+        for (at, _) in s.text.match_indices("gl_M") {
+            let name: String = s.text[at..].chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
+            let starts_word = !s.text[..at].ends_with(|c: char| c.is_ascii_alphanumeric() || c == '_');
+            if starts_word && !crate::front::compat::handles(&name, s.stage) && declared.insert(name.clone()) {
+                if let Some(d) = constants::declaration(&name) {
+                    let _ = writeln!(text, "{d}");
+                }
+            }
+        }
+        if text.is_empty() {
+            return;
+        }
+        let first = s.globals.iter().map(|g| g.decl_span.start).chain(s.structs.iter().map(|d| d.span.start)).chain(s.first_function).min();
+        let at = first.map_or(s.text.len(), |f| s.text[..f].rfind('\n').map_or(0, |n| n + 1));
+        if at == 0 || !s.text[..at].ends_with('\n') {
+            text.insert(0, '\n');
+        }
+        self.edits.insert(at, text);
+    }
+
     pub(super) fn insert_header(&mut self) {
         let s = self.s;
         let mut h = String::new();

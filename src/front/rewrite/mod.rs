@@ -115,6 +115,8 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
         compat_header: String::new(),
     };
     c.version();
+    // First: at the first declaration, the constants go before what the rewrite inserts there.
+    c.insert_constants();
     c.declarations();
     c.runtime_initializers();
     c.stray_semicolons();

@@ -67,6 +67,7 @@ impl Ctx<'_> {
                     if self.limitation.is_none()
                         && crate::front::builtins::is_variable_naga_lacks(&u.name, &s.version)
                         && !crate::front::compat::handles(&u.name, s.stage)
+                        && crate::front::builtins::constants::declaration(&u.name).is_none()
                     {
                         // naga reports these unevenly ("unknown variable", or a field
                         // lookup failing on `gl_BaryCoordEXT.x`): decide before asking it.

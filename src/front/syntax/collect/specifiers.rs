@@ -47,7 +47,12 @@ impl Collector<'_> {
         match &e.content {
             ast::ExprData::IntConst(v) => Some(*v as i64),
             ast::ExprData::UIntConst(v) => Some(*v as i64),
-            ast::ExprData::Variable(id) => self.local_consts.get(id.0.as_str()).or_else(|| self.s.int_consts.get(id.0.as_str())).copied(),
+            ast::ExprData::Variable(id) => self
+                .local_consts
+                .get(id.0.as_str())
+                .or_else(|| self.s.int_consts.get(id.0.as_str()))
+                .copied()
+                .or_else(|| crate::front::builtins::constants::value(id.0.as_str())),
             ast::ExprData::Binary(op, a, b) => {
                 let (a, b) = (self.const_int(a)?, self.const_int(b)?);
                 match op.content {
@@ -60,6 +65,18 @@ impl Collector<'_> {
             }
             ast::ExprData::Unary(op, a) if op.content == ast::UnaryOpData::Minus => self.const_int(a).map(|v| -v),
             ast::ExprData::FunCall(_, args) if args.len() == 1 => self.const_int(&args[0]),
+            // `min`/`max` of constants (array sizes bounded by implementation limits).
+            ast::ExprData::FunCall(f, args) if args.len() == 2 => {
+                let (a, b) = (self.const_int(&args[0])?, self.const_int(&args[1])?);
+                match &f.content {
+                    ast::FunIdentifierData::Expr(e) => match &e.content {
+                        ast::ExprData::Variable(id) if id.0.as_str() == "min" => Some(a.min(b)),
+                        ast::ExprData::Variable(id) if id.0.as_str() == "max" => Some(a.max(b)),
+                        _ => None,
+                    },
+                    _ => None,
+                }
+            }
             _ => None,
         }
     }
