@@ -124,7 +124,7 @@ pub fn location_slots(ty: &GlslType, stage: &StageSyntax) -> u32 {
     per * ty.dims.iter().map(|d| d.unwrap_or(1)).product::<u32>()
 }
 
-fn repr_for(ty: &GlslType) -> (GlslType, Repr) {
+pub(crate) fn repr_for(ty: &GlslType) -> (GlslType, Repr) {
     let base = ty.base.as_str();
     if !ty.is_array() {
         return match base {

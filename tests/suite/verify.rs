@@ -317,3 +317,32 @@ fn members_of_instance_named_blocks_take_values_by_gl_names() {
     assert_eq!(code(&wrong), 1, "{}", stdout(&wrong));
     assert!(stdout(&wrong).contains("`Block.a`"), "{}", stdout(&wrong));
 }
+
+/// The user's own std140 blocks with `bool`s and arrays of scalars and 2-vectors (stored in
+/// WGSL as words and 4-vectors, same offsets) draw what GL draws for the values `--set`
+/// gives them, and other values draw another picture.
+#[test]
+fn std140_block_members_wgsl_cannot_hold_read_as_gl_reads_them() {
+    if !can_verify() {
+        return;
+    }
+    let stages = ["tests/verify/ubo/std140.vert", "tests/verify/ubo/std140.frag"];
+    let values = [
+        ["r=true", "gb=false,true", "weights=0.1,0.2,0.3,0.05", "on=false,true", "Params.f=0.05,0.1,0.15", "Params.use_f=true"],
+        ["r=false", "gb=true,true", "weights=0.3,0.1,0.1,0.25", "on=true,false", "Params.f=0.15,0.1,0.05", "Params.use_f=true"],
+    ];
+    let mut frames = Vec::new();
+    for (i, set) in values.iter().enumerate() {
+        let out_dir = scratch("verify-std140", &format!("values{i}"));
+        let mut args: Vec<&str> = vec!["verify"];
+        args.extend(stages);
+        for v in set {
+            args.extend(["--set", v]);
+        }
+        args.extend(["--size", "32x32", "--format", "json", "--out", out_dir.to_str().unwrap()]);
+        let out = effectc(&args);
+        assert!(code(&out) == 0 && json_matches(&stdout(&out)), "values {i}: {}", stdout(&out));
+        frames.push(std::fs::read(out_dir.join("std140_0000.png")).unwrap());
+    }
+    assert_ne!(frames[0], frames[1], "the block's values reach the picture");
+}

@@ -57,18 +57,22 @@ impl Leaf {
 }
 
 /// The statements feeding geometry input `input` at `corner` from the vertex stage's
-/// `outputs`: from the output at its location (element by element for an array), or a
-/// matrix the vertex stage passes column by column (the rewrite splits matrix varyings,
-/// and blocks with matrix members). None: no output feeds it (undefined in GL; it stays
-/// zero).
+/// `outputs`: from the output at its location (element by element for an array), or piece
+/// by piece where the vertex stage passes it so (the rewrite splits matrix varyings into
+/// columns, and a block's array members into elements). None: no output feeds it
+/// (undefined in GL; it stays zero).
 pub(super) fn feed(input: &Leaf, corner: u32, outputs: &[Leaf]) -> Option<String> {
     let at = |location: u32| outputs.iter().find(|o| o.location == location);
     let first = at(input.location)?;
     let dst = input.access(Some(corner));
-    let columns = matrix_columns(&input.ty.base).filter(|_| !input.ty.is_array() && first.ty != input.ty);
-    let Some((cols, _)) = columns else { return Some(input.ty.copy(&dst, &first.access(None))) };
-    let parts: Option<Vec<String>> = (0..cols).map(|c| at(input.location + c).map(|o| o.access(None))).collect();
-    Some(format!(" {dst} = {}({});", input.ty.base, parts?.join(", ")))
+    if first.ty == input.ty {
+        return Some(input.ty.copy(&dst, &first.access(None)));
+    }
+    let mut statements = String::new();
+    for (location, _, part) in input.locations() {
+        write!(statements, " {dst}{part} = {};", at(location)?.access(None)).unwrap();
+    }
+    Some(statements)
 }
 
 /// The first location after every leaf's.

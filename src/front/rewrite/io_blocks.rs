@@ -1,7 +1,7 @@
 //! Interface blocks naga cannot take as declared (an array member before another member, or
 //! a matrix member: naga's GLSL front gives each member one location and reads no matrix
 //! varyings) become loose varyings at the locations GL gives the members, one per member,
-//! array element runs kept, matrices split into columns; the block itself becomes a private
+//! array element and matrix column; the block itself becomes a private
 //! variable of the same shape, copied from the loose inputs at the start of `main` or to the
 //! loose outputs at its end, so its uses stay as written.
 
@@ -80,10 +80,15 @@ impl Ctx<'_> {
                     }
                 }
                 None => {
-                    write!(text, "layout(location = {at}) {interp}{centroid}{dir} {} {loose}{dims}; ", m.ty.base).unwrap();
-                    match dir {
-                        "in" => copies.push_str(&m.ty.copy(&private, &loose)),
-                        _ => copies.push_str(&m.ty.copy(&loose, &private)),
+                    // One varying per array element: naga's GLSL front drops the
+                    // interpolation qualifier of an array varying's later elements.
+                    for (k, element) in m.ty.element_suffixes().iter().enumerate() {
+                        let one = format!("{loose}{}", element.replace(['[', ']'], "_").replace("__", "_").trim_end_matches('_'));
+                        write!(text, "layout(location = {}) {interp}{centroid}{dir} {} {one}; ", at + k as u32, m.ty.base).unwrap();
+                        match dir {
+                            "in" => write!(copies, " {private}{element} = {one};").unwrap(),
+                            _ => write!(copies, " {one} = {private}{element};").unwrap(),
+                        }
                     }
                 }
             }

@@ -18,6 +18,7 @@
 //! side effects, `continue` in `do … while`), `polyfills` (built-ins naga cannot write),
 //! `fixed_function` (the compatibility profile's built-ins).
 
+mod block_members;
 mod blocks;
 mod calls;
 mod declarations;
@@ -126,6 +127,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.calls();
     c.struct_samplers();
     c.defaults_and_layouts();
+    c.user_block_member_types();
     c.row_major_uses();
     c.unsized_arrays();
     c.scalar_swizzles(scalar_swizzles);

@@ -19,7 +19,11 @@ impl Ctx<'_> {
                 Referent::Global(_) if names_builtin(s, u) => self.builtin_use(u),
                 Referent::Global(gi) => {
                     let g = &s.globals[*gi];
-                    if g.storage != Storage::Uniform || g.block.is_some() {
+                    if g.storage == Storage::Uniform && g.block.is_some() {
+                        self.user_block_member_use(u, g);
+                        continue;
+                    }
+                    if g.storage != Storage::Uniform {
                         continue;
                     }
                     if g.ty.is_sampler() {
@@ -99,6 +103,10 @@ impl Ctx<'_> {
         for (gi, g) in s.globals.iter().enumerate() {
             let Some(b) = &g.block else { continue };
             let (Some(instance), Storage::In | Storage::Out) = (&b.instance, g.storage) else { continue };
+            if self.flattens(g) {
+                // Passed as loose varyings; its members live in a private struct.
+                continue;
+            }
             for m in b.members.iter().filter(|m| loose.contains(m.name.as_str())) {
                 let new = format!("{instance}_{}", m.name);
                 self.edits.replace(m.span.clone(), new.clone());
@@ -165,12 +173,21 @@ impl Ctx<'_> {
 
     fn member_use(&mut self, u: &crate::front::syntax::Use, name: &str) {
         let Some(m) = self.plan.member(name) else { return };
-        match &m.repr {
+        let bracket = u.index.as_ref().map(|(bracket, _, _)| bracket.clone());
+        let (repr, user_ty) = (m.repr.clone(), m.user_ty.clone());
+        self.read_repr(&repr, &user_ty, u.span.clone(), bracket);
+    }
+
+    /// A use of a uniform stored as `repr` read back as its declared type `user_ty`: `span`
+    /// is the use (`f`, `block.f`), `bracket` the whole expression indexing it (`f[i]`).
+    pub(super) fn read_repr(&mut self, repr: &Repr, user_ty: &GlslType, span: Range<usize>, bracket: Option<Range<usize>>) {
+        let name = self.s.text[span.clone()].to_string();
+        match repr {
             Repr::Plain => {}
-            Repr::Bool { components: 1 } => self.edits.replace(u.span.clone(), format!("({name} != 0u)")),
-            Repr::Bool { components } => self.edits.replace(u.span.clone(), format!("bvec{components}({name})")),
-            Repr::Padded { swizzle, bool_elems } => match &u.index {
-                Some((bracket, _, _)) => {
+            Repr::Bool { components: 1 } => self.edits.replace(span, format!("({name} != 0u)")),
+            Repr::Bool { components } => self.edits.replace(span, format!("bvec{components}({name})")),
+            Repr::Padded { swizzle, bool_elems } => match bracket {
+                Some(bracket) => {
                     if *bool_elems {
                         self.edits.insert(bracket.start, "(");
                         self.edits.insert(bracket.end, format!(".{swizzle} != 0u)"));
@@ -179,21 +196,21 @@ impl Ctx<'_> {
                     }
                 }
                 None => {
-                    let n = m.user_ty.dims.first().copied().flatten().unwrap_or(0);
+                    let n = user_ty.dims.first().copied().flatten().unwrap_or(0);
                     let elems: Vec<String> = (0..n)
                         .map(|i| if *bool_elems { format!("({name}[{i}].x != 0u)") } else { format!("{name}[{i}].{swizzle}") })
                         .collect();
-                    self.edits.replace(u.span.clone(), format!("{}[{n}]({})", m.user_ty.base, elems.join(", ")));
+                    self.edits.replace(span, format!("{}[{n}]({})", user_ty.base, elems.join(", ")));
                 }
             },
             Repr::Mat2 => {
                 self.need_mat2_helper = true;
-                self.edits.insert(u.span.start, "effectc_mat2(");
-                self.edits.insert(u.span.end, ")");
+                self.edits.insert(span.start, "effectc_mat2(");
+                self.edits.insert(span.end, ")");
             }
             Repr::Mat2Array => {
                 self.need_mat2_helper = true;
-                if let Some((bracket, _, _)) = &u.index {
+                if let Some(bracket) = bracket {
                     self.edits.insert(bracket.start, "effectc_mat2(");
                     self.edits.insert(bracket.end, ")");
                 }
