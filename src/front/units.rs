@@ -93,6 +93,9 @@ fn defines_main(text: &str) -> bool {
 fn file_scope_statements(clean: &[u8]) -> Vec<std::ops::Range<usize>> {
     let mut out = Vec::new();
     let (mut depth, mut start, mut i) = (0i32, 0usize, 0usize);
+    // Whether the brace open at depth 1 is a function body (a `)` before it): a struct or
+    // block body is part of the declaration that ends at its `;`.
+    let mut body = false;
     while i < clean.len() {
         let c = clean[i];
         let line_start = i == 0 || clean[i - 1] == b'\n';
@@ -104,10 +107,15 @@ fn file_scope_statements(clean: &[u8]) -> Vec<std::ops::Range<usize>> {
             continue;
         }
         match c {
-            b'{' => depth += 1,
+            b'{' => {
+                if depth == 0 {
+                    body = clean[..i].iter().rev().find(|b| !b.is_ascii_whitespace()) == Some(&b')');
+                }
+                depth += 1;
+            }
             b'}' => {
                 depth -= 1;
-                if depth == 0 {
+                if depth == 0 && body {
                     start = i + 1;
                 }
             }
@@ -220,5 +228,14 @@ mod tests {
         let bare = files.add("d.vert", "#version 120\nvec4 vals[];\nvoid set() { gl_Position = vals[1]; }\n");
         let joined = join(&mut files, &[sized, bare]);
         assert_eq!(files.text(joined).matches("vals[").count(), 3, "{}", files.text(joined));
+        // Two struct or block declarations end in `};`: each is one statement, so the second
+        // keeps its `;`; a struct both files define is kept once.
+        let structs = "#version 430\nstruct S { vec3 a; };\nbuffer B { S s[]; };\nvoid f();\n";
+        let user = files.add("e.comp", &format!("{structs}layout(local_size_x = 1) in;\nvoid main() {{ f(); }}\n"));
+        let helper = files.add("f.comp", "#version 430\nstruct S { vec3 a; };\nvoid f() {}\n");
+        let joined = join(&mut files, &[user, helper]);
+        let text = files.text(joined);
+        assert!(text.contains("buffer B { S s[]; };"), "{text}");
+        assert_eq!(text.matches("struct S").count(), 1, "{text}");
     }
 }
