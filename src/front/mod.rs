@@ -28,6 +28,7 @@ pub mod conditionals;
 pub mod defines;
 pub mod doubles;
 pub mod edits;
+pub mod function_order;
 pub mod geometry_fold;
 pub mod geometry_layout;
 pub mod includes;

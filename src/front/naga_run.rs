@@ -193,7 +193,7 @@ fn parse_and_validate_inner(
         let mut frontend = naga::front::glsl::Frontend::default();
         frontend.parse(&naga::front::glsl::Options::from(stage), text)
     }));
-    let module = match parsed {
+    let mut module = match parsed {
         Ok(Ok(m)) => m,
         Ok(Err(errors)) => {
             // A genuine error anywhere in the stage wins over naga's limitations.
@@ -219,6 +219,7 @@ fn parse_and_validate_inner(
         }
         Err(payload) => return Err(Err(vec![crash(file, "GLSL front", &*payload)])),
     };
+    crate::front::function_order::callees_first(&mut module);
     let gl = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), gl_capabilities());
     let validated = catch_unwind(AssertUnwindSafe(|| {
         let mut gl = gl;

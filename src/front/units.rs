@@ -231,7 +231,7 @@ mod tests {
         // Two struct or block declarations end in `};`: each is one statement, so the second
         // keeps its `;`; a struct both files define is kept once.
         let structs = "#version 430\nstruct S { vec3 a; };\nbuffer B { S s[]; };\nvoid f();\n";
-        let user = files.add("e.comp", &format!("{structs}layout(local_size_x = 1) in;\nvoid main() {{ f(); }}\n"));
+        let user = files.add("e.comp", format!("{structs}layout(local_size_x = 1) in;\nvoid main() {{ f(); }}\n"));
         let helper = files.add("f.comp", "#version 430\nstruct S { vec3 a; };\nvoid f() {}\n");
         let joined = join(&mut files, &[user, helper]);
         let text = files.text(joined);

@@ -41,6 +41,7 @@ impl Ctx<'_> {
 
     pub(super) fn insert_header(&mut self) {
         let s = self.s;
+        let at = self.header_position();
         let mut h = String::new();
         if self.plan.has_block() {
             for name in &self.plan.block_structs {
@@ -63,7 +64,8 @@ impl Ctx<'_> {
                 pad += 1;
                 *offset = offset.next_multiple_of(size) + size;
             };
-            let macros = defined_macros(&s.text);
+            // Macros defined after the header do not reach the block's text.
+            let macros = defined_macros(&s.text[..at.min(s.text.len())]);
             for (i, m) in self.plan.members.iter().enumerate() {
                 let is_struct = self.plan.struct_members.contains_key(&m.block_ty.base);
                 if is_struct {
@@ -134,11 +136,6 @@ impl Ctx<'_> {
         if h.is_empty() {
             return;
         }
-        // After every struct the block needs, before the first function.
-        let structs_end =
-            self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).map(|d| line_end(&s.text, d.span.end)).max().unwrap_or(0);
-        let first = s.first_function.unwrap_or(s.text.len());
-        let at = self.header_before.map_or(first, |b| b.min(first)).max(structs_end);
         let at = if at >= s.text.len() && !s.text.ends_with('\n') {
             h.insert(0, '\n');
             s.text.len()
@@ -146,6 +143,27 @@ impl Ctx<'_> {
             at
         };
         self.edits.insert(at, h);
+    }
+}
+
+impl Ctx<'_> {
+    /// Where the header goes: after every struct the block needs, before the first
+    /// function, and before a `#define` of a block member's own name where one comes
+    /// between (`uniform vec2 OutputSize;` … `#define OutputSize vec4(OutputSize, 1.0 /
+    /// OutputSize)`, emulator packs): the member keeps its name, which the macro's body
+    /// reads.
+    fn header_position(&self) -> usize {
+        let s = self.s;
+        let structs_end =
+            self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).map(|d| line_end(&s.text, d.span.end)).max().unwrap_or(0);
+        let first = s.first_function.unwrap_or(s.text.len());
+        let at = self.header_before.map_or(first, |b| b.min(first)).max(structs_end);
+        let member_define = crate::front::conditionals::define_lines(&s.text)
+            .into_iter()
+            .filter(|(name, _)| self.plan.member(name).is_some())
+            .map(|(_, body)| s.text[..body.start].rfind('\n').map_or(0, |n| n + 1))
+            .find(|&line| structs_end <= line && line < at);
+        member_define.unwrap_or(at)
     }
 }
 
