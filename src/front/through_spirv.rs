@@ -76,6 +76,7 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
         user_names(&mut module);
         name_split_samplers(&mut module, plan);
         name_stage_outputs(&mut module);
+        drop_outputs_webgpu_lacks(&mut module);
         modules.push(module);
     }
     if dialect == Dialect::OpenGl {
@@ -255,6 +256,73 @@ fn readable_by_naga(words: Vec<u32>) -> Vec<u32> {
 /// naga's SPIR-V front returns a stage's outputs as a struct with unnamed members: each
 /// member with a location takes the name of the variable the entry point returns in it
 /// (`uv`), so the translation and its reflection name varyings as the GLSL does.
+/// Built-in outputs WebGPU has no use for leave the entry points' results: `gl_PointSize`
+/// (WebGPU draws points one pixel wide), `gl_ClipDistance` and `gl_CullDistance` (no user
+/// clip planes without a feature). They are computed and not passed, as on the GLSL route.
+fn drop_outputs_webgpu_lacks(module: &mut Module) {
+    use naga::{Binding, BuiltIn};
+    let lacks =
+        |b: &Option<Binding>| matches!(b, Some(Binding::BuiltIn(BuiltIn::PointSize | BuiltIn::ClipDistances | BuiltIn::CullDistance)));
+    let mut replaced = Vec::new();
+    for ep in &mut module.entry_points {
+        let Some(result) = &ep.function.result else { continue };
+        let TypeInner::Struct { members, .. } = &module.types[result.ty].inner else { continue };
+        let dropped: Vec<usize> = members.iter().enumerate().filter(|(_, m)| lacks(&m.binding)).map(|(i, _)| i).collect();
+        if dropped.is_empty() || dropped.len() == members.len() {
+            continue;
+        }
+        for e in ep.function.expressions.iter_mut().map(|(_, e)| e) {
+            if let naga::Expression::Compose { ty, components } = e {
+                if *ty == result.ty {
+                    let mut i = 0;
+                    components.retain(|_| {
+                        i += 1;
+                        !dropped.contains(&(i - 1))
+                    });
+                }
+            }
+        }
+        replaced.push((result.ty, dropped));
+    }
+    replaced.dedup_by_key(|(ty, _)| *ty);
+    for (ty, dropped) in replaced {
+        let mut t = module.types[ty].clone();
+        if let TypeInner::Struct { members, .. } = &mut t.inner {
+            let mut i = 0;
+            members.retain(|_| {
+                i += 1;
+                !dropped.contains(&(i - 1))
+            });
+        }
+        module.types.replace(ty, t);
+    }
+    // glslang's `gl_PerVertex` also types private variables: its members keep the built-in
+    // bindings, which the WGSL writer refuses (`point_size`) outside an entry point's
+    // inputs and outputs. They go where the type is not an entry point's.
+    let io: Vec<naga::Handle<naga::Type>> = module
+        .entry_points
+        .iter()
+        .flat_map(|ep| ep.function.arguments.iter().map(|a| a.ty).chain(ep.function.result.as_ref().map(|r| r.ty)))
+        .collect();
+    let private: Vec<naga::Handle<naga::Type>> = module
+        .types
+        .iter()
+        .filter(|(h, t)| {
+            !io.contains(h) && matches!(&t.inner, TypeInner::Struct { members, .. } if members.iter().any(|m| lacks(&m.binding)))
+        })
+        .map(|(h, _)| h)
+        .collect();
+    for ty in private {
+        let mut t = module.types[ty].clone();
+        if let TypeInner::Struct { members, .. } = &mut t.inner {
+            members.iter_mut().for_each(|m| m.binding = None);
+        }
+        if module.types.get(&t).is_none() {
+            module.types.replace(ty, t);
+        }
+    }
+}
+
 fn name_stage_outputs(module: &mut Module) {
     let mut renames = Vec::new();
     for ep in &module.entry_points {
