@@ -96,10 +96,7 @@ fn matrix_columns(base: &str) -> Option<(u32, u32)> {
 /// Whether a varying of this type can be made private and passed on: float and integer
 /// scalars, vectors, float matrices, and sized arrays of them.
 fn passable(ty: &GlslType) -> bool {
-    let base = ty.base.as_str();
-    let vector = ["vec", "ivec", "uvec"].iter().any(|p| base.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")));
-    let scalar = matches!(base, "float" | "int" | "uint");
-    (scalar || vector || matrix_columns(base).is_some()) && ty.dims.iter().all(Option::is_some)
+    (ty.vector_components().is_some() || matrix_columns(&ty.base).is_some()) && ty.dims.iter().all(Option::is_some)
 }
 
 /// Declares a varying as private globals in `out` (a struct for a named block, one global

@@ -332,16 +332,7 @@ fn is_shared(g: &Global) -> bool {
 /// Components of a float or integer vector (`float`, `int`, `uint` 1 … `vec4`, `ivec4`,
 /// `uvec4` 4).
 fn components(ty: &GlslType) -> Option<u32> {
-    if ty.is_array() {
-        return None;
-    }
-    match ty.base.as_str() {
-        "float" | "int" | "uint" => Some(1),
-        "vec2" | "ivec2" | "uvec2" => Some(2),
-        "vec3" | "ivec3" | "uvec3" => Some(3),
-        "vec4" | "ivec4" | "uvec4" => Some(4),
-        _ => None,
-    }
+    ty.vector_components().filter(|_| !ty.is_array())
 }
 
 /// Where `name` is written in the definition at `span`: the first `name` followed by `(`.

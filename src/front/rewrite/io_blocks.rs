@@ -33,13 +33,10 @@ impl Ctx<'_> {
         let (Some(b), Some(_)) = (&g.block, awkward_member(g)) else { return false };
         let io = matches!((self.s.stage, g.storage), (StageKind::Vertex, Storage::Out) | (StageKind::Fragment, Storage::In));
         let plain = |m: &Member| {
-            let base = m.ty.base.as_str();
-            let numeric = matches!(base, "float" | "int" | "uint")
-                || ["vec", "ivec", "uvec"].iter().any(|p| base.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")));
             // (naga's GLSL front lays every struct out by std140 rules, where it refuses
             // two-row matrices: gfx-rs/wgpu#4375.)
-            let matrix = matrix_shape(base).is_some_and(|(_, rows)| rows != 2) && !m.ty.is_array();
-            m.ty.dims.iter().all(Option::is_some) && (numeric || matrix)
+            let matrix = matrix_shape(&m.ty.base).is_some_and(|(_, rows)| rows != 2) && !m.ty.is_array();
+            m.ty.dims.iter().all(Option::is_some) && (m.ty.vector_components().is_some() || matrix)
         };
         io && b.instance_dims.is_empty() && b.members.iter().all(plain)
     }

@@ -74,6 +74,17 @@ impl GlslType {
     pub fn copy(&self, dst: &str, src: &str) -> String {
         self.element_suffixes().iter().map(|e| format!(" {dst}{e} = {src}{e};")).collect()
     }
+    /// Components of a float or integer scalar or vector base type (`float`, `int`, `uint`
+    /// 1 … `vec4`, `ivec4`, `uvec4` 4), whatever the array dimensions.
+    pub fn vector_components(&self) -> Option<u32> {
+        match self.base.as_str() {
+            "float" | "int" | "uint" => Some(1),
+            "vec2" | "ivec2" | "uvec2" => Some(2),
+            "vec3" | "ivec3" | "uvec3" => Some(3),
+            "vec4" | "ivec4" | "uvec4" => Some(4),
+            _ => None,
+        }
+    }
     /// Opaque (sampler) base type.
     pub fn is_sampler(&self) -> bool {
         sampler_parts(&self.base).is_some()
