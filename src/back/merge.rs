@@ -334,26 +334,7 @@ pub fn without_spans(block: &Block) -> Block {
     Block::from_vec(out)
 }
 
-/// The blocks nested directly in a statement.
-pub fn child_blocks(s: &mut Statement) -> Vec<&mut Block> {
-    match s {
-        Statement::Block(b) => vec![b],
-        Statement::If { accept, reject, .. } => vec![accept, reject],
-        Statement::Switch { cases, .. } => cases.iter_mut().map(|c| &mut c.body).collect(),
-        Statement::Loop { body, continuing, .. } => vec![body, continuing],
-        _ => Vec::new(),
-    }
-}
-
-/// Calls `f` on every statement of `block`, nested ones included (parents first).
-pub fn visit_statements(block: &mut Block, f: &mut impl FnMut(&mut Statement)) {
-    for s in block.iter_mut() {
-        f(s);
-        for b in child_blocks(s) {
-            visit_statements(b, f);
-        }
-    }
-}
+pub use crate::front::statements::{child_blocks, visit_statements};
 
 /// Calls `f` on every operand (expression handle) of `e`.
 pub fn for_each_operand(e: &mut Expression, mut f: impl FnMut(&mut Handle<Expression>)) {

@@ -6,11 +6,13 @@
 
 use naga::{Block, Expression, Function, Handle, Module, Statement};
 
+use crate::front::statements::visit_statements;
+
 /// Reorders `module`'s functions so each comes after every function it calls. A module
 /// already in order is left untouched.
 pub fn callees_first(module: &mut Module) {
-    let calls: Vec<Vec<Handle<Function>>> = module.functions.iter().map(|(_, f)| called(&f.body)).collect();
     let handles: Vec<Handle<Function>> = module.functions.iter().map(|(h, _)| h).collect();
+    let calls: Vec<Vec<Handle<Function>>> = module.functions.iter_mut().map(|(_, f)| called(&mut f.body)).collect();
     let index = |h: Handle<Function>| handles.iter().position(|x| *x == h);
     let mut order: Vec<usize> = Vec::new();
     let mut state = vec![0u8; handles.len()]; // 0 new, 1 on the path, 2 placed
@@ -57,24 +59,13 @@ fn visit(
 }
 
 /// Every function a block calls, nested blocks included.
-fn called(block: &Block) -> Vec<Handle<Function>> {
+fn called(block: &mut Block) -> Vec<Handle<Function>> {
     let mut out = Vec::new();
-    for s in block.iter() {
-        match s {
-            Statement::Call { function, .. } => out.push(*function),
-            Statement::Block(b) => out.extend(called(b)),
-            Statement::If { accept, reject, .. } => {
-                out.extend(called(accept));
-                out.extend(called(reject));
-            }
-            Statement::Switch { cases, .. } => cases.iter().for_each(|c| out.extend(called(&c.body))),
-            Statement::Loop { body, continuing, .. } => {
-                out.extend(called(body));
-                out.extend(called(continuing));
-            }
-            _ => {}
+    visit_statements(block, &mut |s| {
+        if let Statement::Call { function, .. } = s {
+            out.push(*function);
         }
-    }
+    });
     out
 }
 
@@ -84,26 +75,11 @@ fn renumber_calls(f: &mut Function, map: &dyn Fn(Handle<Function>) -> Handle<Fun
             *h = map(*h);
         }
     }
-    renumber_block(&mut f.body, map);
-}
-
-fn renumber_block(block: &mut Block, map: &dyn Fn(Handle<Function>) -> Handle<Function>) {
-    for s in block.iter_mut() {
-        match s {
-            Statement::Call { function, .. } => *function = map(*function),
-            Statement::Block(b) => renumber_block(b, map),
-            Statement::If { accept, reject, .. } => {
-                renumber_block(accept, map);
-                renumber_block(reject, map);
-            }
-            Statement::Switch { cases, .. } => cases.iter_mut().for_each(|c| renumber_block(&mut c.body, map)),
-            Statement::Loop { body, continuing, .. } => {
-                renumber_block(body, map);
-                renumber_block(continuing, map);
-            }
-            _ => {}
+    visit_statements(&mut f.body, &mut |s| {
+        if let Statement::Call { function, .. } = s {
+            *function = map(*function);
         }
-    }
+    });
 }
 
 #[cfg(test)]

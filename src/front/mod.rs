@@ -42,6 +42,7 @@ pub mod plan;
 pub mod program;
 pub mod reference;
 pub mod rewrite;
+pub mod statements;
 pub mod syntax;
 pub mod through_spirv;
 pub mod units;

@@ -455,18 +455,8 @@ fn respan_block(block: &mut Block, f: &dyn Fn(Span) -> Span) {
         if let Some(span) = span {
             *span = f(*span);
         }
-        match statement {
-            Statement::Block(b) => respan_block(b, f),
-            Statement::If { accept, reject, .. } => {
-                respan_block(accept, f);
-                respan_block(reject, f);
-            }
-            Statement::Switch { cases, .. } => cases.iter_mut().for_each(|c| respan_block(&mut c.body, f)),
-            Statement::Loop { body, continuing, .. } => {
-                respan_block(body, f);
-                respan_block(continuing, f);
-            }
-            _ => {}
+        for b in crate::front::statements::child_blocks(statement) {
+            respan_block(b, f);
         }
     }
 }
