@@ -377,6 +377,7 @@ fn compile_own(
     diags.extend(syntaxes.iter().filter(|s| !s.has_main).map(no_main));
     let plan = plan::plan(&syntaxes);
     let mut compiled = Vec::new();
+    let lower = |r: &mut Rewritten| if options.doubles_as_floats { crate::front::doubles::as_floats(&mut r.text) } else { None };
     for s in syntaxes {
         let Some(naga_stage) = s.stage.naga() else {
             if s.stage != StageKind::Geometry {
@@ -395,7 +396,7 @@ fn compile_own(
                 let (mut rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
                 diags.extend(rdiags);
                 // The commands that draw take its doubles as floats too, as the other stages'.
-                if let Some(at) = options.doubles_as_floats.then(|| crate::front::doubles::as_floats(&mut rewritten.text)).flatten() {
+                if let Some(at) = lower(&mut rewritten) {
                     diags.push(doubles_as_floats(&s, rewritten.map.range_to_original(at)));
                 }
                 dump_rewrite(files, &s, &rewritten);
@@ -404,7 +405,6 @@ fn compile_own(
             compiled.push(CompiledStage { syntax: s, rewritten, naga: None, limitation: None, through_spirv: false });
             continue;
         };
-        let lower = |r: &mut Rewritten| if options.doubles_as_floats { crate::front::doubles::as_floats(&mut r.text) } else { None };
         let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
         let mut lowered = lower(&mut rewritten);
         let oversized = oversized_function(&s, files.text(s.file));

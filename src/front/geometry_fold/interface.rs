@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use crate::front::plan::location_slots;
-use crate::front::syntax::{dims_text, Global, GlslType, Interp, StageSyntax, Storage};
+use crate::front::syntax::{dims_text, matrix_shape, Global, GlslType, Interp, StageSyntax, Storage};
 
 /// One varying of the folded interface: a loose varying, or one member of a block.
 #[derive(Debug, Clone)]
@@ -41,7 +41,7 @@ impl Leaf {
     /// Each location it takes as (location, type of the `out` there, the part of the leaf
     /// written there): array elements in order, a matrix column by column.
     pub fn locations(&self) -> Vec<(u32, String, String)> {
-        let (columns, slot_type) = match matrix_columns(&self.ty.base) {
+        let (columns, slot_type) = match matrix_shape(&self.ty.base) {
             Some((cols, rows)) => (Some(cols), format!("vec{rows}")),
             None => (None, self.ty.base.clone()),
         };
@@ -80,23 +80,10 @@ pub(super) fn next_location(leaves: &[Leaf]) -> u32 {
     leaves.iter().map(|l| l.location + l.slots).max().unwrap_or(0)
 }
 
-/// (columns, rows) of a float matrix type.
-fn matrix_columns(base: &str) -> Option<(u32, u32)> {
-    let shape = base.strip_prefix("mat")?;
-    let digit = |c: Option<char>| c.and_then(|c| c.to_digit(10)).filter(|n| (2..=4).contains(n));
-    let mut chars = shape.chars();
-    let cols = digit(chars.next())?;
-    match (chars.next(), chars.next(), chars.next()) {
-        (None, _, _) => Some((cols, cols)),
-        (Some('x'), rows, None) => Some((cols, digit(rows)?)),
-        _ => None,
-    }
-}
-
 /// Whether a varying of this type can be made private and passed on: float and integer
 /// scalars, vectors, float matrices, and sized arrays of them.
 fn passable(ty: &GlslType) -> bool {
-    (ty.vector_components().is_some() || matrix_columns(&ty.base).is_some()) && ty.dims.iter().all(Option::is_some)
+    (ty.vector_components().is_some() || matrix_shape(&ty.base).is_some()) && ty.dims.iter().all(Option::is_some)
 }
 
 /// Declares a varying as private globals in `out` (a struct for a named block, one global
@@ -195,7 +182,7 @@ mod tests {
         assert!(!passable(&GlslType { base: "float".into(), dims: vec![None] }));
         assert!(!passable(&GlslType::scalar("Light")));
         assert!(!passable(&GlslType::scalar("bool")));
-        assert_eq!(matrix_columns("mat2x4"), Some((2, 4)));
-        assert_eq!(matrix_columns("mat5"), None);
+        assert_eq!(matrix_shape("mat2x4"), Some((2, 4)));
+        assert_eq!(matrix_shape("mat5"), None);
     }
 }

@@ -5,12 +5,10 @@
 //! rules refuse a 4- or 8-byte stride and naga a `bool` in a uniform buffer). No offset
 //! moves, so the bytes a host packs by std140 read the same.
 
-use std::collections::BTreeMap;
-use std::ops::Range;
-
 use super::Ctx;
 use crate::front::plan::{repr_for, Repr};
-use crate::front::syntax::{Global, GlslType, Member, Storage, Use};
+use crate::front::syntax::{word_occurrences, Global, GlslType, Member, Storage, Use};
+use std::collections::BTreeMap;
 
 /// How member type `ty` of a uniform block is stored (a representation with std140's own
 /// layout, or `Plain`).
@@ -47,8 +45,8 @@ impl Ctx<'_> {
                 }
                 // The type is written before the first name, after any qualifiers.
                 let from = first.qualifier_span.as_ref().map_or(first.field_span.start, |q| q.end);
-                let Some(at) = word_in(&s.text, from..first.span.start, &first.ty.base) else { continue };
-                self.edits.replace(at..at + first.ty.base.len(), bases[0].clone());
+                let Some(at) = word_occurrences(&s.text, from..first.span.start, &first.ty.base).into_iter().next() else { continue };
+                self.edits.replace(at, bases[0].clone());
             }
         }
     }
@@ -72,18 +70,8 @@ impl Ctx<'_> {
         };
         let Some(m) = b.members.iter().find(|m| m.name == member) else { return };
         let (_, repr) = stored(&m.ty);
-        self.read_repr(&repr, &m.ty.clone(), span, bracket);
+        self.read_repr(&repr, &m.ty, span, bracket);
     }
-}
-
-/// Where word `word` first stands in `text[range]`.
-fn word_in(text: &str, range: Range<usize>, word: &str) -> Option<usize> {
-    let is_ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
-    let within = text.get(range.clone())?;
-    within
-        .match_indices(word)
-        .map(|(i, _)| range.start + i)
-        .find(|&at| !text[..at].ends_with(is_ident) && !text[at + word.len()..].starts_with(is_ident))
 }
 
 /// The end of the `[…]` that follows `at` (spaces between allowed), if one does.
@@ -114,12 +102,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn brackets_and_words_are_found_where_written() {
+    fn brackets_and_type_words_are_found_where_written() {
         let text = "u.f [a[1] + 2].x";
         assert_eq!(bracket_after(text, 3), Some(text.find(".x").unwrap()));
         assert_eq!(bracket_after("u.f + 1", 3), None);
-        assert_eq!(word_in("highp float floats;", 0..19, "float"), Some(6));
-        assert_eq!(word_in("floats x;", 0..9, "float"), None);
+        assert_eq!(word_occurrences("highp float floats;", 0..19, "float"), vec![6..11]);
+        assert!(word_occurrences("floats x;", 0..9, "float").is_empty());
     }
 
     #[test]

@@ -41,7 +41,11 @@ impl Ctx<'_> {
 
     pub(super) fn insert_header(&mut self) {
         let s = self.s;
-        let at = self.header_position();
+        // Read once per stage (a 6,000-line stage of macros has thousands): where the header
+        // goes, and which names the block's members must not take (a uniform of another
+        // stage by a name this stage `#define`s before the block would be macro-expanded).
+        let defines = crate::front::conditionals::define_lines(&s.text);
+        let at = self.header_position(&defines);
         let mut h = String::new();
         if self.plan.has_block() {
             for name in &self.plan.block_structs {
@@ -65,7 +69,8 @@ impl Ctx<'_> {
                 *offset = offset.next_multiple_of(size) + size;
             };
             // Macros defined after the header do not reach the block's text.
-            let macros = defined_macros(&s.text[..at.min(s.text.len())]);
+            let macros: std::collections::HashSet<&str> =
+                defines.iter().filter(|(_, body)| body.start < at).map(|(name, _)| name.as_str()).collect();
             for (i, m) in self.plan.members.iter().enumerate() {
                 let is_struct = self.plan.struct_members.contains_key(&m.block_ty.base);
                 if is_struct {
@@ -152,26 +157,20 @@ impl Ctx<'_> {
     /// between (`uniform vec2 OutputSize;` … `#define OutputSize vec4(OutputSize, 1.0 /
     /// OutputSize)`, emulator packs): the member keeps its name, which the macro's body
     /// reads.
-    fn header_position(&self) -> usize {
+    /// `defines`: the stage's `#define` lines (name, body).
+    fn header_position(&self, defines: &[(String, std::ops::Range<usize>)]) -> usize {
         let s = self.s;
         let structs_end =
             self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).map(|d| line_end(&s.text, d.span.end)).max().unwrap_or(0);
         let first = s.first_function.unwrap_or(s.text.len());
         let at = self.header_before.map_or(first, |b| b.min(first)).max(structs_end);
-        let member_define = crate::front::conditionals::define_lines(&s.text)
-            .into_iter()
+        let member_define = defines
+            .iter()
             .filter(|(name, _)| self.plan.member(name).is_some())
             .map(|(_, body)| s.text[..body.start].rfind('\n').map_or(0, |n| n + 1))
             .find(|&line| structs_end <= line && line < at);
         member_define.unwrap_or(at)
     }
-}
-
-/// The names `text` `#define`s (a uniform of another stage by such a name would be
-/// macro-expanded in this stage's copy of the shared block). Read once per stage: a
-/// 6,000-line stage of macros has thousands of them.
-fn defined_macros(text: &str) -> std::collections::HashSet<String> {
-    crate::front::conditionals::define_lines(text).into_iter().map(|(n, _)| n).collect()
 }
 
 fn line_end(text: &str, at: usize) -> usize {

@@ -7,10 +7,9 @@
 
 use std::fmt::Write;
 
-use super::varyings::matrix_shape;
 use super::Ctx;
 use crate::front::plan::location_slots;
-use crate::front::syntax::{dims_text, Global, Member, Storage};
+use crate::front::syntax::{dims_text, matrix_shape, Global, Member, Storage};
 use crate::stage::StageKind;
 
 /// The member of an interface block that naga cannot take as declared: an array member

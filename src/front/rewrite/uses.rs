@@ -172,10 +172,10 @@ impl Ctx<'_> {
     }
 
     fn member_use(&mut self, u: &crate::front::syntax::Use, name: &str) {
-        let Some(m) = self.plan.member(name) else { return };
+        let plan = self.plan;
+        let Some(m) = plan.member(name) else { return };
         let bracket = u.index.as_ref().map(|(bracket, _, _)| bracket.clone());
-        let (repr, user_ty) = (m.repr.clone(), m.user_ty.clone());
-        self.read_repr(&repr, &user_ty, u.span.clone(), bracket);
+        self.read_repr(&m.repr, &m.user_ty, u.span.clone(), bracket);
     }
 
     /// A use of a uniform stored as `repr` read back as its declared type `user_ty`: `span`

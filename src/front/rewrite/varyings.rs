@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use super::Ctx;
 use crate::front::plan::location_slots;
-use crate::front::syntax::{dims_text, Referent, StageSyntax, Storage};
+use crate::front::syntax::{dims_text, matrix_shape, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -174,17 +174,6 @@ impl Ctx<'_> {
             self.legacy(span.clone(), what, word); // same versions forbid attribute/varying
             self.edits.replace(span.clone(), word);
         }
-    }
-}
-
-/// (columns, rows) of a matrix type name.
-pub(super) fn matrix_shape(base: &str) -> Option<(u32, u32)> {
-    let rest = base.strip_prefix("mat")?;
-    let d = |c: u8| (b'2'..=b'4').contains(&c).then(|| u32::from(c - b'0'));
-    match rest.as_bytes() {
-        [n] => d(*n).map(|n| (n, n)),
-        [c, b'x', r] => Some((d(*c)?, d(*r)?)),
-        _ => None,
     }
 }
 

@@ -21,7 +21,7 @@ pub use model::{
     BlockInfo, Call, DefaultDecl, DoWhileContinue, Function, Global, LazyLogic, Member, Param, Referent, StageSyntax, StructDef, Swizzle,
     Use,
 };
-pub use nodes::expr_text;
+pub use nodes::{expr_text, word_occurrences};
 pub use parse::analyse;
 pub(crate) use parse::vulkan_source;
-pub use types::{dims_text, sampler_parts, GlslType, Interp, Storage};
+pub use types::{dims_text, matrix_shape, sampler_parts, GlslType, Interp, Storage};

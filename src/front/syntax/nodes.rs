@@ -15,3 +15,15 @@ pub fn expr_text(e: &ast::Expr) -> String {
     let _ = show_expr(&mut out, e, &mut FormattingState::default());
     out
 }
+
+/// Where `name` stands as a whole identifier in `text[within]`.
+pub fn word_occurrences(text: &str, within: Range<usize>, name: &str) -> Vec<Range<usize>> {
+    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let bytes = text.as_bytes();
+    let Some(region) = text.get(within.clone()) else { return Vec::new() };
+    region
+        .match_indices(name)
+        .map(|(i, _)| within.start + i..within.start + i + name.len())
+        .filter(|r| (r.start == 0 || !is_ident(bytes[r.start - 1])) && (r.end >= bytes.len() || !is_ident(bytes[r.end])))
+        .collect()
+}

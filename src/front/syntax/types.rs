@@ -104,6 +104,17 @@ impl std::fmt::Display for GlslType {
     }
 }
 
+/// (columns, rows) of a float matrix type name (`mat3` (3, 3), `mat2x4` (2, 4)).
+pub fn matrix_shape(base: &str) -> Option<(u32, u32)> {
+    let rest = base.strip_prefix("mat")?;
+    let d = |c: u8| (b'2'..=b'4').contains(&c).then(|| u32::from(c - b'0'));
+    match rest.as_bytes() {
+        [n] => d(*n).map(|n| (n, n)),
+        [c, b'x', r] => Some((d(*c)?, d(*r)?)),
+        _ => None,
+    }
+}
+
 /// `[4][2]` for a type's dimensions.
 pub fn dims_text(ty: &GlslType) -> String {
     ty.dims.iter().map(|d| d.map_or("[]".to_string(), |n| format!("[{n}]"))).collect()

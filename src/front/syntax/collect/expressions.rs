@@ -8,7 +8,7 @@ use glsl_lang::ast;
 
 use super::Collector;
 use crate::front::syntax::model::{Call, Referent, Swizzle, Use};
-use crate::front::syntax::nodes::span_of;
+use crate::front::syntax::nodes::{span_of, word_occurrences};
 
 impl Collector<'_> {
     pub(super) fn initializer(&mut self, i: &ast::Initializer) {
@@ -229,16 +229,4 @@ impl Collector<'_> {
 /// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
 fn macro_body_occurrences(text: &str, name: &str) -> Vec<Range<usize>> {
     crate::front::conditionals::define_lines(text).into_iter().flat_map(|(_, body)| word_occurrences(text, body, name)).collect()
-}
-
-/// Where `name` stands as a whole identifier in `text[within]`.
-fn word_occurrences(text: &str, within: Range<usize>, name: &str) -> Vec<Range<usize>> {
-    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
-    let bytes = text.as_bytes();
-    let Some(region) = text.get(within.clone()) else { return Vec::new() };
-    region
-        .match_indices(name)
-        .map(|(i, _)| within.start + i..within.start + i + name.len())
-        .filter(|r| (r.start == 0 || !is_ident(bytes[r.start - 1])) && (r.end >= bytes.len() || !is_ident(bytes[r.end])))
-        .collect()
 }
