@@ -341,6 +341,18 @@ pub fn has_errors(diags: &[Diagnostic]) -> bool {
     diags.iter().any(Diagnostic::is_error)
 }
 
+/// Keeps the first of each repeated diagnostic, in order (passes sharing a stage file, or
+/// a program checked once per pass, would report the same thing once each).
+pub fn dedup(diags: &mut Vec<Diagnostic>) {
+    let mut seen: Vec<Diagnostic> = Vec::new();
+    for d in diags.drain(..) {
+        if !seen.contains(&d) {
+            seen.push(d);
+        }
+    }
+    *diags = seen;
+}
+
 /// Number of diagnostics of the given severity.
 pub fn count(diags: &[Diagnostic], severity: Severity) -> usize {
     diags.iter().filter(|d| d.severity() == severity).count()

@@ -222,7 +222,7 @@ fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, V
             if let Some(effect) = &l.effect {
                 (units, plan) = check_passes(effect, passes, files, options, &mut diags);
             }
-            dedup(&mut diags);
+            crate::diag::dedup(&mut diags);
         }
     }
     let failed = diags.iter().any(Diagnostic::is_error);
@@ -360,17 +360,6 @@ fn drop_reference_repeats(files: &Files, diags: &mut Vec<Diagnostic>) {
     let own: Vec<_> =
         diags.iter().filter(|d| d.is_error() && d.code != Code::ReferenceRejects).filter_map(|d| files.primary_line(d)).collect();
     diags.retain(|d| d.code != Code::ReferenceRejects || files.primary_line(d).is_none_or(|l| !own.contains(&l)));
-}
-
-/// Drops repeated diagnostics (two passes sharing a stage file report its findings once).
-fn dedup(diags: &mut Vec<Diagnostic>) {
-    let mut seen: Vec<Diagnostic> = Vec::new();
-    for d in diags.drain(..) {
-        if !seen.contains(&d) {
-            seen.push(d);
-        }
-    }
-    *diags = seen;
 }
 
 /// Checks every pass of a multi-pass effect, then the graph they form: a unit per pass that

@@ -182,12 +182,7 @@ impl PassGraph {
                     return Err(diags);
                 }
             };
-            // Passes sharing a stage file would report the same guess once each.
-            for w in scene.warnings.drain(..) {
-                if !warnings.contains(&w) {
-                    warnings.push(w);
-                }
-            }
+            warnings.append(&mut scene.warnings);
             let color_views = decl.targets.iter().zip(attached).map(|(t, on)| if *on { view_of(&t.name) } else { None }).collect();
             let color_targets = decl.targets.iter().zip(attached).map(|(t, on)| on.then(|| t.name.clone())).collect();
             passes.push(RunningPass {
@@ -223,6 +218,8 @@ impl PassGraph {
         } else {
             Vec::new()
         };
+        // Passes sharing a stage file would report the same guess once each.
+        crate::diag::dedup(&mut warnings);
         Ok(PassGraph {
             name: effect.name.clone(),
             plan,

@@ -36,16 +36,12 @@ pub fn warnings(c: &Checked, gl_defaults: bool) -> Vec<Diagnostic> {
             overrides: if multi_pass.is_some() { &[] } else { &c.values },
             gl_defaults,
         };
-        let warnings = match plan(&input) {
-            Ok(p) => p.warnings,
-            Err(errors) => errors,
-        };
-        // Passes sharing a stage file would report the same guess once each.
-        for w in warnings {
-            if !out.contains(&w) {
-                out.push(w);
-            }
+        match plan(&input) {
+            Ok(p) => out.extend(p.warnings),
+            Err(errors) => out.extend(errors),
         }
     }
+    // Passes sharing a stage file would report the same guess once each.
+    crate::diag::dedup(&mut out);
     out
 }
