@@ -1,0 +1,3 @@
+#![allow(dead_code)]
+
+include!(concat!(env!("OUT_DIR"), "/keywords.rs"));
