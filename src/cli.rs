@@ -10,7 +10,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::back::{Target, TranslateOptions};
 use crate::check::InputSpec;
-use crate::config::{Config, TargetEnv};
+use crate::config::{Config, TargetEnv, VulkanVersion};
 use crate::front::program::FrontOptions;
 use crate::manifest::{MAX_FRAMES, MAX_FRAME_SIDE};
 use crate::render::command::TimeStep;
@@ -158,8 +158,20 @@ pub enum TargetEnvArg {
     Auto,
     /// OpenGL GLSL.
     Opengl,
-    /// Vulkan GLSL (as glslangValidator -V).
+    /// Vulkan GLSL (as glslangValidator -V): Vulkan 1.0, SPIR-V 1.0 rules.
     Vulkan,
+    /// Vulkan GLSL for Vulkan 1.0 (SPIR-V 1.0).
+    #[value(name = "vulkan1.0")]
+    Vulkan1_0,
+    /// Vulkan GLSL for Vulkan 1.1 (SPIR-V 1.3: subgroup operations).
+    #[value(name = "vulkan1.1")]
+    Vulkan1_1,
+    /// Vulkan GLSL for Vulkan 1.2 (SPIR-V 1.5).
+    #[value(name = "vulkan1.2")]
+    Vulkan1_2,
+    /// Vulkan GLSL for Vulkan 1.3 (SPIR-V 1.6).
+    #[value(name = "vulkan1.3")]
+    Vulkan1_3,
 }
 
 #[derive(Debug, clap::Args)]
@@ -474,7 +486,10 @@ impl CommonArgs {
             None => config.target_env,
             Some(TargetEnvArg::Auto) => TargetEnv::Auto,
             Some(TargetEnvArg::Opengl) => TargetEnv::OpenGl,
-            Some(TargetEnvArg::Vulkan) => TargetEnv::Vulkan,
+            Some(TargetEnvArg::Vulkan | TargetEnvArg::Vulkan1_0) => TargetEnv::Vulkan(VulkanVersion::V1_0),
+            Some(TargetEnvArg::Vulkan1_1) => TargetEnv::Vulkan(VulkanVersion::V1_1),
+            Some(TargetEnvArg::Vulkan1_2) => TargetEnv::Vulkan(VulkanVersion::V1_2),
+            Some(TargetEnvArg::Vulkan1_3) => TargetEnv::Vulkan(VulkanVersion::V1_3),
         };
         InputSpec {
             paths: self.inputs.clone(),
@@ -508,14 +523,14 @@ impl TranslateArgs {
         }
         targets.sort();
         targets.dedup();
+        // 64-bit floats are kept when every target has them (SPIR-V, HLSL); otherwise they
+        // are taken as 32-bit ones, with W0131 (WGSL, MSL and GLSL ES have none).
+        let float64 = targets.iter().all(|t| matches!(t, Target::Spv | Target::Spvasm | Target::Hlsl | Target::Reflect | Target::Ir));
+        let mut input = self.common.input_spec(config);
+        input.front.doubles_as_floats = !float64;
         translate::Request {
-            input: self.common.input_spec(config),
-            // 64-bit floats are kept when every target has them (SPIR-V, HLSL).
-            back: TranslateOptions {
-                gl_depth: !self.keep_gl_depth,
-                float64: targets.iter().all(|t| matches!(t, Target::Spv | Target::Spvasm | Target::Hlsl | Target::Reflect | Target::Ir)),
-                ..TranslateOptions::default()
-            },
+            input,
+            back: TranslateOptions { gl_depth: !self.keep_gl_depth, float64, ..TranslateOptions::default() },
             targets,
             out: self.out.clone(),
         }

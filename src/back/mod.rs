@@ -146,7 +146,11 @@ pub fn translate(
     })?;
     fixes::normalize_interpolation(&mut module);
     fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
-    fixes::adjust_clip_position(&mut module, options.gl_depth, options.flip_y);
+    // Vulkan GLSL's clip space has WebGPU's depth range already and its y axis pointing
+    // down: y is negated (as naga's SPIR-V front does unless told to keep the coordinate
+    // space) and depth kept; the SPIR-V writer turns y back for Vulkan.
+    let vulkan = program.stages.iter().any(|s| s.syntax.vulkan);
+    fixes::adjust_clip_position(&mut module, options.gl_depth && !vulkan, options.flip_y != vulkan);
     if options.widen_outputs {
         fixes::widen_fragment_outputs(&mut module);
     }
@@ -182,7 +186,7 @@ pub fn translate(
     fixes::narrow_storage_image_access(&mut module);
     let info = validator()
         .validate(&module)
-        .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", e.as_inner()))])?;
+        .map_err(|e| vec![internal_error(file, format!("the translated module does not validate: {}", with_causes(e.as_inner())))])?;
     let reflection = reflect::reflect_program(name, &module, program, effect, left_out);
     Ok(Translation {
         name: name.to_string(),
@@ -192,6 +196,18 @@ pub fn translate(
         reflection,
         file: program.stages[0].syntax.file,
     })
+}
+
+/// An error and its chain of causes, `: `-separated (naga's "global variable is invalid"
+/// says why only in its source).
+fn with_causes(e: &dyn std::error::Error) -> String {
+    let mut text = e.to_string();
+    let mut source = e.source();
+    while let Some(s) = source {
+        text.push_str(&format!(": {s}"));
+        source = s.source();
+    }
+    text
 }
 
 /// Each stage's validated module, fixed per stage, in pipeline order (the vertex stage's

@@ -328,6 +328,10 @@ fn relaid_struct(module: &mut Module, name: Option<String>, members: Vec<StructM
     let mut layouter = naga::proc::Layouter::default();
     layouter.update(module.to_ctx()).expect("types of a validated module lay out");
     let filler_ty = module.types.insert(Type { name: None, inner: TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED);
+    let vec4_ty = module.types.insert(
+        Type { name: None, inner: TypeInner::Vector { size: naga::VectorSize::Quad, scalar: naga::Scalar::F32 } },
+        naga::Span::UNDEFINED,
+    );
     let mut out: Vec<StructMember> = Vec::new();
     let mut end = 0u32;
     let mut after_struct = 0u32;
@@ -340,8 +344,17 @@ fn relaid_struct(module: &mut Module, name: Option<String>, members: Vec<StructM
         let aggregate = matches!(module.types[m.ty].inner, TypeInner::Struct { .. } | TypeInner::Array { .. });
         let required = if uniform && aggregate { natural.max(16) } else { natural };
         max_align = max_align.max(natural);
+        if uniform && end < after_struct {
+            // Every member after a struct starts `roundUp(16, size)` past it, fillers too:
+            // one `vec4` (16-aligned) lands exactly there, as the front's filler does.
+            let offset = end.next_multiple_of(16);
+            out.push(StructMember { name: Some(format!("effectc_pad{fillers}")), ty: vec4_ty, binding: None, offset });
+            fillers += 1;
+            end = offset + 16;
+            max_align = max_align.max(16);
+        }
         if uniform {
-            while !end.next_multiple_of(natural).is_multiple_of(required) || end.next_multiple_of(natural) < after_struct {
+            while !end.next_multiple_of(natural).is_multiple_of(required) {
                 out.push(StructMember { name: Some(format!("effectc_pad{fillers}")), ty: filler_ty, binding: None, offset: end });
                 fillers += 1;
                 end += 4;

@@ -4,7 +4,7 @@
 //! ```toml
 //! include = ["shaders/**"]          # only these paths (relative to this file's directory)
 //! exclude = ["third_party/**"]      # never these
-//! target-env = "opengl"             # GLSL dialect: "auto" (default), "opengl", "vulkan"
+//! target-env = "opengl"             # GLSL dialect: "auto" (default), "opengl", "vulkan" (1.0), "vulkan1.0"–"vulkan1.3"
 //! strict = true                     # like --strict
 //! deny-warnings = true              # like --deny-warnings
 //! allow = ["W0201"]                 # silenced everywhere
@@ -53,7 +53,31 @@ pub enum TargetEnv {
     #[default]
     Auto,
     OpenGl,
-    Vulkan,
+    /// Vulkan GLSL for this Vulkan version (glslangValidator's `--target-env vulkan1.x`).
+    Vulkan(VulkanVersion),
+}
+
+/// The Vulkan version Vulkan GLSL is compiled for: it decides the SPIR-V version whose rules
+/// apply (subgroup operations need SPIR-V 1.3, Vulkan 1.1). `glslangValidator -V` and an
+/// auto-detected Vulkan stage use 1.0.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord)]
+pub enum VulkanVersion {
+    #[default]
+    V1_0,
+    V1_1,
+    V1_2,
+    V1_3,
+}
+
+impl VulkanVersion {
+    /// Every version with the name `--target-env` and `effectc.toml` give it.
+    pub const NAMED: [(&'static str, VulkanVersion); 5] = [
+        ("vulkan", VulkanVersion::V1_0),
+        ("vulkan1.0", VulkanVersion::V1_0),
+        ("vulkan1.1", VulkanVersion::V1_1),
+        ("vulkan1.2", VulkanVersion::V1_2),
+        ("vulkan1.3", VulkanVersion::V1_3),
+    ];
 }
 
 /// Which paths a run reads, the stage of extensions effectc does not know, and the
@@ -250,7 +274,7 @@ mod tests {
         let (c, diags) = parsed(
             "target-env = \"vulkan\"\nstrict = true\ndeny-warnings = true\nallow = [\"W0201\", \"w0718\", \"E0201\"]\ndeny = [\"W0717\"]\n[stages]\nglsl = \"fragment\"\nshd = \"pixel\"\n",
         );
-        assert_eq!(c.target_env, TargetEnv::Vulkan);
+        assert_eq!(c.target_env, TargetEnv::Vulkan(VulkanVersion::V1_0));
         assert!(c.strict && c.deny_warnings);
         assert_eq!(c.policy.allow, [Code::UnreadOutput]);
         assert_eq!(c.policy.deny, [Code::HazardTrig]);

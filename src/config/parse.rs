@@ -140,12 +140,14 @@ impl Walk<'_> {
         match s.get_ref().as_str() {
             "auto" => Some(TargetEnv::Auto),
             "opengl" => Some(TargetEnv::OpenGl),
-            "vulkan" => Some(TargetEnv::Vulkan),
-            other => {
-                let d = self.bad(s.span(), format!("unknown target-env `{other}`"), "not a dialect");
-                self.diags.push(d.with_help("one of: auto, opengl, vulkan"));
-                None
-            }
+            other => match crate::config::VulkanVersion::NAMED.iter().find(|(n, _)| *n == other) {
+                Some((_, v)) => Some(TargetEnv::Vulkan(*v)),
+                None => {
+                    let d = self.bad(s.span(), format!("unknown target-env `{other}`"), "not a dialect");
+                    self.diags.push(d.with_help("one of: auto, opengl, vulkan, vulkan1.0, vulkan1.1, vulkan1.2, vulkan1.3"));
+                    None
+                }
+            },
         }
     }
 

@@ -158,7 +158,7 @@ codes! {
     NoProgramFound => "W0006", "a folder with no program in it: nothing was checked",
     RemovedInVersion => "W0120", "construct removed from the declared version",
     UniformInitializerIgnored => "W0130", "uniform initializer ignored",
-    DoublesAsFloats => "W0131", "64-bit floats drawn as 32-bit (WebGPU has no f64)",
+    DoublesAsFloats => "W0131", "64-bit floats taken as 32-bit (WebGPU, WGSL, MSL and GLSL ES have no f64)",
     RewriteFailed => "W0190", "effectc could not rewrite an expression for naga",
     UnreadOutput => "W0201", "output never read by the next stage",
     UnusedInput => "W0202", "unread input with no producer",

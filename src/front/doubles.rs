@@ -1,7 +1,7 @@
-//! 64-bit floats drawn as 32-bit ones, for the commands that draw (`render`, `verify`,
-//! `bench`, `stress`): WebGPU has no `f64`, so a program with `double`s is drawn at f32
-//! precision, with warning W0131, rather than not at all. `translate` never does this (it
-//! keeps doubles for SPIR-V and HLSL and refuses WGSL, E0306).
+//! 64-bit floats taken as 32-bit ones, for the commands that draw (`render`, `verify`,
+//! `bench`, `stress`) and for `translate` to targets without them (WGSL, MSL, GLSL ES):
+//! a program with `double`s is drawn and translated at f32 precision, with warning W0131,
+//! rather than not at all. `translate` to SPIR-V and HLSL alone keeps the doubles.
 //!
 //! Applied to the rewritten 4.50 text just before naga reads it, byte for byte, so the
 //! map back to the user's file holds: `double` → `float `, `dvecN` → `vecN `, `dmatN[xM]`
@@ -9,11 +9,11 @@
 
 use std::ops::Range;
 
-/// Lowers `text` in place; the first replaced span (in `text`), if any.
-pub fn as_floats(text: &mut String) -> Option<Range<usize>> {
+/// Lowers `text` in place; the replaced spans (in `text`), in order.
+pub fn as_floats(text: &mut String) -> Vec<Range<usize>> {
     let clean = crate::front::version::blank_comments(text);
     let mut bytes = std::mem::take(text).into_bytes();
-    let mut first = None;
+    let mut replaced = Vec::new();
     let mut i = 0;
     while i < clean.len() {
         let c = clean[i];
@@ -29,16 +29,16 @@ pub fn as_floats(text: &mut String) -> Option<Range<usize>> {
             if word.len() > 2 && (word.ends_with(b"lf") || word.ends_with(b"LF")) {
                 bytes[end - 2] = b' ';
                 bytes[end - 1] = b' ';
-                first.get_or_insert(i..end);
+                replaced.push(i..end);
             }
         } else if let Some(replacement) = float_type(word) {
             bytes[i..end].copy_from_slice(&replacement);
-            first.get_or_insert(i..end);
+            replaced.push(i..end);
         }
         i = end.max(i + 1);
     }
     *text = String::from_utf8(bytes).expect("ASCII replacements keep UTF-8");
-    first
+    replaced
 }
 
 /// The 32-bit type of a 64-bit one, padded to its length: `dvec3` → `vec3 `.
@@ -75,11 +75,12 @@ mod tests {
     fn doubles_become_floats_byte_for_byte() {
         let mut t = "uniform dvec4 x; // double in a comment\ndouble s = 1.5lf * 2.0LF; dmat2x3 m; float mydouble; int d2;\n".to_string();
         let before = t.len();
-        let first = as_floats(&mut t).unwrap();
+        let replaced = as_floats(&mut t);
         assert_eq!(t.len(), before);
-        assert_eq!(&t[first], "vec4 ");
+        assert_eq!(replaced.len(), 5);
+        assert_eq!(&t[replaced[0].clone()], "vec4 ");
         assert_eq!(t, "uniform vec4  x; // double in a comment\nfloat  s = 1.5   * 2.0  ; mat2x3  m; float mydouble; int d2;\n");
         let mut plain = "vec4 a = vec4(1.0);".to_string();
-        assert_eq!(as_floats(&mut plain), None);
+        assert!(as_floats(&mut plain).is_empty());
     }
 }

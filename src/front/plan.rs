@@ -51,8 +51,12 @@ pub struct TextureBinding {
     /// The texture global's name in the rewritten code (the user's name, or
     /// `struct_member` / `array_index` for flattened ones).
     pub name: String,
-    /// The GLSL expression the user wrote to reach it (`tex`, `material.diffuse`, `maps[2]`).
+    /// The GLSL expression that reaches it in the stage's text as effectc reads it (`tex`,
+    /// `material.diffuse`, `maps[2]`; keywords of newer versions renamed).
     pub user_path: String,
+    /// `user_path` as the user wrote it: what the manifest, reflection and the GL driver
+    /// call it (OpenGL GLSL's `uniform sampler2D sampler;` is `sample_` to naga).
+    pub user_name: String,
     pub user_ty: String,
     pub texture_ty: &'static str,
     pub sampler_ty: &'static str,
@@ -88,6 +92,8 @@ pub struct Plan {
     /// The compatibility profile's built-ins the program uses ([`compat`]): their state is
     /// in `members`, their varyings in `varyings`.
     pub compat: compat::ProgramCompat,
+    /// The program's doubles become floats after the rewrite ([`repr_for`]).
+    pub doubles_as_floats: bool,
 }
 
 /// Name of the filler member of [`Plan::padded_structs`].
@@ -124,7 +130,12 @@ pub fn location_slots(ty: &GlslType, stage: &StageSyntax) -> u32 {
     per * ty.dims.iter().map(|d| d.unwrap_or(1)).product::<u32>()
 }
 
-pub(crate) fn repr_for(ty: &GlslType) -> (GlslType, Repr) {
+/// How a uniform of type `ty` is stored in a uniform buffer WGSL accepts, with std140's
+/// bytes; `doubles_as_floats`: the program's doubles become floats after the rewrite
+/// ([`doubles`](crate::front::doubles)), so a `double`/`dvec2` array pads to a `dvec4`
+/// (a `vec4` once lowered), where with real doubles a `double` array pads to `dvec2`
+/// (std140's 16-byte stride) and a `dvec2` array is already strided so.
+pub(crate) fn repr_for(ty: &GlslType, doubles_as_floats: bool) -> (GlslType, Repr) {
     let base = ty.base.as_str();
     if !ty.is_array() {
         return match base {
@@ -150,9 +161,29 @@ pub(crate) fn repr_for(ty: &GlslType) -> (GlslType, Repr) {
         "vec2" => padded("vec4", "xy", false),
         "ivec2" => padded("ivec4", "xy", false),
         "uvec2" => padded("uvec4", "xy", false),
+        "double" => padded(if doubles_as_floats { "dvec4" } else { "dvec2" }, "x", false),
+        "dvec2" if doubles_as_floats => padded("dvec4", "xy", false),
         "mat2" | "mat2x2" => (GlslType { base: "vec4".into(), dims: ty.dims.clone() }, Repr::Mat2Array),
         _ => (ty.clone(), Repr::Plain),
     }
+}
+
+/// A path (`material.diffuse`, `maps[2]`) with each identifier spelled as the user wrote it.
+fn spelled(s: &StageSyntax, path: &str) -> String {
+    let mut out = String::new();
+    let mut word = String::new();
+    for c in path.chars().chain(std::iter::once('\0')) {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+            continue;
+        }
+        out.push_str(s.original_name(&word));
+        word.clear();
+        if c != '\0' {
+            out.push(c);
+        }
+    }
+    out
 }
 
 /// A name not used by any global of any stage.
@@ -173,9 +204,10 @@ pub fn is_unblocked_opaque(base: &str) -> bool {
     base == "atomic_uint" || base == "sampler" || base == "samplerShadow" || of_kind(base) || integer
 }
 
-/// Builds the plan for a program (stages in pipeline order).
-pub fn plan(stages: &[StageSyntax]) -> Plan {
-    let mut plan = Plan::default();
+/// Builds the plan for a program (stages in pipeline order); `doubles_as_floats` as in
+/// [`repr_for`].
+pub fn plan(stages: &[StageSyntax], doubles_as_floats: bool) -> Plan {
+    let mut plan = Plan { doubles_as_floats, ..Plan::default() };
     let mut taken: Vec<String> = Vec::new();
     // Uniforms, in stage order then declaration order.
     for s in stages {
@@ -215,6 +247,7 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
                     taken.push(sampler_name.clone());
                     plan.textures.push(TextureBinding {
                         name,
+                        user_name: spelled(s, &user_path),
                         user_path,
                         user_ty: g.ty.base.clone(),
                         texture_ty: tex,
@@ -239,9 +272,11 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
                         taken.push(name.clone());
                         let sampler_name = fresh(format!("{name}_sampler"), stages, &taken);
                         taken.push(sampler_name.clone());
+                        let user_path = format!("{path}.{}", m.name);
                         plan.textures.push(TextureBinding {
                             name,
-                            user_path: format!("{path}.{}", m.name),
+                            user_name: spelled(s, &user_path),
+                            user_path,
                             user_ty: m.ty.base.clone(),
                             texture_ty: tex,
                             sampler_ty: samp,
@@ -253,7 +288,7 @@ pub fn plan(stages: &[StageSyntax]) -> Plan {
                 }
                 need_struct(&g.ty.base, s, &mut plan.block_structs);
             }
-            let (block_ty, repr) = repr_for(&g.ty);
+            let (block_ty, repr) = repr_for(&g.ty, doubles_as_floats);
             plan.push_member(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
         }
     }
@@ -289,8 +324,13 @@ fn number_bindings(plan: &mut Plan, stages: &[StageSyntax]) {
     // handed out here skip theirs.
     let reserved: std::collections::BTreeSet<u32> = stages
         .iter()
-        .flat_map(|s| &s.globals)
-        .filter(|g| g.layout.iter().any(|(k, v)| k == "set" && *v == Some(0)))
+        .flat_map(|s| s.globals.iter().map(move |g| (s, g)))
+        // Vulkan GLSL without a set means set 0.
+        .filter(|(s, g)| match g.layout.iter().find(|(k, _)| k == "set") {
+            Some((_, v)) => *v == Some(0),
+            None => s.vulkan,
+        })
+        .map(|(_, g)| g)
         .filter_map(|g| g.layout.iter().find(|(k, _)| k == "binding").and_then(|(_, v)| *v))
         .filter_map(|b| u32::try_from(b).ok())
         .collect();
@@ -318,8 +358,13 @@ fn number_bindings(plan: &mut Plan, stages: &[StageSyntax]) {
 pub fn first_free_binding(plan: &Plan, stages: &[StageSyntax]) -> u32 {
     let declared = stages
         .iter()
-        .flat_map(|s| &s.globals)
-        .filter(|g| g.layout.iter().any(|(k, v)| k == "set" && *v == Some(0)))
+        .flat_map(|s| s.globals.iter().map(move |g| (s, g)))
+        // Vulkan GLSL without a set means set 0.
+        .filter(|(s, g)| match g.layout.iter().find(|(k, _)| k == "set") {
+            Some((_, v)) => *v == Some(0),
+            None => s.vulkan,
+        })
+        .map(|(_, g)| g)
         .filter_map(|g| g.layout.iter().find(|(k, _)| k == "binding").and_then(|(_, v)| *v))
         .filter_map(|b| u32::try_from(b).ok());
     let planned = plan.textures.iter().flat_map(|t| [t.texture_binding, t.sampler_binding]).chain(plan.user_blocks.values().copied());

@@ -28,8 +28,8 @@ pub struct FrontOptions {
     pub strict: bool,
     /// The GLSL dialect (OpenGL or Vulkan), or told by the text.
     pub env: crate::config::TargetEnv,
-    /// Draw 64-bit floats as 32-bit ones ([`doubles`](crate::front::doubles)): the
-    /// commands that draw on WebGPU, which has no f64.
+    /// Take 64-bit floats as 32-bit ones ([`doubles`](crate::front::doubles)): the
+    /// commands that draw on WebGPU, and translation to targets without f64.
     pub doubles_as_floats: bool,
     /// How much of a stage effectc reads and models (E0107 beyond).
     pub limits: crate::limits::Limits,
@@ -375,9 +375,9 @@ fn compile_own(
         return None;
     }
     diags.extend(syntaxes.iter().filter(|s| !s.has_main).map(no_main));
-    let plan = plan::plan(&syntaxes);
+    let plan = plan::plan(&syntaxes, options.doubles_as_floats);
     let mut compiled = Vec::new();
-    let lower = |r: &mut Rewritten| if options.doubles_as_floats { crate::front::doubles::as_floats(&mut r.text) } else { None };
+    let lower = |s: &StageSyntax, r: &mut Rewritten| if options.doubles_as_floats { doubles_in(s, r) } else { None };
     for s in syntaxes {
         let Some(naga_stage) = s.stage.naga() else {
             if s.stage != StageKind::Geometry {
@@ -395,9 +395,9 @@ fn compile_own(
             let rewritten = (s.stage == StageKind::Geometry).then(|| {
                 let (mut rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
                 diags.extend(rdiags);
-                // The commands that draw take its doubles as floats too, as the other stages'.
-                if let Some(at) = lower(&mut rewritten) {
-                    diags.push(doubles_as_floats(&s, rewritten.map.range_to_original(at)));
+                // Its doubles are taken as floats too, as the other stages'.
+                if let Some(at) = lower(&s, &mut rewritten) {
+                    diags.push(doubles_as_floats(&s, at));
                 }
                 dump_rewrite(files, &s, &rewritten);
                 rewritten
@@ -406,7 +406,7 @@ fn compile_own(
             continue;
         };
         let (mut rewritten, mut rdiags) = rewrite::rewrite(&s, &plan, options.strict);
-        let mut lowered = lower(&mut rewritten);
+        let mut lowered = lower(&s, &mut rewritten);
         let oversized = oversized_function(&s, files.text(s.file));
         let run = |rewritten: &Rewritten, rdiags: &[Diagnostic]| match &rewritten.limitation {
             _ if rdiags.iter().any(Diagnostic::is_error) || !s.has_main => None,
@@ -428,14 +428,14 @@ fn compile_own(
                 }
                 scalar.extend(new);
                 (rewritten, rdiags) = rewrite::rewrite_with(&s, &plan, options.strict, &scalar);
-                lowered = lower(&mut rewritten);
+                lowered = lower(&s, &mut rewritten);
                 outcome = run(&rewritten, &rdiags);
             }
         }
         dump_rewrite(files, &s, &rewritten);
         diags.extend(rdiags);
         if let Some(at) = lowered {
-            diags.push(doubles_as_floats(&s, rewritten.map.range_to_original(at)));
+            diags.push(doubles_as_floats(&s, at));
         }
         let mut limitation = None;
         let naga = match outcome {
@@ -502,14 +502,25 @@ fn oversized_function(s: &StageSyntax, text: &str) -> Option<Limitation> {
     })
 }
 
-/// W0131 at the first double the stage draws as a float ([`doubles`](crate::front::doubles)).
+/// Takes the rewritten stage's doubles as floats ([`doubles`](crate::front::doubles)); where
+/// W0131 points: the first double the stage's own text writes (a uniform's declaration moves
+/// into the shared block). A stage that writes none gets none: the shared block's doubles
+/// are reported in the stage that declares them.
+fn doubles_in(s: &StageSyntax, r: &mut Rewritten) -> Option<Range<usize>> {
+    if crate::front::doubles::as_floats(&mut r.text).is_empty() {
+        return None;
+    }
+    crate::front::doubles::as_floats(&mut s.text.clone()).first().cloned()
+}
+
+/// W0131 at the first double the stage takes as a float ([`doubles`](crate::front::doubles)).
 fn doubles_as_floats(s: &StageSyntax, at: Range<usize>) -> Diagnostic {
-    Diagnostic::new(Code::DoublesAsFloats, format!("the {} stage's 64-bit floats are drawn as 32-bit ones", s.stage))
-        .at(s.file, at, "drawn as a 32-bit float")
+    Diagnostic::new(Code::DoublesAsFloats, format!("the {} stage's 64-bit floats are taken as 32-bit ones", s.stage))
+        .at(s.file, at, "a 32-bit float here")
         .with_note(
-            "WebGPU has no 64-bit floats; the picture is computed at f32 precision (`effectc verify` shows where that differs from GL)",
+            "WebGPU (WGSL), MSL and GLSL ES have no 64-bit floats: the program is drawn and translated at f32 precision (`effectc verify` shows where that differs from GL)",
         )
-        .with_help("`effectc translate --to spv,spvasm,hlsl` keeps the doubles")
+        .with_help("`effectc translate --to spv,spvasm,hlsl` (only targets with 64-bit floats) keeps the doubles")
 }
 
 /// Folds a program's geometry stage into its vertex stage (when it has one), for a program

@@ -235,12 +235,20 @@ fn extension_keywords(text: &str) -> Vec<&'static str> {
     out
 }
 
-/// Renames identifiers that are keywords in 4.50 but not in `version`, keeping lengths.
-/// `directives` is the text whose `#extension` lines count (the file as written).
-pub fn rename_new_keywords(text: &str, version: &Version, directives: &str) -> (String, Renames) {
+/// Type names of Vulkan GLSL (GL_KHR_vulkan_glsl) that OpenGL GLSL leaves free as
+/// identifiers (`uniform sampler2D sampler;`) and naga's GLSL front always reads as types.
+const VULKAN_TYPE_NAMES: &[&str] = &["sampler", "samplerShadow"];
+
+/// Renames identifiers that are keywords in 4.50 but not in `version` (and, in OpenGL GLSL,
+/// Vulkan's type names), keeping lengths. `directives` is the text whose `#extension` lines
+/// count (the file as written).
+pub fn rename_new_keywords(text: &str, version: &Version, directives: &str, vulkan: bool) -> (String, Renames) {
     let v = version.desktop_equivalent();
     let enabled = extension_keywords(directives);
-    let gated: Vec<&str> = NEWER_KEYWORDS.iter().filter(|(k, since)| *since > v && !enabled.contains(k)).map(|(k, _)| *k).collect();
+    let mut gated: Vec<&str> = NEWER_KEYWORDS.iter().filter(|(k, since)| *since > v && !enabled.contains(k)).map(|(k, _)| *k).collect();
+    if !vulkan {
+        gated.extend(VULKAN_TYPE_NAMES);
+    }
     let mut renames = Renames::default();
     if gated.is_empty() {
         return (text.to_string(), renames);
@@ -320,7 +328,7 @@ mod tests {
     fn renames_new_keywords_keeping_length() {
         let src = "#version 330 core\nin float sample; // sample\nvoid main(){ float x = sample; }";
         let v = parse_version(src).unwrap();
-        let (out, renames) = rename_new_keywords(src, &v, src);
+        let (out, renames) = rename_new_keywords(src, &v, src, false);
         assert_eq!(out.len(), src.len());
         assert!(!out.contains("float sample;"));
         assert!(out.contains("// sample"), "comments untouched");
@@ -328,7 +336,7 @@ mod tests {
         assert_eq!(renames.original(new), "sample");
         // Not renamed in 4.50.
         let src450 = src.replace("330", "450");
-        let (out450, r) = rename_new_keywords(&src450, &parse_version(&src450).unwrap(), &src450);
+        let (out450, r) = rename_new_keywords(&src450, &parse_version(&src450).unwrap(), &src450, false);
         assert_eq!(out450, src450);
         assert!(r.to_original.is_empty());
     }

@@ -146,7 +146,7 @@ fn prefer_newest_glsl() {
 fn vulkan_dialect(c: &Checked) -> Option<Diagnostic> {
     let unit = c.units.first()?;
     let judgement = unit.program.reference.as_ref()?;
-    (judgement.dialect == Dialect::Vulkan).then(|| {
+    matches!(judgement.dialect, Dialect::Vulkan(_)).then(|| {
         Diagnostic::new(Code::NotAGlProgram, format!("`{}` is Vulkan GLSL: an OpenGL driver cannot draw it, so there is nothing to verify against", c.name))
             .in_file(unit.program.stages[0].syntax.file)
             .with_note("verify compares a translation with the original program on the system's OpenGL driver; Vulkan GLSL (set/binding layouts, push constants) is not GLSL for GL")

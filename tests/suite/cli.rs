@@ -290,8 +290,9 @@ fn folders_form_the_programs_their_layout_means() {
 
 #[test]
 fn doubles_are_kept_for_the_targets_that_have_them() {
-    // `dvec4`/`double` (GLSL 4.00): WGSL, MSL and GLSL ES have no 64-bit floats (E0306, naming
-    // the targets that do); SPIR-V (Float64 capability) and HLSL keep them.
+    // `dvec4`/`double` (GLSL 4.00): WGSL, MSL and GLSL ES have no 64-bit floats, so translating
+    // to one of them takes the doubles as floats (W0131 at the first, naming the targets that
+    // keep them); SPIR-V (Float64 capability) and HLSL alone keep them.
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("doubles");
     std::fs::create_dir_all(&dir).unwrap();
     let frag = dir.join("d.frag");
@@ -302,13 +303,44 @@ fn doubles_are_kept_for_the_targets_that_have_them() {
     .unwrap();
     let out = effectc(&["check", frag.to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
-    let out = effectc(&["translate", frag.to_str().unwrap(), "--out", dir.join("wgsl").to_str().unwrap()]);
-    assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains("E0306") && stdout(&out).contains("--to spv,spvasm,hlsl"), "{}", stdout(&out));
+    assert!(!stdout(&out).contains("W0131"), "check keeps the doubles: {}", stdout(&out));
+    let wgsl = dir.join("wgsl");
+    let out = effectc(&["translate", frag.to_str().unwrap(), "--to", "wgsl,spv", "--out", wgsl.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains("W0131") && stdout(&out).contains("d.frag:2:9"), "{}", stdout(&out));
+    assert!(stdout(&out).contains("--to spv,spvasm,hlsl"), "{}", stdout(&out));
+    let text = std::fs::read_to_string(wgsl.join("d.wgsl")).unwrap();
+    assert!(text.contains("vec4<f32>") && !text.contains("f64"), "{text}");
     let kept = dir.join("kept");
     let out = effectc(&["translate", frag.to_str().unwrap(), "--to", "spvasm,hlsl", "--out", kept.to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(!stdout(&out).contains("W0131"), "{}", stdout(&out));
     let asm = std::fs::read_to_string(kept.join("d.frag.spvasm")).unwrap();
     assert!(asm.contains("OpCapability Float64") && asm.contains("OpTypeFloat 64"), "{asm}");
     assert!(std::fs::read_to_string(kept.join("d.hlsl")).unwrap().contains("double4"));
+}
+
+#[test]
+fn vulkan_glsl_is_checked_for_the_vulkan_version_asked() {
+    // Subgroup operations need SPIR-V 1.3 (Vulkan 1.1): refused under `glslangValidator -V`'s
+    // Vulkan 1.0 with a help naming the option, accepted with `--target-env vulkan1.1` and in
+    // effectc.toml.
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("vulkan-version");
+    std::fs::create_dir_all(&dir).unwrap();
+    let frag = dir.join("sum.frag");
+    std::fs::write(
+        &frag,
+        "#version 450\n#extension GL_KHR_shader_subgroup_arithmetic : require\nlayout(location = 0) in float v;\n\
+         layout(location = 0) out vec4 c;\nvoid main() { c = vec4(subgroupAdd(v)); }\n",
+    )
+    .unwrap();
+    let f = frag.to_str().unwrap();
+    let out = effectc(&["check", "--color", "never", "--target-env", "vulkan", f]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0105") && stdout(&out).contains("--target-env vulkan1.1"), "{}", stdout(&out));
+    let out = effectc(&["check", "--color", "never", "--target-env", "vulkan1.1", f]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    std::fs::write(dir.join("effectc.toml"), "target-env = \"vulkan1.3\"\n").unwrap();
+    let out = effectc(&["check", "--color", "never", "--config", dir.join("effectc.toml").to_str().unwrap(), f]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
 }

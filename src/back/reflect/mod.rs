@@ -382,11 +382,11 @@ pub fn reflect(name: &str, module: &Module, program: &CompiledProgram, effect: O
         match &module.types[g.ty].inner {
             TypeInner::Image { dim, arrayed, class } => {
                 describe_image(&mut info, *dim, *arrayed, class);
-                info.glsl = plan.textures.iter().find(|t| t.name == gname).map(|t| t.user_path.clone());
+                info.glsl = plan.textures.iter().find(|t| t.name == gname).map(|t| t.user_name.clone());
             }
             TypeInner::Sampler { comparison } => {
                 info.kind = if *comparison { "comparison_sampler" } else { "sampler" };
-                info.glsl = plan.textures.iter().find(|t| t.sampler_name == gname).map(|t| t.user_path.clone());
+                info.glsl = plan.textures.iter().find(|t| t.sampler_name == gname).map(|t| t.user_name.clone());
             }
             TypeInner::Struct { span, .. } => {
                 info.kind = if g.space == AddressSpace::Uniform { "uniform_buffer" } else { "storage_buffer" };

@@ -12,6 +12,7 @@ use std::sync::OnceLock;
 
 use glslang_sys as sys;
 
+use crate::config::VulkanVersion;
 use crate::stage::StageKind;
 
 /// The dialect a stage is compiled in.
@@ -20,8 +21,21 @@ pub enum Dialect {
     /// OpenGL GLSL as a GL driver compiles it (`glslangValidator` without `-V`/`-G`):
     /// desktop core/compatibility or ES, as its `#version` says; no `#version` is 1.10.
     OpenGl,
-    /// Vulkan GLSL (`glslangValidator -V`): Vulkan 1.0, SPIR-V 1.0 rules.
-    Vulkan,
+    /// Vulkan GLSL (`glslangValidator -V --target-env vulkan1.x`): that Vulkan version's
+    /// SPIR-V rules (1.0, 1.3, 1.5, 1.6).
+    Vulkan(VulkanVersion),
+}
+
+/// glslang's client and SPIR-V versions for a Vulkan version.
+fn vulkan_target(v: VulkanVersion) -> (sys::glslang_target_client_version_t, sys::glslang_target_language_version_t) {
+    use sys::glslang_target_client_version_t as C;
+    use sys::glslang_target_language_version_t as L;
+    match v {
+        VulkanVersion::V1_0 => (C::Vulkan1_0, L::SPIRV1_0),
+        VulkanVersion::V1_1 => (C::Vulkan1_1, L::SPIRV1_3),
+        VulkanVersion::V1_2 => (C::Vulkan1_2, L::SPIRV1_5),
+        VulkanVersion::V1_3 => (C::Vulkan1_3, L::SPIRV1_6),
+    }
 }
 
 /// glslang's verdict on one stage or one link.
@@ -55,7 +69,7 @@ fn messages(dialect: Dialect) -> sys::glslang_messages_t {
     let base = sys::glslang_messages_t::DEFAULT | sys::glslang_messages_t::DISPLAY_ERROR_COLUMN;
     match dialect {
         Dialect::OpenGl => base,
-        Dialect::Vulkan => base | sys::glslang_messages_t::SPV_RULES | sys::glslang_messages_t::VULKAN_RULES,
+        Dialect::Vulkan(_) => base | sys::glslang_messages_t::SPV_RULES | sys::glslang_messages_t::VULKAN_RULES,
     }
 }
 
@@ -119,15 +133,24 @@ fn create(text: &str, kind: StageKind, dialect: Dialect, spirv: Option<&SpirvSet
     }
     let code = c_text(text);
     let resource: *const sys::glslang_resource_t = crate::front::builtins::constants::limits();
-    let vulkan = (sys::glslang_client_t::Vulkan, sys::glslang_target_client_version_t::Vulkan1_0, sys::glslang_target_language_t::SPIRV);
-    let (client, client_version, target, default_version) = match (dialect, spirv) {
-        (Dialect::OpenGl, None) => {
-            (sys::glslang_client_t::None, sys::glslang_target_client_version_t::OpenGL450, sys::glslang_target_language_t::None, 110)
+    let (client, client_version, target, spirv_version, default_version) = match (dialect, spirv) {
+        (Dialect::OpenGl, None) => (
+            sys::glslang_client_t::None,
+            sys::glslang_target_client_version_t::OpenGL450,
+            sys::glslang_target_language_t::None,
+            sys::glslang_target_language_version_t::SPIRV1_0,
+            110,
+        ),
+        (Dialect::OpenGl, Some(_)) => {
+            let (c, l) = vulkan_target(VulkanVersion::V1_0);
+            (sys::glslang_client_t::Vulkan, c, sys::glslang_target_language_t::SPIRV, l, 110)
         }
-        (Dialect::OpenGl, Some(_)) => (vulkan.0, vulkan.1, vulkan.2, 110),
-        (Dialect::Vulkan, _) => (vulkan.0, vulkan.1, vulkan.2, 100),
+        (Dialect::Vulkan(v), _) => {
+            let (c, l) = vulkan_target(v);
+            (sys::glslang_client_t::Vulkan, c, sys::glslang_target_language_t::SPIRV, l, 100)
+        }
     };
-    let mut messages = messages(if spirv.is_some() { Dialect::Vulkan } else { dialect });
+    let mut messages = messages(if spirv.is_some() { Dialect::Vulkan(VulkanVersion::V1_0) } else { dialect });
     if spirv.is_some() {
         messages |= sys::glslang_messages_t::DEBUG_INFO;
     }
@@ -137,7 +160,7 @@ fn create(text: &str, kind: StageKind, dialect: Dialect, spirv: Option<&SpirvSet
         client,
         client_version,
         target_language: target,
-        target_language_version: sys::glslang_target_language_version_t::SPIRV1_0,
+        target_language_version: spirv_version,
         code: code.as_ptr(),
         default_version,
         default_profile: sys::glslang_profile_t::None,
@@ -188,7 +211,7 @@ pub fn spirv(stages: &[(&str, StageKind)], dialect: Dialect, setup: &SpirvSetup)
     }
     let groups: Vec<&[CompiledShader]> = match dialect {
         Dialect::OpenGl => vec![&shaders[..]],
-        Dialect::Vulkan => shaders.chunks(1).collect(),
+        Dialect::Vulkan(_) => shaders.chunks(1).collect(),
     };
     let mut out = Vec::new();
     for group in groups {
@@ -199,8 +222,10 @@ pub fn spirv(stages: &[(&str, StageKind)], dialect: Dialect, setup: &SpirvSetup)
             for s in group {
                 sys::glslang_program_add_shader(program.as_ptr(), s.handle.as_ptr());
             }
-            let linked = sys::glslang_program_link(program.as_ptr(), (messages(Dialect::Vulkan) | sys::glslang_messages_t::DEBUG_INFO).0)
-                != 0
+            let linked = sys::glslang_program_link(
+                program.as_ptr(),
+                (messages(Dialect::Vulkan(VulkanVersion::V1_0)) | sys::glslang_messages_t::DEBUG_INFO).0,
+            ) != 0
                 && sys::glslang_program_map_io(program.as_ptr()) != 0;
             if !linked {
                 let log = log_of(sys::glslang_program_get_info_log(program.as_ptr()));

@@ -13,7 +13,7 @@
 pub mod compiler;
 pub mod log;
 
-use crate::config::TargetEnv;
+use crate::config::{TargetEnv, VulkanVersion};
 use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::stage::StageKind;
 
@@ -56,14 +56,13 @@ pub fn repeated_stage(stages: &[(FileId, StageKind)]) -> Option<StageKind> {
 /// text of any stage shows it (descriptor sets, push constants, separate samplers).
 pub fn dialect(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> Dialect {
     let vulkan = match env {
-        TargetEnv::OpenGl => false,
-        TargetEnv::Vulkan => true,
-        TargetEnv::Auto => stages.iter().any(|(f, _)| crate::front::syntax::vulkan_source(files.text(*f))),
+        TargetEnv::OpenGl => None,
+        TargetEnv::Vulkan(v) => Some(v),
+        TargetEnv::Auto => stages.iter().any(|(f, _)| crate::front::syntax::vulkan_source(files.text(*f))).then_some(VulkanVersion::V1_0),
     };
-    if vulkan {
-        Dialect::Vulkan
-    } else {
-        Dialect::OpenGl
+    match vulkan {
+        Some(v) => Dialect::Vulkan(v),
+        None => Dialect::OpenGl,
     }
 }
 
@@ -129,6 +128,10 @@ fn place(files: &Files, file: FileId, log: &str) -> Vec<Diagnostic> {
         };
         for detail in &m.detail {
             d = d.with_note(detail.clone());
+        }
+        if m.text.contains("requires SPIR-V 1.") || m.text.contains("targeted SPIR-V version") {
+            // Legal for a newer Vulkan: the run compiled for Vulkan 1.0.
+            d = d.with_help("compile for the Vulkan the program targets: `--target-env vulkan1.1` (SPIR-V 1.3) … `vulkan1.3`, or `target-env` in effectc.toml");
         }
         out.push(d.with_note("the Khronos reference compiler (glslang) rejects this stage, as a GL driver would"));
     }

@@ -12,8 +12,8 @@ use std::collections::BTreeMap;
 
 /// How member type `ty` of a uniform block is stored (a representation with std140's own
 /// layout, or `Plain`).
-fn stored(ty: &GlslType) -> (GlslType, Repr) {
-    match repr_for(ty) {
+fn stored(ty: &GlslType, doubles_as_floats: bool) -> (GlslType, Repr) {
+    match repr_for(ty, doubles_as_floats) {
         // `mat2` as one `vec4` is the shared block's packing, not std140's (two columns
         // 16 bytes apart).
         (_, Repr::Mat2 | Repr::Mat2Array) => (ty.clone(), Repr::Plain),
@@ -38,7 +38,8 @@ impl Ctx<'_> {
                 fields.entry(m.field_span.start).or_default().push(m);
             }
             for members in fields.values() {
-                let bases: Vec<String> = members.iter().map(|m| stored(&m.ty)).map(|(ty, _)| ty.base).collect();
+                let bases: Vec<String> =
+                    members.iter().map(|m| stored(&m.ty, self.plan.doubles_as_floats)).map(|(ty, _)| ty.base).collect();
                 let first = members[0];
                 if bases[0] == first.ty.base || bases.iter().any(|b| *b != bases[0]) {
                     continue;
@@ -69,7 +70,7 @@ impl Ctx<'_> {
             _ => return,
         };
         let Some(m) = b.members.iter().find(|m| m.name == member) else { return };
-        let (_, repr) = stored(&m.ty);
+        let (_, repr) = stored(&m.ty, self.plan.doubles_as_floats);
         self.read_repr(&repr, &m.ty, span, bracket);
     }
 }
@@ -113,9 +114,14 @@ mod tests {
     #[test]
     fn std140_keeps_its_bytes() {
         let arr = |b: &str| GlslType { base: b.into(), dims: vec![Some(4)] };
-        assert_eq!(stored(&arr("float")).0.base, "vec4");
-        assert_eq!(stored(&GlslType::scalar("bvec3")).0.base, "uvec3");
-        assert!(matches!(stored(&GlslType::scalar("mat2")).1, Repr::Plain));
-        assert!(matches!(stored(&arr("vec3")).1, Repr::Plain));
+        assert_eq!(stored(&arr("float"), false).0.base, "vec4");
+        assert_eq!(stored(&GlslType::scalar("bvec3"), false).0.base, "uvec3");
+        assert!(matches!(stored(&GlslType::scalar("mat2"), false).1, Repr::Plain));
+        assert!(matches!(stored(&arr("vec3"), false).1, Repr::Plain));
+        // A double array: std140's 16-byte stride as `dvec2`, or as a `vec4` once lowered.
+        assert_eq!(stored(&arr("double"), false).0.base, "dvec2");
+        assert_eq!(stored(&arr("double"), true).0.base, "dvec4");
+        assert!(matches!(stored(&arr("dvec2"), false).1, Repr::Plain));
+        assert_eq!(stored(&arr("dvec2"), true).0.base, "dvec4");
     }
 }

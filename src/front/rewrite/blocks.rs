@@ -88,7 +88,7 @@ impl Ctx<'_> {
             let drop = |name: &str| match name {
                 "row_major" | "column_major" | "shared" | "packed" => is_block,
                 "index" => !is_block && !dual_source,
-                _ => false,
+                item => super::subpass::drops_layout_item(&g.ty.base, item),
             };
             if let (Some(first), Some(last)) = (g.layout_items.first(), g.layout_items.last()) {
                 if g.layout_items.iter().any(|(n, _)| drop(n)) {

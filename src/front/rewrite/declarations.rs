@@ -63,8 +63,15 @@ impl Ctx<'_> {
                 self.edits.replace(r, "std140");
             }
         } else if first.layout.iter().any(|(k, _)| k == "binding") {
-            // The user's own binding numbers live in set 1, clear of ours.
-            let set = if first.storage == Storage::Buffer { USER_BUFFER_SET } else { USER_UNIFORM_SET };
+            // The user's own binding numbers live in set 1, clear of ours (GL numbers each
+            // kind apart); Vulkan GLSL's are set 0's when no set is named.
+            let set = if self.s.vulkan {
+                0
+            } else if first.storage == Storage::Buffer {
+                USER_BUFFER_SET
+            } else {
+                USER_UNIFORM_SET
+            };
             self.add_layout(first, &format!("set = {set}"), "set");
         } else {
             let binding = self.plan.user_blocks.get(&b.block_name).copied().unwrap_or(0);
@@ -77,7 +84,9 @@ impl Ctx<'_> {
         // Images and atomic counters stay declarations of their own.
         if first.layout.iter().any(|(k, _)| k == "binding") {
             let base = first.ty.base.as_str();
-            let set = if base == "atomic_uint" {
+            let set = if self.s.vulkan {
+                0
+            } else if base == "atomic_uint" {
                 USER_COUNTER_SET
             } else if ["image", "iimage", "uimage"].iter().any(|p| base.starts_with(p)) {
                 USER_IMAGE_SET

@@ -30,6 +30,7 @@ mod header;
 mod initializers;
 mod io_blocks;
 mod polyfills;
+mod subpass;
 mod uses;
 mod varyings;
 
@@ -132,6 +133,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.unsized_arrays();
     c.scalar_swizzles(scalar_swizzles);
     c.polyfills();
+    c.subpass_inputs();
     c.lazy_logic();
     c.do_while_continue();
     c.insert_header();

@@ -46,19 +46,16 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
             .at(file, span, "not found relative to the including file")
             .with_note("`#include` names a file relative to the file that includes it")]);
     }
-    let (text, mut renames) = version::rename_new_keywords(&resolved, &version, original);
+    // Vulkan GLSL's types (`texture2D`, `sampler`, `subpassInput`) are keywords there only.
+    let target_vulkan = match env {
+        TargetEnv::Auto => vulkan_source(original),
+        TargetEnv::OpenGl => false,
+        TargetEnv::Vulkan(_) => true,
+    };
+    let (text, mut renames) = version::rename_new_keywords(&resolved, &version, original, target_vulkan);
     let masked = crate::front::lexical::mask(&text, &version::blank_comments(&text));
     let mut text = masked.for_parser;
-    let opts = glsl_lang::parse::ParseOptions {
-        default_version: 110,
-        // Vulkan GLSL's types (`texture2D`, `sampler`, `subpassInput`) are keywords there only.
-        target_vulkan: match env {
-            TargetEnv::Auto => vulkan_source(original),
-            TargetEnv::OpenGl => false,
-            TargetEnv::Vulkan => true,
-        },
-        ..Default::default()
-    };
+    let opts = glsl_lang::parse::ParseOptions { default_version: 110, target_vulkan, ..Default::default() };
     if !opts.target_vulkan && version.number < 400 && !version.is_es() && enables_fp64(original) {
         // glsl-lang knows `double`/`dvecN`/`dmatN` from `#version 400` only (extensions are
         // blanked for it); GL_ARB_gpu_shader_fp64 brings them to 1.50. The identifiers that
@@ -67,11 +64,15 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
             text.replace_range(span, "400");
         }
     }
-    if opts.target_vulkan && version.number >= 400 && !version.is_es() {
-        // glsl-lang enables Vulkan's types from `#version 460` only; Vulkan GLSL has them
-        // from 4.50 on. Same-length digits keep every offset.
+    if opts.target_vulkan && (version.number >= 400 || version.is_es() && version.number >= 310) {
+        // glsl-lang enables Vulkan's types (`subpassInput`) from `#version 460` only;
+        // Vulkan GLSL has them from 4.50 and ES 3.10 on. Same-length digits (and the `es`
+        // profile blanked: glsl-lang reads the rest the same) keep every offset.
         if let Some(span) = version.number_span.clone() {
             text.replace_range(span, "460");
+        }
+        if let Some(span) = version.profile_span.clone().filter(|_| version.is_es()) {
+            text.replace_range(span.clone(), &" ".repeat(span.len()));
         }
     }
     let parse = |text: &str| {
@@ -142,7 +143,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
     syntax.vulkan = match env {
         TargetEnv::Auto => looks_like_vulkan(&syntax, original),
         TargetEnv::OpenGl => false,
-        TargetEnv::Vulkan => true,
+        TargetEnv::Vulkan(_) => true,
     };
     Ok(syntax)
 }
@@ -276,5 +277,16 @@ mod tests {
         assert_eq!(s.version.number, 150, "the stage keeps its own version");
         let without = "#version 150\nuniform dvec4 arg0;\nvoid main() {}\n";
         assert!(analyse(FileId(0), without, StageKind::Vertex, TargetEnv::Auto).is_err(), "no extension, no doubles");
+    }
+
+    #[test]
+    fn a_macro_naming_a_function_like_macro_invokes_it() {
+        // `#define M2 CUNNY_M2` then `M2(…)`, at the top level and inside another macro's
+        // arguments: C's rescanning (vendor/glsl-lang-pp/PATCHED.md).
+        let src = "#version 330\n#define CUNNY_M2(a, b, c, d) mat2(a, b, c, d)\n#define M2 CUNNY_M2\n#define mul(v, m) ((m) * (v))\n\
+                   out vec4 c;\nvoid main() { vec2 x = vec2(1.0); vec2 r = mul(x, M2(1.0, 2.0, 3.0, 4.0)) + M2 (1.0, 0.0, 0.0, 1.0) * x;\n\
+                   c = vec4(r, 0.0, 1.0); }\n";
+        let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::Auto).map_err(|d| d[0].message.clone());
+        assert!(s.expect("the alias is invoked").has_main);
     }
 }

@@ -292,7 +292,7 @@ fn replay_of(input: &SceneInput<'_>, vertices: attributes::Interleaved, textures
         render: Default::default(),
         depth: false,
         inputs: input.translation.reflection.vertex_inputs.iter().map(|v| (v.name.clone(), v.location)).collect(),
-        plan_textures: plan.textures.iter().map(|t| (t.user_path.clone(), t.name.clone(), t.sampler_name.clone())).collect(),
+        plan_textures: plan.textures.iter().map(|t| (t.user_name.clone(), t.name.clone(), t.sampler_name.clone())).collect(),
         outputs: input
             .translation
             .reflection

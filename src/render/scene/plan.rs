@@ -104,7 +104,7 @@ fn textures<'a>(input: &PlanInput<'a>, warnings: &mut Vec<Diagnostic>) -> BTreeM
     let plan = &input.program.plan;
     let mut out = BTreeMap::new();
     for b in input.translation.reflection.bindings.iter().filter(|b| !b.visibility.is_empty() && b.kind == "texture") {
-        let user = plan.textures.iter().find(|t| t.name == b.name).map(|t| t.user_path.clone());
+        let user = plan.textures.iter().find(|t| t.name == b.name).map(|t| t.user_name.clone());
         let name = user.clone().unwrap_or_else(|| b.name.clone());
         let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
         let from_target = user.as_ref().and_then(|u| input.pass.as_ref()?.iter().find(|(s, _)| s == u)).map(|(_, t)| t);
@@ -186,7 +186,7 @@ fn describe(
         textures
             .iter()
             .map(|(binding, choice)| {
-                let name = plan.textures.iter().find(|t| &t.name == binding).map_or(binding.as_str(), |t| t.user_path.as_str());
+                let name = plan.textures.iter().find(|t| &t.name == binding).map_or(binding.as_str(), |t| t.user_name.as_str());
                 let from = match choice {
                     TextureChoice::Target(target) => format!("target {target}"),
                     TextureChoice::Multisampled { .. } => "a cleared placeholder (multisampled)".to_string(),

@@ -43,7 +43,7 @@ impl Textures {
                     let dimension = b.dimension.unwrap_or("2d");
                     let view = match choice {
                         TextureChoice::Target(_) => {
-                            let Some(user) = program_plan.textures.iter().find(|t| t.name == b.name).map(|t| &t.user_path) else {
+                            let Some(user) = program_plan.textures.iter().find(|t| t.name == b.name).map(|t| &t.user_name) else {
                                 continue;
                             };
                             let Some((view, _, _)) = input.pass.as_ref().and_then(|p| p.sampled.get(user)) else { continue };
@@ -86,7 +86,7 @@ impl Textures {
                     views.insert(b.name.clone(), view);
                 }
                 "sampler" | "comparison_sampler" => {
-                    let user = program_plan.textures.iter().find(|t| t.sampler_name == b.name).map(|t| t.user_path.clone());
+                    let user = program_plan.textures.iter().find(|t| t.sampler_name == b.name).map(|t| t.user_name.clone());
                     let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
                     let target = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u));
                     let (filter, wrap) = match target {
