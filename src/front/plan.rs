@@ -94,6 +94,11 @@ pub struct Plan {
     pub compat: compat::ProgramCompat,
     /// The program's doubles become floats after the rewrite ([`repr_for`]).
     pub doubles_as_floats: bool,
+    /// Members of instance-named uniform and buffer blocks renamed for naga's GLSL front:
+    /// (block name, member, name in the rewrite). naga also declares such a member as a
+    /// global, so a global of the same name (`in vec3 color;` beside `uniform Push { vec3
+    /// color; } push;`) read `push.color` silently. The IR gets the user's names back.
+    pub renamed_members: Vec<(String, String, String)>,
 }
 
 /// Name of the filler member of [`Plan::padded_structs`].
@@ -166,6 +171,27 @@ pub(crate) fn repr_for(ty: &GlslType, doubles_as_floats: bool) -> (GlslType, Rep
         "mat2" | "mat2x2" => (GlslType { base: "vec4".into(), dims: ty.dims.clone() }, Repr::Mat2Array),
         _ => (ty.clone(), Repr::Plain),
     }
+}
+
+/// [`Plan::renamed_members`]: in any stage, a member of an instance-named uniform or buffer
+/// block named like a global that is not a block (the block is renamed in every stage that
+/// declares it, so the stages keep one block type).
+fn shadowing_block_members(stages: &[StageSyntax]) -> Vec<(String, String, String)> {
+    let mut out: Vec<(String, String, String)> = Vec::new();
+    for s in stages {
+        let loose: std::collections::HashSet<&str> = s.globals.iter().filter(|g| g.block.is_none()).map(|g| g.name.as_str()).collect();
+        for g in s.globals.iter().filter(|g| matches!(g.storage, Storage::Uniform | Storage::Buffer)) {
+            let Some(b) = &g.block else { continue };
+            let Some(instance) = &b.instance else { continue };
+            for m in b.members.iter().filter(|m| loose.contains(m.name.as_str())) {
+                if !out.iter().any(|(bn, mn, _)| *bn == b.block_name && *mn == m.name) {
+                    let new = fresh(format!("{instance}_{}", m.name), stages, &[]);
+                    out.push((b.block_name.clone(), m.name.clone(), new));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// A path (`material.diffuse`, `maps[2]`) with each identifier spelled as the user wrote it.
@@ -292,6 +318,7 @@ pub fn plan(stages: &[StageSyntax], doubles_as_floats: bool) -> Plan {
             plan.push_member(BlockMember { name: g.name.clone(), user_ty: g.ty.clone(), block_ty, repr, stage: s.stage });
         }
     }
+    plan.renamed_members = shadowing_block_members(stages);
     plan.compat = compat::analyse(stages);
     for st in plan.compat.state.clone() {
         let user_ty = st.glsl_type();

@@ -441,7 +441,7 @@ fn compile_own(
         let naga = match outcome {
             None => None,
             Some(outcome) => match outcome {
-                Outcome::Valid(v) => Some(v),
+                Outcome::Valid(v) => Some(restore_member_names(v, &plan.renamed_members)),
                 Outcome::Limited(limit) => {
                     let d = Diagnostic::new(
                         Code::NagaCannotTake,
@@ -500,6 +500,35 @@ fn oversized_function(s: &StageSyntax, text: &str) -> Option<Limitation> {
         ),
         span: Some(f.span.start..f.span.start + header),
     })
+}
+
+/// The user's names back on block members the rewrite renamed for naga's GLSL front
+/// ([`Plan::renamed_members`](plan::Plan::renamed_members)): WGSL, reflection and the values
+/// set by name see the names the user wrote.
+fn restore_member_names(mut validated: naga_run::Validated, renamed: &[(String, String, String)]) -> naga_run::Validated {
+    if renamed.is_empty() {
+        return validated;
+    }
+    let module = &mut validated.module;
+    let handles: Vec<_> = module.types.iter().map(|(h, _)| h).collect();
+    for h in handles {
+        let ty = &module.types[h];
+        let Some(block) = ty.name.clone() else { continue };
+        let naga::TypeInner::Struct { members, span } = &ty.inner else { continue };
+        let mut members = members.clone();
+        let mut changed = false;
+        for m in &mut members {
+            if let Some((_, user, _)) = renamed.iter().find(|(b, _, new)| *b == block && m.name.as_deref() == Some(new.as_str())) {
+                m.name = Some(user.clone());
+                changed = true;
+            }
+        }
+        if changed {
+            let inner = naga::TypeInner::Struct { members, span: *span };
+            module.types.replace(h, naga::Type { name: Some(block), inner });
+        }
+    }
+    validated
 }
 
 /// Takes the rewritten stage's doubles as floats ([`doubles`](crate::front::doubles)); where

@@ -97,6 +97,7 @@ impl Ctx<'_> {
     /// instead. Such members are renamed `<instance>_<member>` in the rewrite; blocks link
     /// by location after the name-level checks, so the other stage is unaffected.
     pub(super) fn shadowed_block_members(&mut self) {
+        self.renamed_uniform_block_members();
         let s = self.s;
         let loose: std::collections::HashSet<&str> = s.globals.iter().filter(|g| g.block.is_none()).map(|g| g.name.as_str()).collect();
         let mut renamed: Vec<(usize, String, String)> = Vec::new();
@@ -120,6 +121,36 @@ impl Ctx<'_> {
                 if s.text.get(dot.clone()).is_some_and(|t| t.ends_with(field.as_str())) {
                     self.edits.replace(dot.end - field.len()..dot.end, new.clone());
                 }
+            }
+        }
+    }
+
+    /// The plan's [`renamed_members`](crate::front::plan::Plan::renamed_members) of
+    /// uniform and buffer blocks, in the declaration and at every `instance.member`.
+    fn renamed_uniform_block_members(&mut self) {
+        let s = self.s;
+        let renamed = &self.plan.renamed_members;
+        if renamed.is_empty() {
+            return;
+        }
+        let new_name = |g: &crate::front::syntax::Global, member: &str| {
+            let b = g.block.as_ref()?;
+            renamed.iter().find(|(bn, mn, _)| *bn == b.block_name && mn == member).map(|(_, _, n)| n.clone())
+        };
+        for g in s.globals.iter().filter(|g| matches!(g.storage, Storage::Uniform | Storage::Buffer)) {
+            let Some(b) = &g.block else { continue };
+            for m in &b.members {
+                if let Some(new) = new_name(g, &m.name) {
+                    self.edits.replace(m.span.clone(), new);
+                }
+            }
+        }
+        for u in &s.uses {
+            let Referent::Global(gi) = u.target else { continue };
+            let Some((field, dot)) = &u.field else { continue };
+            let Some(new) = new_name(&s.globals[gi], field) else { continue };
+            if s.text.get(dot.clone()).is_some_and(|t| t.ends_with(field.as_str())) {
+                self.edits.replace(dot.end - field.len()..dot.end, new);
             }
         }
     }
