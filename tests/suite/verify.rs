@@ -329,15 +329,36 @@ fn std140_block_members_wgsl_cannot_hold_read_as_gl_reads_them() {
     }
     let stages = ["tests/verify/ubo/std140.vert", "tests/verify/ubo/std140.frag"];
     let values = [
-        ["r=true", "gb=false,true", "weights=0.1,0.2,0.3,0.05", "on=false,true", "Params.f=0.05,0.1,0.15", "Params.use_f=true"],
-        ["r=false", "gb=true,true", "weights=0.3,0.1,0.1,0.25", "on=true,false", "Params.f=0.15,0.1,0.05", "Params.use_f=true"],
+        [
+            "r=true",
+            "gb=false,true",
+            "weights=0.1,0.2,0.3,0.05",
+            "on=false,true",
+            "Params.f=0.05,0.1,0.15",
+            "Params.use_f=true",
+            "Shading.gain=0.5",
+        ],
+        [
+            "r=false",
+            "gb=true,true",
+            "weights=0.3,0.1,0.1,0.25",
+            "on=true,false",
+            "Params.f=0.15,0.1,0.05",
+            "Params.use_f=true",
+            "Shading.gain=0.25",
+        ],
+    ];
+    // Structs in a block at std140's offsets (fillers where naga would pack them tighter).
+    let shading = [
+        ["Shading.shade.tint.r=0.4", "Shading.shade.gb=0.1,0.05", "Shading.shade.a=0.1", "Shading.bias=0.05"],
+        ["Shading.shade.tint.r=0.8", "Shading.shade.gb=0.0,0.2", "Shading.shade.a=0.05", "Shading.bias=0.15"],
     ];
     let mut frames = Vec::new();
     for (i, set) in values.iter().enumerate() {
         let out_dir = scratch("verify-std140", &format!("values{i}"));
         let mut args: Vec<&str> = vec!["verify"];
         args.extend(stages);
-        for v in set {
+        for v in set.iter().chain(&shading[i]) {
             args.extend(["--set", v]);
         }
         args.extend(["--size", "32x32", "--format", "json", "--out", out_dir.to_str().unwrap()]);

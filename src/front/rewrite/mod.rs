@@ -30,6 +30,7 @@ mod header;
 mod initializers;
 mod io_blocks;
 mod polyfills;
+mod std140_structs;
 mod subpass;
 mod uses;
 mod varyings;
@@ -129,6 +130,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.struct_samplers();
     c.defaults_and_layouts();
     c.user_block_member_types();
+    c.std140_struct_fillers();
     c.row_major_uses();
     c.unsized_arrays();
     c.scalar_swizzles(scalar_swizzles);
