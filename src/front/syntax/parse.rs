@@ -39,7 +39,10 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
-    let unextended = version::blank_extensions(&crate::front::lexical::blank_line_directives(original));
+    // Pragmas no compiler acts on are blanked: their quoted text (`#pragma parameter x "// A
+    // //" 0 1`) is no string to glsl-lang once comments are blanked, and swallowed the stage.
+    let quiet = crate::front::lexical::quiet_pragmas(original);
+    let unextended = version::blank_extensions(&crate::front::lexical::blank_line_directives(&quiet));
     let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
     if let Some(span) = compiled_include(&resolved) {
         return Err(vec![Diagnostic::new(Code::IncludeUnresolved, format!("cannot read included file `{}`", &original[span.clone()]))
@@ -288,5 +291,12 @@ mod tests {
                    c = vec4(r, 0.0, 1.0); }\n";
         let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::Auto).map_err(|d| d[0].message.clone());
         assert!(s.expect("the alias is invoked").has_main);
+    }
+
+    #[test]
+    fn comment_marks_in_a_pragma_s_quoted_text_hide_nothing() {
+        let src = "#version 450\n#pragma parameter g \"// ANALOG /* //\" 0.0 0.0 1.0 1.0\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+        let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::Auto).map_err(|d| d[0].message.clone());
+        assert!(s.expect("parses").has_main);
     }
 }
