@@ -11,7 +11,7 @@
 use std::collections::{BTreeMap, HashMap};
 
 use crate::front::compat;
-use crate::front::syntax::{dims_text, sampler_parts, GlslType, StageSyntax, Storage};
+use crate::front::syntax::{dims_text, sampler_parts, GlslType, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 /// Name of the generated uniform block (its WGSL struct keeps this name).
@@ -99,6 +99,10 @@ pub struct Plan {
     /// global, so a global of the same name (`in vec3 color;` beside `uniform Push { vec3
     /// color; } push;`) read `push.color` silently. The IR gets the user's names back.
     pub renamed_members: Vec<(String, String, String)>,
+    /// Implicitly sized array members of blocks (`out blk { float foo[]; }`), sized as GL's
+    /// linker sizes them: one past the largest constant index any stage uses (block name,
+    /// member, size).
+    pub sized_members: Vec<(String, String, u32)>,
 }
 
 /// Name of the filler member of [`Plan::padded_structs`].
@@ -115,6 +119,10 @@ impl Plan {
     }
     pub fn texture(&self, user_path: &str) -> Option<&TextureBinding> {
         self.textures.iter().find(|t| t.user_path == user_path)
+    }
+    /// The plan with [`size_implicit_block_members`]'s sizes.
+    pub fn with_sized_members(self, sized_members: Vec<(String, String, u32)>) -> Self {
+        Plan { sized_members, ..self }
     }
     pub fn has_block(&self) -> bool {
         !self.members.is_empty()
@@ -192,6 +200,76 @@ fn shadowing_block_members(stages: &[StageSyntax]) -> Vec<(String, String, Strin
         }
     }
     out
+}
+
+/// Sizes the block members declared `name[]` as GL's linker does ([`Plan::sized_members`],
+/// which the caller keeps): every stage's type of the member gets the size, so locations,
+/// the interface and the geometry fold see the linked array; the rewrite writes it in.
+pub fn size_implicit_block_members(stages: &mut [StageSyntax]) -> Vec<(String, String, u32)> {
+    let sized = implicitly_sized_members(stages);
+    for s in stages.iter_mut() {
+        for g in &mut s.globals {
+            let Some(b) = &mut g.block else { continue };
+            for m in b.members.iter_mut().filter(|m| m.ty.dims.first() == Some(&None)) {
+                if let Some((_, _, n)) = sized.iter().find(|(bn, mn, _)| *bn == b.block_name && *mn == m.name) {
+                    m.ty.dims[0] = Some(*n);
+                }
+            }
+        }
+    }
+    sized
+}
+
+/// Each block member declared `name[]` in some stage, with one past the largest constant
+/// index written after it in any stage (`inst.name[k]`, or `name[k]` for a block without an
+/// instance name).
+fn implicitly_sized_members(stages: &[StageSyntax]) -> Vec<(String, String, u32)> {
+    let mut out: Vec<(String, String, u32)> = Vec::new();
+    for s in stages {
+        for g in &s.globals {
+            let Some(b) = &g.block else { continue };
+            for m in b.members.iter().filter(|m| m.ty.dims.first() == Some(&None)) {
+                if !out.iter().any(|(bn, mn, _)| *bn == b.block_name && *mn == m.name) {
+                    out.push((b.block_name.clone(), m.name.clone(), 1));
+                }
+            }
+        }
+    }
+    for s in stages {
+        for u in &s.uses {
+            let Referent::Global(gi) = u.target else { continue };
+            let Some(b) = &s.globals[gi].block else { continue };
+            let k = match (&b.instance, &u.field) {
+                (Some(_), Some((field, dot))) => constant_index_after(&s.text, dot.end).map(|k| (field, k)),
+                (None, _) => u.index.as_ref().and_then(|(_, _, k)| *k).map(|k| (&u.name, k)),
+                _ => None,
+            };
+            let Some((member, k)) = k else { continue };
+            if let Some(entry) = out.iter_mut().find(|(bn, mn, _)| *bn == b.block_name && mn == member) {
+                entry.2 = entry.2.max(u32::try_from(k + 1).unwrap_or(1));
+            }
+        }
+    }
+    // A stage that declares the member with a size gives it to the others.
+    for s in stages {
+        for b in s.globals.iter().filter_map(|g| g.block.as_ref()) {
+            for m in &b.members {
+                if let (Some(Some(n)), Some(entry)) =
+                    (m.ty.dims.first(), out.iter_mut().find(|(bn, mn, _)| *bn == b.block_name && *mn == m.name))
+                {
+                    entry.2 = *n;
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The integer literal in the `[k]` right after `at` (spaces allowed), if there is one.
+fn constant_index_after(text: &str, at: usize) -> Option<i64> {
+    let rest = text.get(at..)?.trim_start().strip_prefix('[')?;
+    let inner = &rest[..rest.find(']')?];
+    inner.trim().trim_end_matches(['u', 'U']).parse().ok()
 }
 
 /// A path (`material.diffuse`, `maps[2]`) with each identifier spelled as the user wrote it.

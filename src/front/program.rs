@@ -375,7 +375,8 @@ fn compile_own(
         return None;
     }
     diags.extend(syntaxes.iter().filter(|s| !s.has_main).map(no_main));
-    let plan = plan::plan(&syntaxes, options.doubles_as_floats);
+    let sized_members = plan::size_implicit_block_members(&mut syntaxes);
+    let plan = plan::plan(&syntaxes, options.doubles_as_floats).with_sized_members(sized_members);
     let mut compiled = Vec::new();
     let lower = |s: &StageSyntax, r: &mut Rewritten| if options.doubles_as_floats { doubles_in(s, r) } else { None };
     for s in syntaxes {

@@ -28,6 +28,20 @@ impl Ctx<'_> {
                 self.edits.insert(g.name_span.end + open + 1, (largest + 1).to_string());
             }
         }
+        // Block members declared `name[]`: the size GL's linker gives them (the plan's).
+        for g in &s.globals {
+            let Some(b) = &g.block else { continue };
+            for m in &b.members {
+                let Some((_, _, n)) = self.plan.sized_members.iter().find(|(bn, mn, _)| *bn == b.block_name && *mn == m.name) else {
+                    continue;
+                };
+                let after = &s.text[m.span.end..];
+                let open = after.len() - after.trim_start().len();
+                if after[open..].starts_with('[') && after[open + 1..].trim_start().starts_with(']') {
+                    self.edits.insert(m.span.end + open + 1, n.to_string());
+                }
+            }
+        }
         for (span, n) in &s.constant_sizes {
             self.edits.replace(span.clone(), n.to_string());
         }
