@@ -2,9 +2,10 @@
 //! aligns a struct to its largest member and sizes it to that alignment; std140 aligns a
 //! struct (and an array of structs) to 16 bytes and rounds its size up to 16, and WGSL's
 //! uniform rules want the same, so naga refused such a block. Float fillers
-//! (`effectc_padN`, which reflection marks as padding) go where std140 leaves a gap: before
-//! a struct member, inside a struct or in the block, and at a struct's end. Every offset is
-//! then std140's, so the bytes a host packs by std140 read the same.
+//! (`effectc_pad_<struct or block>_<byte>`, which reflection marks as padding) go where
+//! std140 leaves a gap: before a struct member, inside a struct or in the block, and at a
+//! struct's end. Every offset is then std140's, so the bytes a host packs by std140 read
+//! the same.
 //!
 //! Only what the fillers can make exact is touched: members that are scalars, vectors,
 //! matrices with 3- or 4-row columns (16-byte column strides in both layouts), such structs,
@@ -17,8 +18,10 @@ use std::collections::BTreeMap;
 use super::Ctx;
 use crate::front::syntax::{GlslType, Member, Storage, StructDef};
 
-/// Fillers to insert: (offset in the stage's text, how many floats).
-type Fillers = Vec<(usize, u32)>;
+/// Fillers to insert: (offset in the stage's text, how many floats, the struct or block and
+/// the byte offset of the first, which name them the same in every stage and apart from
+/// every other filler, members of blocks without an instance name being globals).
+type Fillers = Vec<(usize, u32, String, u32)>;
 
 /// (size, alignment) of a non-struct member type, the same in naga's layout and std140's
 /// (64-bit types only once they are taken as 32-bit ones, `doubles`).
@@ -91,10 +94,10 @@ impl Layouts<'_> {
             return None;
         }
         let def = self.structs.iter().find(|d| d.name == name)?;
-        let end = self.members(&def.members, false)?;
+        let end = self.members(name, &def.members, false)?;
         let size = end.next_multiple_of(16).max(16);
         if size > end {
-            self.fillers.push((def.members.last()?.field_span.end, (size - end) / 4));
+            self.fillers.push((def.members.last()?.field_span.end, (size - end) / 4, name.to_string(), end));
         }
         self.sizes.insert(name.to_string(), size);
         Some(size)
@@ -102,7 +105,7 @@ impl Layouts<'_> {
 
     /// The members' std140 end offset, with fillers before each struct-typed one (after the
     /// field before it: the first member is at offset 0, which needs none).
-    fn members(&mut self, members: &[Member], in_block: bool) -> Option<u32> {
+    fn members(&mut self, owner: &str, members: &[Member], in_block: bool) -> Option<u32> {
         let mut offset = 0u32;
         let mut previous: Option<&Member> = None;
         for m in members {
@@ -111,7 +114,7 @@ impl Layouts<'_> {
             if aggregate && target > offset {
                 // Siblings of one field (`S a, b;`) follow a padded size: never here.
                 let p = previous.filter(|p| p.field_span != m.field_span)?;
-                self.fillers.push((p.field_span.end, (target - offset) / 4));
+                self.fillers.push((p.field_span.end, (target - offset) / 4, owner.to_string(), offset));
             }
             previous = Some(m);
             offset = target + size;
@@ -144,15 +147,15 @@ impl Ctx<'_> {
                 sizes: done.clone(),
                 fillers: Vec::new(),
             };
-            if layouts.members(&b.members, true).is_some() {
+            if layouts.members(&b.block_name, &b.members, true).is_some() {
                 done = layouts.sizes;
                 all.extend(layouts.fillers);
             }
         }
         all.sort();
         all.dedup();
-        for (i, (at, n)) in all.into_iter().enumerate() {
-            let text: String = (0..n).map(|k| format!("float effectc_pad{i}_{k}; ")).collect();
+        for (at, n, owner, offset) in all {
+            let text: String = (0..n).map(|k| format!("float effectc_pad_{owner}_{}; ", offset + 4 * k)).collect();
             self.edits.insert(at, text);
         }
     }
