@@ -45,7 +45,17 @@ impl Ctx<'_> {
         for (span, n) in &s.constant_sizes {
             self.edits.replace(span.clone(), n.to_string());
         }
-        for (span, n) in &s.unsized_sizes {
+        // A loose uniform's declaration is replaced whole (it moves into the shared block,
+        // sized there from its type).
+        let in_loose_uniform = |span: &std::ops::Range<usize>| {
+            s.globals.iter().any(|g| {
+                g.storage == crate::front::syntax::Storage::Uniform
+                    && g.block.is_none()
+                    && g.decl_span.start <= span.start
+                    && span.end <= g.decl_span.end
+            })
+        };
+        for (span, n) in s.unsized_sizes.iter().filter(|(span, _)| !in_loose_uniform(span)) {
             let text = &s.text[span.clone()];
             if text.trim() == "[]" {
                 self.edits.replace(span.clone(), format!("[{n}]"));

@@ -39,10 +39,9 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
                 .with_note("effectc accepts GLSL 1.10–4.60 (core or compatibility) and ES 1.00/3.00")])
         }
     };
-    // Pragmas no compiler acts on are blanked: their quoted text (`#pragma parameter x "// A
-    // //" 0 1`) is no string to glsl-lang once comments are blanked, and swallowed the stage.
-    let quiet = crate::front::lexical::quiet_pragmas(original);
-    let unextended = version::blank_extensions(&crate::front::lexical::blank_line_directives(&quiet));
+    // Unacted pragmas blanked: quoted text (`#pragma parameter x "// A //" 0 1`) swallowed the stage.
+    let quiet = crate::front::lexical::blank_line_directives(&crate::front::lexical::quiet_pragmas(original)).into_owned();
+    let unextended = version::blank_extensions(&quiet);
     let resolved = crate::front::conditionals::resolve(&unextended, &version::blank_comments(&unextended), &version);
     if let Some(span) = compiled_include(&resolved) {
         return Err(vec![Diagnostic::new(Code::IncludeUnresolved, format!("cannot read included file `{}`", &original[span.clone()]))
@@ -142,6 +141,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
         global_index: HashMap::new(),
     };
     Collector::run(&mut syntax, &tu);
+    size_globals_by_initializer(&mut syntax);
     syntax.index_globals();
     syntax.vulkan = match env {
         TargetEnv::Auto => looks_like_vulkan(&syntax, original),
@@ -265,6 +265,17 @@ fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
         || separate
         || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Referent::Unresolved)
         || original.contains("GL_KHR_vulkan_glsl")
+}
+
+/// A global `T name[] = T[](a, b, c)` (a uniform's initializer too) has its initializer's
+/// size, for everything that reads its type (the shared uniform block above all).
+fn size_globals_by_initializer(syntax: &mut StageSyntax) {
+    let sizes = &syntax.unsized_sizes;
+    for g in syntax.globals.iter_mut().filter(|g| g.ty.dims.first() == Some(&None) && g.initializer.is_some()) {
+        if let Some((_, n)) = sizes.iter().find(|(span, _)| g.decl_span.start <= span.start && span.end <= g.decl_span.end) {
+            g.ty.dims[0] = Some(*n);
+        }
+    }
 }
 
 #[cfg(test)]
