@@ -22,11 +22,7 @@ impl Ctx<'_> {
                 .filter_map(|u| u.index.as_ref().and_then(|(_, _, k)| *k))
                 .max()
                 .unwrap_or(0);
-            let after = &s.text[g.name_span.end..];
-            let open = after.len() - after.trim_start().len();
-            if after[open..].starts_with('[') && after[open + 1..].trim_start().starts_with(']') {
-                self.edits.insert(g.name_span.end + open + 1, (largest + 1).to_string());
-            }
+            self.size_empty_brackets(g.name_span.end, largest + 1);
         }
         // Block members declared `name[]`: the size GL's linker gives them (the plan's).
         for g in &s.globals {
@@ -35,11 +31,7 @@ impl Ctx<'_> {
                 let Some((_, _, n)) = self.plan.sized_members.iter().find(|(bn, mn, _)| *bn == b.block_name && *mn == m.name) else {
                     continue;
                 };
-                let after = &s.text[m.span.end..];
-                let open = after.len() - after.trim_start().len();
-                if after[open..].starts_with('[') && after[open + 1..].trim_start().starts_with(']') {
-                    self.edits.insert(m.span.end + open + 1, n.to_string());
-                }
+                self.size_empty_brackets(m.span.end, i64::from(*n));
             }
         }
         for (span, n) in &s.constant_sizes {
@@ -68,6 +60,15 @@ impl Ctx<'_> {
                     }
                 }
             }
+        }
+    }
+
+    /// Writes `n` into the `[]` right after `at` (a declared name), when it is empty.
+    fn size_empty_brackets(&mut self, at: usize, n: i64) {
+        let after = &self.s.text[at..];
+        let open = after.len() - after.trim_start().len();
+        if after[open..].starts_with('[') && after[open + 1..].trim_start().starts_with(']') {
+            self.edits.insert(at + open + 1, n.to_string());
         }
     }
 

@@ -97,21 +97,40 @@ impl Ctx<'_> {
     /// instead. Such members are renamed `<instance>_<member>` in the rewrite; blocks link
     /// by location after the name-level checks, so the other stage is unaffected.
     pub(super) fn shadowed_block_members(&mut self) {
-        self.renamed_uniform_block_members();
         let s = self.s;
         let loose: std::collections::HashSet<&str> = s.globals.iter().filter(|g| g.block.is_none()).map(|g| g.name.as_str()).collect();
         let mut renamed: Vec<(usize, String, String)> = Vec::new();
         for (gi, g) in s.globals.iter().enumerate() {
             let Some(b) = &g.block else { continue };
-            let (Some(instance), Storage::In | Storage::Out) = (&b.instance, g.storage) else { continue };
-            if self.flattens(g) {
-                // Passed as loose varyings; its members live in a private struct.
-                continue;
+            match (&b.instance, g.storage) {
+                (Some(instance), Storage::In | Storage::Out) if !self.flattens(g) => {
+                    // (A flattened block passes as loose varyings; its members live in a
+                    // private struct.)
+                    for m in b.members.iter().filter(|m| loose.contains(m.name.as_str())) {
+                        renamed.push((gi, m.name.clone(), format!("{instance}_{}", m.name)));
+                    }
+                }
+                // Uniform and buffer blocks: the plan's names, the same in every stage
+                // ([`renamed_members`](crate::front::plan::Plan::renamed_members)).
+                (Some(_), Storage::Uniform | Storage::Buffer) => {
+                    for (_, member, new) in self.plan.renamed_members.iter().filter(|(bn, _, _)| *bn == b.block_name) {
+                        renamed.push((gi, member.clone(), new.clone()));
+                    }
+                }
+                _ => {}
             }
-            for m in b.members.iter().filter(|m| loose.contains(m.name.as_str())) {
-                let new = format!("{instance}_{}", m.name);
+        }
+        self.rename_block_members(&renamed);
+    }
+
+    /// Renames members (global index, member, new name) in their declaration and at every
+    /// `instance.member`.
+    fn rename_block_members(&mut self, renamed: &[(usize, String, String)]) {
+        let s = self.s;
+        for (gi, member, new) in renamed {
+            let b = s.globals[*gi].block.as_ref().expect("a block");
+            if let Some(m) = b.members.iter().find(|m| m.name == *member) {
                 self.edits.replace(m.span.clone(), new.clone());
-                renamed.push((gi, m.name.clone(), new));
             }
         }
         for u in &s.uses {
@@ -121,36 +140,6 @@ impl Ctx<'_> {
                 if s.text.get(dot.clone()).is_some_and(|t| t.ends_with(field.as_str())) {
                     self.edits.replace(dot.end - field.len()..dot.end, new.clone());
                 }
-            }
-        }
-    }
-
-    /// The plan's [`renamed_members`](crate::front::plan::Plan::renamed_members) of
-    /// uniform and buffer blocks, in the declaration and at every `instance.member`.
-    fn renamed_uniform_block_members(&mut self) {
-        let s = self.s;
-        let renamed = &self.plan.renamed_members;
-        if renamed.is_empty() {
-            return;
-        }
-        let new_name = |g: &crate::front::syntax::Global, member: &str| {
-            let b = g.block.as_ref()?;
-            renamed.iter().find(|(bn, mn, _)| *bn == b.block_name && mn == member).map(|(_, _, n)| n.clone())
-        };
-        for g in s.globals.iter().filter(|g| matches!(g.storage, Storage::Uniform | Storage::Buffer)) {
-            let Some(b) = &g.block else { continue };
-            for m in &b.members {
-                if let Some(new) = new_name(g, &m.name) {
-                    self.edits.replace(m.span.clone(), new);
-                }
-            }
-        }
-        for u in &s.uses {
-            let Referent::Global(gi) = u.target else { continue };
-            let Some((field, dot)) = &u.field else { continue };
-            let Some(new) = new_name(&s.globals[gi], field) else { continue };
-            if s.text.get(dot.clone()).is_some_and(|t| t.ends_with(field.as_str())) {
-                self.edits.replace(dot.end - field.len()..dot.end, new);
             }
         }
     }
