@@ -17,6 +17,10 @@
 //!   (two-sided colour is off, GL's default: the fragment stage reads the front colours,
 //!   clamped to [0, 1] as GL's initial `CLAMP_VERTEX_COLOR` does);
 //!   back colours and `gl_ClipVertex` are computed and not used;
+//! - **draw parameters** (`gl_BaseVertex`, `gl_BaseInstance`, `gl_DrawID`, and their
+//!   `ARB` forms; GL 4.6 and Vulkan GLSL too), which WGSL has no built-in for: members of
+//!   the shared uniform block like the state above, zero for effectc's own draws (WGSL's
+//!   `vertex_index` and `instance_index` already count from the draw's bases);
 //! - `ftransform()` is `gl_ModelViewProjectionMatrix * gl_Vertex`; the implementation
 //!   constants (`gl_MaxLights`, …) are Mesa's.
 
@@ -104,6 +108,14 @@ pub const STATE: &[State] = &[
     State { name: "gl_ObjectPlaneR", ty: "vec4", count: Some(MAX_TEXTURE_COORDS) },
     State { name: "gl_ObjectPlaneQ", ty: "vec4", count: Some(MAX_TEXTURE_COORDS) },
     State { name: "gl_Fog", ty: "gl_FogParameters", count: None },
+    // The draw parameters (GL 4.6, ARB_shader_draw_parameters, Vulkan GLSL), which WGSL
+    // lacks: the host's draw sets them; effectc's draws start at vertex and instance 0.
+    State { name: "gl_BaseVertex", ty: "int", count: None },
+    State { name: "gl_BaseInstance", ty: "int", count: None },
+    State { name: "gl_DrawID", ty: "int", count: None },
+    State { name: "gl_BaseVertexARB", ty: "int", count: None },
+    State { name: "gl_BaseInstanceARB", ty: "int", count: None },
+    State { name: "gl_DrawIDARB", ty: "int", count: None },
 ];
 
 impl State {

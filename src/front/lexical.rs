@@ -4,6 +4,8 @@
 //! so every span stays the user's:
 //! - hex and octal literals above `INT_MAX` without a `u` suffix (`0xFFFFFFFF`, an `int`
 //!   with that bit pattern): zeroed for glsl-lang, put back for naga, which reads them;
+//! - the unsigned texture types (`utexture2D`; glsl-lang's grammar lacks them): the signed
+//!   ones for glsl-lang, put back for naga;
 //! - `debugPrintfEXT("…", …)` calls (GL_EXT_debug_printf; glsl-lang has no string
 //!   literals): blanked for both parsers, they compute nothing;
 //! - explicit arithmetic types (`float32_t`, `u8vec4`, `uint64_t`, `f16mat3`;
@@ -87,6 +89,11 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
                 if word == "pervertexEXT" {
                     per_vertex.push(start);
                 }
+            } else if word.starts_with("utexture") {
+                // glsl-lang's grammar lacks the unsigned texture types (its lexer has
+                // them): the signed one for glsl-lang, the user's word for naga.
+                parser[start] = b'i';
+                restore.push((start..i, word.to_string()));
             } else if word == "debugPrintfEXT" {
                 if let Some(end) = call_end(clean, text.as_bytes(), i) {
                     blank(&mut parser, start..end);

@@ -11,7 +11,8 @@
 //! - [`syntax`]: glsl-lang parse into declarations and scope-resolved use sites.
 //! - [`edits`]: text edits with an offset map back to the user's file.
 //! - [`geometry_layout`]: a geometry stage's primitives, `max_vertices` and invocations.
-//! - [`plan`]: bindings and locations shared by all stages; [`rewrite`]: one stage to 4.50.
+//! - [`plan`]: bindings and locations shared by all stages ([`varying_locations`] for the
+//!   varyings); [`rewrite`]: one stage to 4.50.
 //! - [`limitation`]: a legal construct naga cannot take (the stage is checked, not translated).
 //! - [`limits`]: what a stage must keep before any compiler reads it (statement length, macro
 //!   expansion): the stack and memory stay bounded.
@@ -46,4 +47,5 @@ pub mod statements;
 pub mod syntax;
 pub mod through_spirv;
 pub mod units;
+pub mod varying_locations;
 pub mod version;

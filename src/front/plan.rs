@@ -12,6 +12,8 @@ use std::collections::{BTreeMap, HashMap};
 
 use crate::front::compat;
 use crate::front::syntax::{dims_text, sampler_parts, GlslType, Referent, StageSyntax, Storage};
+use crate::front::varying_locations;
+pub use crate::front::varying_locations::location_slots;
 use crate::stage::StageKind;
 
 /// Name of the generated uniform block (its WGSL struct keeps this name).
@@ -77,8 +79,14 @@ pub struct Plan {
     pub textures: Vec<TextureBinding>,
     /// User uniform blocks by block name → binding.
     pub user_blocks: BTreeMap<String, u32>,
+    /// The shared block's binding in set 0: 0, unless a Vulkan declaration takes it.
+    pub block_binding: u32,
     /// Varying (loose name or block name) → first location.
     pub varyings: HashMap<String, u32>,
+    /// Varyings packed into a location's later components (`layout(location = 0, component
+    /// = 3)`), which naga's GLSL front and WGSL cannot express: (location, component) as
+    /// written → a location of their own, the same in every stage.
+    pub component_locations: HashMap<(u32, u32), u32>,
     /// Source text of every struct the block needs, for stages that lack it.
     pub struct_texts: BTreeMap<String, String>,
     /// Non-opaque member types of every struct the block needs (its keys are those structs).
@@ -127,20 +135,6 @@ impl Plan {
     pub fn has_block(&self) -> bool {
         !self.members.is_empty()
     }
-}
-
-/// Number of locations a varying of this type uses.
-pub fn location_slots(ty: &GlslType, stage: &StageSyntax) -> u32 {
-    let per = match ty.base.as_str() {
-        "mat2" | "mat2x2" | "mat2x3" | "mat2x4" | "dmat2" => 2,
-        "mat3" | "mat3x3" | "mat3x2" | "mat3x4" | "dmat3" => 3,
-        "mat4" | "mat4x4" | "mat4x2" | "mat4x3" | "dmat4" => 4,
-        other => match stage.struct_def(other) {
-            Some(s) => s.members.iter().map(|m| location_slots(&m.ty, stage)).sum::<u32>().max(1),
-            None => 1,
-        },
-    };
-    per * ty.dims.iter().map(|d| d.unwrap_or(1)).product::<u32>()
 }
 
 /// How a uniform of type `ty` is stored in a uniform buffer WGSL accepts, with std140's
@@ -220,13 +214,14 @@ pub fn size_implicit_block_members(stages: &mut [StageSyntax]) -> Vec<(String, S
     sized
 }
 
-/// Each block member declared `name[]` in some stage, with one past the largest constant
-/// index written after it in any stage (`inst.name[k]`, or `name[k]` for a block without an
-/// instance name).
+/// Each interface-block member declared `name[]` in some stage, with one past the largest
+/// constant index written after it in any stage (`inst.name[k]`, or `name[k]` for a block
+/// without an instance name). A buffer block's last member declared `name[]` is no such
+/// array: it is sized at run time by the buffer bound.
 fn implicitly_sized_members(stages: &[StageSyntax]) -> Vec<(String, String, u32)> {
     let mut out: Vec<(String, String, u32)> = Vec::new();
     for s in stages {
-        for g in &s.globals {
+        for g in s.globals.iter().filter(|g| matches!(g.storage, Storage::In | Storage::Out)) {
             let Some(b) = &g.block else { continue };
             for m in b.members.iter().filter(|m| m.ty.dims.first() == Some(&None)) {
                 if !out.iter().any(|(bn, mn, _)| *bn == b.block_name && *mn == m.name) {
@@ -412,7 +407,7 @@ pub fn plan(stages: &[StageSyntax], doubles_as_floats: bool) -> Plan {
         .map(|v| v.name.to_string())
         .chain(plan.compat.tex_coords.iter().map(|&i| compat::tex_coord_varying(i)))
         .collect();
-    plan.varyings = varying_locations(stages, &linked);
+    (plan.varyings, plan.component_locations) = varying_locations::number(stages, &linked);
     describe_block_structs(&mut plan, stages);
     for name in plan.compat.block_structs.clone() {
         plan.struct_members.insert(name.to_string(), compat::struct_member_types(name));
@@ -422,7 +417,7 @@ pub fn plan(stages: &[StageSyntax], doubles_as_floats: bool) -> Plan {
 }
 
 /// Numbers the texture + sampler pairs, user blocks and opaque uniforms in set 0, from 1 (0
-/// is the shared block).
+/// is the shared block, unless a declaration of set 0 holds it: then the block comes first).
 fn number_bindings(plan: &mut Plan, stages: &[StageSyntax]) {
     let mut next_binding = 1u32;
     // Declarations that name `set = 0` and a binding keep both (Vulkan GLSL): the bindings
@@ -446,6 +441,9 @@ fn number_bindings(plan: &mut Plan, stages: &[StageSyntax]) {
         next_binding += 1;
         next_binding - 1
     };
+    if reserved.contains(&0) && plan.has_block() {
+        plan.block_binding = next();
+    }
     for t in &mut plan.textures {
         t.texture_binding = next();
         t.sampler_binding = next();
@@ -473,7 +471,7 @@ pub fn first_free_binding(plan: &Plan, stages: &[StageSyntax]) -> u32 {
         .filter_map(|g| g.layout.iter().find(|(k, _)| k == "binding").and_then(|(_, v)| *v))
         .filter_map(|b| u32::try_from(b).ok());
     let planned = plan.textures.iter().flat_map(|t| [t.texture_binding, t.sampler_binding]).chain(plan.user_blocks.values().copied());
-    planned.chain(plan.opaque.values().copied()).chain(declared).max().map_or(1, |b| b + 1)
+    planned.chain(plan.opaque.values().copied()).chain([plan.block_binding]).chain(declared).max().map_or(1, |b| b + 1)
 }
 
 /// For each struct the block needs: its non-opaque member types, a filler member when naga
@@ -567,74 +565,5 @@ fn need_struct(name: &str, s: &StageSyntax, out: &mut Vec<String>) {
             need_struct(&m.ty.base, s, out);
         }
         out.push(name.to_string());
-    }
-}
-
-/// Locations for every varying name across the program. Explicit locations are kept;
-/// the rest are numbered after them in first-seen order, by slot count, and the
-/// compatibility profile's varyings (`linked`, one slot each) after those.
-fn varying_locations(stages: &[StageSyntax], linked: &[String]) -> HashMap<String, u32> {
-    let mut map = HashMap::new();
-    let mut used: Vec<(u32, u32)> = Vec::new();
-    let is_varying = |s: &StageSyntax, g: &crate::front::syntax::Global| match g.storage {
-        Storage::Varying => true,
-        Storage::In => s.stage != StageKind::Vertex,
-        Storage::Out => s.stage != StageKind::Fragment,
-        _ => false,
-    };
-    for s in stages {
-        for g in s.globals.iter().filter(|g| is_varying(s, g)) {
-            if let Some(loc) = g.location {
-                let slots = slots_of(g, s);
-                map.entry(g.name.clone()).or_insert(loc);
-                used.push((loc, loc + slots));
-            }
-        }
-    }
-    // Once a geometry stage is folded, the varyings between the vertex and geometry stages
-    // are private: the fragment stage's inputs are numbered first, so the ones WebGPU passes
-    // start at location 0 (a wide vertex → geometry interface would push them past its limit).
-    let mut order: Vec<&StageSyntax> = stages.iter().collect();
-    if stages.iter().any(|s| s.stage == StageKind::Geometry) {
-        order.sort_by_key(|s| s.stage != StageKind::Fragment);
-    }
-    let mut next = 0u32;
-    for s in order {
-        for g in s.globals.iter().filter(|g| is_varying(s, g)) {
-            if map.contains_key(&g.name) {
-                continue;
-            }
-            let slots = slots_of(g, s);
-            while used.iter().any(|&(a, b)| next < b && a < next + slots) {
-                next += 1;
-            }
-            map.insert(g.name.clone(), next);
-            used.push((next, next + slots));
-            next += slots;
-        }
-    }
-    for name in linked {
-        while used.iter().any(|&(a, b)| next < b && a <= next) {
-            next += 1;
-        }
-        map.insert(name.clone(), next);
-        used.push((next, next + 1));
-        next += 1;
-    }
-    map
-}
-
-fn slots_of(g: &crate::front::syntax::Global, s: &StageSyntax) -> u32 {
-    match &g.block {
-        Some(b) => b.members.iter().map(|m| location_slots(&m.ty, s)).sum::<u32>().max(1),
-        None => {
-            // Geometry/tessellation inputs are per-vertex arrays of the varying.
-            let ty = if matches!(s.stage, StageKind::Geometry | StageKind::TessControl | StageKind::TessEval) && g.storage == Storage::In {
-                g.ty.element()
-            } else {
-                g.ty.clone()
-            };
-            location_slots(&ty, s)
-        }
     }
 }

@@ -56,7 +56,7 @@ impl Ctx<'_> {
                     }
                 }
             }
-            let _ = writeln!(h, "layout(std140, set = 0, binding = 0) uniform {UNIFORM_BLOCK} {{");
+            let _ = writeln!(h, "layout(std140, set = 0, binding = {}) uniform {UNIFORM_BLOCK} {{", self.plan.block_binding);
             // naga's GLSL front aligns a struct member only to its largest member, but WGSL
             // wants structs in uniform buffers 16-aligned and followed by at least
             // roundUp(16, size) bytes: fillers make the layout valid (reflection reads the

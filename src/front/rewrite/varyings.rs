@@ -7,6 +7,7 @@ use std::fmt::Write;
 use super::Ctx;
 use crate::front::plan::location_slots;
 use crate::front::syntax::{dims_text, matrix_shape, Referent, StageSyntax, Storage};
+use crate::front::varying_locations::{self, component};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -62,6 +63,7 @@ impl Ctx<'_> {
         }
         if idxs.len() == 1 {
             if first.location.is_some() {
+                self.unpack_component(first);
                 return;
             }
             let loc = match kind {
@@ -174,6 +176,26 @@ impl Ctx<'_> {
             self.legacy(span.clone(), what, word); // same versions forbid attribute/varying
             self.edits.replace(span.clone(), word);
         }
+    }
+
+    /// A varying in a location's later component (`layout(location = 0, component = 3)`)
+    /// moves to the location the plan gives its pair; `component` goes (naga's GLSL front has
+    /// no such qualifier, and a whole location per varying is what WGSL passes).
+    fn unpack_component(&mut self, g: &crate::front::syntax::Global) {
+        let (Some(component), Some(location), Some(span)) = (component(g), g.location, g.layout_span.clone()) else {
+            return;
+        };
+        if !varying_locations::is_varying(self.s, g) {
+            return;
+        }
+        let location = self.plan.component_locations.get(&(location, component)).copied().unwrap_or(location);
+        let items: Vec<String> = g
+            .layout_items
+            .iter()
+            .filter(|(key, _)| key != "component")
+            .map(|(key, at)| if key == "location" { format!("location = {location}") } else { self.s.text[at.clone()].to_string() })
+            .collect();
+        self.edits.replace(span, format!("layout({})", items.join(", ")));
     }
 }
 

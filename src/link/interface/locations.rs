@@ -11,6 +11,8 @@ use crate::link::{is_read, same_type, type_text};
 #[derive(Debug, Clone)]
 struct Slot {
     location: u32,
+    /// The first component (`layout(component = N)`; 0 when not written).
+    component: u32,
     global: usize,
     /// The member of a block, when the slot is one.
     member: Option<usize>,
@@ -28,7 +30,8 @@ fn located_slots(s: &StageSyntax, globals: &[usize], arrayed: bool) -> Vec<Slot>
             None => {
                 if let Some(loc) = g.location {
                     let ty = GlslType { base: g.ty.base.clone(), dims: per_vertex(&g.ty.dims, arrayed && g.ty.is_array()) };
-                    out.push(Slot { location: loc, global: gi, member: None, ty, span: g.name_span.clone() });
+                    let component = component_of(&g.layout);
+                    out.push(Slot { location: loc, component, global: gi, member: None, ty, span: g.name_span.clone() });
                 }
             }
             Some(b) => {
@@ -36,13 +39,27 @@ fn located_slots(s: &StageSyntax, globals: &[usize], arrayed: bool) -> Vec<Slot>
                 for (mi, m) in b.members.iter().enumerate() {
                     let own = m.layout.iter().find(|(k, _)| k == "location").and_then(|(_, v)| v.and_then(|v| u32::try_from(v).ok()));
                     let Some(loc) = own.or(next) else { continue };
-                    out.push(Slot { location: loc, global: gi, member: Some(mi), ty: m.ty.clone(), span: m.span.clone() });
+                    let component = component_of(&m.layout);
+                    out.push(Slot { location: loc, component, global: gi, member: Some(mi), ty: m.ty.clone(), span: m.span.clone() });
                     next = Some(loc + crate::front::plan::location_slots(&m.ty, s));
                 }
             }
         }
     }
     out
+}
+
+/// The `component` of a layout qualifier (0 when not written).
+fn component_of(layout: &[(String, Option<i64>)]) -> u32 {
+    layout.iter().find(|(k, _)| k == "component").and_then(|(_, v)| v.and_then(|v| u32::try_from(v).ok())).unwrap_or(0)
+}
+
+/// "location 2", or "location 2, component 3" for a varying packed into a later component.
+fn place(location: u32, component: u32) -> String {
+    match component {
+        0 => format!("location {location}"),
+        c => format!("location {location}, component {c}"),
+    }
 }
 
 impl Pair<'_> {
@@ -77,15 +94,16 @@ impl Pair<'_> {
             handled.push(bi);
             let read = is_read(b, bi);
             for slot in &in_slots {
-                let Some(o) = out_slots.iter().find(|o| o.location == slot.location) else {
+                let at_slot = place(slot.location, slot.component);
+                let Some(o) = out_slots.iter().find(|o| o.location == slot.location && o.component == slot.component) else {
                     if read {
                         let what = self.slot_name(b, slot);
                         self.out.push(
                             Diagnostic::new(
                                 Code::NoProducer,
-                                format!("{bt} input `{what}` at location {} has no matching output in the {at} stage", slot.location),
+                                format!("{bt} input `{what}` at {at_slot} has no matching output in the {at} stage"),
                             )
-                            .at(b.file, slot.span.clone(), format!("no {at} output has location {}", slot.location))
+                            .at(b.file, slot.span.clone(), format!("no {at} output has {at_slot}"))
                             .with_note("an input with an explicit location matches the output with the same location, whatever its name"),
                         );
                     }
@@ -98,13 +116,10 @@ impl Pair<'_> {
                     self.out.push(
                         Diagnostic::new(
                             Code::VaryingTypeMismatch,
-                            format!(
-                                "location {}: `{wb}` is `{tb}` in the {bt} stage but the {at} stage's `{wa}` there is `{ta}`",
-                                slot.location
-                            ),
+                            format!("{at_slot}: `{wb}` is `{tb}` in the {bt} stage but the {at} stage's `{wa}` there is `{ta}`"),
                         )
-                        .at(b.file, slot.span.clone(), format!("{bt} input `{tb}` at location {}", slot.location))
-                        .with_label(a.file, o.span.clone(), format!("{at} output `{ta}` at location {}", o.location))
+                        .at(b.file, slot.span.clone(), format!("{bt} input `{tb}` at {at_slot}"))
+                        .with_label(a.file, o.span.clone(), format!("{at} output `{ta}` at {at_slot}"))
                         .with_note("an output and an input matched by location must have the same type")
                         .with_help(format!("declare both as `{ta}`, or give them different locations")),
                     );
