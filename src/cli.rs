@@ -499,6 +499,7 @@ impl CommonArgs {
             jobs: self.jobs.map(|j| j as usize),
             values: Vec::new(),
             fixed_function_vertex: false,
+            hazards: config.hazards,
             // The settings' macros, then the command line's (which win for a name both give).
             defines: config
                 .defines

@@ -12,6 +12,7 @@ mod set_values;
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
+use crate::config::HazardSettings;
 use crate::config::Selection;
 use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::program::{self, CompiledProgram, FrontOptions};
@@ -109,6 +110,8 @@ pub struct InputSpec {
     pub fixed_function_vertex: bool,
     /// `--define`: macros defined in every stage read (before a stage's own defines).
     pub defines: Vec<crate::stage::Define>,
+    /// What the hazard analysis assumes where no manifest says (`effectc.toml`'s `[hazards]`).
+    pub hazards: crate::config::HazardSettings,
 }
 
 impl InputSpec {
@@ -147,12 +150,13 @@ impl InputSpec {
         out.programs = loaded.len();
         let files = &out.files;
         let options = self.front;
+        let hazards = self.hazards;
         let analysed: Vec<(Checked, Vec<Diagnostic>, bool)> = self.on_threads(|| {
             use rayon::prelude::*;
             // One task per program: programs differ a lot in cost (a generated texture's
             // hazard facts, a multi-pass graph), and rayon's default chunks left one of two
             // threads idle a third of the time (1.46x instead of 1.76x on 252 programs).
-            loaded.into_par_iter().with_max_len(1).map(|l| analyse(l, files, options)).collect()
+            loaded.into_par_iter().with_max_len(1).map(|l| analyse(l, files, options, hazards)).collect()
         });
         let mut checked = Vec::with_capacity(analysed.len());
         for ((mut c, diags, io_error), ids) in analysed.into_iter().zip(registered) {
@@ -203,7 +207,7 @@ pub fn check_inputs(inputs: &[PathBuf], forced: Option<StageKind>, options: Fron
 
 /// Analyses one read program: its checked value, its diagnostics, whether a file could
 /// not be read.
-fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, Vec<Diagnostic>, bool) {
+fn analyse(l: load::Loaded, files: &Files, options: FrontOptions, hazards: HazardSettings) -> (Checked, Vec<Diagnostic>, bool) {
     let mut diags = l.diagnostics;
     let io_error = l.io_error;
     let mut units = Vec::new();
@@ -211,7 +215,7 @@ fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, V
     match l.body {
         load::Body::Nothing => {}
         load::Body::Single(stage_files) => {
-            let (program, d) = check_stages(files, &stage_files, l.effect.as_ref(), options);
+            let (program, d) = check_stages(files, &stage_files, l.effect.as_ref(), (options, hazards));
             diags.extend(d);
             if let Some(program) = program {
                 let name = l.effect.as_ref().map_or_else(|| stem_of(files, &program), |e| e.name.clone());
@@ -220,7 +224,7 @@ fn analyse(l: load::Loaded, files: &Files, options: FrontOptions) -> (Checked, V
         }
         load::Body::Passes(passes) => {
             if let Some(effect) = &l.effect {
-                (units, plan) = check_passes(effect, passes, files, options, &mut diags);
+                (units, plan) = check_passes(effect, passes, files, (options, hazards), &mut diags);
             }
             crate::diag::dedup(&mut diags);
         }
@@ -298,7 +302,7 @@ pub fn check_stages(
     files: &Files,
     stage_files: &[(FileId, StageKind)],
     effect: Option<&Effect>,
-    options: FrontOptions,
+    (options, settings): (FrontOptions, HazardSettings),
 ) -> (Option<CompiledProgram>, Vec<Diagnostic>) {
     let mut diags = Vec::new();
     let mut program = program::compile(files, stage_files, options, &mut diags);
@@ -312,7 +316,7 @@ pub fn check_stages(
         }
         if !diags.iter().any(Diagnostic::is_error) {
             program::fold_geometry(p, &mut diags);
-            diags.extend(hazards::analyse(effect, p));
+            diags.extend(hazards::analyse(effect, p, settings));
         }
     }
     crate::front::macro_spans::narrow(files, &mut diags);
@@ -368,7 +372,7 @@ fn check_passes(
     effect: &Effect,
     passes: Vec<load::PassFiles>,
     files: &Files,
-    options: FrontOptions,
+    (options, settings): (FrontOptions, HazardSettings),
     out: &mut Vec<Diagnostic>,
 ) -> (Vec<Unit>, Option<PassPlan>) {
     let mut units = Vec::new();
@@ -400,7 +404,7 @@ fn check_passes(
                 // Targets an earlier pass drew are unknown to the analysis: they raise nothing.
                 if !diags.iter().any(Diagnostic::is_error) {
                     program::fold_geometry(p, &mut diags);
-                    diags.extend(hazards::analyse(Some(&view), p));
+                    diags.extend(hazards::analyse(Some(&view), p, settings));
                 }
                 syntaxes = Some(s);
             }

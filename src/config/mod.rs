@@ -16,6 +16,8 @@
 //! glsl = "fragment"
 //! [limits]                          # what effectc reads at most (see `crate::limits`)
 //! file-bytes = 16777216
+//! [hazards]                         # what the hazard analysis assumes of bare stage files
+//! time-limit = 3600                 # seconds a time uniform runs (default an hour)
 //! [[program]]                       # programs as the host code links them
 //! name = "lit"
 //! vertex = "data/PCN.vert"
@@ -160,6 +162,27 @@ pub struct Config {
     /// `define = { NAME = VALUE }`: macros defined in every stage (as `--define`, which
     /// adds to them and wins for a name both give).
     pub defines: Vec<crate::stage::Define>,
+    /// `[hazards]`: what the hazard analysis assumes where no manifest says.
+    pub hazards: HazardSettings,
+}
+
+/// What the hazard analysis assumes where no manifest declares a range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HazardSettings {
+    /// Seconds a time uniform runs (`time`, `iTime`, …) without a `range`: an hour, a
+    /// realistic session, unless `[hazards] time-limit` says otherwise.
+    pub time_limit: f64,
+}
+
+impl HazardSettings {
+    /// An hour.
+    pub const DEFAULT_TIME_LIMIT: f64 = 3600.0;
+}
+
+impl Default for HazardSettings {
+    fn default() -> Self {
+        HazardSettings { time_limit: Self::DEFAULT_TIME_LIMIT }
+    }
 }
 
 /// A loaded configuration: the settings, and the file's text with the diagnostics about

@@ -12,7 +12,7 @@ use globset::{GlobSet, GlobSetBuilder};
 use toml::de::{DeTable, DeValue};
 use toml::Spanned;
 
-use super::{glob, Config, DeclaredProgram, Selection, TargetEnv, FILE_NAME};
+use super::{glob, Config, DeclaredProgram, HazardSettings, Selection, TargetEnv, FILE_NAME};
 use crate::diag::suppress::{self, Policy};
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::limits::Limits;
@@ -21,8 +21,21 @@ use crate::stage::StageKind;
 type Val<'i> = Spanned<DeValue<'i>>;
 
 /// The keys at the top of the file.
-const KEYS: [&str; 12] =
-    ["include", "exclude", "target-env", "strict", "deny-warnings", "allow", "deny", "readable", "define", "stages", "limits", "program"];
+const KEYS: [&str; 13] = [
+    "include",
+    "exclude",
+    "target-env",
+    "strict",
+    "deny-warnings",
+    "allow",
+    "deny",
+    "readable",
+    "define",
+    "stages",
+    "limits",
+    "hazards",
+    "program",
+];
 
 /// The settings of `text` (the file at `path`, registered as `file`); problems go to
 /// `diags` (errors for what cannot be used, W0004 for unknown codes).
@@ -63,6 +76,7 @@ pub(super) fn parse(text: &str, file: FileId, path: &Path, diags: &mut Vec<Diagn
             "define" => config.defines = w.defines(v),
             "stages" => config.selection.stages = w.stages(v),
             "limits" => config.limits = w.limits(v),
+            "hazards" => config.hazards = w.hazards(v),
             "program" => config.selection.programs = w.programs(v),
             other => {
                 let d = w.bad(k.span(), format!("unknown key `{other}` in {FILE_NAME}"), "not a setting");
@@ -273,6 +287,32 @@ impl Walk<'_> {
             }
         }
         out
+    }
+
+    /// `[hazards]`: `time-limit`, a positive number of seconds.
+    fn hazards(&mut self, v: &Val<'_>) -> HazardSettings {
+        let mut settings = HazardSettings::default();
+        let DeValue::Table(t) = v.get_ref() else {
+            self.wrong_type(v, "hazards", "a table (`[hazards]`)");
+            return settings;
+        };
+        for (k, value) in t.iter() {
+            let key = k.get_ref().as_ref();
+            let seconds = match value.get_ref() {
+                DeValue::Integer(i) => i64::from_str_radix(i.as_str(), i.radix()).ok().map(|n| n as f64),
+                DeValue::Float(f) => f.as_str().parse::<f64>().ok(),
+                _ => None,
+            };
+            match (key, seconds) {
+                ("time-limit", Some(s)) if s > 0.0 && s.is_finite() => settings.time_limit = s,
+                ("time-limit", _) => self.wrong_type(value, key, "a positive number of seconds"),
+                _ => {
+                    let d = self.bad(k.span(), format!("unknown key `{key}` in [hazards]"), "not a hazard setting");
+                    self.diags.push(d.with_help("one of: time-limit"));
+                }
+            }
+        }
+        settings
     }
 
     /// `[limits]`: each a positive integer, named as [`Limits::named`] names them.

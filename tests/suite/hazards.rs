@@ -8,7 +8,7 @@ use crate::common;
 
 #[test]
 fn guarded_hazards_raise_nothing() {
-    let dirs = common::fixtures("tests/safe", 2);
+    let dirs = common::fixtures("tests/safe", 4);
     for dir in dirs.iter().chain(common::fixtures("effects", 21).iter()) {
         let (outcome, _) = common::check(dir);
         assert!(outcome.diagnostics.is_empty(), "{}:\n{}", dir.display(), common::render(&outcome));

@@ -234,3 +234,24 @@ fn list_uniforms_shows_types_defaults_and_guesses() {
     assert_eq!(c["initializer"], serde_json::json!([0.1, 0.5, 0.9]), "{c}");
     assert_eq!(c["guessed"], false, "{c}");
 }
+
+#[test]
+fn the_config_sets_how_long_time_runs_for_the_hazards() {
+    // `sin(time * 10.0)` passes W0717's 10⁴ rad after 1,000 s: inside the default hour,
+    // outside a 10-minute session.
+    let dir = program("hazard-time", &vertex("", ""));
+    std::fs::write(dir.join("a.frag"), "#version 330 core\nin vec3 colour;\nuniform float time;\nout vec4 frag;\nvoid main() {\n    frag = vec4(colour * sin(time * 10.0), 1.0);\n}\n").unwrap();
+    let hazard = |got: &[String]| got.iter().filter(|c| *c == "W0717").count();
+    assert_eq!(hazard(&codes(&[path(&dir)]).1), 1, "an hour by default");
+    std::fs::write(dir.join("effectc.toml"), "[hazards]\ntime-limit = 600\n").unwrap();
+    assert_eq!(hazard(&codes(&[path(&dir)]).1), 0, "ten minutes: 6,000 rad at most");
+    std::fs::write(dir.join("effectc.toml"), "[hazards]\ntime-limit = 86400.0\n").unwrap();
+    assert_eq!(hazard(&codes(&[path(&dir)]).1), 1, "a day, as a float");
+    for bad in ["[hazards]\ntime-limit = -1\n", "[hazards]\ntime-limit = \"1h\"\n", "[hazards]\nduration = 60\n", "hazards = 3\n"] {
+        std::fs::write(dir.join("effectc.toml"), bad).unwrap();
+        let out = effectc(&["check", "--color", "never", path(&dir)]);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(out.status.code(), Some(2), "{bad}: {text}");
+        assert!(text.contains("effectc.toml:"), "{bad}: {text}");
+    }
+}

@@ -165,10 +165,18 @@ impl Analyzer<'_> {
                 })
             }
             Expression::Binary { op, left, right } => self.binary(c, state, h, op, left, right),
-            Expression::Select { accept, reject, .. } => {
-                let a = self.value(c, state, accept);
-                let b = self.value(c, state, reject);
-                a.join(&b)
+            Expression::Select { condition, accept, reject } => {
+                // A decided scalar condition picks its arm (`abs(N.z) < 0.999 ? … : …` of a
+                // constant N); otherwise both arms can be the value.
+                match self.num(c, state, condition).c.as_slice() {
+                    [x] if x.is_point() && x.lo == 1.0 => self.value(c, state, accept),
+                    [x] if x.is_point() && x.lo == 0.0 => self.value(c, state, reject),
+                    _ => {
+                        let a = self.value(c, state, accept);
+                        let b = self.value(c, state, reject);
+                        a.join(&b)
+                    }
+                }
             }
             Expression::Derivative { expr, .. } => {
                 // The difference of two neighbouring values, both inside the value's range.
@@ -393,16 +401,23 @@ impl Analyzer<'_> {
                 if a.c.len() != 1 || b.c.len() != 1 {
                     return state;
                 }
-                // An integer holds its type's range whatever else is unknown about it: `i < n`
-                // bounds `i` by `INT_MAX - 1` even when `n` is any int (a loop to a uniform
-                // count never overflows its counter).
+                // An integer holds its type's range whatever else is unknown about it (a loop to
+                // a uniform count never overflows its counter), an unknown one short of the
+                // extremes: `i <= n` overflows `i++` only at `n = INT_MAX`, which no one means.
                 let range = match a.kind {
                     naga::ScalarKind::Sint => Some(Iv::new(f64::from(i32::MIN), f64::from(i32::MAX))),
                     naga::ScalarKind::Uint => Some(Iv::new(0.0, f64::from(u32::MAX))),
                     _ => None,
                 };
-                let typed = |v: Iv| range.map_or(v, |r| v.meet(r));
-                let (ai, bi) = (typed(a.c[0]), typed(b.c[0]));
+                let short = |r: Iv| Iv::new(r.lo + 1.0, r.hi - 1.0);
+                let typed = |v: &Num| range.map(|r| if v.known { r } else { short(r) }).map_or(v.c[0], |r| v.c[0].meet(r));
+                let (ai, bi) = (typed(&a), typed(&b));
+                if ops::never(op, ai, bi) {
+                    // This side of the test cannot run (a loop's exit before its first
+                    // iteration, when the counter starts inside the bound).
+                    state.live = false;
+                    return state;
+                }
                 let int = range.is_some();
                 self.learn(c, &mut state, left, op, bi, int);
                 self.learn(c, &mut state, right, mirror(op), ai, int);
@@ -462,7 +477,7 @@ impl Analyzer<'_> {
                     _ => unknown,
                 }
             }
-            Some(naga::Binding::BuiltIn(b)) => builtin(*b, self.facts, unknown),
+            Some(naga::Binding::BuiltIn(b)) => self.facts.builtin(*b, unknown),
             None => unknown,
         }
     }
@@ -553,23 +568,6 @@ fn fit(f: &Num, u: &Num) -> Num {
         r.len = r.len.meet(f.len3);
     }
     r
-}
-
-fn builtin(b: naga::BuiltIn, facts: &super::facts::Facts, unknown: Val) -> Val {
-    use naga::BuiltIn as Bi;
-    let (w, h) = facts.frame_size;
-    let comps: Option<Vec<Iv>> = match b {
-        Bi::Position { .. } => Some(vec![Iv::new(0.0, w), Iv::new(0.0, h), Iv::UNIT, Iv::new(f64::MIN_POSITIVE, f64::INFINITY)]),
-        Bi::FrontFacing => Some(vec![Iv::UNIT]),
-        Bi::VertexIndex => Some(vec![Iv::new(0.0, f64::from(i32::MAX))]),
-        Bi::InstanceIndex => Some(vec![Iv::new(0.0, f64::from(facts.instances.max(1) - 1))]),
-        Bi::PointCoord => Some(vec![Iv::UNIT, Iv::UNIT]),
-        _ => None,
-    };
-    match (comps, unknown) {
-        (Some(c), Val::Num(u)) if c.len() == u.c.len() => Val::Num(Num::from_comps(c, 1, u.kind, true)),
-        (_, u) => u,
-    }
 }
 
 /// The comparison that holds when `op` evaluates to `truth`.

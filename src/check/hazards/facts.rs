@@ -4,7 +4,8 @@
 //!
 //! Semantic matrices and the camera position are sampled over the camera keys and one
 //! full turn of the model's spin (257 instants); the hull of the samples is the fact.
-//! Time runs over `[0, DEFAULT_TIME_LIMIT]` unless the time uniform has a `range`.
+//! Time runs over `[0, time limit]` (an hour unless `effectc.toml`'s `[hazards]` says
+//! otherwise) unless the time uniform has a `range`.
 
 use std::collections::HashMap;
 
@@ -16,8 +17,8 @@ use super::value::{singular_bounds, Num, Val};
 use crate::assets::mesh::Mesh;
 use crate::manifest::{CameraDecl, Effect, MeshAttribute, MeshSource, ModelDecl, Semantic, TextureSource, UniformDefault, UniformValue};
 
-/// How long an effect is assumed to run when its time uniform has no `range`: a day.
-pub const DEFAULT_TIME_LIMIT: f64 = 86_400.0;
+/// Frames a second a frame counter (`FrameCount`, `iFrame`) advances by.
+const FRAMES_PER_SECOND: f64 = 60.0;
 
 /// Largest frame size assumed for `resolution`-like values and `gl_FragCoord`.
 const MAX_SIZE: f64 = 16_384.0;
@@ -36,6 +37,9 @@ pub struct Facts {
     /// `gl_FragCoord.xy` bounds.
     pub frame_size: (f64, f64),
     pub instances: u32,
+    /// Vertices the effect's mesh draws (`gl_VertexID` stays below); `None` without a
+    /// mesh: the index then depends on meshes nothing here knows, and stays unknown.
+    pub vertices: Option<u32>,
     pub time_limit: f64,
     /// Bare stage files: the value of each semantic, for uniforms whose name suggests one
     /// (as the renderer guesses); empty for an effect.
@@ -44,8 +48,9 @@ pub struct Facts {
 
 impl Facts {
     /// The facts an effect gives; `None` (bare stage files) knows nothing but builtins.
-    pub fn of(effect: Option<&Effect>, attribute_names: &[(u32, String)]) -> Facts {
-        let mut f = Facts { frame_size: (MAX_SIZE, MAX_SIZE), instances: 1, time_limit: DEFAULT_TIME_LIMIT, ..Facts::default() };
+    /// `time_limit`: how long a time uniform without a `range` runs.
+    pub fn of(effect: Option<&Effect>, attribute_names: &[(u32, String)], time_limit: f64) -> Facts {
+        let mut f = Facts { frame_size: (MAX_SIZE, MAX_SIZE), instances: 1, time_limit, ..Facts::default() };
         let Some(e) = effect else { return f };
         if let Some((w, h)) = e.render.size {
             f.frame_size = (w as f64, h as f64);
@@ -67,6 +72,7 @@ impl Facts {
             let explicit = e.mesh.as_ref().map(|m| m.attributes.clone()).unwrap_or_default();
             let per_instance = |name: &str| e.instances.as_ref().is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
             f.mesh_attributes(&mesh, &explicit, attribute_names, &per_instance);
+            f.vertices = u32::try_from(mesh.positions.len().max(mesh.indices.len())).ok();
         }
         for t in &e.textures {
             if let Some(channels) = texture_channels(&t.source) {
@@ -78,14 +84,33 @@ impl Facts {
 }
 
 impl Facts {
+    /// The value of built-in input `b` (`unknown`, its type's unknown value, where
+    /// nothing is known of it).
+    pub fn builtin(&self, b: naga::BuiltIn, unknown: Val) -> Val {
+        use naga::BuiltIn as Bi;
+        let (w, h) = self.frame_size;
+        let comps: Option<Vec<Iv>> = match b {
+            Bi::Position { .. } => Some(vec![Iv::new(0.0, w), Iv::new(0.0, h), Iv::UNIT, Iv::new(f64::MIN_POSITIVE, f64::INFINITY)]),
+            Bi::FrontFacing => Some(vec![Iv::UNIT]),
+            Bi::VertexIndex => self.vertices.map(|n| vec![Iv::new(0.0, f64::from(n.max(1) - 1))]),
+            Bi::InstanceIndex => Some(vec![Iv::new(0.0, f64::from(self.instances.max(1) - 1))]),
+            Bi::PointCoord => Some(vec![Iv::UNIT, Iv::UNIT]),
+            _ => None,
+        };
+        match (comps, unknown) {
+            (Some(c), Val::Num(u)) if c.len() == u.c.len() => Val::Num(Num::from_comps(c, 1, u.kind, true)),
+            (_, u) => u,
+        }
+    }
+
     /// The facts of bare stage files: what the renderer guesses for them. A uniform named
-    /// like a semantic (`iTime`, `u_resolution`, `projection`) takes its values (time over
-    /// a day, the default camera's matrices). The vertex inputs stay unknown: the mesh the
+    /// like a semantic (`iTime`, `u_resolution`, `projection`) takes its values (time up to
+    /// `time_limit`, the default camera's matrices). The vertex inputs stay unknown: the mesh the
     /// renderer guesses (a unit cube, a full-screen quad) says little about the user's own
     /// meshes, and its per-component hull made false positives (a cube's z spans 0 though
     /// no corner has z = 0).
-    pub fn guessed() -> Facts {
-        let mut f = Facts { frame_size: (MAX_SIZE, MAX_SIZE), instances: 1, time_limit: DEFAULT_TIME_LIMIT, ..Facts::default() };
+    pub fn guessed(time_limit: f64) -> Facts {
+        let mut f = Facts { frame_size: (MAX_SIZE, MAX_SIZE), instances: 1, time_limit, ..Facts::default() };
         let motion = Motion::sample(Default::default(), &Default::default(), None);
         for s in Semantic::ALL {
             if let Some(n) = semantic_fact(s, &motion, f.time_limit, None) {
@@ -268,7 +293,8 @@ fn semantic_fact(s: Semantic, motion: &Motion, time_limit: f64, range: Option<(f
     Some(match s {
         Semantic::Time => scalar(Iv::new(0.0, time_limit)),
         Semantic::DeltaTime => scalar(Iv::new(0.0, 1.0)),
-        Semantic::Frame => Num::scalar(Iv::new(0.0, f64::from(i32::MAX)), ScalarKind::Sint, true),
+        // A frame counter over the same session, at 60 frames a second.
+        Semantic::Frame => Num::scalar(Iv::new(0.0, (time_limit * FRAMES_PER_SECOND).min(f64::from(i32::MAX))), ScalarKind::Sint, true),
         Semantic::Resolution => {
             Num::from_comps(vec![Iv::new(1.0, MAX_SIZE), Iv::new(1.0, MAX_SIZE), Iv::point(1.0)], 1, ScalarKind::Float, true)
         }

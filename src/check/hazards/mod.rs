@@ -5,7 +5,8 @@
 //!
 //! - [`interval`]: interval arithmetic; [`value`]: abstract values with vector facts;
 //! - [`facts`]: what is known before the shader runs;
-//! - [`walk`]: statements and control flow; [`eval`]: expressions; [`ops`]: the algebra.
+//! - [`walk`]: statements and control flow ([`induction`]: variables stepped with a loop's
+//!   counter); [`eval`]: expressions; [`ops`]: the algebra.
 //!
 //! The vertex stage runs first; its outputs become the fragment stage's inputs (the hull
 //! of values is preserved by interpolation). Only values derived from known facts raise a
@@ -15,11 +16,13 @@
 pub mod eval;
 pub mod facts;
 mod geometric;
+mod induction;
 pub mod interval;
 pub mod ops;
 pub mod value;
 pub mod walk;
 
+use crate::config::HazardSettings;
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::manifest::Effect;
@@ -204,8 +207,9 @@ fn big(x: f64) -> String {
     }
 }
 
-/// Runs the analysis over a compiled program; warnings at the user's spans.
-pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagnostic> {
+/// Runs the analysis over a compiled program; warnings at the user's spans. `settings`:
+/// what it assumes where the manifest says nothing (`effectc.toml`'s `[hazards]`).
+pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram, settings: HazardSettings) -> Vec<Diagnostic> {
     let find = |kind: StageKind| program.stages.iter().find(|s| s.syntax.stage == kind);
     // The vertex stage as analysed: its own module, or the fold of the vertex and geometry
     // stages (each corner of a primitive reads the vertex inputs), whose spans lead back
@@ -232,8 +236,8 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
         })
         .unwrap_or_default();
     let mut f = match effect {
-        Some(_) => facts::Facts::of(effect, &names),
-        None => facts::Facts::guessed(),
+        Some(_) => facts::Facts::of(effect, &names, settings.time_limit),
+        None => facts::Facts::guessed(settings.time_limit),
     };
     let mut out = Vec::new();
     for (kind, stage) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
@@ -272,9 +276,20 @@ pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram) -> Vec<Diagno
         if kind == StageKind::Vertex {
             f.varyings = outputs.into_iter().filter_map(|(l, v)| v.num().cloned().map(|n| (l, varying(n)))).collect();
         }
-        out.extend(hazards.iter().map(&at_user));
+        out.extend(without_hash_arguments(&hazards).map(&at_user));
     }
     out
+}
+
+/// The hazards less W0717 on the `sin` inside a `fract(sin(x) * K)` hash W0718 reports: a
+/// hash means its huge argument, and W0718 already says why its bits differ between GPUs.
+fn without_hash_arguments(hazards: &[Hazard]) -> impl Iterator<Item = &Hazard> {
+    let hashes: Vec<std::ops::Range<usize>> =
+        hazards.iter().filter(|h| h.code == Code::HazardSinHash).filter_map(|h| h.span.to_range()).collect();
+    hazards.iter().filter(move |h| {
+        let inside = |r: &std::ops::Range<usize>| h.span.to_range().is_some_and(|s| r.start <= s.start && s.end <= r.end);
+        !(h.code == Code::HazardTrig && hashes.iter().any(inside))
+    })
 }
 
 /// A vertex output as the fragment stage sees it: the hull survives interpolation, and a

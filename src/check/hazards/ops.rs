@@ -248,6 +248,18 @@ fn divide(x: Iv, y: Iv, gap: f64) -> Iv {
     Iv::TOP
 }
 
+/// Whether `a op b` is false for every `a` and `b` in the intervals.
+pub fn never(op: B, a: Iv, b: Iv) -> bool {
+    match op {
+        B::Less => a.lo >= b.hi,
+        B::LessEqual => a.lo > b.hi,
+        B::Greater => a.hi <= b.lo,
+        B::GreaterEqual => a.hi < b.lo,
+        B::Equal => a.hi < b.lo || b.hi < a.lo,
+        _ => false,
+    }
+}
+
 fn compare(op: B, x: Iv, y: Iv) -> Iv {
     let (always, never) = match op {
         B::Less => (x.hi < y.lo, x.lo >= y.hi),

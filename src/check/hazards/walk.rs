@@ -2,9 +2,11 @@
 //! `if` (refined by the condition), loops iterated to a fixpoint with widening, calls
 //! inlined. Expressions are evaluated in [`super::eval`]; hazards are recorded there.
 //!
-//! Loops are first iterated quietly until their state stops changing (bounds that keep
-//! growing jump to infinity after two rounds; the loop's exit test then cuts them back),
-//! then run once more with reporting on, so every hazard is judged on the final state.
+//! A loop's first iteration runs on its own; the later ones are iterated quietly until
+//! their state stops changing (bounds that keep
+//! growing jump to infinity after two rounds; the loop's exit test then cuts them back,
+//! and [`super::induction`] the variables stepped with the counter), then run once more
+//! with reporting on, so every hazard is judged on the final state.
 
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
@@ -425,11 +427,15 @@ impl<'a> Analyzer<'a> {
         break_if: Option<Handle<Expression>>,
         entry: State,
     ) -> State {
-        let mut head = entry.clone();
+        // The first iteration on its own (reported: its values are the loop's too): the
+        // head of every later one has seen at least one, so a count or sum the body always
+        // adds to is no longer joined with its value before the loop.
+        let (first, first_out) = self.loop_round(c, body, continuing, break_if, entry.clone());
+        let mut head = first.clone();
         self.quiet += 1;
         for round in 0..MAX_ROUNDS {
             let (next, _) = self.loop_round(c, body, continuing, break_if, head.clone());
-            let mut joined = entry.join(&next, &mut self.fresh);
+            let mut joined = first.join(&next, &mut self.fresh);
             if round >= 2 {
                 joined = joined.widen(&head);
             }
@@ -439,8 +445,9 @@ impl<'a> Analyzer<'a> {
             head = joined;
         }
         self.quiet -= 1;
+        let head = self.bound_inductions(c, &entry, head, body, continuing);
         let (_, out) = self.loop_round(c, body, continuing, break_if, head);
-        out
+        first_out.join(&out, &mut self.fresh)
     }
 
     /// One iteration from `head`: the state back at the head, and the state after the loop.
