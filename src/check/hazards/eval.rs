@@ -166,16 +166,11 @@ impl Analyzer<'_> {
             }
             Expression::Binary { op, left, right } => self.binary(c, state, h, op, left, right),
             Expression::Select { condition, accept, reject } => {
-                // A decided scalar condition picks its arm (`abs(N.z) < 0.999 ? … : …` of a
-                // constant N); otherwise both arms can be the value.
+                // A decided condition picks its arm (`abs(N.z) < 0.999 ? … : …`, N constant).
                 match self.num(c, state, condition).c.as_slice() {
                     [x] if x.is_point() && x.lo == 1.0 => self.value(c, state, accept),
                     [x] if x.is_point() && x.lo == 0.0 => self.value(c, state, reject),
-                    _ => {
-                        let a = self.value(c, state, accept);
-                        let b = self.value(c, state, reject);
-                        a.join(&b)
-                    }
+                    _ => self.value(c, state, accept).join(&self.value(c, state, reject)),
                 }
             }
             Expression::Derivative { expr, .. } => {
@@ -395,7 +390,7 @@ impl Analyzer<'_> {
                 return state;
             }
             Expression::Binary { op, left, right } => {
-                let Some(op) = comparison(op, truth) else { return state };
+                let Some(op) = ops::comparison(op, truth) else { return state };
                 let a = self.num(c, &state, left);
                 let b = self.num(c, &state, right);
                 if a.c.len() != 1 || b.c.len() != 1 {
@@ -419,8 +414,15 @@ impl Analyzer<'_> {
                     return state;
                 }
                 let int = range.is_some();
+                // An integer that is not `N` and is at most `N` is below it (`i != 3` ends a
+                // loop counting up from 0).
+                let op = match (op, int && bi.is_point()) {
+                    (B::NotEqual, true) if ai.hi == bi.lo => B::Less,
+                    (B::NotEqual, true) if ai.lo == bi.lo => B::Greater,
+                    _ => op,
+                };
                 self.learn(c, &mut state, left, op, bi, int);
-                self.learn(c, &mut state, right, mirror(op), ai, int);
+                self.learn(c, &mut state, right, ops::mirror(op), ai, int);
             }
             _ => {}
         }
@@ -451,6 +453,13 @@ impl Analyzer<'_> {
             None => Refined { iv, gap },
         };
         state.refined.insert(key, merged);
+        if let Expression::As { expr, kind: ScalarKind::Float, convert: Some(_) } = c.fun.expressions[x] {
+            // `float(i) < 4.0` bounds the integer `i` too (the conversion is monotone).
+            if matches!(self.num(c, state, expr).kind, ScalarKind::Sint | ScalarKind::Uint) {
+                let whole = Iv::new(bound.lo.ceil(), bound.hi.floor());
+                self.learn(c, state, expr, op, if op == B::Equal { whole } else { bound }, false);
+            }
+        }
         if let Expression::Math { fun: naga::MathFunction::Abs, arg, .. } = c.fun.expressions[x] {
             // abs(y) >= k  ⇒  |y| >= k;  abs(y) <= k  ⇒  y in [-k, k].
             let Some(inner) = c.keys[arg.index()] else { return };
@@ -568,31 +577,6 @@ fn fit(f: &Num, u: &Num) -> Num {
         r.len = r.len.meet(f.len3);
     }
     r
-}
-
-/// The comparison that holds when `op` evaluates to `truth`.
-fn comparison(op: B, truth: bool) -> Option<B> {
-    let flipped = match op {
-        B::Less => B::GreaterEqual,
-        B::LessEqual => B::Greater,
-        B::Greater => B::LessEqual,
-        B::GreaterEqual => B::Less,
-        B::Equal => B::NotEqual,
-        B::NotEqual => B::Equal,
-        _ => return None,
-    };
-    Some(if truth { op } else { flipped })
-}
-
-/// `a op b` seen from `b`.
-fn mirror(op: B) -> B {
-    match op {
-        B::Less => B::Greater,
-        B::LessEqual => B::GreaterEqual,
-        B::Greater => B::Less,
-        B::GreaterEqual => B::LessEqual,
-        other => other,
-    }
 }
 
 fn literal(l: Literal) -> Val {

@@ -248,6 +248,31 @@ fn divide(x: Iv, y: Iv, gap: f64) -> Iv {
     Iv::TOP
 }
 
+/// The comparison that holds when `op` evaluates to `truth`.
+pub fn comparison(op: B, truth: bool) -> Option<B> {
+    let flipped = match op {
+        B::Less => B::GreaterEqual,
+        B::LessEqual => B::Greater,
+        B::Greater => B::LessEqual,
+        B::GreaterEqual => B::Less,
+        B::Equal => B::NotEqual,
+        B::NotEqual => B::Equal,
+        _ => return None,
+    };
+    Some(if truth { op } else { flipped })
+}
+
+/// `a op b` seen from `b`.
+pub fn mirror(op: B) -> B {
+    match op {
+        B::Less => B::Greater,
+        B::LessEqual => B::GreaterEqual,
+        B::Greater => B::Less,
+        B::GreaterEqual => B::LessEqual,
+        other => other,
+    }
+}
+
 /// Whether `a op b` is false for every `a` and `b` in the intervals.
 pub fn never(op: B, a: Iv, b: Iv) -> bool {
     match op {

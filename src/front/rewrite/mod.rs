@@ -133,6 +133,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.std140_struct_fillers();
     c.row_major_uses();
     c.unsized_arrays();
+    c.constructor_conditions();
     c.scalar_swizzles(scalar_swizzles);
     c.polyfills();
     c.subpass_inputs();
