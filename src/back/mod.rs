@@ -2,8 +2,8 @@
 //!
 //! Steps: fix `switch` fall-through per stage (spans still map to the user's file) → merge
 //! the stages into one module ([`merge`]) → make interpolation explicit and map GL clip
-//! depth to WebGPU's ([`fixes`]), pack narrow varyings where WebGPU's locations run out
-//! ([`varying_packing`]) → leave out what nothing uses ([`prune`]) → validate →
+//! depth to WebGPU's ([`fixes`]) → leave out what nothing uses ([`prune`]) → pack narrow
+//! varyings where WebGPU's locations run out ([`varying_packing`]) → validate →
 //! reflect ([`reflect`]). Each target writer takes only the validated module.
 //! A program with a geometry stage arrives folded ([`crate::front::geometry_fold`]): its
 //! vertex and geometry stages are one vertex module that pulls its vertices from two
@@ -147,8 +147,6 @@ pub fn translate(
             .with_help("give each resource its own binding in every stage")]
     })?;
     fixes::normalize_interpolation(&mut module);
-    // GL packs narrow varyings four components to a location; WGSL gives each a location.
-    varying_packing::pack_varyings(&mut module, varying_packing::WEBGPU_LOCATIONS);
     fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
     // Vulkan GLSL's clip space has WebGPU's depth range already and its y axis pointing
     // down: y is negated (as naga's SPIR-V front does unless told to keep the coordinate
@@ -186,6 +184,9 @@ pub fn translate(
         // (`gl_VertexIndex` for a GL stage's `gl_VertexID`), written by the user or not.
         left_out.retain(|l| !l.name.starts_with("gl_"));
     }
+    // GL packs narrow varyings four components to a location; WGSL gives each a location.
+    // After pruning: only the varyings the fragment stage receives are counted and packed.
+    varying_packing::pack_varyings(&mut module, varying_packing::WEBGPU_LOCATIONS);
     fixes::read_only_unwritten_storage(&mut module);
     fixes::narrow_storage_image_access(&mut module);
     let info = validator()

@@ -296,6 +296,18 @@ fn wrap_fragment(module: &mut Module, index: usize, places: &BTreeMap<u32, Place
         }
     }
     let first_packed = arguments.len();
+    // The packed locations the old inputs read (an output no input receives stays unread).
+    let read: Vec<u32> = old_args
+        .iter()
+        .filter_map(|a| match location_of(a.binding.as_ref()).and_then(|l| places.get(&l)) {
+            Some(Place::Packed(slots)) => Some(slots.iter().map(|(loc, _)| *loc).collect::<Vec<_>>()),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    let packed: BTreeMap<u32, (Binding, Scalar)> =
+        packed.iter().filter(|(at, _)| read.contains(at)).map(|(k, v)| (*k, v.clone())).collect();
+    let packed = &packed;
     for (&at, (binding, scalar)) in packed {
         let ty = vec4_of(module, *scalar);
         arguments.push(FunctionArgument { name: Some(format!("effectc_packed{at}")), ty, binding: Some(binding.clone()) });
