@@ -157,10 +157,11 @@ fn packed_struct(
         out.push(StructMember { name: Some(format!("effectc_packed{at}")), ty, binding: Some(binding.clone()), offset: 0 });
         sources.push(Source::Packed(at));
     }
+    // Every member at a 16-byte boundary (no member is wider than its rounded size).
     let mut offset = 0;
     for m in &mut out {
         m.offset = offset;
-        offset += 16;
+        offset += module.types[m.ty].inner.size(module.to_ctx()).next_multiple_of(16).max(16);
     }
     let inner = TypeInner::Struct { members: out, span: offset };
     (module.types.insert(Type { name: Some("EffectcPackedOutput".into()), inner }, Span::UNDEFINED), sources)
