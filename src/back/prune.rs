@@ -216,7 +216,8 @@ fn argument_target(f: &Function, arg: u32) -> Option<(Handle<GlobalVariable>, Op
     target
 }
 
-fn location_of(b: &Option<Binding>) -> Option<u32> {
+/// The location of a `@location` binding.
+pub(super) fn location_of(b: &Option<Binding>) -> Option<u32> {
     match b {
         Some(Binding::Location { location, .. }) => Some(*location),
         _ => None,

@@ -11,6 +11,8 @@
 
 use std::collections::BTreeMap;
 
+use super::prune::location_of;
+
 use naga::{
     Binding, Block, EntryPoint, Expression, Function, FunctionArgument, FunctionResult, Handle, Literal, Module, Scalar, ScalarKind,
     ShaderStage, Span, Statement, StructMember, Type, TypeInner, VectorSize,
@@ -34,7 +36,7 @@ pub fn pack_varyings(module: &mut Module, limit: u32) -> bool {
     let Some(vi) = module.entry_points.iter().position(|e| e.stage == ShaderStage::Vertex) else { return false };
     let Some(result) = module.entry_points[vi].function.result.clone() else { return false };
     let TypeInner::Struct { members, .. } = module.types[result.ty].inner.clone() else { return false };
-    if members.iter().filter(|m| location_of(m.binding.as_ref()).is_some()).count() as u32 <= limit {
+    if members.iter().filter(|m| location_of(&m.binding).is_some()).count() as u32 <= limit {
         return false;
     }
     let fragment = module.entry_points.iter().position(|e| e.stage == ShaderStage::Fragment);
@@ -55,13 +57,6 @@ pub fn pack_varyings(module: &mut Module, limit: u32) -> bool {
         wrap_fragment(module, fi, &places, &packed);
     }
     true
-}
-
-fn location_of(b: Option<&Binding>) -> Option<u32> {
-    match b {
-        Some(Binding::Location { location, .. }) => Some(*location),
-        _ => None,
-    }
 }
 
 /// What can share a 4-vector with what: scalar kind and width, interpolation, sampling.
@@ -89,8 +84,7 @@ fn plan(module: &Module, members: &[StructMember]) -> (BTreeMap<u32, Place>, BTr
     let mut places = BTreeMap::new();
     let mut next = 0u32;
     let mut loose: Vec<(&StructMember, u32, Class, u32)> = Vec::new();
-    let mut by_location: Vec<(&StructMember, u32)> =
-        members.iter().filter_map(|m| location_of(m.binding.as_ref()).map(|l| (m, l))).collect();
+    let mut by_location: Vec<(&StructMember, u32)> = members.iter().filter_map(|m| location_of(&m.binding).map(|l| (m, l))).collect();
     by_location.sort_by_key(|(_, l)| *l);
     for (m, location) in by_location {
         match packable(module, m) {
@@ -144,7 +138,7 @@ fn packed_struct(
     let mut out: Vec<StructMember> = Vec::new();
     let mut sources = Vec::new();
     for (i, m) in members.iter().enumerate() {
-        let binding = match location_of(m.binding.as_ref()).and_then(|l| places.get(&l)) {
+        let binding = match location_of(&m.binding).and_then(|l| places.get(&l)) {
             None => m.binding.clone(),
             Some(Place::Own(at)) => Some(relocated(m.binding.as_ref(), *at)),
             Some(Place::Packed(_)) => continue,
@@ -249,7 +243,7 @@ fn wrap_vertex(
         };
         let mut components: Vec<(u32, Handle<Expression>)> = Vec::new();
         for (i, m) in members.iter().enumerate() {
-            let Some(Place::Packed(slots)) = location_of(m.binding.as_ref()).and_then(|l| places.get(&l)) else { continue };
+            let Some(Place::Packed(slots)) = location_of(&m.binding).and_then(|l| places.get(&l)) else { continue };
             for (k, &(loc, c)) in slots.iter().enumerate() {
                 if loc != at {
                     continue;
@@ -290,7 +284,7 @@ fn wrap_fragment(module: &mut Module, index: usize, places: &BTreeMap<u32, Place
     // 4-vector per packed location.
     let mut arguments: Vec<FunctionArgument> = Vec::new();
     for a in &old_args {
-        match location_of(a.binding.as_ref()).and_then(|l| places.get(&l)) {
+        match location_of(&a.binding).and_then(|l| places.get(&l)) {
             Some(Place::Packed(_)) => {}
             Some(Place::Own(at)) => arguments.push(FunctionArgument { binding: Some(relocated(a.binding.as_ref(), *at)), ..a.clone() }),
             None => arguments.push(a.clone()),
@@ -300,7 +294,7 @@ fn wrap_fragment(module: &mut Module, index: usize, places: &BTreeMap<u32, Place
     // The packed locations the old inputs read (an output no input receives stays unread).
     let read: Vec<u32> = old_args
         .iter()
-        .filter_map(|a| match location_of(a.binding.as_ref()).and_then(|l| places.get(&l)) {
+        .filter_map(|a| match location_of(&a.binding).and_then(|l| places.get(&l)) {
             Some(Place::Packed(slots)) => Some(slots.iter().map(|(loc, _)| *loc).collect::<Vec<_>>()),
             _ => None,
         })
@@ -322,7 +316,7 @@ fn wrap_fragment(module: &mut Module, index: usize, places: &BTreeMap<u32, Place
     let mut own = 0;
     let mut call_args = Vec::new();
     for a in &old_args {
-        let value = match location_of(a.binding.as_ref()).and_then(|l| places.get(&l)) {
+        let value = match location_of(&a.binding).and_then(|l| places.get(&l)) {
             Some(Place::Packed(slots)) => {
                 let mut parts: Vec<Handle<Expression>> = slots
                     .iter()

@@ -4,7 +4,7 @@
 
 use std::collections::HashMap;
 
-use crate::front::syntax::{Global, GlslType, StageSyntax, Storage};
+use crate::front::syntax::{layout_number, Global, GlslType, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 /// Varying name → first location, and (location, component) as written → the location a
@@ -96,7 +96,7 @@ pub fn location_slots(ty: &GlslType, stage: &StageSyntax) -> u32 {
 
 /// The `component` of a declaration's layout qualifier.
 pub fn component(g: &Global) -> Option<u32> {
-    g.layout.iter().find(|(k, _)| k == "component").and_then(|(_, v)| v.and_then(|v| u32::try_from(v).ok()))
+    layout_number(&g.layout, "component")
 }
 
 /// Whether `g` passes values between two stages (not a vertex input or fragment output).

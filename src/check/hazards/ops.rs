@@ -273,16 +273,10 @@ pub fn mirror(op: B) -> B {
     }
 }
 
-/// Whether `a op b` is false for every `a` and `b` in the intervals.
+/// Whether the ordering or equality `a op b` is false for every `a` and `b` in the
+/// intervals (what [`compare`] folds to 0).
 pub fn never(op: B, a: Iv, b: Iv) -> bool {
-    match op {
-        B::Less => a.lo >= b.hi,
-        B::LessEqual => a.lo > b.hi,
-        B::Greater => a.hi <= b.lo,
-        B::GreaterEqual => a.hi < b.lo,
-        B::Equal => a.hi < b.lo || b.hi < a.lo,
-        _ => false,
-    }
+    matches!(op, B::Less | B::LessEqual | B::Greater | B::GreaterEqual | B::Equal) && compare(op, a, b) == Iv::point(0.0)
 }
 
 fn compare(op: B, x: Iv, y: Iv) -> Iv {

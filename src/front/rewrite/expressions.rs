@@ -90,72 +90,9 @@ impl Ctx<'_> {
     /// with a type name for a declaration and stops at the `(`; in parentheses it is an
     /// expression.
     pub(super) fn constructor_conditions(&mut self) {
-        let clean = crate::front::version::blank_comments(&self.s.text);
-        let mut from = 0;
-        while let Some(at) = find_word(&clean, "for", from) {
-            from = at + 3;
-            let Some(open) = skip_spaces(&clean, from).filter(|&i| clean[i] == b'(') else { continue };
-            let Some(first) = top_level_semicolon(&clean, open + 1) else { continue };
-            let Some(cond) = skip_spaces(&clean, first + 1) else { continue };
-            let Some(end) = top_level_semicolon(&clean, cond) else { continue };
-            let word_end = (cond..end).find(|&i| !(clean[i].is_ascii_alphanumeric() || clean[i] == b'_')).unwrap_or(end);
-            let word = std::str::from_utf8(&clean[cond..word_end]).unwrap_or("");
-            let constructs = skip_spaces(&clean, word_end).is_some_and(|i| clean[i] == b'(');
-            if constructs && is_arithmetic_type(word) {
-                self.edits.insert(cond, "(");
-                self.edits.insert(end, ")");
-            }
+        for span in &self.s.constructor_conditions {
+            self.edits.insert(span.start, "(");
+            self.edits.insert(span.end, ")");
         }
     }
-}
-
-/// A scalar, vector or matrix type name (`float`, `ivec2`, `mat3x4`, `dvec3`).
-fn is_arithmetic_type(word: &str) -> bool {
-    if matches!(word, "float" | "int" | "uint" | "bool" | "double") {
-        return true;
-    }
-    let shape = word.strip_prefix(['i', 'u', 'b', 'd']).unwrap_or(word);
-    let n = |t: &str| matches!(t, "2" | "3" | "4");
-    shape.strip_prefix("vec").is_some_and(n)
-        || shape.strip_prefix("mat").is_some_and(|m| n(m) || m.split_once('x').is_some_and(|(a, b)| n(a) && n(b)))
-}
-
-/// The first occurrence of `word` as a whole identifier at or after `from`.
-fn find_word(text: &[u8], word: &str, from: usize) -> Option<usize> {
-    let ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
-    let mut i = from;
-    while let Some(off) = text.get(i..)?.windows(word.len()).position(|w| w == word.as_bytes()) {
-        let at = i + off;
-        let before = at == 0 || !ident(text[at - 1]);
-        let after = text.get(at + word.len()).is_none_or(|b| !ident(*b));
-        if before && after {
-            return Some(at);
-        }
-        i = at + 1;
-    }
-    None
-}
-
-/// The first non-space byte at or after `from`.
-fn skip_spaces(text: &[u8], from: usize) -> Option<usize> {
-    (from..text.len()).find(|&i| !text[i].is_ascii_whitespace())
-}
-
-/// The first `;` at or after `from` outside parentheses and brackets.
-fn top_level_semicolon(text: &[u8], from: usize) -> Option<usize> {
-    let mut depth = 0i32;
-    for (i, &b) in text.iter().enumerate().skip(from) {
-        match b {
-            b'(' | b'[' => depth += 1,
-            b')' | b']' => {
-                depth -= 1;
-                if depth < 0 {
-                    return None;
-                }
-            }
-            b';' if depth == 0 => return Some(i),
-            _ => {}
-        }
-    }
-    None
 }

@@ -18,8 +18,8 @@ mod parse;
 mod types;
 
 pub use model::{
-    BlockInfo, Call, DefaultDecl, DoWhileContinue, Function, Global, LazyLogic, Member, Param, Referent, StageSyntax, StructDef, Swizzle,
-    Use,
+    layout_number, BlockInfo, Call, DefaultDecl, DoWhileContinue, Function, Global, LazyLogic, Member, Param, Referent, StageSyntax,
+    StructDef, Swizzle, Use,
 };
 pub use nodes::{expr_text, word_occurrences};
 pub use parse::analyse;

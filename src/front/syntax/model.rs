@@ -82,6 +82,11 @@ impl Global {
     }
 }
 
+/// The non-negative integer a layout qualifier gives `key` (`location = 2`, `component = 3`).
+pub fn layout_number(layout: &[(String, Option<i64>)], key: &str) -> Option<u32> {
+    layout.iter().find(|(k, _)| k == key).and_then(|(_, v)| v.and_then(|v| u32::try_from(v).ok()))
+}
+
 /// A user function (definition or prototype).
 #[derive(Debug, Clone)]
 pub struct Function {
@@ -193,6 +198,9 @@ pub struct StageSyntax {
     /// Array sizes and case labels written with local constants (`[TAPS + 1]`, `case TAPS:`):
     /// the expression and its value, which the rewrite writes for naga.
     pub constant_sizes: Vec<(Range<usize>, u32)>,
+    /// `for` conditions that start with a constructor (`float(i) < n`), which naga's parser
+    /// takes for a declaration.
+    pub constructor_conditions: Vec<Range<usize>>,
     /// Written in Vulkan GLSL (descriptor sets, push constants, specialization constants,
     /// `gl_VertexIndex`, separate textures and samplers): interfaces match by location only.
     pub vulkan: bool,

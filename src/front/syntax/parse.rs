@@ -135,6 +135,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
         defaults: Vec::new(),
         unsized_sizes: Vec::new(),
         constant_sizes: Vec::new(),
+        constructor_conditions: Vec::new(),
         vulkan: false,
         lazy_logic: Vec::new(),
         do_while_continue: Vec::new(),
@@ -143,11 +144,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
     Collector::run(&mut syntax, &tu);
     size_globals_by_initializer(&mut syntax);
     syntax.index_globals();
-    syntax.vulkan = match env {
-        TargetEnv::Auto => looks_like_vulkan(&syntax, original),
-        TargetEnv::OpenGl => false,
-        TargetEnv::Vulkan(_) => true,
-    };
+    syntax.vulkan = matches!(env, TargetEnv::Vulkan(_)) || (env == TargetEnv::Auto && looks_like_vulkan(&syntax, original));
     Ok(syntax)
 }
 

@@ -4,7 +4,7 @@
 
 use super::{arrayed_outputs, input_arrayed, is_vulkan, per_vertex, Pair};
 use crate::diag::{Code, Diagnostic};
-use crate::front::syntax::{GlslType, StageSyntax};
+use crate::front::syntax::{layout_number, GlslType, StageSyntax};
 use crate::link::{is_read, same_type, type_text};
 
 /// One location an output or input occupies: the declaration and the type there.
@@ -30,16 +30,16 @@ fn located_slots(s: &StageSyntax, globals: &[usize], arrayed: bool) -> Vec<Slot>
             None => {
                 if let Some(loc) = g.location {
                     let ty = GlslType { base: g.ty.base.clone(), dims: per_vertex(&g.ty.dims, arrayed && g.ty.is_array()) };
-                    let component = component_of(&g.layout);
+                    let component = layout_number(&g.layout, "component").unwrap_or(0);
                     out.push(Slot { location: loc, component, global: gi, member: None, ty, span: g.name_span.clone() });
                 }
             }
             Some(b) => {
                 let mut next = g.location;
                 for (mi, m) in b.members.iter().enumerate() {
-                    let own = m.layout.iter().find(|(k, _)| k == "location").and_then(|(_, v)| v.and_then(|v| u32::try_from(v).ok()));
+                    let own = layout_number(&m.layout, "location");
                     let Some(loc) = own.or(next) else { continue };
-                    let component = component_of(&m.layout);
+                    let component = layout_number(&m.layout, "component").unwrap_or(0);
                     out.push(Slot { location: loc, component, global: gi, member: Some(mi), ty: m.ty.clone(), span: m.span.clone() });
                     next = Some(loc + crate::front::plan::location_slots(&m.ty, s));
                 }
@@ -47,11 +47,6 @@ fn located_slots(s: &StageSyntax, globals: &[usize], arrayed: bool) -> Vec<Slot>
         }
     }
     out
-}
-
-/// The `component` of a layout qualifier (0 when not written).
-fn component_of(layout: &[(String, Option<i64>)]) -> u32 {
-    layout.iter().find(|(k, _)| k == "component").and_then(|(_, v)| v.and_then(|v| u32::try_from(v).ok())).unwrap_or(0)
 }
 
 /// "location 2", or "location 2, component 3" for a varying packed into a later component.

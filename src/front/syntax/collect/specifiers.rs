@@ -191,5 +191,5 @@ pub(super) struct Quals {
 }
 
 pub(super) fn location_of(layout: &[(String, Option<i64>)]) -> Option<u32> {
-    layout.iter().find(|(k, _)| k == "location").and_then(|(_, v)| v.and_then(|v| u32::try_from(v).ok()))
+    crate::front::syntax::layout_number(layout, "location")
 }

@@ -143,6 +143,7 @@ impl Collector<'_> {
                         }
                         if let Some(c) = &rest.condition {
                             self.condition(c);
+                            self.constructor_condition(c);
                         }
                         if let Some(e) = &rest.post_expr {
                             self.expr(e);
@@ -172,6 +173,16 @@ impl Collector<'_> {
         self.scopes.pop();
     }
 
+    /// A `for` condition whose text starts with a scalar, vector or matrix constructor.
+    fn constructor_condition(&mut self, c: &ast::Condition) {
+        let span = span_of(c);
+        let text = self.s.text.get(span.clone()).unwrap_or("");
+        let word_len = text.bytes().take_while(|b| b.is_ascii_alphanumeric() || *b == b'_').count();
+        if text[word_len..].trim_start().starts_with('(') && is_arithmetic_type(&text[..word_len]) {
+            self.s.constructor_conditions.push(span);
+        }
+    }
+
     fn condition(&mut self, c: &ast::Condition) {
         match &c.content {
             ast::ConditionData::Expr(e) => self.expr(e),
@@ -181,4 +192,15 @@ impl Collector<'_> {
             }
         }
     }
+}
+
+/// A scalar, vector or matrix type name (`float`, `ivec2`, `mat3x4`, `dvec3`).
+fn is_arithmetic_type(word: &str) -> bool {
+    if matches!(word, "float" | "int" | "uint" | "bool" | "double") {
+        return true;
+    }
+    let shape = word.strip_prefix(['i', 'u', 'b', 'd']).unwrap_or(word);
+    let n = |t: &str| matches!(t, "2" | "3" | "4");
+    shape.strip_prefix("vec").is_some_and(n)
+        || shape.strip_prefix("mat").is_some_and(|m| n(m) || m.split_once('x').is_some_and(|(a, b)| n(a) && n(b)))
 }
