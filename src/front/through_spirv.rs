@@ -35,6 +35,9 @@ const OP_LABEL: u16 = Op::Label as u16;
 const OP_FUNCTION_END: u16 = Op::FunctionEnd as u16;
 const OP_TYPE_SAMPLED_IMAGE: u16 = Op::TypeSampledImage as u16;
 const OP_NO_LINE: u16 = Op::NoLine as u16;
+const OP_ENTRY_POINT: u16 = Op::EntryPoint as u16;
+const OP_EXECUTION_MODE: u16 = Op::ExecutionMode as u16;
+const OP_TYPE_FUNCTION: u16 = Op::TypeFunction as u16;
 /// Words in the SPIR-V header before the first instruction.
 const HEADER_WORDS: usize = 5;
 
@@ -380,14 +383,32 @@ fn instructions(words: &[u32]) -> impl Iterator<Item = (usize, u16, usize)> + '_
 /// hold; the source string and line, or None after `OpNoLine` and at the end of a function).
 struct Lines {
     changes: Vec<(usize, Option<(i64, i64)>)>,
+    /// (offset as naga counts it, bytes naga's count lags behind the binary from there).
+    lags: Vec<(usize, usize)>,
 }
 
 impl Lines {
     fn of(words: &[u32]) -> Lines {
         let mut strings: Vec<(u32, String)> = Vec::new();
         let mut changes = Vec::new();
+        let mut lags = vec![(0, 0)];
+        let mut lag = 0;
         for (at, op, count) in instructions(words) {
             let operands = words.get(at + 1..at + count).unwrap_or(&[]);
+            // naga's SPIR-V front reads some operand lists past its byte count (the entry
+            // point's interface, execution mode operands, a function type's parameters):
+            // its spans lag behind the binary by those words from there on.
+            let unread = match op {
+                OP_ENTRY_POINT => {
+                    count.saturating_sub(3 + operands.iter().skip(2).position(|w| w.to_le_bytes().contains(&0)).map_or(0, |i| i + 1))
+                }
+                OP_EXECUTION_MODE | OP_TYPE_FUNCTION => count.saturating_sub(3),
+                _ => 0,
+            };
+            if unread > 0 {
+                lag += unread * 4;
+                lags.push(((at + count) * 4 - lag, lag));
+            }
             match op {
                 OP_STRING if !operands.is_empty() => {
                     let bytes: Vec<u8> = operands[1..].iter().flat_map(|w| w.to_le_bytes()).take_while(|b| *b != 0).collect();
@@ -406,13 +427,20 @@ impl Lines {
                 _ => {}
             }
         }
-        Lines { changes }
+        Lines { changes, lags }
+    }
+
+    /// The binary offset of what naga counts as offset `naga`.
+    fn in_binary(&self, naga: usize) -> usize {
+        let i = self.lags.partition_point(|(at, _)| *at <= naga);
+        naga + i.checked_sub(1).map_or(0, |i| self.lags[i].1)
     }
 
     /// The user's line (trimmed) for a span naga gave in SPIR-V bytes.
     fn user_span(&self, span: Span, table: &LineTable, text: &str) -> Span {
         let Some(range) = span.to_range() else { return Span::UNDEFINED };
-        let i = self.changes.partition_point(|(at, _)| *at <= range.start);
+        let start = self.in_binary(range.start);
+        let i = self.changes.partition_point(|(at, _)| *at <= start);
         let Some((string, line)) = i.checked_sub(1).and_then(|i| self.changes[i].1) else { return Span::UNDEFINED };
         match table.line_range(string, line) {
             Some(r) => Span::from(trimmed(text, r)),
@@ -476,10 +504,21 @@ mod tests {
     }
 
     #[test]
+    fn spans_after_an_entry_point_interface_are_moved_by_what_naga_does_not_count() {
+        // header, OpEntryPoint Fragment %4 "main" %5 %6 (7 words), OpLine %1 7 3, OpFunctionEnd
+        let main = u32::from_le_bytes(*b"main");
+        let words = [0x0723_0203, 0x0001_0000, 0, 10, 0, (7 << 16) | 15, 4, 4, main, 0, 5, 6, (4 << 16) | 8, 1, 7, 3, (1 << 16) | 56];
+        let lines = Lines::of(&words);
+        assert_eq!(lines.changes[0], (48, Some((0, 7))));
+        // naga reads the two interface ids without counting them: it puts OpLine at 40.
+        assert_eq!((lines.in_binary(20), lines.in_binary(40)), (20, 48));
+    }
+
+    #[test]
     fn a_span_takes_the_line_in_force() {
         let text = "#version 450\nvoid main() {\n    float x = 1.0;\n}\n";
         let table = LineTable::new(text);
-        let lines = Lines { changes: vec![(24, Some((0, 3))), (40, None)] };
+        let lines = Lines { changes: vec![(24, Some((0, 3))), (40, None)], lags: vec![(0, 0)] };
         let at = |r: Range<usize>| lines.user_span(Span::from(r), &table, text).to_range();
         assert_eq!(at(28..32).map(|r| &text[r]), Some("float x = 1.0;"));
         assert_eq!(at(8..12), None, "before any OpLine");

@@ -248,7 +248,7 @@ fn every_rewrite_program_matches_the_gl_driver() {
         return;
     }
     let mut wrong = Vec::new();
-    for dir in crate::common::fixtures("tests/rewrite", 50) {
+    for dir in crate::common::fixtures("tests/rewrite", 51) {
         let name = name_of(&dir);
         let out = effectc(&[
             "verify",

@@ -40,6 +40,61 @@ impl Ctx<'_> {
             Referent::Global(i) => s.globals[i].storage != Storage::Const,
             _ => false,
         });
-        reads || s.calls.iter().filter(|c| inside(&c.span)).any(|c| s.functions.iter().any(|f| f.name == c.name))
+        reads
+            || s.calls.iter().filter(|c| inside(&c.span)).any(|c| s.functions.iter().any(|f| f.name == c.name))
+            || self.macros_read_run_time_values(&s.text[init.clone()])
     }
+
+    /// A macro the initializer uses (`#define tilt vec2(tx, ty)`, `cos(tilt)`) names a
+    /// global that is not `const` or a function of the stage, directly or through other
+    /// macros: its uses are in the `#define` line, outside the initializer.
+    fn macros_read_run_time_values(&self, init: &str) -> bool {
+        let s = self.s;
+        let bodies = macro_bodies(&s.text);
+        if bodies.is_empty() {
+            return false;
+        }
+        let run_time =
+            |name: &str| s.global(name).is_some_and(|g| g.storage != Storage::Const) || s.functions.iter().any(|f| f.name == name);
+        let mut seen: Vec<&str> = Vec::new();
+        let mut todo: Vec<&str> = identifiers(init).filter(|w| bodies.contains_key(w)).collect();
+        while let Some(m) = todo.pop() {
+            if seen.contains(&m) || seen.len() > 256 {
+                continue;
+            }
+            seen.push(m);
+            for w in identifiers(bodies[m]) {
+                if bodies.contains_key(w) {
+                    todo.push(w);
+                } else if run_time(w) {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+}
+
+/// The body of every `#define` of `text` by macro name (a function-like macro's after its
+/// parameter list; the last definition of a name wins).
+fn macro_bodies(text: &str) -> std::collections::HashMap<&str, &str> {
+    let mut out = std::collections::HashMap::new();
+    for line in text.lines() {
+        let Some(rest) = line.trim_start().strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("define")) else { continue };
+        let rest = rest.trim_start();
+        let end = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(rest.len());
+        let (name, mut body) = rest.split_at(end);
+        if body.starts_with('(') {
+            body = body.find(')').map_or("", |i| &body[i + 1..]);
+        }
+        if !name.is_empty() {
+            out.insert(name, body);
+        }
+    }
+    out
+}
+
+/// The identifiers of `text` (words that start with a letter or `_`).
+fn identifiers(text: &str) -> impl Iterator<Item = &str> {
+    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
 }
