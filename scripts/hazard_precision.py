@@ -11,12 +11,20 @@ collects the W07xx warnings reported now, and matches them to the labels by
 (corpus, program, stage file name, line, code). Several warnings with the same
 key (e.g. `cos(a), sin(a)` on one line) count as one site.
 
-It prints:
+It runs with `--hazards possible` and reads each warning's tier from its note
+(`certain: ...` or `possible: ...`): the default report is the certain tier
+(what a bare `effectc check` prints), the possible tier is what
+`--hazards possible` adds. A build without tiers (no `--hazards` flag) is run
+plainly and all its warnings count as the default report.
+
+For the default report, and for both tiers together, it prints:
   - reported sites, and how many of them are labelled true / false / noise /
     unsure / unlabelled;
   - precision = true / (true + false + noise) over labelled reported sites,
     and noise share = noise / (true + false + noise);
-  - labelled `true` sites no longer reported (each one is a regression);
+then:
+  - labelled `true` sites reported in neither tier (each one is a regression),
+    and those reported in the possible tier only;
   - unlabelled reported sites (new: they need judging and a label).
 
 Usage:
@@ -48,9 +56,11 @@ def read_labels(path):
     return labels
 
 
-def check_program(effectc, root, corpus, program):
-    """Run check on one program dir; return (set of site keys, error text or None)."""
+def check_program(effectc, root, corpus, program, tiers):
+    """Run check on one program dir; return (dict site key -> certain?, error text or None)."""
     cmd = [effectc, "check", "--color", "never", "--format", "json"]
+    if tiers:
+        cmd += ["--hazards", "possible"]
     if corpus in TARGET_ENV:
         cmd += ["--target-env", TARGET_ENV[corpus]]
     cmd.append(os.path.join(root, corpus, program))
@@ -58,13 +68,24 @@ def check_program(effectc, root, corpus, program):
         out = subprocess.run(cmd, capture_output=True, text=True, timeout=300).stdout
         diagnostics = json.loads(out)["diagnostics"]
     except (OSError, subprocess.TimeoutExpired, ValueError, KeyError) as e:
-        return set(), f"{corpus}/{program}: {e}"
-    sites = set()
+        return {}, f"{corpus}/{program}: {e}"
+    sites = {}
     for d in diagnostics:
         if d["code"].startswith("W07") and d.get("file") and d.get("span"):
             name = os.path.basename(d["file"])
-            sites.add((corpus, program, name, d["span"]["line"], d["code"]))
+            key = (corpus, program, name, d["span"]["line"], d["code"])
+            certain = not tiers or any(n.startswith("certain:") for n in d.get("notes", []))
+            sites[key] = sites.get(key, False) or certain
     return sites, None
+
+
+def knows_tiers(effectc):
+    """Whether this build has `check --hazards`."""
+    try:
+        out = subprocess.run([effectc, "check", "--help"], capture_output=True, text=True, timeout=60).stdout
+    except (OSError, subprocess.TimeoutExpired):
+        return False
+    return "--hazards" in out
 
 
 def main():
@@ -79,54 +100,66 @@ def main():
     labels = read_labels(args.labels)
     programs = sorted({(k[0], k[1]) for k in labels})
 
-    reported = set()
+    tiers = knows_tiers(effectc)
+    found = {}
     errors = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        jobs = [pool.submit(check_program, effectc, args.corpus_root, c, p) for c, p in programs]
+        jobs = [pool.submit(check_program, effectc, args.corpus_root, c, p, tiers) for c, p in programs]
         for job in jobs:
             sites, err = job.result()
-            reported |= sites
+            found.update(sites)
             if err:
                 errors.append(err)
-
-    counts = {v: 0 for v in VERDICTS}
-    counts["unlabelled"] = 0
-    for key in reported:
-        verdict = labels.get(key, ("unlabelled", ""))[0]
-        counts[verdict if verdict in counts else "unlabelled"] += 1
-
-    judged = counts["true"] + counts["false"] + counts["noise"]
-    labelled_true = [k for k, (v, _) in labels.items() if v == "true"]
-    lost = sorted(k for k in labelled_true if k not in reported)
-    new = sorted(k for k in reported if k not in labels)
+    certain = {k for k, c in found.items() if c}
+    either = set(found)
 
     def fmt(k):
         return f"{k[0]}/{k[1]}/{k[2]}:{k[3]} {k[4]}"
 
-    print(f"effectc: {effectc}")
+    def summary(title, reported):
+        counts = {v: 0 for v in VERDICTS}
+        counts["unlabelled"] = 0
+        for key in reported:
+            verdict = labels.get(key, ("unlabelled", ""))[0]
+            counts[verdict if verdict in counts else "unlabelled"] += 1
+        judged = counts["true"] + counts["false"] + counts["noise"]
+        print(f"{title}: {len(reported)} sites")
+        for v in VERDICTS + ("unlabelled",):
+            print(f"  {v:<11} {counts[v]}")
+        if judged:
+            print(f"  precision: {counts['true']}/{judged} = {100.0 * counts['true'] / judged:.1f}%"
+                  "  (true / (true+false+noise), labelled reported sites)")
+            print(f"  noise share: {counts['noise']}/{judged} = {100.0 * counts['noise'] / judged:.1f}%")
+        else:
+            print("  precision: n/a (no labelled site reported)")
+
+    print(f"effectc: {effectc}{'' if tiers else ' (no tiers: every warning is in the default report)'}")
     print(f"labels: {args.labels} ({len(labels)} sites in {len(programs)} programs)")
-    print(f"reported sites: {len(reported)}")
-    for v in VERDICTS + ("unlabelled",):
-        print(f"  {v:<11} {counts[v]}")
-    if judged:
-        print(f"precision: {counts['true']}/{judged} = {100.0 * counts['true'] / judged:.1f}%"
-              "  (true / (true+false+noise), labelled reported sites)")
-        print(f"noise share: {counts['noise']}/{judged} = {100.0 * counts['noise'] / judged:.1f}%")
-    else:
-        print("precision: n/a (no labelled site reported)")
-    print(f"labelled true sites no longer reported: {len(lost)} of {len(labelled_true)}")
+    summary("default report (certain tier)", certain)
+    if tiers:
+        summary("with --hazards possible (both tiers)", either)
+    labelled_true = [k for k, (v, _) in labels.items() if v == "true"]
+    lost = sorted(k for k in labelled_true if k not in either)
+    possible_only = sorted(k for k in labelled_true if k in either and k not in certain)
+    new = sorted(k for k in either if k not in labels)
+    print(f"labelled true sites reported in neither tier: {len(lost)} of {len(labelled_true)}")
     for k in lost:
         print(f"  LOST {fmt(k)}  -- {labels[k][1]}")
+    if tiers:
+        print(f"labelled true sites in the possible tier only: {len(possible_only)} of {len(labelled_true)}")
+        for k in possible_only:
+            print(f"  POSSIBLE {fmt(k)}  -- {labels[k][1]}")
     print(f"unlabelled reported sites (to be judged): {len(new)}")
     for k in new:
-        print(f"  NEW  {fmt(k)}")
+        print(f"  NEW  {fmt(k)}{'' if k in certain else '  (possible)'}")
     for e in errors:
         print(f"error: {e}", file=sys.stderr)
     if args.list:
         print("sites:")
-        for k in sorted(reported):
+        for k in sorted(either):
             v, reason = labels.get(k, ("unlabelled", ""))
-            print(f"  {v:<10} {fmt(k)}  {reason}")
+            tier = "certain " if k in certain else "possible"
+            print(f"  {tier} {v:<10} {fmt(k)}  {reason}")
     return 0
 
 

@@ -197,6 +197,22 @@ pub struct TranslateArgs {
     pub watch: bool,
 }
 
+/// Tiers accepted by `--hazards`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum HazardsArg {
+    Certain,
+    Possible,
+}
+
+impl From<HazardsArg> for crate::config::HazardReport {
+    fn from(a: HazardsArg) -> Self {
+        match a {
+            HazardsArg::Certain => crate::config::HazardReport::Certain,
+            HazardsArg::Possible => crate::config::HazardReport::Possible,
+        }
+    }
+}
+
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
     #[command(flatten)]
@@ -216,6 +232,11 @@ pub struct CheckArgs {
     /// textures, meshes, new files below input directories), until interrupted.
     #[arg(long)]
     pub watch: bool,
+    /// Which numeric hazards to report: `certain` (a run at fixed inputs showed them) or
+    /// `possible` (also those the analysis cannot rule out). Default: `report` in
+    /// effectc.toml's `[hazards]`, else certain for bare stage files, possible for effects.
+    #[arg(long, value_enum, value_name = "TIER")]
+    pub hazards: Option<HazardsArg>,
 }
 
 /// Which frames `render` and `verify` draw, and with which uniform values.
@@ -352,7 +373,11 @@ impl VerifyArgs {
     /// The request these flags make.
     pub fn request(&self, config: &Config) -> crate::verify::command::VerifyRequest {
         let f = &self.frames;
-        let mut render = render::command::Request::new(InputSpec { values: f.set.clone(), ..self.common.input_spec(config).for_drawing() });
+        let mut input = InputSpec { values: f.set.clone(), ..self.common.input_spec(config).for_drawing() };
+        // A frame that differs from the driver's is explained by any undefined behaviour
+        // the analysis cannot rule out, so `verify` reports the possible hazards too.
+        input.hazards.report = input.hazards.report.or(Some(crate::config::HazardReport::Possible));
+        let mut render = render::command::Request::new(input);
         render.frames = f.frames;
         render.step = f.step();
         render.start = f.start;

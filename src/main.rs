@@ -324,7 +324,11 @@ fn stress(args: &StressArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBu
 
 fn check(args: &CheckArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBuf>) {
     let c = &args.common;
-    let (mut outcome, checked) = c.input_spec(&settings.config).check();
+    let mut spec = c.input_spec(&settings.config);
+    if let Some(report) = args.hazards {
+        spec.hazards.report = Some(report.into());
+    }
+    let (mut outcome, checked) = spec.check();
     // A manifest's lint says what its render would: guessed inputs, uniforms, textures.
     for program in &checked {
         outcome.diagnostics.extend(effectc::render::preview::warnings(program, false));

@@ -172,6 +172,18 @@ pub struct HazardSettings {
     /// Seconds a time uniform runs (`time`, `iTime`, …) without a `range`: an hour, a
     /// realistic session, unless `[hazards] time-limit` says otherwise.
     pub time_limit: f64,
+    /// Which hazards to report: `None` leaves it to the input (bare stage files report
+    /// certain ones, effects both tiers).
+    pub report: Option<HazardReport>,
+}
+
+/// The hazards reported: certain ones only, or possible ones too.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HazardReport {
+    /// Hazards a witness run showed at fixed inputs.
+    Certain,
+    /// Also those the analysis cannot rule out over the ranges it assumes.
+    Possible,
 }
 
 impl HazardSettings {
@@ -181,7 +193,7 @@ impl HazardSettings {
 
 impl Default for HazardSettings {
     fn default() -> Self {
-        HazardSettings { time_limit: Self::DEFAULT_TIME_LIMIT }
+        HazardSettings { time_limit: Self::DEFAULT_TIME_LIMIT, report: None }
     }
 }
 

@@ -12,7 +12,7 @@ use globset::{GlobSet, GlobSetBuilder};
 use toml::de::{DeTable, DeValue};
 use toml::Spanned;
 
-use super::{glob, Config, DeclaredProgram, HazardSettings, Selection, TargetEnv, FILE_NAME};
+use super::{glob, Config, DeclaredProgram, HazardReport, HazardSettings, Selection, TargetEnv, FILE_NAME};
 use crate::diag::suppress::{self, Policy};
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::limits::Limits;
@@ -289,7 +289,8 @@ impl Walk<'_> {
         out
     }
 
-    /// `[hazards]`: `time-limit`, a positive number of seconds.
+    /// `[hazards]`: `time-limit`, a positive number of seconds; `report`, `"certain"` or
+    /// `"possible"`.
     fn hazards(&mut self, v: &Val<'_>) -> HazardSettings {
         let mut settings = HazardSettings::default();
         let DeValue::Table(t) = v.get_ref() else {
@@ -303,12 +304,19 @@ impl Walk<'_> {
                 DeValue::Float(f) => f.as_str().parse::<f64>().ok(),
                 _ => None,
             };
-            match (key, seconds) {
-                ("time-limit", Some(s)) if s > 0.0 && s.is_finite() => settings.time_limit = s,
-                ("time-limit", _) => self.wrong_type(value, key, "a positive number of seconds"),
+            let text = match value.get_ref() {
+                DeValue::String(s) => Some(s.as_ref()),
+                _ => None,
+            };
+            match (key, seconds, text) {
+                ("time-limit", Some(s), _) if s > 0.0 && s.is_finite() => settings.time_limit = s,
+                ("time-limit", _, _) => self.wrong_type(value, key, "a positive number of seconds"),
+                ("report", _, Some("certain")) => settings.report = Some(HazardReport::Certain),
+                ("report", _, Some("possible")) => settings.report = Some(HazardReport::Possible),
+                ("report", _, _) => self.wrong_type(value, key, "\"certain\" or \"possible\""),
                 _ => {
                     let d = self.bad(k.span(), format!("unknown key `{key}` in [hazards]"), "not a hazard setting");
-                    self.diags.push(d.with_help("one of: time-limit"));
+                    self.diags.push(d.with_help("one of: time-limit, report"));
                 }
             }
         }

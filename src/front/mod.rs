@@ -19,6 +19,7 @@
 //! - [`macro_spans`]: a span from a `#define` down to the macro's use narrowed to the use.
 //! - [`reference`]: glslang, the Khronos reference compiler, in process: what is legal,
 //!   with its errors at the user's lines.
+//! - [`parameters`]: `#pragma parameter` declarations (a host-set uniform and its range).
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
 //!   errors with [`builtins`]; [`through_spirv`]: glslang → SPIR-V → naga, where naga's GLSL
 //!   front cannot take a stage glslang accepts; [`program`]: all of it per program.
@@ -39,6 +40,7 @@ pub mod limitation;
 pub mod limits;
 pub mod macro_spans;
 pub mod naga_run;
+pub mod parameters;
 pub mod plan;
 pub mod program;
 pub mod reference;

@@ -3,7 +3,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use effectc::check::{check_inputs, Checked, Outcome};
+use effectc::check::{check_inputs, Checked, InputSpec, Outcome};
+use effectc::config::HazardSettings;
 use effectc::diag;
 use effectc::front::program::FrontOptions;
 
@@ -42,9 +43,19 @@ pub fn name_of(path: &Path) -> String {
     path.file_name().unwrap().to_string_lossy().into_owned()
 }
 
-/// Checks one path with default options.
+/// Checks one path with default options, and the `[hazards]` settings of an
+/// `effectc.toml` in the directory itself when it has one.
 pub fn check(path: &Path) -> (Outcome, Vec<Checked>) {
-    check_inputs(&[path.to_path_buf()], None, FrontOptions::default())
+    if !path.join(effectc::config::FILE_NAME).exists() {
+        return check_inputs(&[path.to_path_buf()], None, FrontOptions::default());
+    }
+    let hazards = effectc::config::load(None, &[path.to_path_buf()]).config.hazards;
+    check_with_hazards(path, hazards)
+}
+
+/// Checks one path with default options and the hazard settings given.
+pub fn check_with_hazards(path: &Path, hazards: HazardSettings) -> (Outcome, Vec<Checked>) {
+    InputSpec { paths: vec![path.to_path_buf()], hazards, ..InputSpec::default() }.check()
 }
 
 /// Human rendering without colour, followed by the summary line.

@@ -197,12 +197,12 @@ impl Analyzer<'_> {
                 let discarded = out.hazard == Some(ops::Kind::Atan2)
                     && (c.select_arms[h.index()] || !arg1.is_some_and(|x| self.same_vector_can_vanish(c, state, arg, x)));
                 if let Some(kind) = out.hazard.filter(|_| !discarded) {
-                    self.report(Hazard::new(kind, self.span(c, h), &a, b.as_ref()));
+                    self.found(c, state, h, Hazard::new(kind, self.span(c, h), &a, b.as_ref()));
                 }
                 if fun == naga::MathFunction::Fract {
                     self.check_hash(c, state, h, arg);
                 }
-                Val::Num(out.value)
+                Val::Num(self.after_hazard(out))
             }
             Expression::As { expr, kind, convert } => {
                 let n = self.num(c, state, expr);
@@ -247,9 +247,9 @@ impl Analyzer<'_> {
                 ops::Kind::NegativeRemainder => Hazard::new(kind, self.span(c, h), &a, Some(&b)),
                 _ => Hazard::new(kind, self.span(c, h), &b, None),
             };
-            self.report(hazard);
+            self.found(c, state, h, hazard);
         }
-        Val::Num(out.value)
+        Val::Num(self.after_hazard(out))
     }
 
     /// naga writes GLSL's `mod(x, y)` as `x - floor(x / y) * y`: in `[0, y)` for `y > 0`.
@@ -369,12 +369,19 @@ impl Analyzer<'_> {
         let kv = self.num(c, state, k);
         let xv = self.num(c, state, x);
         if kv.known && xv.known && kv.iv().mag() >= ops::HASH_SCALE_LIMIT {
-            self.report(Hazard::hash(self.span(c, h), xv.iv(), kv.iv()));
+            self.found(c, state, h, Hazard::hash(self.span(c, h), xv.iv(), kv.iv()));
         }
     }
 
     /// The state on the path where `cond` is `truth`.
     pub fn refine(&mut self, c: &mut Call<'_>, mut state: State, cond: Handle<Expression>, truth: bool) -> State {
+        // A condition whose value is decided (`mode == 2` with `mode` known) leaves one side.
+        if let Some(b) = self.value(c, &state, cond).num().map(Num::iv).filter(|b| b.is_point()) {
+            if (b.lo != 0.0) != truth {
+                state.live = false;
+                return state;
+            }
+        }
         match c.fun.expressions[cond] {
             Expression::Unary { op: UnaryOperator::LogicalNot, expr } => return self.refine(c, state, expr, !truth),
             Expression::Binary { op: B::LogicalAnd, left, right } if truth => {

@@ -7,6 +7,7 @@
 //! Time runs over `[0, time limit]` (an hour unless `effectc.toml`'s `[hazards]` says
 //! otherwise) unless the time uniform has a `range`.
 
+use std::cell::Cell;
 use std::collections::HashMap;
 
 use glam::{Mat3, Mat4};
@@ -24,7 +25,7 @@ const FRAMES_PER_SECOND: f64 = 60.0;
 const MAX_SIZE: f64 = 16_384.0;
 
 /// Facts for one program.
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub struct Facts {
     /// Uniforms by manifest path (`minBI`, `lights[0].color`).
     pub uniforms: HashMap<String, Num>,
@@ -44,6 +45,47 @@ pub struct Facts {
     /// Bare stage files: the value of each semantic, for uniforms whose name suggests one
     /// (as the renderer guesses); empty for an effect.
     pub guessed: HashMap<Semantic, Num>,
+    /// Inputs with a declared range (a manifest uniform's `range`, a `#pragma parameter`):
+    /// the witness runs set each to points of it.
+    pub declared: Vec<Declared>,
+    /// Manifest uniforms that count time or frames.
+    pub clocks: Vec<String>,
+    /// Set once the analysis read a time or frame uniform.
+    pub read_clock: Cell<bool>,
+}
+
+/// A scalar input with a declared range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Declared {
+    /// The uniform (a member name for a block member).
+    pub name: String,
+    pub default: f64,
+    pub range: (f64, f64),
+    pub step: Option<f64>,
+    pub by: DeclaredBy,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DeclaredBy {
+    Manifest,
+    Pragma,
+}
+
+impl Facts {
+    /// Adds the stage's `#pragma parameter` declarations: a uniform of that name without a
+    /// manifest fact takes any value of the declared range, and is declared.
+    pub fn declare_parameters(&mut self, parameters: &[crate::front::parameters::Parameter]) {
+        for p in parameters {
+            if self.uniforms.contains_key(&p.name) || self.declared.iter().any(|d| d.name == p.name) {
+                continue;
+            }
+            let mut n = Num::float(Iv::new(p.min, p.max));
+            n.per_draw = true;
+            self.uniforms.insert(p.name.clone(), n);
+            let default = p.default.clamp(p.min, p.max);
+            self.declared.push(Declared { name: p.name.clone(), default, range: (p.min, p.max), step: p.step, by: DeclaredBy::Pragma });
+        }
+    }
 }
 
 impl Facts {
@@ -63,6 +105,14 @@ impl Facts {
         for u in &e.uniforms {
             if let Some(n) = uniform_fact(u, &motion, f.time_limit) {
                 f.uniforms.insert(u.name.clone(), n);
+            }
+            if matches!(u.semantic, Some(Semantic::Time | Semantic::Frame)) {
+                f.clocks.push(u.name.clone());
+            }
+            let scalar = u.value.as_ref().map(|v| v.scalars()).filter(|s| s.len() == 1).and_then(|s| s[0].as_f64());
+            if let (Some((lo, hi)), None) = (u.range, u.semantic) {
+                let default = scalar.unwrap_or(lo).clamp(lo, hi);
+                f.declared.push(Declared { name: u.name.clone(), default, range: (lo, hi), step: None, by: DeclaredBy::Manifest });
             }
         }
         if let Some(mesh) = e.mesh.as_ref().and_then(|m| match &m.source {
@@ -150,6 +200,9 @@ impl Facts {
         let cols = u.cols.max(1);
         let shape = (cols as u8, (u.c.len() / cols) as u8);
         let semantic = crate::manifest::guess::semantic_by_name(name, shape, u.kind == ScalarKind::Float)?;
+        if matches!(semantic, Semantic::Time | Semantic::Frame) {
+            self.read_clock.set(true);
+        }
         self.guessed.get(&semantic)
     }
 }
@@ -358,6 +411,9 @@ pub fn uniform_value(module: &Module, ty: &TypeInner, path: &str, facts: &Facts)
                 Val::Num(u) => facts.uniforms.get(path).or_else(|| facts.guess(path, u)),
                 _ => facts.uniforms.get(path),
             };
+            if facts.clocks.iter().any(|c| c == path) {
+                facts.read_clock.set(true);
+            }
             match (known, unknown) {
                 (Some(n), Val::Num(u)) if n.c.len() == u.c.len() => {
                     let mut n = n.clone();

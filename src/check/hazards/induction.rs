@@ -4,12 +4,14 @@
 //! loop's counter stops after 8 iterations. After the fixpoint, the number of iterations
 //! the loop's head can have seen is read from any induction variable the exit test bounds,
 //! and every induction variable is cut back to its entry value plus that many steps.
+//! A counter's update is also checked against its integer type (W0719).
 
 use naga::{BinaryOperator, Block, Expression, Function, Handle, LocalVariable, Statement};
 
 use super::interval::Iv;
 use super::value::{Num, Val};
 use super::walk::{Analyzer, Call, State};
+use super::Hazard;
 
 /// A local stepped by a constant (`x = x + step`, `x = x - step`, `x += step`).
 #[derive(Debug, Clone, Copy)]
@@ -166,5 +168,47 @@ impl Analyzer<'_> {
             }
         }
         head
+    }
+}
+
+impl Analyzer<'_> {
+    /// A loop counter updated in `continuing` must stay inside its integer type.
+    pub(super) fn check_counter(&mut self, c: &mut Call<'_>, state: &State, value: Handle<Expression>, span: naga::Span) {
+        let Expression::Binary { op, left, right } = c.fun.expressions[value] else { return };
+        if !matches!(op, naga::BinaryOperator::Add | naga::BinaryOperator::Subtract | naga::BinaryOperator::Multiply) {
+            return;
+        }
+        let (Some(a), Some(b)) = (self.value(c, state, left).num().cloned(), self.value(c, state, right).num().cloned()) else {
+            return;
+        };
+        let (lo, hi) = match a.kind {
+            naga::ScalarKind::Sint => (f64::from(i32::MIN), f64::from(i32::MAX)),
+            naga::ScalarKind::Uint => (0.0, f64::from(u32::MAX)),
+            _ => return,
+        };
+        // Integer steps are exact (f64 holds every 32-bit sum and product): no float
+        // rounding slack, which near 2^31 is wider than the step itself.
+        let (x, y) = (a.iv(), b.iv());
+        let raw = match op {
+            naga::BinaryOperator::Add => Iv::new(x.lo + y.lo, x.hi + y.hi),
+            naga::BinaryOperator::Subtract => Iv::new(x.lo - y.hi, x.hi - y.lo),
+            _ => {
+                let p = [x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi].map(|v| if v.is_nan() { 0.0 } else { v });
+                Iv::new(p.iter().copied().fold(f64::INFINITY, f64::min), p.iter().copied().fold(f64::NEG_INFINITY, f64::max))
+            }
+        };
+        // A step can overflow only the way it moves: `i + 1` past the top, never below the
+        // bottom (the counter's own lower bound may be lost to widening, not to the step).
+        let (step_up, step_down) = match op {
+            naga::BinaryOperator::Add => (b.iv().hi > 0.0, b.iv().lo < 0.0),
+            naga::BinaryOperator::Subtract => (b.iv().lo < 0.0, b.iv().hi > 0.0),
+            _ => (true, true),
+        };
+        if a.known && b.known && ((step_up && raw.hi > hi) || (step_down && raw.lo < lo)) {
+            // A witness: this loop ran past the unrolling limit at fixed inputs on a sure
+            // path, and its counter is still unbounded.
+            let certain = self.runaway.contains(&c.loop_id);
+            self.report(Hazard { certain, ..Hazard::counter(span, a.iv(), raw, a.kind) }, state.sure || certain);
+        }
     }
 }

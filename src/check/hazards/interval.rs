@@ -170,6 +170,46 @@ impl Iv {
     }
 }
 
+/// An integer bit operation (`&`, `|`, `^`, `<<`, `>>`) on intervals of `kind`.
+pub fn bits(op: naga::BinaryOperator, x: Iv, y: Iv, kind: naga::ScalarKind) -> Iv {
+    use naga::{BinaryOperator as B, ScalarKind};
+    let full = if kind == ScalarKind::Uint { Iv::new(0.0, f64::from(u32::MAX)) } else { Iv::new(f64::from(i32::MIN), f64::from(i32::MAX)) };
+    if let (Some(a), Some(b)) = (whole(x), whole(y)) {
+        // Two known integers: the exact result, in the type's 32 bits.
+        let exact = match (op, kind == ScalarKind::Uint) {
+            (B::And, _) => Some(a & b),
+            (B::InclusiveOr, _) => Some(a | b),
+            (B::ExclusiveOr, _) => Some(a ^ b),
+            (B::ShiftLeft, _) if (0..32).contains(&b) => Some(((a as u32) << b) as i64),
+            (B::ShiftRight, true) if (0..32).contains(&b) => Some(((a as u32) >> b) as i64),
+            (B::ShiftRight, false) if (0..32).contains(&b) => Some(((a as i32) >> b) as i64),
+            _ => None,
+        };
+        if let Some(r) = exact {
+            let r = if kind == ScalarKind::Uint { f64::from(r as u32) } else { f64::from(r as i32) };
+            return Iv::point(r);
+        }
+    }
+    if x.lo < 0.0 || y.lo < 0.0 {
+        return full;
+    }
+    match op {
+        B::And => Iv::new(0.0, x.hi.min(y.hi)),
+        B::InclusiveOr | B::ExclusiveOr => {
+            let m = x.hi.max(y.hi);
+            Iv::new(0.0, (2f64).powf((m + 1.0).log2().ceil()) - 1.0)
+        }
+        B::ShiftRight => Iv::new(0.0, x.hi),
+        _ => full,
+    }
+}
+
+/// The integer a point interval holds (within 32 bits).
+fn whole(x: Iv) -> Option<i64> {
+    let v = x.lo.round();
+    (x.lo >= -2_147_483_648.0 && x.hi <= 4_294_967_295.0 && (x.lo - v).abs() < 1e-3 && (x.hi - v).abs() < 1e-3).then_some(v as i64)
+}
+
 trait SignumOrZero {
     fn signum_or_zero(self) -> f64;
 }

@@ -7,11 +7,14 @@
 //! - [`facts`]: what is known before the shader runs;
 //! - [`walk`]: statements and control flow ([`induction`]: variables stepped with a loop's
 //!   counter); [`eval`]: expressions; [`ops`]: the algebra.
+//! - [`witness`]: the analysis again at fixed inputs ([`unroll`]: loops iteration by
+//!   iteration); [`tier`]: what makes a hazard certain rather than possible.
 //!
 //! The vertex stage runs first; its outputs become the fragment stage's inputs (the hull
 //! of values is preserved by interpolation). Only values derived from known facts raise a
 //! hazard: an input nothing is known about never does, and once a hazard is reported its
-//! result is unknown, so one mistake gives one warning.
+//! result is unknown, so one mistake gives one warning. A hazard a witness run shows is
+//! certain; the others are possible, and bare stage files report them only on request.
 
 pub mod eval;
 pub mod facts;
@@ -19,10 +22,15 @@ mod geometric;
 mod induction;
 pub mod interval;
 pub mod ops;
+mod tier;
+mod unroll;
 pub mod value;
 pub mod walk;
+mod witness;
 
-use crate::config::HazardSettings;
+use std::collections::HashMap;
+
+use crate::config::{HazardReport, HazardSettings};
 use crate::diag::{Code, Diagnostic, FileId};
 use crate::front::program::CompiledProgram;
 use crate::manifest::Effect;
@@ -40,6 +48,9 @@ pub struct Hazard {
     pub label: String,
     pub notes: Vec<String>,
     pub help: String,
+    /// Every value the operands can take hits it ([`tier::certain`]): what a witness run
+    /// reports.
+    pub certain: bool,
 }
 
 impl Hazard {
@@ -134,7 +145,8 @@ impl Hazard {
                 "guard the origin: `length(v) > 1e-6 ? atan(v.y, v.x) : 0.0`",
             ),
         };
-        Hazard { code, span, message, label, notes: vec![note], help: help.to_string() }
+        let certain = tier::certain(kind, a, b);
+        Hazard { code, span, message, label, notes: vec![note], help: help.to_string(), certain }
     }
 
     pub fn hash(span: naga::Span, x: Iv, k: Iv) -> Hazard {
@@ -153,6 +165,7 @@ impl Hazard {
             label: format!("K = {}{}", describe_iv(k), if grows { format!(", x in {}", describe_iv(x)) } else { String::new() }),
             notes,
             help: "use an integer hash (e.g. PCG: `uint h = uint(x) * 747796405u + 2891336453u; …`) or a sine-free hash such as Dave Hoskins' `hash11`".into(),
+            certain: tier::certain_hash(x),
         }
     }
 
@@ -165,6 +178,7 @@ impl Hazard {
             label: format!("the counter reaches {}, its update {}", describe_iv(counter), describe_iv(next)),
             notes: vec!["nothing bounds this loop's counter below the type's limit: it wraps around (signed overflow is undefined)".into()],
             help: "bound the loop by a constant or a uniform with a `range`".into(),
+            certain: false,
         }
     }
 }
@@ -207,78 +221,230 @@ fn big(x: f64) -> String {
     }
 }
 
+/// One stage as the analysis runs it: its IR and text, and where its spans lead back to.
+struct Stage<'p> {
+    kind: StageKind,
+    entry: naga::ShaderStage,
+    file: FileId,
+    ir: &'p crate::front::naga_run::Validated,
+    text: &'p str,
+    place: Place<'p>,
+}
+
+enum Place<'p> {
+    /// The fold of the vertex and geometry stages: spans lead back to either.
+    Folded(&'p crate::front::geometry_fold::Folded),
+    Rewritten(&'p crate::front::rewrite::Rewritten),
+}
+
+/// What one run of one stage found.
+struct Run {
+    hazards: Vec<Hazard>,
+    outputs: HashMap<u32, value::Val>,
+    stopped: bool,
+    work: u64,
+}
+
+/// The vertex stage (the fold with a geometry stage, when there is one) and the fragment
+/// stage of `program`, those with IR.
+fn stages(program: &CompiledProgram) -> Vec<Stage<'_>> {
+    let mut out = Vec::new();
+    for (kind, entry) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
+        let Some(s) = program.stages.iter().find(|s| s.syntax.stage == kind) else { continue };
+        let file = s.syntax.file;
+        match (program.fold().filter(|_| kind == StageKind::Vertex), &s.naga, &s.rewritten) {
+            (Some(fd), _, _) => {
+                out.push(Stage { kind, entry, file, ir: &fd.analysis, text: fd.analysed.text.as_str(), place: Place::Folded(fd) })
+            }
+            (None, Some(v), Some(rw)) => out.push(Stage { kind, entry, file, ir: v, text: rw.text.as_str(), place: Place::Rewritten(rw) }),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// Runs the analysis of `stage` on `facts` (a witness run when `witness`), within
+/// `work_limit`. `None` if the analysis panicked: a bug in it loses its warnings only,
+/// never the `check`.
+fn run(stage: &Stage<'_>, facts: &facts::Facts, witness: bool, work_limit: u64) -> Option<Run> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let mut a = walk::Analyzer::new(&stage.ir.module, &stage.ir.info, facts, stage.entry, stage.text);
+        a.witness = witness;
+        a.work_limit = work_limit;
+        a.run_entry();
+        Run { hazards: without_hash_arguments(&a.hazards).cloned().collect(), outputs: a.outputs, stopped: a.stopped, work: a.work }
+    }))
+    .ok()
+}
+
 /// Runs the analysis over a compiled program; warnings at the user's spans. `settings`:
-/// what it assumes where the manifest says nothing (`effectc.toml`'s `[hazards]`).
+/// what it assumes where the manifest says nothing (`effectc.toml`'s `[hazards]`), and
+/// which tier it reports: bare stage files report certain hazards only unless asked for
+/// the possible ones; an effect, whose manifest declares its ranges, both.
 pub fn analyse(effect: Option<&Effect>, program: &CompiledProgram, settings: HazardSettings) -> Vec<Diagnostic> {
-    let find = |kind: StageKind| program.stages.iter().find(|s| s.syntax.stage == kind);
-    // The vertex stage as analysed: its own module, or the fold of the vertex and geometry
-    // stages (each corner of a primitive reads the vertex inputs), whose spans lead back
-    // to either stage.
-    let vertex_module = match program.fold() {
-        Some(f) => Some(&f.analysis.module),
-        None => find(StageKind::Vertex).and_then(|s| s.naga.as_ref()).map(|v| &v.module),
-    };
-    let names: Vec<(u32, String)> = vertex_module
-        .and_then(|m| m.entry_points.iter().find(|e| e.stage == naga::ShaderStage::Vertex))
-        .map(|ep| {
-            ep.function
-                .arguments
-                .iter()
-                .filter_map(|a| match a.binding {
-                    Some(naga::Binding::Location { location, .. }) => {
-                        let name = a.name.clone().unwrap_or_default();
-                        let user = name.strip_prefix(crate::front::geometry_fold::ATTRIBUTE_PREFIX).unwrap_or(&name).to_string();
-                        Some((location, user))
-                    }
-                    _ => None,
-                })
-                .collect()
-        })
-        .unwrap_or_default();
+    analyse_with(effect, program, settings, true)
+}
+
+/// The interval analysis alone, every hazard reported as possible: the baseline
+/// `benches/hazard_speed.rs` times the witness runs against.
+pub fn analyse_without_witnesses(effect: Option<&Effect>, program: &CompiledProgram, settings: HazardSettings) -> Vec<Diagnostic> {
+    analyse_with(effect, program, HazardSettings { report: Some(HazardReport::Possible), ..settings }, false)
+}
+
+fn analyse_with(effect: Option<&Effect>, program: &CompiledProgram, settings: HazardSettings, witnesses: bool) -> Vec<Diagnostic> {
+    let stages = stages(program);
+    let names = vertex_input_names(stages.iter().find(|s| s.kind == StageKind::Vertex));
     let mut f = match effect {
         Some(_) => facts::Facts::of(effect, &names, settings.time_limit),
         None => facts::Facts::guessed(settings.time_limit),
     };
+    for s in &program.stages {
+        f.declare_parameters(&s.syntax.parameters);
+    }
     let mut out = Vec::new();
-    for (kind, stage) in [(StageKind::Vertex, naga::ShaderStage::Vertex), (StageKind::Fragment, naga::ShaderStage::Fragment)] {
-        let Some(s) = find(kind) else { continue };
-        // The vertex stage of a folded program is analysed as the fold (spans lead back to
-        // either stage); every other stage as its own module.
-        let at_user: Box<dyn Fn(&Hazard) -> Diagnostic>;
-        let (v, text) = match (program.fold().filter(|_| kind == StageKind::Vertex), &s.naga, &s.rewritten) {
-            (Some(fd), _, _) => {
-                at_user = Box::new(move |h| folded_diagnostic(h, program, fd));
-                (&fd.analysis, fd.analysed.text.as_str())
-            }
-            (None, Some(v), Some(rw)) => {
-                at_user = Box::new(move |h| diagnostic(h, s.syntax.file, rw));
-                (v, rw.text.as_str())
-            }
-            _ => continue,
-        };
-        let hazards = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            let mut a = walk::Analyzer::new(&v.module, &v.info, &f, stage, text);
-            a.run_entry();
-            (a.hazards, a.outputs, a.stopped)
-        }));
-        // The analysis must never take `check` down; a bug in it loses its warnings only.
-        let Ok((hazards, outputs, stopped)) = hazards else { continue };
-        if stopped {
+    let mut runs: Vec<Option<Run>> = Vec::new();
+    for stage in &stages {
+        let r = run(stage, &f, false, walk::WORK_LIMIT);
+        if r.as_ref().is_some_and(|r| r.stopped) {
             out.push(
-                Diagnostic::new(Code::HazardAnalysisStopped, format!("the hazard analysis of the {kind} stage stopped at its work limit"))
-                    .in_file(s.syntax.file)
+                Diagnostic::new(Code::HazardAnalysisStopped, format!("the hazard analysis of the {} stage stopped at its work limit", stage.kind))
+                    .in_file(stage.file)
                     .with_note(format!(
                         "loops nested deeply, or calls fanning out, take work growing exponentially; after {} steps the rest of the stage was not analysed, so its warnings are incomplete",
                         walk::WORK_LIMIT
                     )),
             );
         }
-        if kind == StageKind::Vertex {
-            f.varyings = outputs.into_iter().filter_map(|(l, v)| v.num().cloned().map(|n| (l, varying(n)))).collect();
+        if let (StageKind::Vertex, Some(r)) = (stage.kind, &r) {
+            f.varyings = vertex_outputs(r);
         }
-        out.extend(without_hash_arguments(&hazards).map(&at_user));
+        runs.push(r);
+    }
+    let found: Vec<Vec<Hazard>> = runs.into_iter().map(|r| r.map(|r| r.hazards).unwrap_or_default()).collect();
+    let confirmed = if witnesses {
+        confirm(&stages, &f, found)
+    } else {
+        Confirmed { found: found.into_iter().map(|hs| hs.into_iter().map(|h| (h, None)).collect()).collect(), tried: 0, planned: 0 }
+    };
+    let report = settings.report.unwrap_or(if effect.is_some() { HazardReport::Possible } else { HazardReport::Certain });
+    for (stage, hazards) in stages.iter().zip(&confirmed.found) {
+        for (h, witness) in hazards {
+            let note = match witness {
+                Some(at) => format!("certain: it happens {at}"),
+                None if report == HazardReport::Certain => continue,
+                None => confirmed.possible_note(),
+            };
+            out.push(at_user(stage, program, h).with_note(note));
+        }
     }
     out
+}
+
+/// The hazards of every stage with the witness that makes each certain, if any.
+struct Confirmed {
+    found: Vec<Vec<(Hazard, Option<String>)>>,
+    /// Input sets tried, and planned.
+    tried: usize,
+    planned: usize,
+}
+
+impl Confirmed {
+    fn possible_note(&self) -> String {
+        let stopped = if self.tried < self.planned {
+            format!("; the witness runs reached their work limit after {} of {} sets of inputs", self.tried, self.planned)
+        } else {
+            String::new()
+        };
+        format!(
+            "possible: the analysis cannot rule it out over the ranges it assumes, but no run at fixed inputs showed it (each declared input at its default, its range's ends and steps; time 0){stopped}"
+        )
+    }
+}
+
+/// Witness runs for the hazards `found` (by stage, in the order of `stages`): input sets
+/// from [`witness::samples`] while any hazard is unconfirmed and work remains
+/// ([`WITNESS_WORK`]).
+fn confirm(stages: &[Stage<'_>], f: &facts::Facts, found: Vec<Vec<Hazard>>) -> Confirmed {
+    let mut out: Vec<Vec<(Hazard, Option<String>)>> = found.into_iter().map(|hs| hs.into_iter().map(|h| (h, None)).collect()).collect();
+    let mut first = vec![false; f.declared.len()];
+    for (st, hs) in stages.iter().zip(&out) {
+        let spans = hs.iter().filter_map(|(h, _)| h.span.to_range()).filter(|r| r.end <= st.text.len());
+        for (i, near) in witness::named_near(&f.declared, st.text, spans).into_iter().enumerate() {
+            first[i] |= near;
+        }
+    }
+    let plan = witness::samples(&f.declared, &first);
+    let mut tried = 0;
+    let mut work = 0u64;
+    let open = |out: &[Vec<(Hazard, Option<String>)>], i: usize| out[i].iter().any(|(_, w)| w.is_none());
+    for sample in &plan {
+        if !(0..stages.len()).any(|i| open(&out, i)) || work >= WITNESS_WORK {
+            break;
+        }
+        tried += 1;
+        let mut facts = witness::facts_at(f, *sample);
+        for (i, stage) in stages.iter().enumerate() {
+            let vertex = stage.kind == StageKind::Vertex;
+            // The vertex stage runs for its own hazards or to feed the fragment stage's.
+            let feeds_open = vertex && (i + 1..stages.len()).any(|j| open(&out, j));
+            if !(open(&out, i) || feeds_open) {
+                continue;
+            }
+            let Some(r) = run(stage, &facts, true, (WITNESS_WORK - work.min(WITNESS_WORK)).max(1)) else { continue };
+            work += r.work;
+            for h in &r.hazards {
+                let at = witness::describe(&f.declared, *sample, facts.read_clock.get());
+                // The witness's own values label it: the operands at the inputs it fixed (a
+                // counter keeps the fixpoint's range, where it overflows).
+                match out[i].iter_mut().find(|(b, _)| b.code == h.code && b.span == h.span) {
+                    Some((_, w @ None)) if h.code == Code::HazardCounterOverflow => *w = Some(at),
+                    Some((b, w @ None)) => (*b, *w) = (h.clone(), Some(at)),
+                    Some(_) => {}
+                    None => out[i].push((h.clone(), Some(at))),
+                }
+            }
+            if vertex {
+                facts.varyings = vertex_outputs(&r);
+            }
+        }
+    }
+    Confirmed { found: out, tried, planned: plan.len() }
+}
+
+/// Work all the witness runs of one program may take together (a witness run costs about
+/// what the analysis does, often less: decided branches are walked once).
+const WITNESS_WORK: u64 = 2_000_000;
+
+/// The vertex stage's outputs as the fragment stage's inputs.
+fn vertex_outputs(r: &Run) -> HashMap<u32, Num> {
+    r.outputs.iter().filter_map(|(l, v)| v.num().cloned().map(|n| (*l, varying(n)))).collect()
+}
+
+/// The vertex inputs by location, with the user's names.
+fn vertex_input_names(vertex: Option<&Stage<'_>>) -> Vec<(u32, String)> {
+    let Some(ep) = vertex.and_then(|s| s.ir.module.entry_points.iter().find(|e| e.stage == naga::ShaderStage::Vertex)) else {
+        return Vec::new();
+    };
+    ep.function
+        .arguments
+        .iter()
+        .filter_map(|a| match a.binding {
+            Some(naga::Binding::Location { location, .. }) => {
+                let name = a.name.clone().unwrap_or_default();
+                let user = name.strip_prefix(crate::front::geometry_fold::ATTRIBUTE_PREFIX).unwrap_or(&name).to_string();
+                Some((location, user))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// The diagnostic of `h`, found in `stage`, at the user's span.
+fn at_user(stage: &Stage<'_>, program: &CompiledProgram, h: &Hazard) -> Diagnostic {
+    match stage.place {
+        Place::Folded(fd) => folded_diagnostic(h, program, fd),
+        Place::Rewritten(rw) => diagnostic(h, stage.file, rw),
+    }
 }
 
 /// The hazards less W0717 on the `sin` inside a `fract(sin(x) * K)` hash W0718 reports: a

@@ -210,7 +210,7 @@ pub fn binary(op: B, a: &Num, b: &Num, same: bool) -> Out {
             r
         }
         B::And | B::InclusiveOr | B::ExclusiveOr | B::ShiftLeft | B::ShiftRight => {
-            let mut r = zip(a, b, |x, y| bits(op, x, y, a.kind));
+            let mut r = zip(a, b, |x, y| super::interval::bits(op, x, y, a.kind));
             if a.kind == ScalarKind::Bool {
                 r = zip(a, b, |_, _| Iv::UNIT);
             }
@@ -294,22 +294,6 @@ fn compare(op: B, x: Iv, y: Iv) -> Iv {
         Iv::point(0.0)
     } else {
         Iv::UNIT
-    }
-}
-
-fn bits(op: B, x: Iv, y: Iv, kind: ScalarKind) -> Iv {
-    let full = if kind == ScalarKind::Uint { Iv::new(0.0, f64::from(u32::MAX)) } else { Iv::new(f64::from(i32::MIN), f64::from(i32::MAX)) };
-    if x.lo < 0.0 || y.lo < 0.0 {
-        return full;
-    }
-    match op {
-        B::And => Iv::new(0.0, x.hi.min(y.hi)),
-        B::InclusiveOr | B::ExclusiveOr => {
-            let m = x.hi.max(y.hi);
-            Iv::new(0.0, (2f64).powf((m + 1.0).log2().ceil()) - 1.0)
-        }
-        B::ShiftRight => Iv::new(0.0, x.hi),
-        _ => full,
     }
 }
 

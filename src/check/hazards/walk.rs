@@ -66,6 +66,9 @@ pub struct State {
     pub refined: HashMap<u64, Refined>,
     /// False on paths that cannot run (after `break`, `return`, `discard`).
     pub live: bool,
+    /// Witness runs: every execution that reaches the function's entry reaches this point
+    /// (no undecided branch or exit lies between them).
+    pub sure: bool,
 }
 
 impl State {
@@ -82,7 +85,14 @@ impl State {
             stored: HashMap::new(),
             refined: HashMap::new(),
             live: false,
+            sure: false,
         }
+    }
+
+    /// The state on a path that may not run.
+    pub(super) fn unsure(mut self) -> State {
+        self.sure = false;
+        self
     }
 
     /// Both paths: values joined, refinements kept where both agree on a key.
@@ -94,6 +104,7 @@ impl State {
             return self.clone();
         }
         let mut out = self.clone();
+        out.sure = self.sure && o.sure;
         for (k, v) in &o.locals {
             let j = out.locals.get(k).map_or_else(|| v.clone(), |a| a.join(v));
             out.locals.insert(*k, j);
@@ -153,19 +164,27 @@ pub struct Call<'f> {
     pub returned: Vec<(State, Option<Val>)>,
     /// Stores in a `continuing` block are loop-counter updates.
     pub in_continuing: bool,
+    /// The innermost loop whose `continuing` block runs (its address).
+    pub loop_id: usize,
     /// Expressions computed only for an arm of a `?:` (`Select`): GLSL's condition picks
     /// the arm, so a value undefined in the other one is discarded (`len > 0.0 ? atan(y,
     /// x) : 0.0`).
     pub select_arms: Vec<bool>,
 }
 
-/// Which expressions of `fun` lie in the operand tree of a `Select`'s arms.
+/// Which expressions of `fun` lie in the operand tree of a `Select`'s arms, or of the
+/// right operand of `&&` and `||`: GLSL evaluates them only when the condition (the left
+/// operand) says so, naga's IR always.
 fn select_arms(fun: &Function) -> Vec<bool> {
     let mut arms = vec![false; fun.expressions.len()];
     let mut stack: Vec<Handle<naga::Expression>> = Vec::new();
     for (_, e) in fun.expressions.iter() {
-        if let naga::Expression::Select { accept, reject, .. } = e {
-            stack.extend([*accept, *reject]);
+        match e {
+            naga::Expression::Select { accept, reject, .. } => stack.extend([*accept, *reject]),
+            naga::Expression::Binary { op: naga::BinaryOperator::LogicalAnd | naga::BinaryOperator::LogicalOr, right, .. } => {
+                stack.push(*right)
+            }
+            _ => {}
         }
     }
     while let Some(h) = stack.pop() {
@@ -206,13 +225,37 @@ pub struct Analyzer<'a> {
     /// walked at every call site, so the work can grow exponentially with nesting. Past the
     /// limit the rest of the stage is taken as unreachable (no warning, false or true) and
     /// `stopped` is set (note N0701).
-    work: u64,
+    pub work: u64,
+    /// Work after which the analysis stops ([`WORK_LIMIT`] unless the caller sets less).
+    pub work_limit: u64,
     pub stopped: bool,
+    /// A witness run ([`super::witness`]): inputs at points, loops run iteration by
+    /// iteration, and only hazards that surely happen reported.
+    pub witness: bool,
+    /// Exits taken on a live path so far: a branch that may take one leaves the code
+    /// after it unsure.
+    pub exits: ExitCount,
+    /// The loops ([`Call::loop_id`]) a witness run saw iterate past [`UNROLL_LIMIT`] on a
+    /// sure path, while it iterates the rest of them to a fixpoint.
+    pub runaway: Vec<usize>,
+}
+
+/// Exits taken on live paths, by kind.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ExitCount {
+    /// `return` and `discard`.
+    pub leaves: u64,
+    pub breaks: u64,
+    pub continues: u64,
 }
 
 /// Work units one stage's analysis may take: real shaders take a few thousand to a few
 /// hundred thousand; 8 nested loops about 2 million (0.4 s).
 pub const WORK_LIMIT: u64 = 4_000_000;
+
+/// Iterations a witness run follows one by one before it iterates the rest of a loop to a
+/// fixpoint.
+pub const UNROLL_LIMIT: usize = 256;
 
 const MAX_ROUNDS: usize = 12;
 const MAX_CALL_DEPTH: usize = 24;
@@ -231,7 +274,11 @@ impl<'a> Analyzer<'a> {
             outputs: HashMap::new(),
             initials: Default::default(),
             work: 0,
+            work_limit: WORK_LIMIT,
             stopped: false,
+            witness: false,
+            exits: ExitCount::default(),
+            runaway: Vec::new(),
         }
     }
 
@@ -244,6 +291,7 @@ impl<'a> Analyzer<'a> {
         let args = ep.function.arguments.iter().map(|a| (Ev::V(self.argument(a)), None)).collect();
         let mut state = State::dead();
         state.live = true;
+        state.sure = true;
         let returned = self.call(&ep.function, info, args, 0, state);
         if let (Some(result), Some(v)) = (&ep.function.result, returned.1) {
             self.collect_outputs(result, v);
@@ -279,6 +327,9 @@ impl<'a> Analyzer<'a> {
             let v = fun.result.as_ref().map(|r| Val::unknown(self.module, &self.module.types[r.ty].inner));
             return (state, v);
         }
+        // A `return` leaves the callee only: the caller's code after the call is as sure
+        // as the call.
+        let (sure, taken) = (state.sure, self.exits);
         let n = fun.expressions.len();
         let mut c = Call {
             fun,
@@ -289,6 +340,7 @@ impl<'a> Analyzer<'a> {
             keys: vec![None; n],
             returned: Vec::new(),
             in_continuing: false,
+            loop_id: 0,
             select_arms: select_arms(fun),
         };
         for (h, local) in fun.local_variables.iter() {
@@ -313,6 +365,8 @@ impl<'a> Analyzer<'a> {
         }
         out.locals.retain(|(d, _), _| *d != depth);
         out.live = true;
+        out.sure = sure;
+        self.exits = taken;
         if result.is_none() {
             result = fun.result.as_ref().map(|r| Val::unknown(self.module, &self.module.types[r.ty].inner));
         }
@@ -331,7 +385,7 @@ impl<'a> Analyzer<'a> {
 
     fn statement(&mut self, c: &mut Call<'_>, stmt: &Statement, span: naga::Span, mut state: State, exits: &mut Exits) -> State {
         self.work += 1;
-        if self.work > WORK_LIMIT {
+        if self.work > self.work_limit {
             self.stopped = true;
             return State::dead();
         }
@@ -344,13 +398,23 @@ impl<'a> Analyzer<'a> {
             }
             Statement::Block(b) => self.block(c, b, state, exits),
             Statement::If { condition, accept, reject } => {
+                let (sure, before) = (state.sure, self.exits);
                 let yes = self.refine(c, state.clone(), *condition, true);
                 let no = self.refine(c, state, *condition, false);
+                let decided = !yes.live || !no.live;
+                let (yes, no) = if decided { (yes, no) } else { (yes.unsure(), no.unsure()) };
                 let a = self.block(c, accept, yes, exits);
                 let b = self.block(c, reject, no, exits);
                 self.work += a.size() + b.size();
-                a.join(&b, &mut self.fresh)
+                let mut out = a.join(&b, &mut self.fresh);
+                // After an undecided `if` whose arms both fall through, the code runs as
+                // surely as before it.
+                if !decided && out.live {
+                    out.sure = sure && self.exits == before;
+                }
+                out
             }
+            Statement::Switch { selector, cases } if self.witness => self.witness_switch(c, *selector, cases, state, exits),
             Statement::Switch { cases, .. } => {
                 let mut inner = Exits::default();
                 let mut out = State::dead();
@@ -372,21 +436,28 @@ impl<'a> Analyzer<'a> {
                 exits.continues.extend(inner.continues);
                 out
             }
+            Statement::Loop { body, continuing, break_if } if self.witness => self.unroll(c, body, continuing, *break_if, state),
             Statement::Loop { body, continuing, break_if } => self.run_loop(c, body, continuing, *break_if, state),
             Statement::Break => {
+                self.exits.breaks += 1;
                 exits.breaks.push(state);
                 State::dead()
             }
             Statement::Continue => {
+                self.exits.continues += 1;
                 exits.continues.push(state);
                 State::dead()
             }
             Statement::Return { value } => {
+                self.exits.leaves += 1;
                 let v = value.map(|h| self.value(c, &state, h));
                 c.returned.push((state, v));
                 State::dead()
             }
-            Statement::Kill => State::dead(),
+            Statement::Kill => {
+                self.exits.leaves += 1;
+                State::dead()
+            }
             Statement::Store { pointer, value } => {
                 let v = self.value(c, &state, *value);
                 if c.in_continuing {
@@ -419,7 +490,7 @@ impl<'a> Analyzer<'a> {
         }
     }
 
-    fn run_loop(
+    pub(super) fn run_loop(
         &mut self,
         c: &mut Call<'_>,
         body: &Block,
@@ -451,7 +522,7 @@ impl<'a> Analyzer<'a> {
     }
 
     /// One iteration from `head`: the state back at the head, and the state after the loop.
-    fn loop_round(
+    pub(super) fn loop_round(
         &mut self,
         c: &mut Call<'_>,
         body: &Block,
@@ -465,17 +536,23 @@ impl<'a> Analyzer<'a> {
         for s in std::mem::take(&mut exits.continues) {
             cont = cont.join(&s, &mut self.fresh);
         }
-        let was = c.in_continuing;
-        c.in_continuing = true;
+        let was = (c.in_continuing, c.loop_id);
+        (c.in_continuing, c.loop_id) = (true, continuing as *const Block as usize);
         let mut inner = Exits::default();
         let after = self.block(c, continuing, cont, &mut inner);
-        c.in_continuing = was;
+        (c.in_continuing, c.loop_id) = was;
         let mut out = State::dead();
         let next = match break_if {
             Some(cond) if after.live => {
                 self.emit_pending(c, &after, cond);
                 out = self.refine(c, after.clone(), cond, true);
-                self.refine(c, after, cond, false)
+                let next = self.refine(c, after, cond, false);
+                if out.live && next.live {
+                    out.sure = false;
+                    next.unsure()
+                } else {
+                    next
+                }
             }
             _ => after,
         };
@@ -534,45 +611,14 @@ impl<'a> Analyzer<'a> {
         state.versions.insert(place.root.clone(), self.fresh);
     }
 
-    /// A loop counter updated in `continuing` must stay inside its integer type.
-    fn check_counter(&mut self, c: &mut Call<'_>, state: &State, value: Handle<Expression>, span: naga::Span) {
-        let Expression::Binary { op, left, right } = c.fun.expressions[value] else { return };
-        if !matches!(op, naga::BinaryOperator::Add | naga::BinaryOperator::Subtract | naga::BinaryOperator::Multiply) {
-            return;
-        }
-        let (Some(a), Some(b)) = (self.value(c, state, left).num().cloned(), self.value(c, state, right).num().cloned()) else {
-            return;
-        };
-        let (lo, hi) = match a.kind {
-            naga::ScalarKind::Sint => (f64::from(i32::MIN), f64::from(i32::MAX)),
-            naga::ScalarKind::Uint => (0.0, f64::from(u32::MAX)),
-            _ => return,
-        };
-        // Integer steps are exact (f64 holds every 32-bit sum and product): no float
-        // rounding slack, which near 2^31 is wider than the step itself.
-        let (x, y) = (a.iv(), b.iv());
-        let raw = match op {
-            naga::BinaryOperator::Add => Iv::new(x.lo + y.lo, x.hi + y.hi),
-            naga::BinaryOperator::Subtract => Iv::new(x.lo - y.hi, x.hi - y.lo),
-            _ => {
-                let p = [x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi].map(|v| if v.is_nan() { 0.0 } else { v });
-                Iv::new(p.iter().copied().fold(f64::INFINITY, f64::min), p.iter().copied().fold(f64::NEG_INFINITY, f64::max))
-            }
-        };
-        // A step can overflow only the way it moves: `i + 1` past the top, never below the
-        // bottom (the counter's own lower bound may be lost to widening, not to the step).
-        let (step_up, step_down) = match op {
-            naga::BinaryOperator::Add => (b.iv().hi > 0.0, b.iv().lo < 0.0),
-            naga::BinaryOperator::Subtract => (b.iv().lo < 0.0, b.iv().hi > 0.0),
-            _ => (true, true),
-        };
-        if a.known && b.known && ((step_up && raw.hi > hi) || (step_down && raw.lo < lo)) {
-            self.report(Hazard::counter(span, a.iv(), raw, a.kind));
-        }
-    }
-
-    pub fn report(&mut self, h: Hazard) {
+    /// Records `h`, found where execution is `sure` to come. A witness run records only the
+    /// hazards that surely happen: certain on the operands' values, at a point every
+    /// execution reaches.
+    pub fn report(&mut self, h: Hazard, sure: bool) {
         if self.quiet > 0 || h.span == naga::Span::UNDEFINED {
+            return;
+        }
+        if self.witness && !(h.certain && sure) {
             return;
         }
         if !self.hazards.iter().any(|x| x.code == h.code && x.span == h.span) {
@@ -594,7 +640,7 @@ impl<'a> Analyzer<'a> {
         let var = &self.module.global_variables[g];
         let inner = &self.module.types[var.ty].inner;
         match var.space {
-            naga::AddressSpace::Uniform => super::facts::uniform_value(self.module, inner, "", self.facts),
+            naga::AddressSpace::Uniform | naga::AddressSpace::Immediate => super::facts::uniform_value(self.module, inner, "", self.facts),
             naga::AddressSpace::Private | naga::AddressSpace::WorkGroup => match var.init {
                 Some(init) => super::eval::constant(self.module, init),
                 None => Val::zero(self.module, inner),

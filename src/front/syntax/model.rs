@@ -214,6 +214,8 @@ pub struct StageSyntax {
     /// ([`StageSyntax::index_globals`]): a stage of thousands of uniforms is looked up by
     /// name at every use.
     pub global_index: HashMap<String, usize>,
+    /// `#pragma parameter` declarations: uniforms a host sets, with their ranges.
+    pub parameters: Vec<crate::front::parameters::Parameter>,
 }
 
 /// A short-circuit operator whose right operand must not run when the left decides.

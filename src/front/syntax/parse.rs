@@ -140,6 +140,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
         lazy_logic: Vec::new(),
         do_while_continue: Vec::new(),
         global_index: HashMap::new(),
+        parameters: crate::front::parameters::parameters(original),
     };
     Collector::run(&mut syntax, &tu);
     size_globals_by_initializer(&mut syntax);

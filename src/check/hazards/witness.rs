@@ -1,0 +1,212 @@
+//! Witness runs: the analysis again with the declared inputs at points (every one at its
+//! default; then one at a time at the ends of its range and, when there are few, its
+//! steps), time and frame counters at 0, loops followed iteration by iteration. A hazard a
+//! witness run reports happens at those inputs ([`super::tier`]): it is **certain**.
+//!
+//! Inputs without a declared range keep the interval the analysis assumes, so only what
+//! happens for every value of them can be witnessed.
+
+use super::facts::{Declared, DeclaredBy, Facts};
+use super::interval::Iv;
+use super::value::Num;
+use crate::manifest::Semantic;
+
+/// Steps of a range tried one by one when there are at most this many.
+const MAX_STEPS: f64 = 16.0;
+
+/// One set of inputs: every declared input at its default, except one (an index into
+/// [`Facts::declared`]) at the value given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    pub varied: Option<(usize, f64)>,
+}
+
+/// The samples to try, in order: the defaults, then for the inputs `first` marks, then for
+/// the others, every input's range ends, then the steps inside the ranges.
+pub fn samples(declared: &[Declared], first: &[bool]) -> Vec<Sample> {
+    let (mut ahead, mut behind): (Vec<usize>, Vec<usize>) = (0..declared.len()).partition(|&i| first.get(i) == Some(&true));
+    ahead.append(&mut behind);
+    let mut out = vec![Sample { varied: None }];
+    for group in [&ahead[..first.iter().filter(|f| **f).count()], &ahead[first.iter().filter(|f| **f).count()..]] {
+        out.extend(samples_of(declared, group));
+    }
+    out
+}
+
+/// The range ends, then the steps, of the inputs `which`.
+fn samples_of(declared: &[Declared], which: &[usize]) -> Vec<Sample> {
+    let mut out: Vec<Sample> = Vec::new();
+    let mut inner = Vec::new();
+    for &i in which {
+        let d = &declared[i];
+        let (lo, hi) = d.range;
+        for v in [lo, hi] {
+            if v != d.default && !out.iter().any(|s| s.varied == Some((i, v))) {
+                out.push(Sample { varied: Some((i, v)) });
+            }
+        }
+        if let Some(step) = d.step.filter(|s| (hi - lo) / s <= MAX_STEPS) {
+            let mut k = 1.0;
+            while lo + k * step < hi - step * 1e-6 {
+                let v = lo + k * step;
+                if (v - d.default).abs() > step * 1e-6 {
+                    inner.push(Sample { varied: Some((i, v)) });
+                }
+                k += 1.0;
+            }
+        }
+    }
+    out.extend(inner);
+    out
+}
+
+/// Which declared inputs are named near the hazards at `spans` of `text`: on their lines,
+/// or on a line that assigns a variable named there (one step back). Their samples run
+/// first, so a stage with hundreds of parameters spends its witness budget on the ones
+/// that matter.
+pub fn named_near(declared: &[Declared], text: &str, spans: impl Iterator<Item = std::ops::Range<usize>>) -> Vec<bool> {
+    let line_of = |at: usize| {
+        let start = text[..at.min(text.len())].rfind('\n').map_or(0, |i| i + 1);
+        let end = text[at.min(text.len())..].find('\n').map_or(text.len(), |i| at + i);
+        &text[start..end]
+    };
+    let mut lines: Vec<&str> = spans.map(|r| line_of(r.start)).collect();
+    lines.sort_unstable();
+    lines.dedup();
+    let mut words: Vec<&str> = lines.iter().flat_map(|l| identifiers(l)).collect();
+    words.sort_unstable();
+    words.dedup();
+    for w in words.iter().take(64) {
+        if declared.iter().any(|d| d.name == *w) {
+            continue;
+        }
+        // `w = …`, `w += …`, `float w = …`: the lines that give a named variable its value.
+        let mut from = 0;
+        while let Some(i) = text[from..].find(w) {
+            let at = from + i;
+            from = at + w.len();
+            let before = text[..at].chars().next_back().is_some_and(|c| c.is_ascii_alphanumeric() || c == '_');
+            let after = text[from..].trim_start();
+            let assigns = !after.starts_with("==")
+                && (after.starts_with('=') || after.get(1..2) == Some("=") && after.starts_with(['+', '-', '*', '/']));
+            if !before && assigns && lines.len() < 256 {
+                lines.push(line_of(at));
+            }
+        }
+    }
+    declared.iter().map(|d| lines.iter().any(|l| identifiers(l).any(|w| w == d.name))).collect()
+}
+
+/// The identifiers of `text`.
+fn identifiers(text: &str) -> impl Iterator<Item = &str> {
+    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
+}
+
+/// The facts of one sample: declared inputs and clocks at points, the rest as `base` has it.
+pub fn facts_at(base: &Facts, sample: Sample) -> Facts {
+    let mut f = base.clone();
+    f.read_clock = Default::default();
+    for (i, d) in base.declared.iter().enumerate() {
+        let v = match sample.varied {
+            Some((j, v)) if j == i => v,
+            _ => d.default,
+        };
+        let n = match base.uniforms.get(&d.name) {
+            Some(n) => Num::from_comps(vec![Iv::point(v); n.c.len()], n.cols, n.kind, true),
+            None => Num::float(Iv::point(v)),
+        };
+        f.uniforms.insert(d.name.clone(), Num { per_draw: true, ..n });
+    }
+    for name in &base.clocks {
+        if let Some(n) = f.uniforms.get_mut(name) {
+            let start = n.iv().lo.max(0.0);
+            *n = Num { per_draw: true, ..Num::scalar(Iv::point(start), n.kind, true) };
+        }
+    }
+    for s in [Semantic::Time, Semantic::Frame] {
+        if let Some(n) = f.guessed.get_mut(&s) {
+            *n = Num { per_draw: true, ..Num::scalar(Iv::point(0.0), n.kind, true) };
+        }
+    }
+    f
+}
+
+/// Where a witness found a hazard, for people: "with MASK_TYPE = 0 (the low end of its
+/// `#pragma parameter` range) and every other parameter at its default, at time 0".
+pub fn describe(declared: &[Declared], sample: Sample, clock: bool) -> String {
+    let clock = if clock { ", at time 0 (the first frame)" } else { "" };
+    let what = |by: DeclaredBy| match by {
+        DeclaredBy::Pragma => "`#pragma parameter`",
+        DeclaredBy::Manifest => "manifest",
+    };
+    match sample.varied {
+        None if declared.is_empty() => format!("on every run that reaches it{clock}"),
+        None => format!("with every declared input at its default{clock}"),
+        Some((i, v)) => {
+            let d = &declared[i];
+            let place = if v == d.range.0 {
+                "the low end of its"
+            } else if v == d.range.1 {
+                "the high end of its"
+            } else {
+                "a step of its"
+            };
+            let others = if declared.len() > 1 { " and every other declared input at its default" } else { "" };
+            format!("with {} = {} ({place} {} range){others}{clock}", d.name, number(v), what(d.by))
+        }
+    }
+}
+
+fn number(v: f64) -> String {
+    let s = format!("{v:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn declared(default: f64, range: (f64, f64), step: Option<f64>) -> Declared {
+        Declared { name: "MASK_TYPE".into(), default, range, step, by: DeclaredBy::Pragma }
+    }
+
+    #[test]
+    fn defaults_then_ends_then_steps() {
+        let s = samples(&[declared(4.0, (0.0, 7.0), Some(1.0))], &[]);
+        let values: Vec<Option<f64>> = s.iter().map(|s| s.varied.map(|(_, v)| v)).collect();
+        assert_eq!(values, [None, Some(0.0), Some(7.0), Some(1.0), Some(2.0), Some(3.0), Some(5.0), Some(6.0)]);
+    }
+
+    #[test]
+    fn a_fine_step_tries_the_ends_only() {
+        assert_eq!(samples(&[declared(0.03, (0.0, 0.2), Some(0.001))], &[]).len(), 3);
+        assert_eq!(samples(&[declared(0.0, (0.0, 0.0), Some(0.0))], &[]).len(), 1, "a header parameter");
+    }
+
+    #[test]
+    fn inputs_named_near_a_hazard_are_tried_first() {
+        let named = |n: &str| Declared { name: n.into(), ..declared(1.0, (0.0, 2.0), None) };
+        let d = [named("A"), named("B"), named("C")];
+        let text = "float s = B * 2.0;\nfloat t = 1.0;\nt += C;\nfloat x = y / (s + t);\n";
+        let at = text.find("y /").unwrap();
+        let first = named_near(&d, text, std::iter::once(at..at + 1));
+        assert_eq!(first, [false, true, true]);
+        let order: Vec<Option<usize>> = samples(&d, &first).iter().map(|s| s.varied.map(|(i, _)| i)).collect();
+        assert_eq!(order, [None, Some(1), Some(1), Some(2), Some(2), Some(0), Some(0)]);
+    }
+
+    #[test]
+    fn descriptions_name_the_input_and_where_its_value_lies() {
+        let d = [declared(4.0, (0.0, 7.0), Some(1.0))];
+        assert_eq!(
+            describe(&d, Sample { varied: Some((0, 0.0)) }, true),
+            "with MASK_TYPE = 0 (the low end of its `#pragma parameter` range), at time 0 (the first frame)"
+        );
+        assert_eq!(describe(&[], Sample { varied: None }, false), "on every run that reaches it");
+    }
+}
