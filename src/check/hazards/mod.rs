@@ -51,6 +51,9 @@ pub struct Hazard {
     /// Every value the operands can take hits it ([`tier::certain`]): what a witness run
     /// reports.
     pub certain: bool,
+    /// Some value the operands can take would make it certain ([`tier::witnessable`]):
+    /// worth witness runs.
+    pub witnessable: bool,
 }
 
 impl Hazard {
@@ -145,8 +148,8 @@ impl Hazard {
                 "guard the origin: `length(v) > 1e-6 ? atan(v.y, v.x) : 0.0`",
             ),
         };
-        let certain = tier::certain(kind, a, b);
-        Hazard { code, span, message, label, notes: vec![note], help: help.to_string(), certain }
+        let (certain, witnessable) = (tier::certain(kind, a, b), tier::witnessable(kind, a, b));
+        Hazard { code, span, message, label, notes: vec![note], help: help.to_string(), certain, witnessable }
     }
 
     pub fn hash(span: naga::Span, x: Iv, k: Iv) -> Hazard {
@@ -166,6 +169,7 @@ impl Hazard {
             notes,
             help: "use an integer hash (e.g. PCG: `uint h = uint(x) * 747796405u + 2891336453u; …`) or a sine-free hash such as Dave Hoskins' `hash11`".into(),
             certain: tier::certain_hash(x),
+            witnessable: tier::certain_hash(Iv::new(x.mag(), x.mag())),
         }
     }
 
@@ -179,6 +183,7 @@ impl Hazard {
             notes: vec!["nothing bounds this loop's counter below the type's limit: it wraps around (signed overflow is undefined)".into()],
             help: "bound the loop by a constant or a uniform with a `range`".into(),
             certain: false,
+            witnessable: true,
         }
     }
 }
@@ -320,19 +325,21 @@ fn analyse_with(effect: Option<&Effect>, program: &CompiledProgram, settings: Ha
         }
         runs.push(r);
     }
+    let base_work = runs.iter().flatten().map(|r| r.work).sum();
     let found: Vec<Vec<Hazard>> = runs.into_iter().map(|r| r.map(|r| r.hazards).unwrap_or_default()).collect();
     let confirmed = if witnesses {
-        confirm(&stages, &f, found)
+        confirm(&stages, &f, found, base_work)
     } else {
-        Confirmed { found: found.into_iter().map(|hs| hs.into_iter().map(|h| (h, None)).collect()).collect(), tried: 0, planned: 0 }
+        let found = found.into_iter().map(|hs| hs.into_iter().map(|h| (h, None)).collect()).collect();
+        Confirmed { found, tried: 0, planned: 0, out_of_work: false }
     };
     let report = settings.report.unwrap_or(if effect.is_some() { HazardReport::Possible } else { HazardReport::Certain });
     for (stage, hazards) in stages.iter().zip(&confirmed.found) {
         for (h, witness) in hazards {
             let note = match witness {
-                Some(at) => format!("certain: it happens {at}"),
+                Some(w) => format!("certain: it happens {}", w.at),
                 None if report == HazardReport::Certain => continue,
-                None => confirmed.possible_note(),
+                None => confirmed.possible_note(h),
             };
             out.push(at_user(stage, program, h).with_note(note));
         }
@@ -342,18 +349,28 @@ fn analyse_with(effect: Option<&Effect>, program: &CompiledProgram, settings: Ha
 
 /// The hazards of every stage with the witness that makes each certain, if any.
 struct Confirmed {
-    found: Vec<Vec<(Hazard, Option<String>)>>,
-    /// Input sets tried, and planned.
+    found: Vec<Vec<(Hazard, Option<Witness>)>>,
+    /// Input sets tried, and planned; whether the work budget ended the runs.
     tried: usize,
     planned: usize,
+    out_of_work: bool,
+}
+
+/// Where a witness run showed a hazard, and how many declared inputs it moved from their
+/// defaults (fewer says more precisely which input matters).
+struct Witness {
+    at: String,
+    inputs: usize,
 }
 
 impl Confirmed {
-    fn possible_note(&self) -> String {
-        let stopped = if self.tried < self.planned {
-            format!("; the witness runs reached their work limit after {} of {} sets of inputs", self.tried, self.planned)
-        } else {
-            String::new()
+    fn possible_note(&self, h: &Hazard) -> String {
+        if !h.witnessable {
+            return "possible: the analysis cannot rule it out over the ranges it assumes, and no run at fixed inputs could show it: no value its operands can take is sure to go wrong".into();
+        }
+        let stopped = match self.out_of_work {
+            true => format!("; the witness runs reached their work limit after {} of {} sets of inputs", self.tried, self.planned),
+            false => String::new(),
         };
         format!(
             "possible: the analysis cannot rule it out over the ranges it assumes, but no run at fixed inputs showed it (each declared input at its default, its range's ends and steps; time 0){stopped}"
@@ -362,10 +379,11 @@ impl Confirmed {
 }
 
 /// Witness runs for the hazards `found` (by stage, in the order of `stages`): input sets
-/// from [`witness::samples`] while any hazard is unconfirmed and work remains
-/// ([`WITNESS_WORK`]).
-fn confirm(stages: &[Stage<'_>], f: &facts::Facts, found: Vec<Vec<Hazard>>) -> Confirmed {
-    let mut out: Vec<Vec<(Hazard, Option<String>)>> = found.into_iter().map(|hs| hs.into_iter().map(|h| (h, None)).collect()).collect();
+/// from [`witness::samples`] while a hazard is unconfirmed (or confirmed by a set that
+/// moved several inputs) and work remains.
+fn confirm(stages: &[Stage<'_>], f: &facts::Facts, found: Vec<Vec<Hazard>>, base_work: u64) -> Confirmed {
+    let budget = WITNESS_WORK.min(base_work / WITNESS_SHARE + WITNESS_FLOOR);
+    let mut out: Vec<Vec<(Hazard, Option<Witness>)>> = found.into_iter().map(|hs| hs.into_iter().map(|h| (h, None)).collect()).collect();
     let mut first = vec![false; f.declared.len()];
     for (st, hs) in stages.iter().zip(&out) {
         let spans = hs.iter().filter_map(|(h, _)| h.span.to_range()).filter(|r| r.end <= st.text.len());
@@ -374,15 +392,20 @@ fn confirm(stages: &[Stage<'_>], f: &facts::Facts, found: Vec<Vec<Hazard>>) -> C
         }
     }
     let plan = witness::samples(&f.declared, &first);
-    let mut tried = 0;
-    let mut work = 0u64;
-    let open = |out: &[Vec<(Hazard, Option<String>)>], i: usize| out[i].iter().any(|(_, w)| w.is_none());
+    let (mut tried, mut work, mut out_of_work) = (0, 0u64, false);
+    let open = |out: &[Vec<(Hazard, Option<Witness>)>], i: usize| {
+        out[i].iter().any(|(h, w)| h.witnessable && w.as_ref().is_none_or(|w| w.inputs > 1))
+    };
     for sample in &plan {
-        if !(0..stages.len()).any(|i| open(&out, i)) || work >= WITNESS_WORK {
+        if !(0..stages.len()).any(|i| open(&out, i)) {
+            break;
+        }
+        if work >= budget {
+            out_of_work = true;
             break;
         }
         tried += 1;
-        let mut facts = witness::facts_at(f, *sample);
+        let mut facts = witness::facts_at(f, sample);
         for (i, stage) in stages.iter().enumerate() {
             let vertex = stage.kind == StageKind::Vertex;
             // The vertex stage runs for its own hazards or to feed the fragment stage's.
@@ -390,17 +413,23 @@ fn confirm(stages: &[Stage<'_>], f: &facts::Facts, found: Vec<Vec<Hazard>>) -> C
             if !(open(&out, i) || feeds_open) {
                 continue;
             }
-            let Some(r) = run(stage, &facts, true, (WITNESS_WORK - work.min(WITNESS_WORK)).max(1)) else { continue };
+            let Some(r) = run(stage, &facts, true, (budget - work.min(budget)).max(1)) else { continue };
             work += r.work;
+            out_of_work |= r.stopped;
             for h in &r.hazards {
-                let at = witness::describe(&f.declared, *sample, facts.read_clock.get());
+                let w = Witness { at: witness::describe(&f.declared, sample, facts.read_clock.get()), inputs: sample.varied.len() };
                 // The witness's own values label it: the operands at the inputs it fixed (a
                 // counter keeps the fixpoint's range, where it overflows).
+                let keep_label = h.code == Code::HazardCounterOverflow;
                 match out[i].iter_mut().find(|(b, _)| b.code == h.code && b.span == h.span) {
-                    Some((_, w @ None)) if h.code == Code::HazardCounterOverflow => *w = Some(at),
-                    Some((b, w @ None)) => (*b, *w) = (h.clone(), Some(at)),
+                    Some((b, old)) if old.as_ref().is_none_or(|o| w.inputs < o.inputs) => {
+                        if !keep_label {
+                            *b = h.clone();
+                        }
+                        *old = Some(w);
+                    }
                     Some(_) => {}
-                    None => out[i].push((h.clone(), Some(at))),
+                    None => out[i].push((h.clone(), Some(w))),
                 }
             }
             if vertex {
@@ -408,12 +437,18 @@ fn confirm(stages: &[Stage<'_>], f: &facts::Facts, found: Vec<Vec<Hazard>>) -> C
             }
         }
     }
-    Confirmed { found: out, tried, planned: plan.len() }
+    Confirmed { found: out, tried, planned: plan.len(), out_of_work }
 }
 
-/// Work all the witness runs of one program may take together (a witness run costs about
-/// what the analysis does, often less: decided branches are walked once).
+/// Work all the witness runs of one program may take together: a share of what its
+/// interval analysis took ([`WITNESS_SHARE`]), at least [`WITNESS_FLOOR`] (a small stage
+/// gets a few input sets), at most this. A witness run costs about what the analysis
+/// does (decided branches are walked once, loops iteration by iteration), so the
+/// analysis with its witness runs stays within a fifth more work than without
+/// (`benches/hazard_speed.rs`).
 const WITNESS_WORK: u64 = 2_000_000;
+const WITNESS_SHARE: u64 = 5;
+const WITNESS_FLOOR: u64 = 20_000;
 
 /// The vertex stage's outputs as the fragment stage's inputs.
 fn vertex_outputs(r: &Run) -> HashMap<u32, Num> {

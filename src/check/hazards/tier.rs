@@ -53,6 +53,26 @@ pub fn certain(kind: Kind, a: &Num, b: Option<&Num>) -> bool {
     }
 }
 
+/// Whether some values the operands can take would make `kind` certain: a witness run,
+/// whose operands lie inside these, can show it.
+pub fn witnessable(kind: Kind, a: &Num, b: Option<&Num>) -> bool {
+    let near_zero = |x: Iv| x.lo <= ROUNDED_ZERO && x.hi >= -ROUNDED_ZERO;
+    let below = |x: Iv| x.lo < -ROUNDED_ZERO;
+    let paired = |i: usize| b.and_then(|n| n.c.get(i).or(n.c.first())).copied();
+    match kind {
+        Kind::Division => a.c.iter().any(|&x| near_zero(x)),
+        Kind::Asin | Kind::Acos => a.c.iter().any(|x| x.mag() > 1.0 + ROUNDED_ZERO),
+        Kind::Sqrt => a.c.iter().any(|&x| below(x)),
+        Kind::Log | Kind::InverseSqrt => a.c.iter().any(|&x| below(x) || near_zero(x)),
+        Kind::Pow => a.c.iter().enumerate().any(|(i, &x)| below(x) || (near_zero(x) && paired(i).is_some_and(|y| y.lo <= 0.0))),
+        Kind::Normalize => a.c.iter().all(|&x| near_zero(x)),
+        Kind::Trig => a.c.iter().any(|x| x.mag() >= VISIBLE_TRIG),
+        Kind::NegativeRemainder => a.c.iter().chain(b.map_or(&[][..], |n| &n.c[..])).any(|x| x.lo < 0.0),
+        Kind::Shift => a.c.iter().any(|x| x.lo < 0.0 || x.hi >= 32.0),
+        Kind::Atan2 => a.c.iter().enumerate().any(|(i, &y)| near_zero(y) && paired(i).is_some_and(near_zero)),
+    }
+}
+
 /// A `fract(sin(x) * K)` hash whose argument surely lies where sin itself visibly loses
 /// precision.
 pub fn certain_hash(x: Iv) -> bool {
@@ -111,6 +131,14 @@ mod tests {
         assert!(!certain(Kind::Acos, &num(&[Iv::new(-1.0000001, 1.0000001)]), None));
         assert!(certain(Kind::Acos, &num(&[Iv::new(1.5, 2.0)]), None));
         assert!(!certain(Kind::Sqrt, &num(&[Iv::new(-1e-7, -1e-8)]), None));
+    }
+
+    #[test]
+    fn only_operands_that_reach_the_hazard_are_worth_witness_runs() {
+        assert!(witnessable(Kind::Division, &num(&[Iv::new(0.0, 1.0)]), None));
+        assert!(!witnessable(Kind::Trig, &num(&[Iv::new(0.0, 12_000.0)]), None), "never past 2^15 rad");
+        assert!(witnessable(Kind::Trig, &num(&[Iv::new(0.0, 1e6)]), None));
+        assert!(!witnessable(Kind::Acos, &num(&[Iv::new(-1.0000001, 1.0000001)]), None), "rounding slack only");
     }
 
     #[test]

@@ -255,7 +255,7 @@ pub const WORK_LIMIT: u64 = 4_000_000;
 
 /// Iterations a witness run follows one by one before it iterates the rest of a loop to a
 /// fixpoint.
-pub const UNROLL_LIMIT: usize = 256;
+pub const UNROLL_LIMIT: usize = 64;
 
 const MAX_ROUNDS: usize = 12;
 const MAX_CALL_DEPTH: usize = 24;

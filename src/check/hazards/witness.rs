@@ -1,5 +1,6 @@
 //! Witness runs: the analysis again with the declared inputs at points (every one at its
-//! default; then one at a time at the ends of its range and, when there are few, its
+//! default; the inputs named near a hazard all at the low, then all at the high ends of
+//! their ranges; then one at a time at the ends of its range and, when there are few, its
 //! steps), time and frame counters at 0, loops followed iteration by iteration. A hazard a
 //! witness run reports happens at those inputs ([`super::tier`]): it is **certain**.
 //!
@@ -14,22 +15,31 @@ use crate::manifest::Semantic;
 /// Steps of a range tried one by one when there are at most this many.
 const MAX_STEPS: f64 = 16.0;
 
-/// One set of inputs: every declared input at its default, except one (an index into
-/// [`Facts::declared`]) at the value given.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// One set of inputs: every declared input at its default, except those listed (indices
+/// into [`Facts::declared`]) at the values given.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Sample {
-    pub varied: Option<(usize, f64)>,
+    pub varied: Vec<(usize, f64)>,
 }
 
-/// The samples to try, in order: the defaults, then for the inputs `first` marks, then for
-/// the others, every input's range ends, then the steps inside the ranges.
+/// The samples to try, in order: the defaults; the inputs `first` marks all at the low,
+/// then all at the high ends of their ranges (two runs where one per input would cost
+/// many); then, for the inputs `first` marks and then for the others, one input's range
+/// ends, then the steps inside the ranges.
 pub fn samples(declared: &[Declared], first: &[bool]) -> Vec<Sample> {
-    let (mut ahead, mut behind): (Vec<usize>, Vec<usize>) = (0..declared.len()).partition(|&i| first.get(i) == Some(&true));
-    ahead.append(&mut behind);
-    let mut out = vec![Sample { varied: None }];
-    for group in [&ahead[..first.iter().filter(|f| **f).count()], &ahead[first.iter().filter(|f| **f).count()..]] {
-        out.extend(samples_of(declared, group));
+    let (ahead, behind): (Vec<usize>, Vec<usize>) = (0..declared.len()).partition(|&i| first.get(i) == Some(&true));
+    let mut out = vec![Sample { varied: Vec::new() }];
+    if ahead.len() > 1 {
+        for end in [|d: &Declared| d.range.0, |d: &Declared| d.range.1] {
+            let varied: Vec<(usize, f64)> =
+                ahead.iter().map(|&i| (i, end(&declared[i]))).filter(|&(i, v)| v != declared[i].default).collect();
+            if varied.len() > 1 {
+                out.push(Sample { varied });
+            }
+        }
     }
+    out.extend(samples_of(declared, &ahead));
+    out.extend(samples_of(declared, &behind));
     out
 }
 
@@ -41,8 +51,8 @@ fn samples_of(declared: &[Declared], which: &[usize]) -> Vec<Sample> {
         let d = &declared[i];
         let (lo, hi) = d.range;
         for v in [lo, hi] {
-            if v != d.default && !out.iter().any(|s| s.varied == Some((i, v))) {
-                out.push(Sample { varied: Some((i, v)) });
+            if v != d.default && !out.iter().any(|s| s.varied == [(i, v)]) {
+                out.push(Sample { varied: vec![(i, v)] });
             }
         }
         if let Some(step) = d.step.filter(|s| (hi - lo) / s <= MAX_STEPS) {
@@ -50,7 +60,7 @@ fn samples_of(declared: &[Declared], which: &[usize]) -> Vec<Sample> {
             while lo + k * step < hi - step * 1e-6 {
                 let v = lo + k * step;
                 if (v - d.default).abs() > step * 1e-6 {
-                    inner.push(Sample { varied: Some((i, v)) });
+                    inner.push(Sample { varied: vec![(i, v)] });
                 }
                 k += 1.0;
             }
@@ -103,14 +113,11 @@ fn identifiers(text: &str) -> impl Iterator<Item = &str> {
 }
 
 /// The facts of one sample: declared inputs and clocks at points, the rest as `base` has it.
-pub fn facts_at(base: &Facts, sample: Sample) -> Facts {
+pub fn facts_at(base: &Facts, sample: &Sample) -> Facts {
     let mut f = base.clone();
     f.read_clock = Default::default();
     for (i, d) in base.declared.iter().enumerate() {
-        let v = match sample.varied {
-            Some((j, v)) if j == i => v,
-            _ => d.default,
-        };
+        let v = sample.varied.iter().find(|(j, _)| *j == i).map_or(d.default, |(_, v)| *v);
         let n = match base.uniforms.get(&d.name) {
             Some(n) => Num::from_comps(vec![Iv::point(v); n.c.len()], n.cols, n.kind, true),
             None => Num::float(Iv::point(v)),
@@ -133,27 +140,46 @@ pub fn facts_at(base: &Facts, sample: Sample) -> Facts {
 
 /// Where a witness found a hazard, for people: "with MASK_TYPE = 0 (the low end of its
 /// `#pragma parameter` range) and every other parameter at its default, at time 0".
-pub fn describe(declared: &[Declared], sample: Sample, clock: bool) -> String {
+pub fn describe(declared: &[Declared], sample: &Sample, clock: bool) -> String {
     let clock = if clock { ", at time 0 (the first frame)" } else { "" };
     let what = |by: DeclaredBy| match by {
         DeclaredBy::Pragma => "`#pragma parameter`",
         DeclaredBy::Manifest => "manifest",
     };
-    match sample.varied {
-        None if declared.is_empty() => format!("on every run that reaches it{clock}"),
-        None => format!("with every declared input at its default{clock}"),
-        Some((i, v)) => {
-            let d = &declared[i];
-            let place = if v == d.range.0 {
-                "the low end of its"
-            } else if v == d.range.1 {
-                "the high end of its"
-            } else {
-                "a step of its"
-            };
-            let others = if declared.len() > 1 { " and every other declared input at its default" } else { "" };
-            format!("with {} = {} ({place} {} range){others}{clock}", d.name, number(v), what(d.by))
+    let place = |d: &Declared, v: f64| {
+        if v == d.range.0 {
+            "the low end of its"
+        } else if v == d.range.1 {
+            "the high end of its"
+        } else {
+            "a step of its"
         }
+    };
+    let others = if declared.len() > sample.varied.len() { " and every other declared input at its default" } else { "" };
+    let Some(&(first, v0)) = sample.varied.first() else {
+        return match declared.is_empty() {
+            true => format!("on every run that reaches it{clock}"),
+            false => format!("with every declared input at its default{clock}"),
+        };
+    };
+    let alike =
+        sample.varied.iter().all(|&(i, v)| place(&declared[i], v) == place(&declared[first], v0) && declared[i].by == declared[first].by);
+    let values = |with_place: bool| {
+        let one = |&(i, v): &(usize, f64)| {
+            let d = &declared[i];
+            match with_place {
+                true => format!("{} = {} ({} {} range)", d.name, number(v), place(d, v), what(d.by)),
+                false => format!("{} = {}", d.name, number(v)),
+            }
+        };
+        sample.varied.iter().map(one).collect::<Vec<_>>().join(", ")
+    };
+    if sample.varied.len() > 1 && alike {
+        // "the low end of its" → "the low ends of their".
+        let places = place(&declared[first], v0).replace("end of its", "ends of their").replace("step of its", "steps of their");
+        format!("with {} ({places} {} ranges){others}{clock}", values(false), what(declared[first].by))
+    } else {
+        format!("with {}{others}{clock}", values(true))
     }
 }
 
@@ -178,7 +204,7 @@ mod tests {
     #[test]
     fn defaults_then_ends_then_steps() {
         let s = samples(&[declared(4.0, (0.0, 7.0), Some(1.0))], &[]);
-        let values: Vec<Option<f64>> = s.iter().map(|s| s.varied.map(|(_, v)| v)).collect();
+        let values: Vec<Option<f64>> = s.iter().map(|s| s.varied.first().map(|(_, v)| *v)).collect();
         assert_eq!(values, [None, Some(0.0), Some(7.0), Some(1.0), Some(2.0), Some(3.0), Some(5.0), Some(6.0)]);
     }
 
@@ -196,17 +222,22 @@ mod tests {
         let at = text.find("y /").unwrap();
         let first = named_near(&d, text, std::iter::once(at..at + 1));
         assert_eq!(first, [false, true, true]);
-        let order: Vec<Option<usize>> = samples(&d, &first).iter().map(|s| s.varied.map(|(i, _)| i)).collect();
-        assert_eq!(order, [None, Some(1), Some(1), Some(2), Some(2), Some(0), Some(0)]);
+        let order: Vec<Vec<usize>> = samples(&d, &first).iter().map(|s| s.varied.iter().map(|(i, _)| *i).collect()).collect();
+        assert_eq!(order, [vec![], vec![1, 2], vec![1, 2], vec![1], vec![1], vec![2], vec![2], vec![0], vec![0]]);
     }
 
     #[test]
     fn descriptions_name_the_input_and_where_its_value_lies() {
         let d = [declared(4.0, (0.0, 7.0), Some(1.0))];
         assert_eq!(
-            describe(&d, Sample { varied: Some((0, 0.0)) }, true),
+            describe(&d, &Sample { varied: vec![(0, 0.0)] }, true),
             "with MASK_TYPE = 0 (the low end of its `#pragma parameter` range), at time 0 (the first frame)"
         );
-        assert_eq!(describe(&[], Sample { varied: None }, false), "on every run that reaches it");
+        assert_eq!(describe(&[], &Sample { varied: Vec::new() }, false), "on every run that reaches it");
+        let two = [declared(4.0, (0.0, 7.0), None), Declared { name: "SIZE".into(), ..declared(1.0, (0.5, 2.0), None) }];
+        assert_eq!(
+            describe(&two, &Sample { varied: vec![(0, 0.0), (1, 0.5)] }, false),
+            "with MASK_TYPE = 0, SIZE = 0.5 (the low ends of their `#pragma parameter` ranges)"
+        );
     }
 }
