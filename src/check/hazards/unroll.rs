@@ -90,25 +90,9 @@ impl Analyzer<'_> {
                 }
             }
             None if value.is_some() => out = state,
-            None => {
-                let mut falling = State::dead();
-                let open = state.unsure();
-                for case in cases {
-                    let entry = open.join(&falling, &mut self.fresh);
-                    let end = self.block(c, &case.body, entry, &mut inner);
-                    if case.fall_through {
-                        falling = end;
-                    } else {
-                        out = out.join(&end, &mut self.fresh);
-                        falling = State::dead();
-                    }
-                }
-            }
+            None => out = self.every_case(c, cases, state.unsure(), &mut inner),
         }
-        for b in inner.breaks {
-            out = out.join(&b, &mut self.fresh);
-        }
-        exits.continues.extend(inner.continues);
+        let mut out = self.close_switch(out, inner, exits);
         // `break` leaves the switch only: the code after it runs as surely as the switch,
         // unless a case may have returned, discarded or continued the loop.
         let taken = self.exits;

@@ -417,24 +417,8 @@ impl<'a> Analyzer<'a> {
             Statement::Switch { selector, cases } if self.witness => self.witness_switch(c, *selector, cases, state, exits),
             Statement::Switch { cases, .. } => {
                 let mut inner = Exits::default();
-                let mut out = State::dead();
-                let mut falling = State::dead();
-                for case in cases {
-                    let entry = state.join(&falling, &mut self.fresh);
-                    let end = self.block(c, &case.body, entry, &mut inner);
-                    if case.fall_through {
-                        falling = end;
-                    } else {
-                        out = out.join(&end, &mut self.fresh);
-                        falling = State::dead();
-                    }
-                }
-                // `break` leaves the switch; `continue` belongs to the enclosing loop.
-                for b in inner.breaks {
-                    out = out.join(&b, &mut self.fresh);
-                }
-                exits.continues.extend(inner.continues);
-                out
+                let out = self.every_case(c, cases, state, &mut inner);
+                self.close_switch(out, inner, exits)
             }
             Statement::Loop { body, continuing, break_if } if self.witness => self.unroll(c, body, continuing, *break_if, state),
             Statement::Loop { body, continuing, break_if } => self.run_loop(c, body, continuing, *break_if, state),
@@ -488,6 +472,34 @@ impl<'a> Analyzer<'a> {
                 state
             }
         }
+    }
+
+    /// Every case of a `switch` entered from `state` (or by falling through the one before):
+    /// the state after the cases that end; their `break`s and `continue`s go to `inner`.
+    pub(super) fn every_case(&mut self, c: &mut Call<'_>, cases: &[naga::SwitchCase], state: State, inner: &mut Exits) -> State {
+        let mut out = State::dead();
+        let mut falling = State::dead();
+        for case in cases {
+            let entry = state.join(&falling, &mut self.fresh);
+            let end = self.block(c, &case.body, entry, inner);
+            if case.fall_through {
+                falling = end;
+            } else {
+                out = out.join(&end, &mut self.fresh);
+                falling = State::dead();
+            }
+        }
+        out
+    }
+
+    /// The state after a `switch`: `out` joined with its `break`s; `continue` belongs to the
+    /// enclosing loop.
+    pub(super) fn close_switch(&mut self, mut out: State, inner: Exits, exits: &mut Exits) -> State {
+        for b in inner.breaks {
+            out = out.join(&b, &mut self.fresh);
+        }
+        exits.continues.extend(inner.continues);
+        out
     }
 
     pub(super) fn run_loop(
