@@ -339,7 +339,10 @@ fn analyse_with(effect: Option<&Effect>, program: &CompiledProgram, settings: Ha
             let note = match witness {
                 Some(w) => format!("certain: it happens {}", w.at),
                 None if report == HazardReport::Certain => continue,
-                None => confirmed.possible_note(h),
+                None => {
+                    let assumed = h.span.to_range().map(|r| witness::assumed_on_line(&f, stage.text, r.start)).unwrap_or_default();
+                    confirmed.possible_note(h, &assumed)
+                }
             };
             out.push(at_user(stage, program, h).with_note(note));
         }
@@ -364,16 +367,22 @@ struct Witness {
 }
 
 impl Confirmed {
-    fn possible_note(&self, h: &Hazard) -> String {
+    /// The note of a possible hazard; `assumed`: what the analysis assumed of the inputs its
+    /// line names ([`witness::assumed_on_line`]).
+    fn possible_note(&self, h: &Hazard, assumed: &[String]) -> String {
+        let assumed = match assumed {
+            [] => String::new(),
+            _ => format!("; it assumed {}", assumed.join(", ")),
+        };
         if !h.witnessable {
-            return "possible: the analysis cannot rule it out over the ranges it assumes, and no run at fixed inputs could show it: no value its operands can take is sure to go wrong".into();
+            return format!("possible: the analysis cannot rule it out over the ranges it assumes, and no run at fixed inputs could show it: no value its operands can take is sure to go wrong{assumed}");
         }
         let stopped = match self.out_of_work {
             true => format!("; the witness runs reached their work limit after {} of {} sets of inputs", self.tried, self.planned),
             false => String::new(),
         };
         format!(
-            "possible: the analysis cannot rule it out over the ranges it assumes, but no run at fixed inputs showed it (each declared input at its default, its range's ends and steps; time 0){stopped}"
+            "possible: the analysis cannot rule it out over the ranges it assumes, but no run at fixed inputs showed it (each declared input at its default, its range's ends and steps; time 0){stopped}{assumed}"
         )
     }
 }

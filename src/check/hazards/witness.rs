@@ -75,11 +75,7 @@ fn samples_of(declared: &[Declared], which: &[usize]) -> Vec<Sample> {
 /// first, so a stage with hundreds of parameters spends its witness budget on the ones
 /// that matter.
 pub fn named_near(declared: &[Declared], text: &str, spans: impl Iterator<Item = std::ops::Range<usize>>) -> Vec<bool> {
-    let line_of = |at: usize| {
-        let start = text[..at.min(text.len())].rfind('\n').map_or(0, |i| i + 1);
-        let end = text[at.min(text.len())..].find('\n').map_or(text.len(), |i| at + i);
-        &text[start..end]
-    };
+    let line_of = |at: usize| line_at(text, at);
     let mut lines: Vec<&str> = spans.map(|r| line_of(r.start)).collect();
     lines.sort_unstable();
     lines.dedup();
@@ -105,6 +101,44 @@ pub fn named_near(declared: &[Declared], text: &str, spans: impl Iterator<Item =
         }
     }
     declared.iter().map(|d| lines.iter().any(|l| identifiers(l).any(|w| w == d.name))).collect()
+}
+
+/// The line of `text` holding offset `at`.
+fn line_at(text: &str, at: usize) -> &str {
+    let at = at.min(text.len());
+    let start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+    let end = text[at..].find('\n').map_or(text.len(), |i| at + i);
+    &text[start..end]
+}
+
+/// What the analysis assumed of the inputs named on the line at `at`, and where each came
+/// from: a declared range, or the time limit (a default assumption unless a manifest or
+/// `effectc.toml` sets it). Empty when the line names none.
+pub fn assumed_on_line(f: &Facts, text: &str, at: usize) -> Vec<String> {
+    let mut words: Vec<&str> = identifiers(line_at(text, at)).collect();
+    words.sort_unstable();
+    words.dedup();
+    let clock = |w: &str| {
+        let guessed = !f.guessed.is_empty()
+            && matches!(crate::manifest::guess::semantic_by_name(w, (1, 1), true), Some(Semantic::Time | Semantic::Frame));
+        f.clocks.iter().any(|c| c == w) || guessed
+    };
+    let mut out = Vec::new();
+    for w in words {
+        if let Some(d) = f.declared.iter().find(|d| d.name == w) {
+            let by = match d.by {
+                DeclaredBy::Pragma => "its `#pragma parameter` range",
+                DeclaredBy::Manifest => "its manifest range",
+            };
+            out.push(format!("{w} in [{}, {}] ({by})", number(d.range.0), number(d.range.1)));
+        } else if clock(w) {
+            out.push(format!(
+                "{w} over a session of {} s (the time limit: an hour unless `[hazards] time-limit` or the manifest says otherwise)",
+                number(f.time_limit)
+            ));
+        }
+    }
+    out
 }
 
 /// The identifiers of `text`.
@@ -224,6 +258,18 @@ mod tests {
         assert_eq!(first, [false, true, true]);
         let order: Vec<Vec<usize>> = samples(&d, &first).iter().map(|s| s.varied.iter().map(|(i, _)| *i).collect()).collect();
         assert_eq!(order, [vec![], vec![1, 2], vec![1, 2], vec![1], vec![1], vec![2], vec![2], vec![0], vec![0]]);
+    }
+
+    #[test]
+    fn the_assumptions_of_a_line_name_their_source() {
+        let mut f = Facts::guessed(3600.0);
+        f.declared.push(declared(4.0, (0.0, 7.0), Some(1.0)));
+        let text = "float a = 1.0;\nfloat b = x / (MASK_TYPE - sin(iTime));\n";
+        let said = assumed_on_line(&f, text, text.find("x /").unwrap());
+        assert_eq!(said.len(), 2, "{said:?}");
+        assert_eq!(said[0], "MASK_TYPE in [0, 7] (its `#pragma parameter` range)");
+        assert!(said[1].starts_with("iTime over a session of 3600 s"), "{said:?}");
+        assert!(assumed_on_line(&f, text, 0).is_empty());
     }
 
     #[test]
