@@ -71,6 +71,16 @@ pub enum DeclaredBy {
     Pragma,
 }
 
+impl DeclaredBy {
+    /// Where the range comes from, for people: "manifest", "`#pragma parameter`".
+    pub fn source(self) -> &'static str {
+        match self {
+            DeclaredBy::Manifest => "manifest",
+            DeclaredBy::Pragma => "`#pragma parameter`",
+        }
+    }
+}
+
 impl Facts {
     /// Adds the stage's `#pragma parameter` declarations: a uniform of that name without a
     /// manifest fact takes any value of the declared range, and is declared.

@@ -7,9 +7,10 @@
 //! Inputs without a declared range keep the interval the analysis assumes, so only what
 //! happens for every value of them can be witnessed.
 
-use super::facts::{Declared, DeclaredBy, Facts};
+use super::facts::{Declared, Facts};
 use super::interval::Iv;
 use super::value::Num;
+use crate::front::lexical::identifiers;
 use crate::manifest::Semantic;
 
 /// Steps of a range tried one by one when there are at most this many.
@@ -126,24 +127,15 @@ pub fn assumed_on_line(f: &Facts, text: &str, at: usize) -> Vec<String> {
     let mut out = Vec::new();
     for w in words {
         if let Some(d) = f.declared.iter().find(|d| d.name == w) {
-            let by = match d.by {
-                DeclaredBy::Pragma => "its `#pragma parameter` range",
-                DeclaredBy::Manifest => "its manifest range",
-            };
-            out.push(format!("{w} in [{}, {}] ({by})", number(d.range.0), number(d.range.1)));
+            out.push(format!("{w} in [{}, {}] (its {} range)", super::big(d.range.0), super::big(d.range.1), d.by.source()));
         } else if clock(w) {
             out.push(format!(
                 "{w} over a session of {} s (the time limit: an hour unless `[hazards] time-limit` or the manifest says otherwise)",
-                number(f.time_limit)
+                super::big(f.time_limit)
             ));
         }
     }
     out
-}
-
-/// The identifiers of `text`.
-fn identifiers(text: &str) -> impl Iterator<Item = &str> {
-    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
 }
 
 /// The facts of one sample: declared inputs and clocks at points, the rest as `base` has it.
@@ -176,10 +168,6 @@ pub fn facts_at(base: &Facts, sample: &Sample) -> Facts {
 /// `#pragma parameter` range) and every other parameter at its default, at time 0".
 pub fn describe(declared: &[Declared], sample: &Sample, clock: bool) -> String {
     let clock = if clock { ", at time 0 (the first frame)" } else { "" };
-    let what = |by: DeclaredBy| match by {
-        DeclaredBy::Pragma => "`#pragma parameter`",
-        DeclaredBy::Manifest => "manifest",
-    };
     let place = |d: &Declared, v: f64| {
         if v == d.range.0 {
             "the low end of its"
@@ -202,8 +190,8 @@ pub fn describe(declared: &[Declared], sample: &Sample, clock: bool) -> String {
         let one = |&(i, v): &(usize, f64)| {
             let d = &declared[i];
             match with_place {
-                true => format!("{} = {} ({} {} range)", d.name, number(v), place(d, v), what(d.by)),
-                false => format!("{} = {}", d.name, number(v)),
+                true => format!("{} = {} ({} {} range)", d.name, super::big(v), place(d, v), d.by.source()),
+                false => format!("{} = {}", d.name, super::big(v)),
             }
         };
         sample.varied.iter().map(one).collect::<Vec<_>>().join(", ")
@@ -211,25 +199,16 @@ pub fn describe(declared: &[Declared], sample: &Sample, clock: bool) -> String {
     if sample.varied.len() > 1 && alike {
         // "the low end of its" → "the low ends of their".
         let places = place(&declared[first], v0).replace("end of its", "ends of their").replace("step of its", "steps of their");
-        format!("with {} ({places} {} ranges){others}{clock}", values(false), what(declared[first].by))
+        format!("with {} ({places} {} ranges){others}{clock}", values(false), declared[first].by.source())
     } else {
         format!("with {}{others}{clock}", values(true))
-    }
-}
-
-fn number(v: f64) -> String {
-    let s = format!("{v:.6}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::check::hazards::facts::DeclaredBy;
 
     fn declared(default: f64, range: (f64, f64), step: Option<f64>) -> Declared {
         Declared { name: "MASK_TYPE".into(), default, range, step, by: DeclaredBy::Pragma }
