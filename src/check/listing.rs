@@ -32,6 +32,10 @@ pub struct UniformInfo {
     pub guessed: bool,
     /// Some stage reads it.
     pub read: bool,
+    /// Its `#pragma parameter` (default, range, step): its host's menu, and its value where
+    /// the manifest and an initializer give none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub parameter: Option<crate::front::parameters::Parameter>,
 }
 
 /// The uniforms of every checked program (programs with errors have none to list).
@@ -50,14 +54,19 @@ fn one(c: &Checked) -> ProgramUniforms {
             }
             let entry = unit.effect.as_ref().and_then(|e| e.uniforms.iter().find(|u| u.name == s.name));
             let guess = crate::manifest::guess::semantic_by_name(&s.name, shape(&s.ty), !s.ty.starts_with(['i', 'u', 'b']));
-            let initializer = initial.iter().find(|(n, _)| *n == s.name).map(|(_, v)| v.clone());
-            let guessed = entry.is_none() && initializer.is_none();
+            let initializer = initial
+                .iter()
+                .find(|i| i.path == s.name && i.from == crate::front::initial_values::InitialFrom::Initializer)
+                .map(|i| i.value.clone());
+            // A `#pragma parameter`'s default is no guess either.
+            let guessed = entry.is_none() && !initial.iter().any(|i| i.path == s.name);
             uniforms.push(UniformInfo {
                 default: entry.and_then(|e| e.value.clone()),
                 initializer,
                 range: entry.and_then(|e| e.range),
                 semantic: entry.map_or(guess.filter(|_| guessed), |e| e.semantic),
                 guessed,
+                parameter: unit.program.stages.iter().flat_map(|st| &st.syntax.parameters).find(|p| p.name == s.name).cloned(),
                 name: s.name,
                 ty: s.ty,
                 read: s.read,
@@ -95,6 +104,10 @@ pub fn text(programs: &[ProgramUniforms]) -> String {
             }
             if let Some((lo, hi)) = u.range {
                 what.push(format!("range [{lo}, {hi}]"));
+            }
+            if let Some(p) = &u.parameter {
+                let step = p.step.map(|s| format!(" step {s}")).unwrap_or_default();
+                what.push(format!("#pragma parameter: default {} in [{}, {}]{step}", p.default, p.min, p.max));
             }
             match (u.semantic, u.guessed) {
                 (Some(s), false) => what.push(format!("semantic {}", serde_json::to_string(&s).unwrap_or_default().trim_matches('"'))),

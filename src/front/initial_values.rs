@@ -1,16 +1,68 @@
-//! The values GLSL initializers give uniforms (`uniform float k = 0.5;`, GLSL 1.20): GL
-//! starts such a uniform at its initializer. The rewrite declares each as a constant
-//! ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)) that naga evaluates; they
-//! are read back here, for the renderer and `--list-uniforms`.
+//! The values a program gives its uniforms before its host sets any, for the renderer,
+//! reflection and `--list-uniforms`:
+//! - GLSL initializers (`uniform float k = 0.5;`, GLSL 1.20): GL starts such a uniform at
+//!   its initializer. The rewrite declares each as a constant
+//!   ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)) that naga evaluates; they
+//!   are read back here.
+//! - `#pragma parameter NAME "Label" default min max step` ([`crate::front::parameters`]):
+//!   RetroArch starts the uniform (loose, or a member of a block) at its default.
 
 use naga::{Handle, Module};
 
 use crate::manifest::UniformValue;
 
-/// The values GLSL initializers give the program's uniforms (`uniform float k = 0.5;`),
-/// read from the constants the rewrite declares for them
-/// ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)).
-pub fn of(program: &crate::front::program::CompiledProgram) -> Vec<(String, UniformValue)> {
+/// Where a uniform's initial value comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InitialFrom {
+    /// A GLSL initializer.
+    Initializer,
+    /// A `#pragma parameter`'s default.
+    Parameter,
+}
+
+impl InitialFrom {
+    /// As reflection names it (`fills[].from`).
+    pub fn key(self) -> &'static str {
+        match self {
+            InitialFrom::Initializer => "initializer",
+            InitialFrom::Parameter => "parameter",
+        }
+    }
+
+    /// As `--verbose` says what a uniform receives.
+    pub fn describe(self) -> &'static str {
+        match self {
+            InitialFrom::Initializer => "its initializer",
+            InitialFrom::Parameter => "its `#pragma parameter` default",
+        }
+    }
+}
+
+/// One initial value: the uniform or part of it (`s[1].f`), and its source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Initial {
+    pub path: String,
+    pub value: UniformValue,
+    pub from: InitialFrom,
+}
+
+/// The initial values of the program's uniforms: GLSL initializers, read from the constants
+/// the rewrite declares for them ([`INITIAL_PREFIX`](crate::front::rewrite::INITIAL_PREFIX)),
+/// then the defaults of `#pragma parameter`s no initializer sets.
+pub fn of(program: &crate::front::program::CompiledProgram) -> Vec<Initial> {
+    let mut all: Vec<Initial> =
+        initializers(program).into_iter().map(|(path, value)| Initial { path, value, from: InitialFrom::Initializer }).collect();
+    let root = |path: &str| path[..path.find(['.', '[']).unwrap_or(path.len())].to_string();
+    for p in program.stages.iter().flat_map(|s| &s.syntax.parameters) {
+        if !all.iter().any(|i| root(&i.path) == p.name) {
+            all.push(Initial { path: p.name.clone(), value: UniformValue::Float(p.default), from: InitialFrom::Parameter });
+        }
+    }
+    all
+}
+
+/// The values GLSL initializers give the program's uniforms.
+fn initializers(program: &crate::front::program::CompiledProgram) -> Vec<(String, UniformValue)> {
     let mut out: Vec<(String, UniformValue)> = Vec::new();
     for stage in &program.stages {
         let Some(v) = &stage.naga else { continue };

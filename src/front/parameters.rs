@@ -3,7 +3,7 @@
 //! packs (and the tools that load them) to build a settings menu for the uniform `NAME`.
 
 /// One declared parameter.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Parameter {
     pub name: String,
     pub default: f64,
@@ -12,6 +12,7 @@ pub struct Parameter {
     /// The menu's step (`None` when absent or not positive).
     pub step: Option<f64>,
     /// Byte offset of the `#pragma` line in the stage text.
+    #[serde(skip)]
     pub at: usize,
 }
 

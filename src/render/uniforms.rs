@@ -11,6 +11,7 @@ use naga::{Handle, Module, ScalarKind, Type, TypeInner};
 
 use crate::back::reflect::write_slot;
 use crate::front::compat;
+use crate::front::initial_values::Initial;
 use crate::manifest::{Effect, Semantic, UniformValue};
 use crate::render::semantics::{self, FrameState, Guess, Shape};
 
@@ -55,7 +56,7 @@ pub struct Guessed {
 pub fn buffers(
     module: &Module,
     effect: Option<&Effect>,
-    initial: &[(String, UniformValue)],
+    initial: &[Initial],
     overrides: &[(String, UniformValue)],
     guesses: bool,
 ) -> Result<(Vec<UniformBuffer>, Vec<Guessed>), String> {
@@ -131,7 +132,7 @@ fn fill_block(
     module: &Module,
     ty: Handle<Type>,
     effect: Option<&Effect>,
-    initial: &[(String, UniformValue)],
+    initial: &[Initial],
     guesses: bool,
     buffer: &mut UniformBuffer,
     guessed: &mut Vec<Guessed>,
@@ -164,14 +165,14 @@ fn fill_block(
             if gl {
                 continue;
             }
-            let from_initializer: Vec<&(String, UniformValue)> = initial.iter().filter(|(n, _)| root_name(n) == name).collect();
-            for (path, value) in &from_initializer {
+            let from_initializer: Vec<&Initial> = initial.iter().filter(|i| root_name(&i.path) == name).collect();
+            for Initial { path, value, .. } in from_initializer.iter().copied() {
                 // The whole uniform, or a member of a struct one (`s[1].f`).
                 let Some((offset, slot)) = crate::back::reflect::resolve_path(module, ty, path) else { continue };
                 write_slot(module, slot, offset, value, &mut buffer.bytes).map_err(|e| format!("`{path}`'s initializer: {e}"))?;
             }
-            let from = if !from_initializer.is_empty() {
-                "its initializer".to_string()
+            let from = if let Some(i) = from_initializer.first() {
+                i.from.describe().to_string()
             } else if guesses {
                 guess_member(module, &name, m.ty, m.offset, buffer, guessed)?
             } else {

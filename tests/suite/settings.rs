@@ -183,6 +183,44 @@ fn diagnostics_name_files_relative_to_the_working_directory() {
 }
 
 #[test]
+fn a_pragma_parameter_starts_at_its_default_in_a_block_or_not() {
+    // RetroArch starts each `#pragma parameter` uniform at its default, not at zero: a loose
+    // uniform and a member of a named block.
+    let dir = program("parameter", &vertex("", ""));
+    std::fs::write(
+        dir.join("a.frag"),
+        "#version 330 core\n#pragma parameter GAIN \"Gain\" 0.6 0.0 1.0 0.05\n#pragma parameter TINT \"Tint\" 1.0 0.0 1.0 1.0\n\
+in vec3 colour;\nuniform float GAIN;\nlayout(std140) uniform Params { float TINT; } params;\nout vec4 frag;\n\
+void main() {\n    frag = vec4(GAIN, params.TINT, 0.0, 1.0) + vec4(colour * 0.0, 0.0);\n}\n",
+    )
+    .unwrap();
+    let out = dir.join("frames");
+    let pixel = |sets: &[&str]| {
+        let _ = std::fs::remove_dir_all(&out);
+        let mut args = vec!["render", "--color", "never", "--size", "8x8", "--verbose", "--out", path(&out), path(&dir)];
+        for s in sets {
+            args.extend(["--set", s]);
+        }
+        let r = effectc(&args);
+        assert_eq!(r.status.code(), Some(0), "{}", String::from_utf8_lossy(&r.stdout));
+        let png = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().path()).find(|p| p.extension().is_some_and(|e| e == "png")).unwrap();
+        (image::open(&png).unwrap().to_rgba8().get_pixel(4, 4).0, String::from_utf8_lossy(&r.stdout).to_string())
+    };
+    let (p, text) = pixel(&[]);
+    assert_eq!(p, [153, 255, 0, 255], "GAIN = 0.6 and TINT = 1, their defaults");
+    assert!(text.contains("GAIN ← its `#pragma parameter` default"), "{text}");
+    assert!(!text.contains("uniform `GAIN` has no value"), "a declared default is no guess (no W0403):\n{text}");
+    // `--set` wins over the default.
+    assert_eq!(pixel(&["GAIN=0"]).0, [0, 255, 0, 255]);
+    // The listing says what the menu would.
+    let r = effectc(&["check", "--list-uniforms", "--format", "json", path(&dir)]);
+    let doc: serde_json::Value = serde_json::from_str(&String::from_utf8_lossy(&r.stdout)).unwrap();
+    let gain = doc["programs"][0]["uniforms"].as_array().unwrap().iter().find(|u| u["name"] == "GAIN").unwrap().clone();
+    assert_eq!(gain["parameter"], serde_json::json!({"name": "GAIN", "default": 0.6, "min": 0.0, "max": 1.0, "step": 0.05}));
+    assert_eq!(gain["guessed"], false);
+}
+
+#[test]
 fn set_gives_uniforms_their_value_and_checks_it() {
     let dir = program("set", &vertex("", ""));
     std::fs::write(dir.join("a.frag"), "#version 330 core\nin vec3 colour;\nuniform vec3 tint;\nuniform float gain;\nout vec4 frag;\nvoid main() {\n    frag = vec4(tint * gain + colour * 0.0, 1.0);\n}\n").unwrap();

@@ -80,8 +80,9 @@ pub(super) type GlslFields = BTreeMap<(String, String), String>;
 pub(super) struct BlockSources<'a> {
     pub plan: &'a Plan,
     pub effect: Option<&'a Effect>,
-    /// GLSL initializers of uniforms (`uniform float gain = 2.0;`).
-    pub initial: &'a [(String, UniformValue)],
+    /// GLSL initializers of uniforms (`uniform float gain = 2.0;`), `#pragma parameter`
+    /// defaults.
+    pub initial: &'a [crate::front::initial_values::Initial],
     pub names: &'a WgslNames,
     pub fields: &'a GlslFields,
 }
@@ -116,9 +117,9 @@ pub(super) fn block_of(module: &Module, ty: Handle<Type>, rb: &naga::ResourceBin
     }
     // An initializer is the value where the manifest gives none (of the uniform or a part).
     let root = |path: &str| path[..path.find(['.', '[']).unwrap_or(path.len())].to_string();
-    for (path, value) in sources.initial {
-        if !uniforms.iter().any(|u| root(&u.name) == root(path)) {
-            fill(path, Some(value.clone()), None, "initializer");
+    for i in sources.initial {
+        if !uniforms.iter().any(|u| root(&u.name) == root(&i.path)) {
+            fill(&i.path, Some(i.value.clone()), None, i.from.key());
         }
     }
     UniformBlock { name: UNIFORM_BLOCK.to_string(), group: rb.group, binding: rb.binding, size, members: out_members, fills }

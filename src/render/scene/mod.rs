@@ -77,8 +77,9 @@ pub enum Draw {
 pub struct Scene {
     pub name: String,
     pub module: naga::Module,
-    /// The values GLSL initializers give uniforms ([`front::initial_values`](crate::front::initial_values)).
-    pub initial: Vec<(String, crate::manifest::UniformValue)>,
+    /// The values the program gives uniforms: GLSL initializers, `#pragma parameter`
+    /// defaults ([`front::initial_values`](crate::front::initial_values)).
+    pub initial: Vec<crate::front::initial_values::Initial>,
     pub pipeline: wgpu::RenderPipeline,
     pub vertex_buffer: Option<wgpu::Buffer>,
     /// Per-instance attributes (vertex buffer slot after the mesh's, or 0 without one).
