@@ -454,6 +454,11 @@ pub struct StressArgs {
     /// 30 on a software renderer: its frames are small, see `--size`).
     #[arg(long, default_value = "10", value_parser = parse_timeout, allow_negative_numbers = true)]
     pub timeout: Duration,
+    /// Put every hazard warning (both tiers) to a render instead: its operation is tested
+    /// as it runs, under the inputs the analysis assumed, and reported confirmed (error
+    /// E0703), refuted, unreached or untested.
+    #[arg(long)]
+    pub confirm: bool,
 }
 
 /// `NAME=VALUE` → (NAME, VALUE); the value is checked once the programs are read.
@@ -675,13 +680,20 @@ impl BenchArgs {
 impl StressArgs {
     /// The request these flags make (masks go to `out/stress/` unless `--out` says otherwise).
     pub fn request(&self, config: &Config) -> stress::Request {
+        let mut input = InputSpec { values: self.set.clone(), ..self.common.input_spec(config).for_drawing() };
+        // Every warning is put to the render, possible ones too.
+        if self.confirm {
+            input.hazards.report = Some(crate::config::HazardReport::Possible);
+        }
         stress::Request {
-            input: InputSpec { values: self.set.clone(), ..self.common.input_spec(config).for_drawing() },
+            time_limit: input.hazards.time_limit,
+            input,
             samples: self.samples,
             seed: self.seed,
             size: self.size,
             timeout: self.timeout,
             out: Some(self.out.clone().unwrap_or_else(|| PathBuf::from("out/stress"))),
+            confirm: self.confirm,
         }
     }
 }

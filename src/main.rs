@@ -306,12 +306,16 @@ fn stress(args: &StressArgs, settings: &config::Loaded) -> (ExitCode, Vec<PathBu
     let request = args.request(&settings.config);
     let mut result = effectc::stress::run(&request);
     result.outcome = settle(result.outcome, settings, Reach::Stress);
-    let text = match c.format {
-        Format::Json => report_json("programs", &result.reports, &result.adapter, &result.outcome),
+    let text = match (c.format, args.confirm) {
+        (Format::Json, false) => report_json("programs", &result.reports, &result.adapter, &result.outcome),
+        (Format::Json, true) => report_json("programs", &result.confirmed, &result.adapter, &result.outcome),
         _ => {
             let mut text = String::new();
             for r in &result.reports {
                 text.push_str(&effectc::stress::table(r));
+            }
+            for r in &result.confirmed {
+                text.push_str(&effectc::stress::confirm::table(r));
             }
             text + &diagnostics_text(c, &result.outcome)
         }

@@ -133,6 +133,7 @@ codes! {
     NotAGlProgram => "E0504", "Vulkan GLSL cannot be verified against an OpenGL driver",
     // Stress (`stress`).
     StressNonFinite => "E0701", "a stress case renders NaN or Inf pixels",
+    HazardConfirmed => "E0703", "a hazard warning confirmed by a render (`stress --confirm`)",
     // Bench (`bench`).
     KnobUnknown => "E0801", "knob names no numeric uniform",
     NothingToBench => "E0802", "nothing to bench",
@@ -198,6 +199,28 @@ impl Code {
             b'W' => Severity::Warning,
             _ => Severity::Note,
         }
+    }
+}
+
+impl Code {
+    /// The numeric hazard warnings of the static analysis (`W0710`–`W0722`).
+    pub fn is_hazard(self) -> bool {
+        matches!(
+            self,
+            Code::HazardDivision
+                | Code::HazardAsin
+                | Code::HazardSqrt
+                | Code::HazardLog
+                | Code::HazardPow
+                | Code::HazardNormalize
+                | Code::HazardInverseSqrt
+                | Code::HazardTrig
+                | Code::HazardSinHash
+                | Code::HazardCounterOverflow
+                | Code::HazardNegativeRemainder
+                | Code::HazardShift
+                | Code::HazardAtan2
+        )
     }
 }
 

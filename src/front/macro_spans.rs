@@ -27,6 +27,12 @@ pub fn narrow(files: &Files, diags: &mut [Diagnostic]) {
     }
 }
 
+/// `span` of `text` as [`narrow`] leaves it: narrowed to the line of the macro use it ends
+/// on, or as it is.
+pub fn narrowed_span(text: &str, span: Range<usize>) -> Range<usize> {
+    narrowed(text, span.clone()).unwrap_or(span)
+}
+
 /// `span` narrowed to the line of the macro use it ends on, when it starts inside a
 /// `#define` and ends on a later line; `None` when it needs no narrowing.
 fn narrowed(text: &str, span: Range<usize>) -> Option<Range<usize>> {

@@ -20,13 +20,15 @@ use naga::{
     Statement, TypeInner,
 };
 
-use crate::back::{reflect, Translation};
+use crate::back::Translation;
 use crate::front::program::CompiledProgram;
 use crate::manifest::Effect;
 use crate::stage::StageKind;
+use crate::stress::ir::{
+    count_at_every_exit, counts_buffer, entries, free_binding, map_blocks, private_u32, reachable, revalidate, stage_texts, types_of,
+};
 
-/// The name of the storage buffer the counts are written to.
-pub const COUNTS_BUFFER: &str = "effectc_probe_counts";
+pub use crate::stress::ir::COUNTS_BUFFER;
 
 /// One instrumented expression.
 #[derive(Debug, Clone)]
@@ -99,22 +101,10 @@ pub fn instrument_translation(
     vertex: bool,
 ) -> Result<Instrumented, String> {
     let stages: &[StageKind] = if vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };
-    // The vertex stage of a folded program is the fold's text (spans index it).
-    let texts: Vec<(StageKind, &str)> = program
-        .stages
-        .iter()
-        .filter_map(|s| match (s.syntax.stage, program.fold()) {
-            (StageKind::Vertex, Some(f)) => Some((StageKind::Vertex, f.drawn.text.as_str())),
-            (kind, _) => Some((kind, s.rewritten.as_ref()?.text.as_str())),
-        })
-        .collect();
+    let texts = stage_texts(program);
     let binding = free_binding(&t.module);
     let instrumented = instrument(&mut t.module, &t.info, &texts, stages, binding)?;
-    t.info = crate::front::naga_run::validator()
-        .validate(&t.module)
-        .map_err(|e| format!("the translated module does not validate: {}", e.as_inner()))?;
-    let left_out = std::mem::take(&mut t.reflection.left_out);
-    t.reflection = reflect::reflect_program(&t.name, &t.module, program, effect, left_out);
+    revalidate(t, program, effect)?;
     Ok(instrumented)
 }
 
@@ -128,32 +118,9 @@ pub fn instrument(
     stages: &[StageKind],
     binding: (u32, u32),
 ) -> Result<Instrumented, String> {
-    let u32_ty = module.types.insert(naga::Type { name: None, inner: TypeInner::Scalar(naga::Scalar::U32) }, Span::UNDEFINED);
-    let flag = module.global_variables.append(
-        naga::GlobalVariable {
-            name: Some("effectc_first_bad".into()),
-            space: naga::AddressSpace::Private,
-            binding: None,
-            ty: u32_ty,
-            init: None,
-            memory_decorations: naga::MemoryDecorations::empty(),
-        },
-        Span::UNDEFINED,
-    );
+    let flag = private_u32(module, "effectc_first_bad");
     let text_of = |stage: StageKind| texts.iter().find(|(s, _)| *s == stage).map(|(_, t)| *t).ok_or(format!("no {stage:?} text"));
-    let entries: Vec<(usize, StageKind)> = module
-        .entry_points
-        .iter()
-        .enumerate()
-        .filter_map(|(i, e)| {
-            let stage = match e.stage {
-                naga::ShaderStage::Vertex => StageKind::Vertex,
-                naga::ShaderStage::Fragment => StageKind::Fragment,
-                _ => return None,
-            };
-            stages.contains(&stage).then_some((i, stage))
-        })
-        .collect();
+    let entries = entries(module, stages);
     if entries.is_empty() {
         return Err("the program has no vertex or fragment stage to instrument".into());
     }
@@ -180,90 +147,9 @@ pub fn instrument(
     for (k, &(entry, stage)) in entries.iter().enumerate() {
         let base = k as u32 * width;
         regions.push((stage, base));
-        // A `discard` in a function the entry point calls ends the invocation there.
-        for f in reachable(module, &module.entry_points[entry].function) {
-            let fun = &mut module.functions[f];
-            let body = std::mem::take(&mut fun.body);
-            fun.body = count_at_exits(fun, body, Exits::Discards, flag, counts, base);
-        }
-        let fun = &mut module.entry_points[entry].function;
-        let body = std::mem::take(&mut fun.body);
-        let mut body = count_at_exits(fun, body, Exits::ReturnsAndDiscards, flag, counts, base);
-        // A void entry point may end without a `return`.
-        if !matches!(body.last(), Some(Statement::Return { .. } | Statement::Kill)) {
-            push_count(fun, &mut body, flag, counts, base);
-        }
-        fun.body = body;
+        count_at_every_exit(module, entry, &|fun, out| push_count(fun, out, flag, counts, base));
     }
     Ok(Instrumented { probes, regions, slots, binding })
-}
-
-/// `var<storage, read_write> effectc_probe_counts: array<atomic<u32>, slots>` at `binding`.
-fn counts_buffer(module: &mut Module, slots: u32, (group, binding): (u32, u32)) -> Result<Handle<naga::GlobalVariable>, String> {
-    let atomic = module.types.insert(naga::Type { name: None, inner: TypeInner::Atomic(naga::Scalar::U32) }, Span::UNDEFINED);
-    let size = std::num::NonZeroU32::new(slots).ok_or("no probe slots")?;
-    let array = module.types.insert(
-        naga::Type { name: None, inner: TypeInner::Array { base: atomic, size: naga::ArraySize::Constant(size), stride: 4 } },
-        Span::UNDEFINED,
-    );
-    Ok(module.global_variables.append(
-        naga::GlobalVariable {
-            name: Some(COUNTS_BUFFER.into()),
-            space: naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD | naga::StorageAccess::STORE },
-            binding: Some(naga::ResourceBinding { group, binding }),
-            ty: array,
-            init: None,
-            memory_decorations: naga::MemoryDecorations::empty(),
-        },
-        Span::UNDEFINED,
-    ))
-}
-
-/// A binding no resource of `module` uses: the next binding of its last group (group 0
-/// when it has none), so no new bind group is needed.
-pub fn free_binding(module: &Module) -> (u32, u32) {
-    let used: Vec<(u32, u32)> =
-        module.global_variables.iter().filter_map(|(_, g)| g.binding.as_ref().map(|b| (b.group, b.binding))).collect();
-    let group = used.iter().map(|b| b.0).max().unwrap_or(0);
-    let binding = used.iter().filter(|b| b.0 == group).map(|b| b.1 + 1).max().unwrap_or(0);
-    (group, binding)
-}
-
-/// The resolved type of every expression of a function, by index.
-fn types_of(module: &Module, info: &naga::valid::FunctionInfo, handles: impl Iterator<Item = Handle<Expression>>) -> Vec<TypeInner> {
-    handles.map(|h| info[h].ty.inner_with(&module.types).clone()).collect()
-}
-
-/// Functions called, directly or not, from `f`, callees first.
-fn reachable(module: &Module, f: &Function) -> Vec<Handle<Function>> {
-    fn calls(block: &Block, out: &mut Vec<Handle<Function>>) {
-        for s in block.iter() {
-            match s {
-                Statement::Call { function, .. } => out.push(*function),
-                Statement::Block(b) => calls(b, out),
-                Statement::If { accept, reject, .. } => {
-                    calls(accept, out);
-                    calls(reject, out);
-                }
-                Statement::Loop { body, continuing, .. } => {
-                    calls(body, out);
-                    calls(continuing, out);
-                }
-                Statement::Switch { cases, .. } => cases.iter().for_each(|c| calls(&c.body, out)),
-                _ => {}
-            }
-        }
-    }
-    let mut seen: Vec<Handle<Function>> = Vec::new();
-    let mut todo = Vec::new();
-    calls(&f.body, &mut todo);
-    while let Some(h) = todo.pop() {
-        if !seen.contains(&h) {
-            seen.push(h);
-            calls(&module.functions[h].body, &mut todo);
-        }
-    }
-    seen
 }
 
 /// Where probes are being placed.
@@ -290,22 +176,7 @@ fn probe_function(
 fn probe_block(fun: &mut Function, block: Block, site: &Site<'_>, probes: &mut Vec<Probe>) -> Block {
     let mut out = Block::with_capacity(block.len());
     for (stmt, span) in block.span_into_iter() {
-        let stmt = match stmt {
-            Statement::Block(b) => Statement::Block(probe_block(fun, b, site, probes)),
-            Statement::If { condition, accept, reject } => {
-                Statement::If { condition, accept: probe_block(fun, accept, site, probes), reject: probe_block(fun, reject, site, probes) }
-            }
-            Statement::Loop { body, continuing, break_if } => Statement::Loop {
-                body: probe_block(fun, body, site, probes),
-                continuing: probe_block(fun, continuing, site, probes),
-                break_if,
-            },
-            Statement::Switch { selector, cases } => Statement::Switch {
-                selector,
-                cases: cases.into_iter().map(|c| naga::SwitchCase { body: probe_block(fun, c.body, site, probes), ..c }).collect(),
-            },
-            other => other,
-        };
+        let stmt = map_blocks(stmt, &mut |b| probe_block(fun, b, site, probes));
         let emitted = if let Statement::Emit(range) = &stmt { range.clone().collect::<Vec<_>>() } else { Vec::new() };
         out.push(stmt, span);
         for h in emitted {
@@ -386,61 +257,6 @@ fn build_check(
     let mut accept = Block::new();
     accept.push(Statement::Store { pointer: ptr, value }, Span::UNDEFINED);
     (Statement::Emit(range), Statement::If { condition, accept, reject: Block::new() })
-}
-
-/// Which statements end an invocation in the function being rewritten.
-#[derive(Clone, Copy, PartialEq)]
-enum Exits {
-    /// The entry point: its returns and discards.
-    ReturnsAndDiscards,
-    /// A function it calls: only a discard ends the invocation there.
-    Discards,
-}
-
-/// Before every statement that ends the invocation:
-/// `atomicAdd(&effectc_probe_counts[base + effectc_first_bad], 1u)`.
-fn count_at_exits(
-    fun: &mut Function,
-    block: Block,
-    exits: Exits,
-    flag: Handle<naga::GlobalVariable>,
-    counts: Handle<naga::GlobalVariable>,
-    base: u32,
-) -> Block {
-    let mut out = Block::with_capacity(block.len());
-    for (stmt, span) in block.span_into_iter() {
-        let stmt = match stmt {
-            Statement::Block(b) => Statement::Block(count_at_exits(fun, b, exits, flag, counts, base)),
-            Statement::If { condition, accept, reject } => Statement::If {
-                condition,
-                accept: count_at_exits(fun, accept, exits, flag, counts, base),
-                reject: count_at_exits(fun, reject, exits, flag, counts, base),
-            },
-            Statement::Loop { body, continuing, break_if } => Statement::Loop {
-                body: count_at_exits(fun, body, exits, flag, counts, base),
-                continuing: count_at_exits(fun, continuing, exits, flag, counts, base),
-                break_if,
-            },
-            Statement::Switch { selector, cases } => Statement::Switch {
-                selector,
-                cases: cases
-                    .into_iter()
-                    .map(|c| naga::SwitchCase { body: count_at_exits(fun, c.body, exits, flag, counts, base), ..c })
-                    .collect(),
-            },
-            Statement::Kill => {
-                push_count(fun, &mut out, flag, counts, base);
-                Statement::Kill
-            }
-            exit @ Statement::Return { .. } if exits == Exits::ReturnsAndDiscards => {
-                push_count(fun, &mut out, flag, counts, base);
-                exit
-            }
-            other => other,
-        };
-        out.push(stmt, span);
-    }
-    out
 }
 
 /// Appends `atomicAdd(&counts[base + flag], 1u)` to `out`.

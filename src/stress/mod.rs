@@ -17,7 +17,11 @@
 //! mask is written next to the frames (NaN red, +Inf yellow, −Inf cyan). A case whose
 //! pixels are finite but whose intermediate values are not is a warning (`W0702`).
 
+pub mod confirm;
 pub mod culprit;
+pub mod inputs;
+mod ir;
+pub mod sites;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -25,14 +29,16 @@ use std::time::Duration;
 use crate::assets::degenerate::Degenerate;
 use crate::check::{self, Outcome};
 use crate::diag::{Code, Diagnostic};
-use crate::manifest::{Effect, UniformValue};
+use crate::manifest::UniformValue;
 use crate::render::command;
 use crate::render::device::Gpu;
 use crate::render::encode;
 use crate::render::frames::Pixels;
 use crate::render::memory::{MemoryDrawer, MemoryRequest, MemoryRun};
 use crate::stage::StageKind;
-use crate::stress::culprit::{Instrumented, Probe, StageCounts, COUNTS_BUFFER};
+use crate::stress::culprit::{Instrumented, Probe, StageCounts};
+use crate::stress::inputs::{random_points, with_defaults, Declared};
+pub use crate::stress::ir::COUNTS_BUFFER;
 
 /// Effect times of the time cases (seconds).
 pub const EXTREME_TIMES: [f64; 3] = [1e3, 1e5, 1e7];
@@ -48,6 +54,11 @@ pub struct Request {
     pub timeout: Duration,
     /// Masks of failing cases go here (`<effect>_<case>_nonfinite.png`); none when `None`.
     pub out: Option<PathBuf>,
+    /// Put every hazard warning to a render instead ([`confirm`]).
+    pub confirm: bool,
+    /// Seconds of run time the hazard analysis assumed (`[hazards] time-limit`): the late
+    /// cases of [`confirm`].
+    pub time_limit: f64,
 }
 
 /// One input configuration.
@@ -90,47 +101,28 @@ pub struct StressReport {
 pub struct StressResult {
     pub outcome: Outcome,
     pub reports: Vec<StressReport>,
+    /// With [`Request::confirm`]: the verdicts on every program's hazard warnings.
+    pub confirmed: Vec<confirm::ConfirmReport>,
     pub adapter: Option<String>,
 }
 
-/// The cases for an effect: nominal, each ranged uniform low and high, all low, all high,
-/// `samples` random points, extreme times.
-pub fn cases(effect: Option<&Effect>, samples: u32, seed: u32) -> Vec<Case> {
-    let ranged: Vec<(&str, &UniformValue, f64, f64)> = effect
-        .map(|e| {
-            e.uniforms
-                .iter()
-                .filter_map(|u| {
-                    let (lo, hi) = u.range?;
-                    let v = u.value.as_ref()?;
-                    numeric(v).then_some((u.name.as_str(), v, lo, hi))
-                })
-                .collect()
-        })
-        .unwrap_or_default();
+/// The cases of a program with declared inputs `inputs` ([`inputs::declared`]): nominal
+/// (every input at its default), each input low and high, all low, all high, `samples`
+/// random points (on a `#pragma parameter`'s grid), extreme times, degenerate meshes.
+pub fn cases(inputs: &[Declared], samples: u32, seed: u32) -> Vec<Case> {
     let case = |name: String, overrides: Vec<(String, UniformValue)>| Case { name, overrides, time: 0.0, degenerate: None };
+    let at = |d: &Declared, x: f64| (d.name.clone(), fill(&d.default, &|_| d.on_grid(x)));
     let mut out = vec![case("nominal".into(), Vec::new())];
-    for &(name, v, lo, hi) in &ranged {
-        out.push(case(format!("{name} low"), vec![(name.to_string(), fill(v, &|_| lo))]));
-        out.push(case(format!("{name} high"), vec![(name.to_string(), fill(v, &|_| hi))]));
+    for d in inputs {
+        out.push(case(format!("{} low", d.name), vec![at(d, d.lo)]));
+        out.push(case(format!("{} high", d.name), vec![at(d, d.hi)]));
     }
-    if ranged.len() > 1 {
-        out.push(case("all low".into(), ranged.iter().map(|&(n, v, lo, _)| (n.to_string(), fill(v, &|_| lo))).collect()));
-        out.push(case("all high".into(), ranged.iter().map(|&(n, v, _, hi)| (n.to_string(), fill(v, &|_| hi))).collect()));
+    if inputs.len() > 1 {
+        out.push(case("all low".into(), inputs.iter().map(|d| at(d, d.lo)).collect()));
+        out.push(case("all high".into(), inputs.iter().map(|d| at(d, d.hi)).collect()));
     }
-    if !ranged.is_empty() {
-        for k in 0..samples {
-            let overrides = ranged
-                .iter()
-                .enumerate()
-                .map(|(i, &(n, v, lo, hi))| {
-                    let pick =
-                        |c: u32| lo + (hi - lo) * f64::from(crate::render::attributes::unit_random(seed.wrapping_add(k), i as u32, c));
-                    (n.to_string(), fill(v, &pick))
-                })
-                .collect();
-            out.push(case(format!("random {}", k + 1), overrides));
-        }
+    for (k, overrides) in random_points(inputs, samples, seed).into_iter().enumerate() {
+        out.push(case(format!("random {}", k + 1), overrides));
     }
     for t in EXTREME_TIMES {
         out.push(Case { name: format!("time {t:e} s"), overrides: Vec::new(), time: t, degenerate: None });
@@ -142,7 +134,7 @@ pub fn cases(effect: Option<&Effect>, samples: u32, seed: u32) -> Vec<Case> {
 }
 
 /// A number, or a list of numbers (a vector).
-fn numeric(v: &UniformValue) -> bool {
+pub(crate) fn numeric(v: &UniformValue) -> bool {
     match v {
         UniformValue::Int(_) | UniformValue::Float(_) => true,
         UniformValue::List(items) => !items.is_empty() && items.iter().all(|i| matches!(i, UniformValue::Int(_) | UniformValue::Float(_))),
@@ -151,7 +143,7 @@ fn numeric(v: &UniformValue) -> bool {
 }
 
 /// `template` with every component replaced by `value(component)`; integers stay integers.
-fn fill(template: &UniformValue, value: &dyn Fn(u32) -> f64) -> UniformValue {
+pub(crate) fn fill(template: &UniformValue, value: &dyn Fn(u32) -> f64) -> UniformValue {
     let one = |t: &UniformValue, c: u32| match t {
         UniformValue::Int(_) => UniformValue::Int(value(c).round() as i64),
         _ => UniformValue::Float(value(c)),
@@ -162,7 +154,7 @@ fn fill(template: &UniformValue, value: &dyn Fn(u32) -> f64) -> UniformValue {
     }
 }
 
-fn show(v: &UniformValue) -> String {
+pub(crate) fn show(v: &UniformValue) -> String {
     match v {
         UniformValue::Int(i) => i.to_string(),
         UniformValue::Float(f) => format!("{}", (f * 1e4).round() / 1e4),
@@ -174,11 +166,13 @@ fn show(v: &UniformValue) -> String {
 /// Runs check, then every case of every clean program.
 pub fn run(request: &Request) -> StressResult {
     let (mut outcome, checked) = request.input.check();
-    let mut result = StressResult { outcome: Outcome::default(), reports: Vec::new(), adapter: None };
+    let mut result = StressResult { outcome: Outcome::default(), reports: Vec::new(), confirmed: Vec::new(), adapter: None };
     let mut gpu: Option<Gpu> = None;
     for c in checked.iter().filter(|c| !c.failed && !c.units.is_empty()) {
         let Some(gpu) = command::open_once(&mut gpu, &mut result.adapter, &mut outcome) else { break };
-        if let Some(report) = stress_program(gpu, c, &mut outcome, request) {
+        if request.confirm {
+            result.confirmed.extend(confirm::confirm_program(gpu, c, &mut outcome, request));
+        } else if let Some(report) = stress_program(gpu, c, &mut outcome, request) {
             result.reports.push(report);
         }
     }
@@ -206,25 +200,29 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
     // Built once for every case that only changes uniform values or time. The pixels come
     // from the plain program: the instrumented one computes the same values, but the
     // driver compiles it differently and may fold a NaN another way.
-    let mut plain = MemoryDrawer::new(gpu, c, outcome, &[], plain_request, None)?;
-    let (mut instrumented, probes) = Probed::build(gpu, c, outcome, &[], plain_request)?;
-    for case in cases(effect, request.samples, request.seed) {
+    let inputs = inputs::declared(c);
+    let defaults = with_defaults(&[], &inputs);
+    let mut plain = MemoryDrawer::new(gpu, c, outcome, &defaults, plain_request, None)?;
+    let (mut instrumented, probes) = Probed::build(gpu, c, outcome, &defaults, plain_request)?;
+    for case in cases(&inputs, request.samples, request.seed) {
+        // Every declared input the case does not move stays at its default.
+        let all = with_defaults(&case.overrides, &inputs);
         // A case that cannot render (a timeout, a device error) is reported by the render path.
         let (run, probed) = match case.degenerate {
             Some(d) => {
                 let m = MemoryRequest { degenerate: Some(d), ..plain_request };
-                let run = MemoryDrawer::new(gpu, c, outcome, &case.overrides, m, None)?.render(gpu, outcome, case.time)?;
+                let run = MemoryDrawer::new(gpu, c, outcome, &all, m, None)?.render(gpu, outcome, case.time)?;
                 if run.degenerate.is_empty() {
                     // No mesh the program reads is changed by this variant: nothing to learn.
                     continue;
                 }
-                let (mut program, probes) = Probed::build(gpu, c, outcome, &case.overrides, m)?;
+                let (mut program, probes) = Probed::build(gpu, c, outcome, &all, m)?;
                 let probed = program.render(gpu, outcome, case.time)?;
                 (run, probes.runs(&probed))
             }
             None => {
-                let run = render_case(gpu, &mut plain, &case, outcome)?;
-                let probed = render_case(gpu, &mut instrumented, &case, outcome)?;
+                let run = render_case(gpu, &mut plain, &all, case.time, outcome)?;
+                let probed = render_case(gpu, &mut instrumented, &all, case.time, outcome)?;
                 (run, probes.runs(&probed))
             }
         };
@@ -286,12 +284,18 @@ fn stress_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, request:
 }
 
 /// One frame of a built program with the case's uniform values, at its time.
-fn render_case(gpu: &Gpu, program: &mut MemoryDrawer<'_>, case: &Case, outcome: &mut Outcome) -> Option<MemoryRun> {
-    if let Err(e) = program.set_overrides(&case.overrides) {
+fn render_case(
+    gpu: &Gpu,
+    program: &mut MemoryDrawer<'_>,
+    values: &[(String, UniformValue)],
+    time: f64,
+    outcome: &mut Outcome,
+) -> Option<MemoryRun> {
+    if let Err(e) = program.set_overrides(values) {
         outcome.diagnostics.push(Diagnostic::new(Code::PipelineRejected, e));
         return None;
     }
-    program.render(gpu, outcome, case.time)
+    program.render(gpu, outcome, time)
 }
 
 fn max_delta(a: &[f32], b: &[f32]) -> f64 {
@@ -517,7 +521,7 @@ mod tests {
 
     #[test]
     fn cases_cover_range_ends_random_points_and_extreme_times() {
-        let bare = cases(None, 4, 1);
+        let bare = cases(&[], 4, 1);
         assert_eq!(bare.len(), 1 + EXTREME_TIMES.len() + Degenerate::ALL.len(), "bare programs: nominal, times, geometry");
         assert_eq!(bare.iter().filter_map(|c| c.degenerate).collect::<Vec<_>>(), Degenerate::ALL);
         let v = UniformValue::List(vec![UniformValue::Float(0.5), UniformValue::Float(0.5)]);
@@ -525,21 +529,29 @@ mod tests {
         assert_eq!(fill(&UniformValue::Int(3), &|_| 7.6), UniformValue::Int(8));
         assert!(!numeric(&UniformValue::Bool(true)));
 
-        let dir = std::env::temp_dir().join(format!("effectc-stress-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        std::fs::write(dir.join("a.frag"), "").unwrap();
-        let text = "[stages]\nfragment = \"a.frag\"\n[uniforms]\nk = { value = 2, range = [1, 9] }\ntint = { value = [0.5, 0.5], range = [0.0, 1.0] }\nfree = 3.0\nt = { semantic = \"time\" }\n";
-        let effect = crate::manifest::parse_for_tests(text, crate::diag::FileId(0), &dir).unwrap();
-        let all = cases(Some(&effect), 3, 7);
-        // nominal, 2 × (low, high), all low, all high, 3 random, 3 times, 2 geometry.
-        assert_eq!(all.len(), 1 + 4 + 2 + 3 + 3 + 2, "{all:#?}");
+        let input = |name: &str, default: UniformValue, lo, hi, step| Declared { name: name.into(), default, lo, hi, step };
+        let inputs = [
+            input("k", UniformValue::Int(2), 1.0, 9.0, None),
+            input("tint", UniformValue::List(vec![UniformValue::Float(0.5); 2]), 0.0, 1.0, None),
+            // A `#pragma parameter` moves in its steps.
+            input("MASK", UniformValue::Float(1.0), 0.0, 3.0, Some(1.0)),
+        ];
+        let all = cases(&inputs, 3, 7);
+        // nominal, 3 × (low, high), all low, all high, 3 random, 3 times, 2 geometry.
+        assert_eq!(all.len(), 1 + 6 + 2 + 3 + 3 + 2, "{all:#?}");
         assert_eq!(all[1].overrides, [("k".to_string(), UniformValue::Int(1))]);
         assert_eq!(all[4].overrides, [("tint".to_string(), UniformValue::List(vec![UniformValue::Float(1.0); 2]))]);
         for random in all.iter().filter(|c| c.name.starts_with("random")) {
             let UniformValue::Int(k) = random.overrides[0].1 else { panic!("k stays an int") };
             assert!((1..=9).contains(&k));
+            let UniformValue::Float(mask) = random.overrides[2].1 else { panic!("a float") };
+            assert_eq!(mask, mask.round(), "on the parameter's grid");
         }
-        assert_eq!(cases(Some(&effect), 3, 7), all, "seeded: the same cases every run");
+        assert_eq!(cases(&inputs, 3, 7), all, "seeded: the same cases every run");
         assert_eq!(all[all.len() - 3].time, 1e7);
+        // The inputs a case does not move keep their defaults.
+        let values = inputs::with_defaults(&all[1].overrides, &inputs);
+        assert_eq!(values.len(), 3);
+        assert_eq!(values[2], ("MASK".to_string(), UniformValue::Float(1.0)));
     }
 }

@@ -130,3 +130,123 @@ fn degenerate_triangles_reach_the_geometry_stage() {
     assert!(case.contains("degenerate geometry: 6 of 12 triangles collapsed to zero area"), "{case}");
     assert_eq!(text.matches("warning[W0702]").count(), 1, "the intact cube is clean in every other case:\n{text}");
 }
+
+/// `programs[].hazards[]` of a `stress --confirm --format json` run as one line each:
+/// program, code, tier, verdict and the confirming case (what stays the same between
+/// machines with the same driver; the counts are asserted where they matter).
+fn verdicts(json: &str) -> String {
+    let doc: serde_json::Value = serde_json::from_str(json).unwrap_or_else(|e| panic!("{e}:\n{json}"));
+    let mut lines = Vec::new();
+    for program in doc["programs"].as_array().expect("programs") {
+        for h in program["hazards"].as_array().expect("hazards") {
+            let case = h["case"].as_str().map(|c| format!(" `{c}`")).unwrap_or_default();
+            lines.push(format!(
+                "{} {} {} {} {}{case}",
+                program["program"].as_str().unwrap().rsplit('/').next().unwrap(),
+                h["code"].as_str().unwrap(),
+                h["at"].as_str().unwrap().rsplit('/').next().unwrap(),
+                h["tier"].as_str().unwrap(),
+                h["verdict"].as_str().unwrap()
+            ));
+        }
+    }
+    lines.join("\n")
+}
+
+#[test]
+fn confirm_puts_every_seed_hazard_warning_to_a_render() {
+    if !have_gpu() {
+        return;
+    }
+    let seeds = [
+        "tests/fail/42-hazard-flower-bend-warning",
+        "tests/fail/43-hazard-bloom-time-warning",
+        "tests/fail/44-hazard-sun-hash-warning",
+        "tests/fail/45-hazard-degenerate-cross-warning",
+        "tests/fail/46-hazard-zero-normal-warning",
+        "tests/fail/47-hazard-loop-counter-warning",
+        "tests/fail/48-hazard-pow-log-sqrt-warning",
+        "tests/stress/explode-degenerate",
+    ];
+    let out = effectc(&[&["stress", "--confirm", "--format", "json"][..], &seeds].concat());
+    let json = stdout(&out);
+    // A confirmed warning is error E0703: the run fails.
+    assert_eq!(code(&out), 1, "{json}");
+    let table = verdicts(&json);
+    // The flower's R = h / phi divides by 0 once the light stands overhead (lightX = 0, lightZ
+    // at its default 0); the acos before it stays in [-1, 1] on this driver. The bloom's
+    // sin passes 1e4 rad only at bFrequency's high end after the hour the analysis assumes;
+    // the hash, the runaway march (at the defaults already: the march's path wraps round the
+    // texture without meeting a texel above 0.6 in some pixels), and all four Phong terms
+    // happen. A rasterizer never draws the fragments of a triangle whose derivatives are
+    // parallel, nor meets the flipped leaf normal exactly at zero: those two are refuted;
+    // the exploding mesh's collapsed triangles do make the geometry stage's cross product 0.
+    let expected = "\
+flower-bend W0711 flower.vert:38 possible refuted
+flower-bend W0710 flower.vert:40 possible confirmed `lightX = 0`
+bloom-time W0717 sun.frag:25 possible confirmed `bFrequency high at 3600 s`
+sun-hash W0718 sun.vert:24 possible confirmed `defaults`
+degenerate-cross W0715 explode.frag:16 possible refuted
+zero-normal W0715 leaf.frag:13 possible refuted
+loop-counter W0719 march.frag:17 certain confirmed `defaults`
+pow-log-sqrt W0714 phong.frag:27 possible confirmed `defaults`
+pow-log-sqrt W0712 phong.frag:32 certain confirmed `sinT2Scale high`
+pow-log-sqrt W0716 phong.frag:36 certain confirmed `lightFalloff low`
+pow-log-sqrt W0713 phong.frag:39 certain confirmed `exposure low`
+explode-degenerate W0715 shards.geom:12 possible confirmed `zero-area tris`";
+    assert_eq!(table, expected, "{json}");
+    let doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let hazard = |program: &str, code: &str| {
+        let p = doc["programs"].as_array().unwrap().iter().find(|p| p["program"] == program).unwrap();
+        p["hazards"].as_array().unwrap().iter().find(|h| h["code"] == code).unwrap().clone()
+    };
+    // Every pixel takes the sqrt of a negative number at sinT2Scale = 1.5.
+    let sqrt = hazard("pow-log-sqrt", "W0712");
+    assert_eq!((sqrt["held"].as_u64(), sqrt["invocations"].as_u64(), sqrt["stage"].as_str()), (Some(13552), Some(13552), Some("fragment")));
+    // A refuted warning says how often its operation ran.
+    let acos = hazard("flower-bend", "W0711");
+    assert!(acos["held"] == 0 && acos["reached"].as_u64().unwrap() > 1000, "{acos}");
+    // The human form: the table, the error with the case's values, the verdict on the warning.
+    let human = stdout(&effectc(&["stress", "--confirm", seeds[0]]));
+    assert!(human.contains("flower-bend — 2 hazard warnings"), "{human}");
+    let error = diagnostic(&human, "error[E0703]: flower-bend: W0710 confirmed by a render");
+    assert!(error.contains("flower.vert:40:15") && error.contains("case `lightX = 0`: lightX=0"), "{error}");
+    assert!(error.contains("the divisor was 0 (or a denormal, which GPUs flush to 0) in 1264 of 1264 vertex invocations"), "{error}");
+    let refuted = diagnostic(&human, "warning[W0711]");
+    assert!(refuted.contains("`stress --confirm`: refuted: the operation ran in"), "{refuted}");
+}
+
+#[test]
+fn confirm_drives_pragma_parameters_from_their_defaults_to_their_ends() {
+    if !have_gpu() {
+        return;
+    }
+    // Undefined behaviour at a bare program's `#pragma parameter` values: the defaults
+    // (SHIFT = 4, not 0) divide by zero, OFFSET's low end takes `%` of a negative number and
+    // SHIFT's high end shifts by 40.
+    let dir = scratch("stress", "confirm-parameters");
+    std::fs::write(
+        dir.join("ub.vert"),
+        "#version 330\nlayout(location = 0) in vec2 position;\nvoid main() { gl_Position = vec4(position, 0.0, 1.0); }\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("ub.frag"),
+        "#version 330\n#pragma parameter SHIFT \"Shift\" 4.0 0.0 40.0 1.0\n#pragma parameter OFFSET \"Offset\" 1.0 -4.0 4.0 1.0\n\
+uniform float SHIFT;\nuniform float OFFSET;\nout vec4 color;\nvoid main()\n{\n    int k = int(OFFSET) % 3;\n    uint m = 1u << uint(SHIFT);\n    \
+float d = 1.0 / (SHIFT - 4.0);\n    color = vec4(float(k), float(m), d, 1.0);\n}\n",
+    )
+    .unwrap();
+    let files = [dir.join("ub.vert"), dir.join("ub.frag")].map(|p| p.to_str().unwrap().to_string());
+    let out = effectc(&["stress", "--confirm", "--format", "json", &files[0], &files[1], "--size", "32x32"]);
+    let json = stdout(&out);
+    assert_eq!(code(&out), 1, "{json}");
+    assert_eq!(
+        verdicts(&json),
+        "ub W0720 ub.frag:9 certain confirmed `OFFSET low`\nub W0721 ub.frag:10 certain confirmed `SHIFT high`\nub W0710 ub.frag:11 certain confirmed `defaults`",
+        "{json}"
+    );
+    // Without --confirm a bare program reports these certain warnings and draws no error.
+    let plain = effectc(&["check", &files[0], &files[1]]);
+    assert_eq!(code(&plain), 0, "{}", stdout(&plain));
+}

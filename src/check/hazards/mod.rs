@@ -350,6 +350,13 @@ fn analyse_with(effect: Option<&Effect>, program: &CompiledProgram, settings: Ha
     out
 }
 
+/// Which of the inputs `names` are named near the hazards at `spans` of `text` (on their
+/// lines, or on a line that gives a variable named there its value): the inputs whose
+/// values to try first.
+pub fn inputs_named_near(names: &[&str], text: &str, spans: impl Iterator<Item = std::ops::Range<usize>>) -> Vec<bool> {
+    witness::named_near(names, text, spans)
+}
+
 /// The hazards of every stage with the witness that makes each certain, if any.
 struct Confirmed {
     found: Vec<Vec<(Hazard, Option<Witness>)>>,
@@ -396,7 +403,8 @@ fn confirm(stages: &[Stage<'_>], f: &facts::Facts, found: Vec<Vec<Hazard>>, base
     let mut first = vec![false; f.declared.len()];
     for (st, hs) in stages.iter().zip(&out) {
         let spans = hs.iter().filter_map(|(h, _)| h.span.to_range()).filter(|r| r.end <= st.text.len());
-        for (i, near) in witness::named_near(&f.declared, st.text, spans).into_iter().enumerate() {
+        let names: Vec<&str> = f.declared.iter().map(|d| d.name.as_str()).collect();
+        for (i, near) in witness::named_near(&names, st.text, spans).into_iter().enumerate() {
             first[i] |= near;
         }
     }

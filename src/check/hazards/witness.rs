@@ -75,7 +75,7 @@ fn samples_of(declared: &[Declared], which: &[usize]) -> Vec<Sample> {
 /// or on a line that assigns a variable named there (one step back). Their samples run
 /// first, so a stage with hundreds of parameters spends its witness budget on the ones
 /// that matter.
-pub fn named_near(declared: &[Declared], text: &str, spans: impl Iterator<Item = std::ops::Range<usize>>) -> Vec<bool> {
+pub fn named_near(declared: &[&str], text: &str, spans: impl Iterator<Item = std::ops::Range<usize>>) -> Vec<bool> {
     let line_of = |at: usize| line_at(text, at);
     let mut lines: Vec<&str> = spans.map(|r| line_of(r.start)).collect();
     lines.sort_unstable();
@@ -84,7 +84,7 @@ pub fn named_near(declared: &[Declared], text: &str, spans: impl Iterator<Item =
     words.sort_unstable();
     words.dedup();
     for w in words.iter().take(64) {
-        if declared.iter().any(|d| d.name == *w) {
+        if declared.contains(w) {
             continue;
         }
         // `w = …`, `w += …`, `float w = …`: the lines that give a named variable its value.
@@ -101,7 +101,7 @@ pub fn named_near(declared: &[Declared], text: &str, spans: impl Iterator<Item =
             }
         }
     }
-    declared.iter().map(|d| lines.iter().any(|l| identifiers(l).any(|w| w == d.name))).collect()
+    declared.iter().map(|d| lines.iter().any(|l| identifiers(l).any(|w| w == *d))).collect()
 }
 
 /// The line of `text` holding offset `at`.
@@ -233,7 +233,7 @@ mod tests {
         let d = [named("A"), named("B"), named("C")];
         let text = "float s = B * 2.0;\nfloat t = 1.0;\nt += C;\nfloat x = y / (s + t);\n";
         let at = text.find("y /").unwrap();
-        let first = named_near(&d, text, std::iter::once(at..at + 1));
+        let first = named_near(&["A", "B", "C"], text, std::iter::once(at..at + 1));
         assert_eq!(first, [false, true, true]);
         let order: Vec<Vec<usize>> = samples(&d, &first).iter().map(|s| s.varied.iter().map(|(i, _)| *i).collect()).collect();
         assert_eq!(order, [vec![], vec![1, 2], vec![1, 2], vec![1], vec![1], vec![2], vec![2], vec![0], vec![0]]);

@@ -1,0 +1,202 @@
+//! naga IR plumbing the run-time instrumentations share ([`crate::stress::culprit`] and
+//! [`crate::stress::sites`]): the storage buffer they count into, a binding for it, the
+//! functions an entry point calls, and a hook before every statement that ends an
+//! invocation.
+
+use naga::{Block, Expression, Function, Handle, Module, Span, Statement, TypeInner};
+
+use crate::back::Translation;
+use crate::front::program::CompiledProgram;
+use crate::manifest::Effect;
+use crate::stage::StageKind;
+
+/// The name of the storage buffer the counts are written to.
+pub const COUNTS_BUFFER: &str = "effectc_probe_counts";
+
+/// `var<storage, read_write> effectc_probe_counts: array<atomic<u32>, slots>` at `binding`.
+pub fn counts_buffer(module: &mut Module, slots: u32, (group, binding): (u32, u32)) -> Result<Handle<naga::GlobalVariable>, String> {
+    let atomic = module.types.insert(naga::Type { name: None, inner: TypeInner::Atomic(naga::Scalar::U32) }, Span::UNDEFINED);
+    let size = std::num::NonZeroU32::new(slots).ok_or("no probe slots")?;
+    let array = module.types.insert(
+        naga::Type { name: None, inner: TypeInner::Array { base: atomic, size: naga::ArraySize::Constant(size), stride: 4 } },
+        Span::UNDEFINED,
+    );
+    Ok(module.global_variables.append(
+        naga::GlobalVariable {
+            name: Some(COUNTS_BUFFER.into()),
+            space: naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD | naga::StorageAccess::STORE },
+            binding: Some(naga::ResourceBinding { group, binding }),
+            ty: array,
+            init: None,
+            memory_decorations: naga::MemoryDecorations::empty(),
+        },
+        Span::UNDEFINED,
+    ))
+}
+
+/// A private `u32` of every invocation (zero when it starts).
+pub fn private_u32(module: &mut Module, name: &str) -> Handle<naga::GlobalVariable> {
+    let u32_ty = module.types.insert(naga::Type { name: None, inner: TypeInner::Scalar(naga::Scalar::U32) }, Span::UNDEFINED);
+    module.global_variables.append(
+        naga::GlobalVariable {
+            name: Some(name.into()),
+            space: naga::AddressSpace::Private,
+            binding: None,
+            ty: u32_ty,
+            init: None,
+            memory_decorations: naga::MemoryDecorations::empty(),
+        },
+        Span::UNDEFINED,
+    )
+}
+
+/// A binding no resource of `module` uses: the next binding of its last group (group 0
+/// when it has none), so no new bind group is needed.
+pub fn free_binding(module: &Module) -> (u32, u32) {
+    let used: Vec<(u32, u32)> =
+        module.global_variables.iter().filter_map(|(_, g)| g.binding.as_ref().map(|b| (b.group, b.binding))).collect();
+    let group = used.iter().map(|b| b.0).max().unwrap_or(0);
+    let binding = used.iter().filter(|b| b.0 == group).map(|b| b.1 + 1).max().unwrap_or(0);
+    (group, binding)
+}
+
+/// Functions called, directly or not, from `f`, callees first.
+pub fn reachable(module: &Module, f: &Function) -> Vec<Handle<Function>> {
+    fn calls(block: &Block, out: &mut Vec<Handle<Function>>) {
+        for s in block.iter() {
+            match s {
+                Statement::Call { function, .. } => out.push(*function),
+                Statement::Block(b) => calls(b, out),
+                Statement::If { accept, reject, .. } => {
+                    calls(accept, out);
+                    calls(reject, out);
+                }
+                Statement::Loop { body, continuing, .. } => {
+                    calls(body, out);
+                    calls(continuing, out);
+                }
+                Statement::Switch { cases, .. } => cases.iter().for_each(|c| calls(&c.body, out)),
+                _ => {}
+            }
+        }
+    }
+    let mut seen: Vec<Handle<Function>> = Vec::new();
+    let mut todo = Vec::new();
+    calls(&f.body, &mut todo);
+    while let Some(h) = todo.pop() {
+        if !seen.contains(&h) {
+            seen.push(h);
+            calls(&module.functions[h].body, &mut todo);
+        }
+    }
+    seen
+}
+
+/// Which statements end an invocation in the function being rewritten.
+#[derive(Clone, Copy, PartialEq)]
+pub enum Exits {
+    /// The entry point: its returns and discards.
+    ReturnsAndDiscards,
+    /// A function it calls: only a discard ends the invocation there.
+    Discards,
+}
+
+/// `stmt` with `f` applied to each block it holds (a block, both arms of an `if`, a loop's
+/// body and continuing, every case of a switch); other statements as they are.
+pub fn map_blocks(stmt: Statement, f: &mut dyn FnMut(Block) -> Block) -> Statement {
+    match stmt {
+        Statement::Block(b) => Statement::Block(f(b)),
+        Statement::If { condition, accept, reject } => Statement::If { condition, accept: f(accept), reject: f(reject) },
+        Statement::Loop { body, continuing, break_if } => Statement::Loop { body: f(body), continuing: f(continuing), break_if },
+        Statement::Switch { selector, cases } => {
+            Statement::Switch { selector, cases: cases.into_iter().map(|c| naga::SwitchCase { body: f(c.body), ..c }).collect() }
+        }
+        other => other,
+    }
+}
+
+/// `block` with the statements `count` appends placed before every statement that ends
+/// the invocation.
+pub fn count_at_exits(fun: &mut Function, block: Block, exits: Exits, count: &dyn Fn(&mut Function, &mut Block)) -> Block {
+    let mut out = Block::with_capacity(block.len());
+    for (stmt, span) in block.span_into_iter() {
+        let stmt = match stmt {
+            Statement::Kill => {
+                count(fun, &mut out);
+                Statement::Kill
+            }
+            exit @ Statement::Return { .. } if exits == Exits::ReturnsAndDiscards => {
+                count(fun, &mut out);
+                exit
+            }
+            other => map_blocks(other, &mut |b| count_at_exits(fun, b, exits, count)),
+        };
+        out.push(stmt, span);
+    }
+    out
+}
+
+/// Counts at every exit of the entry point `entry` and of the functions it calls (a
+/// `discard` there ends the invocation), and at the end of a body that ends without a
+/// `return`.
+pub fn count_at_every_exit(module: &mut Module, entry: usize, count: &dyn Fn(&mut Function, &mut Block)) {
+    for f in reachable(module, &module.entry_points[entry].function) {
+        let fun = &mut module.functions[f];
+        let body = std::mem::take(&mut fun.body);
+        fun.body = count_at_exits(fun, body, Exits::Discards, count);
+    }
+    let fun = &mut module.entry_points[entry].function;
+    let body = std::mem::take(&mut fun.body);
+    let mut body = count_at_exits(fun, body, Exits::ReturnsAndDiscards, count);
+    if !matches!(body.last(), Some(Statement::Return { .. } | Statement::Kill)) {
+        count(fun, &mut body);
+    }
+    fun.body = body;
+}
+
+/// The vertex and fragment entry points of `module` among `stages`: (index, stage).
+pub fn entries(module: &Module, stages: &[StageKind]) -> Vec<(usize, StageKind)> {
+    module
+        .entry_points
+        .iter()
+        .enumerate()
+        .filter_map(|(i, e)| {
+            let stage = match e.stage {
+                naga::ShaderStage::Vertex => StageKind::Vertex,
+                naga::ShaderStage::Fragment => StageKind::Fragment,
+                _ => return None,
+            };
+            stages.contains(&stage).then_some((i, stage))
+        })
+        .collect()
+}
+
+/// The resolved type of every expression of a function, by index.
+pub fn types_of(module: &Module, info: &naga::valid::FunctionInfo, handles: impl Iterator<Item = Handle<Expression>>) -> Vec<TypeInner> {
+    handles.map(|h| info[h].ty.inner_with(&module.types).clone()).collect()
+}
+
+/// The text each stage's spans index in a translation of `program`: the rewritten stage,
+/// or for the vertex stage of a folded program the fold's text.
+pub fn stage_texts(program: &CompiledProgram) -> Vec<(StageKind, &str)> {
+    program
+        .stages
+        .iter()
+        .filter_map(|s| match (s.syntax.stage, program.fold()) {
+            (StageKind::Vertex, Some(f)) => Some((StageKind::Vertex, f.drawn.text.as_str())),
+            (kind, _) => Some((kind, s.rewritten.as_ref()?.text.as_str())),
+        })
+        .collect()
+}
+
+/// Validates and reflects an instrumented translation again (`program` and `effect`: what
+/// it was translated from), so the renderer binds the counts buffer like any other
+/// storage buffer.
+pub fn revalidate(t: &mut Translation, program: &CompiledProgram, effect: Option<&Effect>) -> Result<(), String> {
+    t.info = crate::front::naga_run::validator()
+        .validate(&t.module)
+        .map_err(|e| format!("the translated module does not validate: {}", e.as_inner()))?;
+    let left_out = std::mem::take(&mut t.reflection.left_out);
+    t.reflection = crate::back::reflect::reflect_program(&t.name, &t.module, program, effect, left_out);
+    Ok(())
+}
