@@ -5,6 +5,15 @@
 
 use super::Semantic;
 
+/// RetroArch's sizes, guessed as the frame's (a scene of one pass whose source is drawn at
+/// the output size); as a `vec4` they hold the reciprocals too (`SourceSize.zw`).
+const RETROARCH_SIZES: &[&str] = &["outputsize", "texturesize", "inputsize", "sourcesize", "originalsize", "finalviewportsize"];
+
+/// One of RetroArch's size uniforms (`OutputSize`, `SourceSize`, …).
+pub fn is_retroarch_size(name: &str) -> bool {
+    RETROARCH_SIZES.contains(&normalised(name).as_str())
+}
+
 /// The semantic a uniform's name suggests, if its type fits it.
 pub fn semantic_by_name(name: &str, shape: (u8, u8), is_float: bool) -> Option<Semantic> {
     let key = normalised(name);
@@ -13,6 +22,7 @@ pub fn semantic_by_name(name: &str, shape: (u8, u8), is_float: bool) -> Option<S
         (&["deltatime", "timedelta", "dt", "frametime"], Semantic::DeltaTime),
         (&["frame", "framecount", "framenumber", "frameindex"], Semantic::Frame),
         (&["resolution", "screensize", "viewportsize", "viewport", "screenresolution"], Semantic::Resolution),
+        (RETROARCH_SIZES, Semantic::Resolution),
         (&["mouse", "mousepos", "pointer"], Semantic::Mouse),
         (&["model", "modelmatrix", "world", "worldmatrix", "modelmat"], Semantic::Model),
         (&["view", "viewmatrix", "viewmat", "camera", "cameramatrix"], Semantic::View),
@@ -31,7 +41,8 @@ pub fn semantic_by_name(name: &str, shape: (u8, u8), is_float: bool) -> Option<S
     ];
     let semantic = candidates.iter().find(|(names, _)| names.contains(&key.as_str()))?.1;
     let ty = type_name(shape, is_float)?;
-    semantic.glsl_types().contains(&ty).then_some(semantic)
+    let retroarch = ty == "vec4" && RETROARCH_SIZES.contains(&key.as_str());
+    (semantic.glsl_types().contains(&ty) || retroarch).then_some(semantic)
 }
 
 /// `u_Time`, `iTime`, `uTime`, `g_time`, `m_ProjectionMatrix` → `time`, `projectionmatrix`.

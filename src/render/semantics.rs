@@ -35,6 +35,8 @@ pub fn value(semantic: Semantic, f: &FrameState, shape: Shape) -> UniformValue {
         Semantic::Time => number(f.time),
         Semantic::DeltaTime => number(f.delta),
         Semantic::Frame => UniformValue::Int(i64::from(f.index)),
+        // `vec3`: Shadertoy's `iResolution` (z = 1); `vec4`: RetroArch's sizes (w, h, 1/w, 1/h).
+        Semantic::Resolution if shape.1 == 4 => floats(&[w, h, 1.0 / w, 1.0 / h]),
         Semantic::Resolution => floats(&[w, h, 1.0][..shape.1.clamp(1, 3) as usize]),
         // No pointer in headless rendering: the centre of the frame, not clicked.
         Semantic::Mouse => floats(&[w / 2.0, h / 2.0, 0.0, 0.0][..shape.1.clamp(1, 4) as usize]),
@@ -126,6 +128,11 @@ mod tests {
         assert_eq!(guess("MVP", (4, 4), true), Guess::Semantic(Semantic::ModelViewProjection));
         assert_eq!(guess("viewPos", (1, 3), true), Guess::Semantic(Semantic::CameraPosition));
         assert_eq!(guess("normalMatrix", (3, 3), true), Guess::Semantic(Semantic::NormalMatrix));
+        // RetroArch's sizes: the frame's, a `vec4` too (only for them: `iResolution` is no vec4).
+        assert_eq!(guess("SourceSize", (1, 4), true), Guess::Semantic(Semantic::Resolution));
+        assert_eq!(guess("OutputSize", (1, 2), true), Guess::Semantic(Semantic::Resolution));
+        assert!(matches!(guess("iResolution", (1, 4), true), Guess::Constant(..)));
+        assert!(crate::manifest::guess::is_retroarch_size("TextureSize") && !crate::manifest::guess::is_retroarch_size("iResolution"));
         // The name fits but the type does not: no semantic.
         assert!(matches!(guess("time", (1, 3), true), Guess::Constant(..)));
         assert!(matches!(guess("model", (1, 4), true), Guess::Constant(..)));
@@ -150,6 +157,7 @@ mod tests {
         assert_eq!(value(Semantic::Frame, &f, (1, 1)), UniformValue::Int(3));
         assert_eq!(value(Semantic::Resolution, &f, (1, 3)).dims(), vec![3]);
         assert_eq!(value(Semantic::Resolution, &f, (1, 2)).scalars()[0], &UniformValue::Float(200.0));
+        assert_eq!(value(Semantic::Resolution, &f, (1, 4)), floats(&[200.0, 100.0, 0.005, 0.01]), "w, h, 1/w, 1/h");
         assert_eq!(value(Semantic::NormalMatrix, &f, (3, 3)).dims(), vec![3, 3]);
         assert_eq!(value(Semantic::Model, &f, (4, 4)), matrix(Mat4::IDENTITY, (4, 4)));
     }

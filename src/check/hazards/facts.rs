@@ -210,6 +210,12 @@ impl Facts {
         let cols = u.cols.max(1);
         let shape = (cols as u8, (u.c.len() / cols) as u8);
         let semantic = crate::manifest::guess::semantic_by_name(name, shape, u.kind == ScalarKind::Float)?;
+        // RetroArch's sizes stay unknown to the analysis: the renderer's guess (the frame's
+        // size) says nothing of the source a pass really reads, and as a fact it hid two
+        // certain divisions of the labelled set behind a possible one.
+        if crate::manifest::guess::is_retroarch_size(name) {
+            return None;
+        }
         if matches!(semantic, Semantic::Time | Semantic::Frame) {
             self.read_clock.set(true);
         }
