@@ -102,6 +102,10 @@ pub fn guess(name: &str, shape: Shape, is_float: bool) -> Guess {
     if is_float && rows >= 3 && ["color", "colour", "diffuse", "specular", "albedo"].iter().any(|w| lower.contains(w)) {
         return Guess::Constant(floats(&[1.0; 4][..rows as usize]), "white");
     }
+    // RetroArch plays forward: its `FrameDirection` is 1 (-1 while rewinding).
+    if rows == 1 && columns == 1 && lower == "framedirection" {
+        return Guess::Constant(if is_float { UniformValue::Float(1.0) } else { UniformValue::Int(1) }, "1, RetroArch's forward play");
+    }
     if is_float && rows == 1 && (lower.contains("shininess") || lower.contains("specularpower")) {
         return Guess::Constant(UniformValue::Float(32.0), "32");
     }
@@ -147,6 +151,7 @@ mod tests {
         assert!(matches!(guess("light.ambient", (1, 3), true), Guess::Constant(_, w) if w.contains("grey")));
         assert!(matches!(guess("light.position", (1, 3), true), Guess::Constant(_, w) if w.contains("light")));
         assert_eq!(guess("radius", (1, 1), true), Guess::Constant(UniformValue::Int(0), "zero"));
+        assert_eq!(guess("FrameDirection", (1, 1), false), Guess::Constant(UniformValue::Int(1), "1, RetroArch's forward play"));
     }
 
     #[test]
