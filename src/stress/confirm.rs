@@ -186,6 +186,7 @@ pub fn confirm_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, req
     let mut tallies = vec![Tally::default(); wanted.len()];
     let mut drawn = 0;
     let mut placed: Vec<bool> = vec![false; wanted.len()];
+    let mut crowded: Vec<usize> = Vec::new();
     let defaults = with_defaults(&[], &inputs);
     let drawer = if wanted.is_empty() { None } else { MemoryDrawer::new(gpu, c, outcome, &defaults, m, Some(&instrument)) };
     // Why the runs ended before every warning had its chance.
@@ -197,6 +198,7 @@ pub fn confirm_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, req
             for &w in &s.bits {
                 placed[w] = true;
             }
+            crowded.extend(s.crowded.iter().copied());
         }
         for (i, case) in cases.iter().enumerate() {
             if (0..wanted.len()).all(|w| !placed[w] || tallies[w].first.is_some()) {
@@ -242,7 +244,7 @@ pub fn confirm_program(gpu: &Gpu, c: &check::Checked, outcome: &mut Outcome, req
         }
     }
     let why_not = failed.take().map(|e| format!("the program could not be instrumented: {e}")).or(stopped);
-    let run = Runs { tallies: &tallies, placed: &placed, cases: &cases, why_not: why_not.as_deref(), vertex };
+    let run = Runs { tallies: &tallies, placed: &placed, crowded: &crowded, cases: &cases, why_not: why_not.as_deref(), vertex };
     let hazards: Vec<Tested> = warnings.iter().enumerate().map(|(w, d)| run.judge(c, &outcome.files, w, d)).collect();
     for (d, t) in warnings.iter().zip(&hazards) {
         annotate(outcome, &program, d, t, drawn);
@@ -267,6 +269,8 @@ fn named_first(inputs: &[Declared], wanted: &[Wanted]) -> Vec<bool> {
 struct Runs<'a> {
     tallies: &'a [Tally],
     placed: &'a [bool],
+    /// Warnings left out past [`sites::MAX_SITES`].
+    crowded: &'a [usize],
     cases: &'a [Case],
     /// Why the runs ended before every warning had its chance.
     why_not: Option<&'a str>,
@@ -290,6 +294,9 @@ impl Runs<'_> {
             (true, Some(why)) => why.to_string(),
             // Nothing was placed: the program could not be instrumented or drawn.
             (false, Some(why)) if !self.placed.iter().any(|p| *p) => why.to_string(),
+            (false, _) if self.crowded.contains(&w) => {
+                format!("more than {} warnings in one program: the first {} are tested", sites::MAX_SITES, sites::MAX_SITES)
+            }
             _ => untested_reason(c, d, self.vertex),
         });
         let (held, reached, invocations, stage) = match t.first {

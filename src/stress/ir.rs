@@ -1,9 +1,12 @@
 //! naga IR plumbing the run-time instrumentations share ([`crate::stress::culprit`] and
 //! [`crate::stress::sites`]): the storage buffer they count into, a binding for it, the
-//! functions an entry point calls, and a hook before every statement that ends an
-//! invocation.
+//! functions an entry point calls, a hook before every statement that ends an
+//! invocation, and a builder that appends expressions and emits them.
 
-use naga::{Block, Expression, Function, Handle, Module, Span, Statement, TypeInner};
+use naga::{
+    BinaryOperator as B, Block, Expression, Function, Handle, Literal, MathFunction as M, Module, RelationalFunction, ScalarKind, Span,
+    Statement, TypeInner, VectorSize,
+};
 
 use crate::back::Translation;
 use crate::front::program::CompiledProgram;
@@ -199,4 +202,132 @@ pub fn revalidate(t: &mut Translation, program: &CompiledProgram, effect: Option
     let left_out = std::mem::take(&mut t.reflection.left_out);
     t.reflection = crate::back::reflect::reflect_program(&t.name, &t.module, program, effect, left_out);
     Ok(())
+}
+
+/// The scalar kind and vector size of a value.
+#[derive(Debug, Clone, Copy)]
+pub struct Shape {
+    pub kind: ScalarKind,
+    pub size: Option<VectorSize>,
+}
+
+impl Shape {
+    pub fn of(ty: Option<&TypeInner>) -> Shape {
+        match ty {
+            Some(TypeInner::Vector { size, scalar }) => Shape { kind: scalar.kind, size: Some(*size) },
+            Some(TypeInner::Scalar(s)) => Shape { kind: s.kind, size: None },
+            _ => Shape { kind: ScalarKind::Float, size: None },
+        }
+    }
+}
+
+pub fn literal(kind: ScalarKind, x: f64) -> Literal {
+    match kind {
+        ScalarKind::Sint => Literal::I32(x as i32),
+        ScalarKind::Uint => Literal::U32(x as u32),
+        _ => Literal::F32(x as f32),
+    }
+}
+
+/// Appends expressions to a function, emitting them in ranges of what may be emitted, and
+/// gathers the statements that evaluate them.
+pub struct Builder<'f> {
+    pub fun: &'f mut Function,
+    out: Block,
+    range: Option<(Handle<Expression>, Handle<Expression>)>,
+}
+
+impl<'f> Builder<'f> {
+    pub fn new(fun: &'f mut Function) -> Self {
+        Builder { fun, out: Block::new(), range: None }
+    }
+
+    pub fn add(&mut self, e: Expression) -> Handle<Expression> {
+        let pre = e.needs_pre_emit();
+        if pre {
+            self.flush();
+        }
+        let h = self.fun.expressions.append(e, Span::UNDEFINED);
+        if !pre {
+            self.range = Some((self.range.map_or(h, |r| r.0), h));
+        }
+        h
+    }
+
+    pub fn flush(&mut self) {
+        if let Some((first, last)) = self.range.take() {
+            self.out.push(Statement::Emit(naga::Range::new_from_bounds(first, last)), Span::UNDEFINED);
+        }
+    }
+
+    pub fn stmt(&mut self, s: Statement) {
+        self.flush();
+        self.out.push(s, Span::UNDEFINED);
+    }
+
+    pub fn finish(mut self) -> Block {
+        self.flush();
+        self.out
+    }
+
+    pub fn math(&mut self, fun: M, arg: Handle<Expression>, arg1: Option<Handle<Expression>>) -> Handle<Expression> {
+        self.add(Expression::Math { fun, arg, arg1, arg2: None, arg3: None })
+    }
+
+    pub fn splat(&mut self, l: Literal, s: Shape) -> Handle<Expression> {
+        let value = self.add(Expression::Literal(l));
+        match s.size {
+            Some(size) => self.add(Expression::Splat { size, value }),
+            None => value,
+        }
+    }
+
+    pub fn splat_f32(&mut self, x: f32, s: Shape) -> Handle<Expression> {
+        self.splat(Literal::F32(x), s)
+    }
+
+    pub fn zero(&mut self, s: Shape) -> Handle<Expression> {
+        self.splat(literal(s.kind, 0.0), s)
+    }
+
+    pub fn cmp(&mut self, op: B, left: Handle<Expression>, right: Handle<Expression>) -> Handle<Expression> {
+        self.add(Expression::Binary { op, left, right })
+    }
+
+    /// A scalar `bool`: some component of the comparison holds.
+    pub fn any(&mut self, b: Handle<Expression>, s: Shape) -> Handle<Expression> {
+        match s.size {
+            Some(_) => self.add(Expression::Relational { fun: RelationalFunction::Any, argument: b }),
+            None => b,
+        }
+    }
+
+    pub fn any_cmp(&mut self, op: B, left: Handle<Expression>, right: Handle<Expression>, s: Shape) -> Handle<Expression> {
+        let c = self.cmp(op, left, right);
+        self.any(c, s)
+    }
+
+    /// Some component of a signed integer is negative (never, for an unsigned one).
+    pub fn any_sign(&mut self, x: Handle<Expression>, s: Shape) -> Handle<Expression> {
+        if s.kind != ScalarKind::Sint {
+            return self.add(Expression::Literal(Literal::Bool(false)));
+        }
+        let zero = self.zero(s);
+        self.any_cmp(B::Less, x, zero, s)
+    }
+
+    /// `mask |= 1u << bit`.
+    pub fn mark(&mut self, mask: Handle<naga::GlobalVariable>, bit: u32) {
+        let ptr = self.add(Expression::GlobalVariable(mask));
+        let now = self.add(Expression::Load { pointer: ptr });
+        let one = self.add(Expression::Literal(Literal::U32(1 << bit)));
+        let value = self.add(Expression::Binary { op: B::InclusiveOr, left: now, right: one });
+        self.stmt(Statement::Store { pointer: ptr, value });
+    }
+
+    pub fn set_u32(&mut self, var: Handle<naga::GlobalVariable>, x: u32) {
+        let ptr = self.add(Expression::GlobalVariable(var));
+        let value = self.add(Expression::Literal(Literal::U32(x)));
+        self.stmt(Statement::Store { pointer: ptr, value });
+    }
 }

@@ -15,10 +15,7 @@
 
 use std::ops::Range;
 
-use naga::{
-    BinaryOperator as B, Block, Expression, Function, Handle, Literal, MathFunction as M, RelationalFunction, ScalarKind, Span, Statement,
-    TypeInner, VectorSize,
-};
+use naga::{BinaryOperator as B, Block, Expression, Function, Handle, Literal, MathFunction as M, ScalarKind, Statement, TypeInner};
 
 use crate::back::Translation;
 use crate::diag::{Code, FileId};
@@ -27,7 +24,8 @@ use crate::front::program::CompiledProgram;
 use crate::manifest::Effect;
 use crate::stage::StageKind;
 use crate::stress::ir::{
-    count_at_every_exit, counts_buffer, entries, free_binding, map_blocks, private_u32, reachable, revalidate, stage_texts, types_of,
+    count_at_every_exit, counts_buffer, entries, free_binding, literal, map_blocks, private_u32, reachable, revalidate, stage_texts,
+    types_of, Builder, Shape,
 };
 
 /// Warnings one instrumented module tests at most (one bit each).
@@ -54,6 +52,8 @@ pub struct Wanted {
 pub struct Sites {
     /// For bit `k`, the index of its warning in the wanted list.
     pub bits: Vec<usize>,
+    /// Warnings whose operation was found after [`MAX_SITES`] others: not instrumented.
+    pub crowded: Vec<usize>,
     /// The instrumented entry points and the first slot of their region.
     pub regions: Vec<(StageKind, u32)>,
     pub slots: u32,
@@ -150,23 +150,7 @@ pub fn instrument_translation(
     // The operations of each warning: those at its very span; else those inside it (a
     // front may place a chain `a / b / c` differently, and the divisor the warning means is
     // one of them); else the best overlap.
-    let mut bits: Vec<usize> = Vec::new();
-    let mut chosen: Vec<(Place, Handle<Expression>, u32)> = Vec::new();
-    for w in 0..wanted.len() {
-        let mine: Vec<&Found> = found.iter().filter(|f| f.wanted == w).collect();
-        let best = mine.iter().map(|f| f.score).fold(0.0, f64::max);
-        let pick: Vec<&Found> = match (best == 2.0, mine.iter().any(|f| f.inside)) {
-            (true, _) => mine.into_iter().filter(|f| f.score == 2.0).collect(),
-            (false, true) => mine.into_iter().filter(|f| f.inside).collect(),
-            (false, false) => mine.into_iter().filter(|f| f.score == best).collect(),
-        };
-        if pick.is_empty() || bits.len() == MAX_SITES {
-            continue;
-        }
-        let bit = bits.len() as u32;
-        bits.push(w);
-        chosen.extend(pick.into_iter().map(|f| (f.place, f.h, bit)));
-    }
+    let (bits, crowded, chosen) = choose(&found, wanted.len());
     let module = &mut t.module;
     let reached = private_u32(module, "effectc_sites_reached");
     let held = private_u32(module, "effectc_sites_held");
@@ -208,8 +192,40 @@ pub fn instrument_translation(
         count_at_every_exit(module, entry, &|fun, out| push_counts(fun, out, (reached, held), counts, base, n));
     }
     revalidate(t, program, effect)?;
-    Ok(Sites { bits, regions, slots: width * entries.len() as u32 })
+    Ok(Sites { bits, crowded, regions, slots: width * entries.len() as u32 })
 }
+
+/// The operations each warning gets, with its bit: `(bits, crowded, chosen)`, where
+/// `bits[k]` is the warning of bit `k`, `crowded` the warnings past [`MAX_SITES`], and
+/// `chosen` every (function, operation, bit) to instrument.
+fn choose(found: &[Found], wanted: usize) -> (Vec<usize>, Vec<usize>, Vec<Chosen>) {
+    let mut bits: Vec<usize> = Vec::new();
+    let mut crowded: Vec<usize> = Vec::new();
+    let mut chosen: Vec<Chosen> = Vec::new();
+    for w in 0..wanted {
+        let mine: Vec<&Found> = found.iter().filter(|f| f.wanted == w).collect();
+        let best = mine.iter().map(|f| f.score).fold(0.0, f64::max);
+        let pick: Vec<&Found> = match (best == 2.0, mine.iter().any(|f| f.inside)) {
+            (true, _) => mine.into_iter().filter(|f| f.score == 2.0).collect(),
+            (false, true) => mine.into_iter().filter(|f| f.inside).collect(),
+            (false, false) => mine.into_iter().filter(|f| f.score == best).collect(),
+        };
+        if pick.is_empty() {
+            continue;
+        }
+        if bits.len() == MAX_SITES {
+            crowded.push(w);
+            continue;
+        }
+        let bit = bits.len() as u32;
+        bits.push(w);
+        chosen.extend(pick.into_iter().map(|f| (f.place, f.h, bit)));
+    }
+    (bits, crowded, chosen)
+}
+
+/// An operation to instrument: its function, its expression, its bit.
+type Chosen = (Place, Handle<Expression>, u32);
 
 /// A function of the module: one it declares, or an entry point's.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -486,134 +502,6 @@ impl Ctx<'_> {
     }
 }
 
-/// The scalar kind and vector size of a value.
-#[derive(Debug, Clone, Copy)]
-struct Shape {
-    kind: ScalarKind,
-    size: Option<VectorSize>,
-}
-
-impl Shape {
-    fn of(ty: Option<&TypeInner>) -> Shape {
-        match ty {
-            Some(TypeInner::Vector { size, scalar }) => Shape { kind: scalar.kind, size: Some(*size) },
-            Some(TypeInner::Scalar(s)) => Shape { kind: s.kind, size: None },
-            _ => Shape { kind: ScalarKind::Float, size: None },
-        }
-    }
-}
-
-fn literal(kind: ScalarKind, x: f64) -> Literal {
-    match kind {
-        ScalarKind::Sint => Literal::I32(x as i32),
-        ScalarKind::Uint => Literal::U32(x as u32),
-        _ => Literal::F32(x as f32),
-    }
-}
-
-/// Appends expressions to a function, emitting them in ranges of what may be emitted, and
-/// gathers the statements that evaluate them.
-struct Builder<'f> {
-    fun: &'f mut Function,
-    out: Block,
-    range: Option<(Handle<Expression>, Handle<Expression>)>,
-}
-
-impl<'f> Builder<'f> {
-    fn new(fun: &'f mut Function) -> Self {
-        Builder { fun, out: Block::new(), range: None }
-    }
-
-    fn add(&mut self, e: Expression) -> Handle<Expression> {
-        let pre = e.needs_pre_emit();
-        if pre {
-            self.flush();
-        }
-        let h = self.fun.expressions.append(e, Span::UNDEFINED);
-        if !pre {
-            self.range = Some((self.range.map_or(h, |r| r.0), h));
-        }
-        h
-    }
-
-    fn flush(&mut self) {
-        if let Some((first, last)) = self.range.take() {
-            self.out.push(Statement::Emit(naga::Range::new_from_bounds(first, last)), Span::UNDEFINED);
-        }
-    }
-
-    fn stmt(&mut self, s: Statement) {
-        self.flush();
-        self.out.push(s, Span::UNDEFINED);
-    }
-
-    fn finish(mut self) -> Block {
-        self.flush();
-        self.out
-    }
-
-    fn math(&mut self, fun: M, arg: Handle<Expression>, arg1: Option<Handle<Expression>>) -> Handle<Expression> {
-        self.add(Expression::Math { fun, arg, arg1, arg2: None, arg3: None })
-    }
-
-    fn splat(&mut self, l: Literal, s: Shape) -> Handle<Expression> {
-        let value = self.add(Expression::Literal(l));
-        match s.size {
-            Some(size) => self.add(Expression::Splat { size, value }),
-            None => value,
-        }
-    }
-
-    fn splat_f32(&mut self, x: f32, s: Shape) -> Handle<Expression> {
-        self.splat(Literal::F32(x), s)
-    }
-
-    fn zero(&mut self, s: Shape) -> Handle<Expression> {
-        self.splat(literal(s.kind, 0.0), s)
-    }
-
-    fn cmp(&mut self, op: B, left: Handle<Expression>, right: Handle<Expression>) -> Handle<Expression> {
-        self.add(Expression::Binary { op, left, right })
-    }
-
-    /// A scalar `bool`: some component of the comparison holds.
-    fn any(&mut self, b: Handle<Expression>, s: Shape) -> Handle<Expression> {
-        match s.size {
-            Some(_) => self.add(Expression::Relational { fun: RelationalFunction::Any, argument: b }),
-            None => b,
-        }
-    }
-
-    fn any_cmp(&mut self, op: B, left: Handle<Expression>, right: Handle<Expression>, s: Shape) -> Handle<Expression> {
-        let c = self.cmp(op, left, right);
-        self.any(c, s)
-    }
-
-    /// Some component of a signed integer is negative (never, for an unsigned one).
-    fn any_sign(&mut self, x: Handle<Expression>, s: Shape) -> Handle<Expression> {
-        if s.kind != ScalarKind::Sint {
-            return self.add(Expression::Literal(Literal::Bool(false)));
-        }
-        let zero = self.zero(s);
-        self.any_cmp(B::Less, x, zero, s)
-    }
-
-    /// `mask |= 1u << bit`.
-    fn mark(&mut self, mask: Handle<naga::GlobalVariable>, bit: u32) {
-        let ptr = self.add(Expression::GlobalVariable(mask));
-        let now = self.add(Expression::Load { pointer: ptr });
-        let one = self.add(Expression::Literal(Literal::U32(1 << bit)));
-        let value = self.add(Expression::Binary { op: B::InclusiveOr, left: now, right: one });
-        self.stmt(Statement::Store { pointer: ptr, value });
-    }
-
-    fn set_u32(&mut self, var: Handle<naga::GlobalVariable>, x: u32) {
-        let ptr = self.add(Expression::GlobalVariable(var));
-        let value = self.add(Expression::Literal(Literal::U32(x)));
-        self.stmt(Statement::Store { pointer: ptr, value });
-    }
-}
-
 /// At an exit: one invocation, and per bit whether it reached the site and whether the
 /// condition held there.
 fn push_counts(
@@ -651,6 +539,7 @@ fn push_counts(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use naga::Span;
 
     #[test]
     fn spans_match_best_when_equal_then_by_shared_share() {
@@ -662,7 +551,8 @@ mod tests {
 
     #[test]
     fn counts_split_into_invocations_reached_and_held_per_bit() {
-        let sites = Sites { bits: vec![3, 0], regions: vec![(StageKind::Vertex, 0), (StageKind::Fragment, 5)], slots: 10 };
+        let sites =
+            Sites { bits: vec![3, 0], crowded: Vec::new(), regions: vec![(StageKind::Vertex, 0), (StageKind::Fragment, 5)], slots: 10 };
         let counts = sites.read(&[36, 36, 0, 9, 9, 100, 0, 0, 100, 7]);
         assert_eq!(counts[0], Counted { stage: StageKind::Vertex, invocations: 36, reached: vec![36, 9], held: vec![0, 9] });
         assert_eq!(counts[1], Counted { stage: StageKind::Fragment, invocations: 100, reached: vec![0, 100], held: vec![0, 7] });

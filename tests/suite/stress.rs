@@ -250,3 +250,34 @@ float d = 1.0 / (SHIFT - 4.0);\n    color = vec4(float(k), float(m), d, 1.0);\n}
     let plain = effectc(&["check", &files[0], &files[1]]);
     assert_eq!(code(&plain), 0, "{}", stdout(&plain));
 }
+
+#[test]
+fn confirm_instruments_the_first_32_warnings_and_says_so_of_the_rest() {
+    if !have_gpu() {
+        return;
+    }
+    // 36 divisions by `P - k`: one bit each for the first 32, the other 4 are named untested
+    // with the reason (not "not in the translation").
+    let dir = scratch("stress", "confirm-crowded");
+    std::fs::write(
+        dir.join("many.vert"),
+        "#version 330\nlayout(location = 0) in vec2 position;\nvoid main() { gl_Position = vec4(position, 0.0, 1.0); }\n",
+    )
+    .unwrap();
+    let lines: String = (1..=36).map(|k| format!("    a += 1.0 / (P - {k}.0);\n")).collect();
+    std::fs::write(
+        dir.join("many.frag"),
+        format!("#version 330\n#pragma parameter P \"P\" 0.0 0.0 40.0 1.0\nuniform float P;\nout vec4 color;\nvoid main()\n{{\n    float a = 0.0;\n{lines}    color = vec4(a);\n}}\n"),
+    )
+    .unwrap();
+    let files = [dir.join("many.vert"), dir.join("many.frag")].map(|p| p.to_str().unwrap().to_string());
+    let json = stdout(&effectc(&["stress", "--confirm", "--format", "json", "--size", "16x16", &files[0], &files[1]]));
+    let doc: serde_json::Value = serde_json::from_str(&json).unwrap_or_else(|e| panic!("{e}:\n{json}"));
+    let hazards = doc["programs"][0]["hazards"].as_array().expect("hazards");
+    assert_eq!(hazards.len(), 36, "{json}");
+    let untested: Vec<&serde_json::Value> = hazards.iter().filter(|h| h["verdict"] == "untested").collect();
+    assert_eq!(untested.len(), 4, "{json}");
+    assert!(untested.iter().all(|h| h["reason"] == "more than 32 warnings in one program: the first 32 are tested"), "{json}");
+    // P's defaults and grid points divide by zero where P - k meets them (P = 0 never does).
+    assert!(hazards.iter().any(|h| h["verdict"] == "confirmed"), "{json}");
+}
