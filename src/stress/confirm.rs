@@ -376,40 +376,50 @@ fn location(files: &crate::diag::Files, d: &Diagnostic) -> String {
     format!("{}:{line}", crate::diag::paths::display_path(files.path(file), cwd.as_deref()))
 }
 
-/// What the condition of a warning is, as a run sees it.
-fn condition(code: Code) -> String {
-    match code {
-        Code::HazardDivision => "the divisor was 0 (or a denormal, which GPUs flush to 0)".into(),
-        Code::HazardAsin => "the argument left [-1, 1]".into(),
-        Code::HazardSqrt => "the argument was negative".into(),
-        Code::HazardLog | Code::HazardInverseSqrt => "the argument was 0 or negative".into(),
-        Code::HazardPow => "the base was negative, or 0 with a power <= 0".into(),
-        Code::HazardNormalize => "the vector was zero".into(),
-        Code::HazardTrig => "the argument was past 1e4 rad".into(),
-        Code::HazardSinHash => "a sin within GLSL's allowed error (±2⁻¹¹) moves the hash by more than 0.1".into(),
-        Code::HazardCounterOverflow => format!("the loop was still running after {} iterations (the run left it there)", sites::LOOP_CAP),
-        Code::HazardNegativeRemainder => "an operand was negative".into(),
-        Code::HazardShift => "the amount was negative or at least 32".into(),
-        Code::HazardAtan2 => "y and x were both 0".into(),
-        _ => "its condition held".into(),
-    }
+/// The condition of a warning as a run sees it: (as it held, as it was never seen).
+fn phrases(code: Code) -> (String, String) {
+    let (held, never): (&str, &str) = match code {
+        Code::HazardDivision => ("the divisor was 0 (or a denormal, which GPUs flush to 0)", "was the divisor 0"),
+        Code::HazardAsin => ("the argument left [-1, 1]", "did the argument leave [-1, 1]"),
+        Code::HazardSqrt => ("the argument was negative", "was the argument negative"),
+        Code::HazardLog | Code::HazardInverseSqrt => ("the argument was 0 or negative", "was the argument 0 or negative"),
+        Code::HazardPow => ("the base was negative, or 0 with a power <= 0", "was the base negative, or 0 with a power <= 0"),
+        Code::HazardNormalize => ("the vector was zero", "was the vector zero"),
+        Code::HazardTrig => ("the argument was past 1e4 rad", "was the argument past 1e4 rad"),
+        Code::HazardSinHash => (
+            "a sin within GLSL's allowed error (±2⁻¹¹) moves the hash by more than 0.1",
+            "did a sin within GLSL's allowed error move the hash by more than 0.1",
+        ),
+        Code::HazardCounterOverflow => {
+            let cap = sites::LOOP_CAP;
+            return (
+                format!("the loop was still running after {cap} iterations (the run left it there)"),
+                format!("did the loop run {cap} iterations"),
+            );
+        }
+        Code::HazardNegativeRemainder => ("an operand was negative", "was an operand negative"),
+        Code::HazardShift => ("the amount was negative or at least 32", "was the amount negative or at least 32"),
+        Code::HazardAtan2 => ("y and x were both 0", "were y and x both 0"),
+        _ => ("its condition held", "did its condition hold"),
+    };
+    (held.to_string(), never.to_string())
 }
 
 /// The verdict as a note on the warning, and for a confirmed one error `E0703` at it.
 fn annotate(outcome: &mut Outcome, program: &str, d: &Diagnostic, t: &Tested, drawn: usize) {
     let stage = t.stage.as_deref().unwrap_or("");
+    let (held, never) = phrases(d.code);
     let note = match t.verdict {
         Verdict::Confirmed => format!(
             "`stress --confirm`: confirmed in case `{}`: {} in {} of {} {stage} invocations",
             t.case.as_deref().unwrap_or(""),
-            condition(d.code),
+            held,
             t.held,
             t.invocations
         ),
         Verdict::Refuted => format!(
             "`stress --confirm`: refuted: the operation ran in {} {stage} invocations over {drawn} cases, and never {}",
-            t.reached,
-            negated(d.code)
+            t.reached, never
         ),
         Verdict::Unreached => format!("`stress --confirm`: unreached: the operation did not run in any of {drawn} cases"),
         Verdict::Untested => format!("`stress --confirm`: untested: {}", t.reason.as_deref().unwrap_or("")),
@@ -422,7 +432,7 @@ fn annotate(outcome: &mut Outcome, program: &str, d: &Diagnostic, t: &Tested, dr
     }
     let (Some(file), Some(span)) = (d.file, d.span.clone()) else { return };
     let e = Diagnostic::new(Code::HazardConfirmed, format!("{program}: {} confirmed by a render: {}", d.code.as_str(), d.message))
-        .at(file, span, format!("{} in {} of {} {stage} invocations", condition(d.code), t.held, t.invocations))
+        .at(file, span, format!("{held} in {} of {} {stage} invocations", t.held, t.invocations))
         .with_note(format!(
             "case `{}`{}",
             t.case.as_deref().unwrap_or(""),
@@ -432,25 +442,6 @@ fn annotate(outcome: &mut Outcome, program: &str, d: &Diagnostic, t: &Tested, dr
         Some(h) => e.with_help(h.clone()),
         None => e,
     });
-}
-
-/// The condition of a warning, as never seen.
-fn negated(code: Code) -> String {
-    match code {
-        Code::HazardDivision => "was the divisor 0".into(),
-        Code::HazardAsin => "did the argument leave [-1, 1]".into(),
-        Code::HazardSqrt => "was the argument negative".into(),
-        Code::HazardLog | Code::HazardInverseSqrt => "was the argument 0 or negative".into(),
-        Code::HazardPow => "was the base negative, or 0 with a power <= 0".into(),
-        Code::HazardNormalize => "was the vector zero".into(),
-        Code::HazardTrig => "was the argument past 1e4 rad".into(),
-        Code::HazardSinHash => "did a sin within GLSL's allowed error move the hash by more than 0.1".into(),
-        Code::HazardCounterOverflow => format!("did the loop run {} iterations", sites::LOOP_CAP),
-        Code::HazardNegativeRemainder => "was an operand negative".into(),
-        Code::HazardShift => "was the amount negative or at least 32".into(),
-        Code::HazardAtan2 => "were y and x both 0".into(),
-        _ => "did its condition hold".into(),
-    }
 }
 
 /// The human table of one program's verdicts.
