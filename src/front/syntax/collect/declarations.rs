@@ -61,7 +61,7 @@ impl Collector<'_> {
                 let q = self.qualifiers(head.ty.qualifier.as_ref());
                 let layout_items = q.layout_items.clone();
                 let Quals { interp, centroid, invariant, storage, layout_span, layout, .. } = q;
-                if let (Some(a), Some(init)) = (&head.array_specifier, &head.initializer) {
+                if let (Some(a), Some(init)) = (head.array_specifier.as_ref().or(head.ty.ty.array_specifier.as_ref()), &head.initializer) {
                     self.unsized_from_initializer(a, init);
                 }
                 for t in &list.tail {

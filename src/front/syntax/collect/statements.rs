@@ -31,6 +31,10 @@ impl Collector<'_> {
                 }
                 if let Some(a) = &list.head.ty.ty.array_specifier {
                     self.array_exprs(a);
+                    // `ivec4[] n = ivec4[](…)`: the brackets on the type, sized the same way.
+                    if let Some(init) = &list.head.initializer {
+                        self.unsized_from_initializer(a, init);
+                    }
                 }
                 if let Some(a) = &list.head.array_specifier {
                     self.array_exprs(a);
