@@ -137,7 +137,11 @@ impl GlScene {
                 match replay.textures.get(&texture_name) {
                     Some(ReplayTexture::Target(target)) => target_samplers.push((s.unit, target.clone(), sampler.0)),
                     Some(t) => {
-                        let (target, texture) = upload(gl, t, sampler)?;
+                        // A rectangle sampler reads a rectangle texture, a 1D shadow sampler a
+                        // 1D one, where the translation reads 2D textures.
+                        let reshaped =
+                            super::uniforms::sampler_type(s.gl_type).filter(|t| matches!(*t, glow::TEXTURE_RECTANGLE | glow::TEXTURE_1D));
+                        let (target, texture) = upload(gl, t, sampler, reshaped)?;
                         textures.push(Bound { unit: s.unit, target, texture, owned: true });
                     }
                     None => {}
@@ -315,19 +319,30 @@ fn set_sampler(gl: &glow::Context, target: u32, (filter, wrap, compare): (Filter
     }
 }
 
-/// Creates the GL texture of `t` (with the same mip chain wgpu got) and its sampler state.
-fn upload(gl: &glow::Context, t: &ReplayTexture, sampler: (Filter, Wrap, bool)) -> Result<(u32, glow::Texture), String> {
+/// Creates the GL texture of `t` (with the same mip chain wgpu got) and its sampler state,
+/// as the target the program's sampler reads where that is not the translation's
+/// (`reshaped`): a rectangle texture has one level and clamps, as GL requires and as
+/// `render` samples the 2D texture it reads instead; a 1D depth texture is one row.
+fn upload(
+    gl: &glow::Context,
+    t: &ReplayTexture,
+    sampler: (Filter, Wrap, bool),
+    reshaped: Option<u32>,
+) -> Result<(u32, glow::Texture), String> {
+    let rect = reshaped == Some(glow::TEXTURE_RECTANGLE);
+    let sampler = if rect { (sampler.0, Wrap::Clamp, sampler.2) } else { sampler };
+    let target_of = |dimension: &str| reshaped.unwrap_or_else(|| texture_target(dimension));
     use glow::PixelUnpackData::Slice;
     // SAFETY: texture creation on the current context; slices sized by the images.
     unsafe {
         let texture = gl.create_texture()?;
         let target = match t {
             ReplayTexture::Image { image, dimension } => {
-                let target = texture_target(dimension);
+                let target = target_of(dimension);
                 gl.bind_texture(target, Some(texture));
                 // As `render` uploads: a mip chain for every 2D-based texture (arrays and cube
                 // maps too), one level for 1D and 3D.
-                let mipmapped = !matches!(target, glow::TEXTURE_1D | glow::TEXTURE_3D);
+                let mipmapped = !matches!(target, glow::TEXTURE_1D | glow::TEXTURE_3D | glow::TEXTURE_RECTANGLE);
                 let mut levels = vec![image.clone()];
                 if mipmapped {
                     levels.extend(image.mip_chain());
@@ -386,24 +401,20 @@ fn upload(gl: &glow::Context, t: &ReplayTexture, sampler: (Filter, Wrap, bool)) 
                 target
             }
             ReplayTexture::Depth { dimension } => {
-                let target = texture_target(dimension);
+                let target = target_of(dimension);
                 gl.bind_texture(target, Some(texture));
-                let one = 1.0f32.to_le_bytes();
-                let faces = if target == glow::TEXTURE_CUBE_MAP { 6 } else { 1 };
-                for face in 0..faces {
-                    let t = if faces == 6 { glow::TEXTURE_CUBE_MAP_POSITIVE_X + face } else { glow::TEXTURE_2D };
-                    gl.tex_image_2d(t, 0, glow::DEPTH_COMPONENT32F as i32, 1, 1, 0, glow::DEPTH_COMPONENT, glow::FLOAT, Slice(Some(&one)));
-                }
+                depth_placeholder(gl, target);
                 set_sampler(gl, target, sampler, false);
                 target
             }
             ReplayTexture::Integer { unsigned, dimension } => {
-                let target = texture_target(dimension);
+                let target = target_of(dimension);
                 gl.bind_texture(target, Some(texture));
                 let zeros = [0u8; 16];
                 let (internal, format) = if *unsigned { (glow::RGBA32UI, glow::RGBA_INTEGER) } else { (glow::RGBA32I, glow::RGBA_INTEGER) };
                 let ty = if *unsigned { glow::UNSIGNED_INT } else { glow::INT };
-                gl.tex_image_2d(glow::TEXTURE_2D, 0, internal as i32, 1, 1, 0, format, ty, Slice(Some(&zeros)));
+                let t = if rect { glow::TEXTURE_RECTANGLE } else { glow::TEXTURE_2D };
+                gl.tex_image_2d(t, 0, internal as i32, 1, 1, 0, format, ty, Slice(Some(&zeros)));
                 set_sampler(gl, target, (Filter::Nearest, Wrap::Clamp, false), false);
                 target
             }
@@ -429,6 +440,27 @@ fn texture_target(dimension: &str) -> u32 {
         "2d_array" => glow::TEXTURE_2D_ARRAY,
         "cube_array" => glow::TEXTURE_CUBE_MAP_ARRAY,
         _ => glow::TEXTURE_2D,
+    }
+}
+
+/// The depth placeholder `render` binds (one texel of depth 1.0, every face of a cube map)
+/// into the texture bound at `target`.
+fn depth_placeholder(gl: &glow::Context, target: u32) {
+    use glow::PixelUnpackData::Slice;
+    let one = 1.0f32.to_le_bytes();
+    let (internal, format, ty) = (glow::DEPTH_COMPONENT32F as i32, glow::DEPTH_COMPONENT, glow::FLOAT);
+    // SAFETY: the bound texture of the current context; one float of data.
+    unsafe {
+        match target {
+            glow::TEXTURE_CUBE_MAP => {
+                for face in 0..6 {
+                    gl.tex_image_2d(glow::TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, internal, 1, 1, 0, format, ty, Slice(Some(&one)));
+                }
+            }
+            glow::TEXTURE_1D => gl.tex_image_1d(target, 0, internal, 1, 0, format, ty, Slice(Some(&one))),
+            glow::TEXTURE_RECTANGLE => gl.tex_image_2d(target, 0, internal, 1, 1, 0, format, ty, Slice(Some(&one))),
+            _ => gl.tex_image_2d(glow::TEXTURE_2D, 0, internal, 1, 1, 0, format, ty, Slice(Some(&one))),
+        }
     }
 }
 

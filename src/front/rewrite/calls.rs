@@ -5,6 +5,7 @@
 use super::uses::combined_ctor;
 use super::Ctx;
 use crate::diag::{Code, Diagnostic};
+use crate::front::syntax::is_rect_sampler;
 use crate::front::syntax::Storage;
 use crate::stage::StageKind;
 
@@ -16,6 +17,12 @@ const LEGACY_FUNCTIONS: &[(&str, &str, bool)] = &[
     ("texture3D", "texture", false),
     ("textureCube", "texture", false),
     ("texture2DRect", "texture", false),
+    ("texture2DRectProj", "textureProj", false),
+    ("texture1DProj", "textureProj", false),
+    ("texture1DProjLod", "textureProjLod", false),
+    ("texture3DProj", "textureProj", false),
+    ("texture3DProjLod", "textureProjLod", false),
+    ("texture2DProjLodEXT", "textureProjLod", false),
     ("texture1DLod", "textureLod", false),
     ("texture2DLod", "textureLod", false),
     ("texture3DLod", "textureLod", false),
@@ -28,6 +35,14 @@ const LEGACY_FUNCTIONS: &[(&str, &str, bool)] = &[
     ("texture2DGradEXT", "textureGrad", false),
     ("shadow2D", "texture", true),
     ("shadow2DProj", "textureProj", true),
+    ("shadow2DLod", "textureLod", true),
+    ("shadow2DProjLod", "textureProjLod", true),
+    ("shadow1D", "texture", true),
+    ("shadow1DProj", "textureProj", true),
+    ("shadow1DLod", "textureLod", true),
+    ("shadow1DProjLod", "textureProjLod", true),
+    ("shadow2DRect", "texture", true),
+    ("shadow2DRectProj", "textureProj", true),
 ];
 
 impl Ctx<'_> {
@@ -75,7 +90,11 @@ impl Ctx<'_> {
                 }
                 continue;
             }
-            let implicit_lod = matches!(c.name.as_str(), "texture" | "texture2D" | "textureCube" | "texture3D" | "texture1D");
+            if self.reshaped_lookup(c) {
+                continue;
+            }
+            let implicit_lod =
+                matches!(c.name.as_str(), "texture" | "texture2D" | "textureCube" | "texture3D" | "texture1D" | "texture2DRect");
             if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && c.name == "textureOffset" && c.args.len() == 3 {
                 // textureOffset(s, P, offset) in a vertex stage: the base level, explicitly.
                 self.edits.replace(c.name_span.clone(), "textureLodOffset");
@@ -120,16 +139,109 @@ impl Ctx<'_> {
     /// For `texture(s, P)` on a 2D integer sampler `s` (a global or a parameter), the
     /// rewritten sampler expression.
     fn integer_sampler_text(&self, c: &crate::front::syntax::Call) -> Option<String> {
+        let (ty, text) = self.first_arg_text(c)?;
+        matches!(ty.as_str(), "isampler2D" | "usampler2D").then_some(text)
+    }
+
+    /// The user's type of the call's first argument (a sampler parameter, or a uniform
+    /// sampler that is no array) and the rewritten combined-sampler expression for it.
+    fn first_arg_text(&self, c: &crate::front::syntax::Call) -> Option<(String, String)> {
         let name = c.first_arg_name.as_deref()?;
-        let integer = |ty: &str| matches!(ty, "isampler2D" | "usampler2D" | "isampler2DRect" | "usampler2DRect");
         match self.first_arg_sampler(c)? {
-            FirstArg::Param(ty) => integer(&ty).then(|| format!("{}({name}, {name}_sampler)", combined_ctor(&ty))),
-            FirstArg::Global(g) if integer(&g.ty.base) && !g.ty.is_array() => {
+            FirstArg::Param(ty) => {
+                let text = format!("{}({name}, {name}_sampler)", combined_ctor(&ty));
+                Some((ty, text))
+            }
+            FirstArg::Global(g) if !g.ty.is_array() => {
                 let t = self.plan.texture(&g.name)?;
-                Some(format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name))
+                Some((t.user_ty.clone(), format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name)))
             }
             FirstArg::Global(_) => None,
         }
+    }
+
+    /// A lookup in a texture the rewrite reads as a 2D one ([`Self::rect_lookup`],
+    /// [`Self::shadow_1d_lookup`]). True when nothing else is left to rewrite.
+    fn reshaped_lookup(&mut self, c: &crate::front::syntax::Call) -> bool {
+        let Some((ty, sampler)) = self.first_arg_text(c) else { return false };
+        if ty == "sampler1DShadow" {
+            return self.shadow_1d_lookup(c);
+        }
+        is_rect_sampler(&ty) && self.rect_lookup(c, &ty, &sampler)
+    }
+
+    /// A comparison in a 1D depth texture (`sampler1DShadow`), which the rewrite reads as a
+    /// 2D one of one row: `P` = (s, unused, ref[, q]) becomes (s, 0.5, ref[, q]) with the row
+    /// scaled by a projective `q` (`effectc_shadow1d`); `textureSize` keeps the width.
+    fn shadow_1d_lookup(&mut self, c: &crate::front::syntax::Call) -> bool {
+        match c.name.as_str() {
+            "textureSize" => {
+                self.edits.insert(c.span.end, ".x");
+                true
+            }
+            "texture" | "textureProj" | "textureLod" | "textureProjLod" | "shadow1D" | "shadow1DProj" | "shadow1DLod"
+            | "shadow1DProjLod"
+                if c.args.len() >= 2 =>
+            {
+                self.edits.insert(c.args[1].start, "effectc_shadow1d(");
+                self.edits.insert(c.args[1].end, ")");
+                if !self.polyfills.contains(&"shadow1d") {
+                    self.polyfills.push("shadow1d");
+                }
+                false
+            }
+            _ => false,
+        }
+    }
+
+    /// A lookup in a rectangle texture (`sampler2DRect`, …), which the rewrite reads as a
+    /// 2D texture: its coordinates (and gradients) are in texels, so they are divided by
+    /// the texture's size (`effectc_rect`, which leaves a projective divisor and a depth
+    /// reference alone); `texelFetch` and `textureSize` get the level 0 that rectangle
+    /// textures have and 2D ones name; an integer one's `texture` fetches the texel under
+    /// `P`, as GL's NEAREST filtering does. True when nothing else is left to rewrite.
+    fn rect_lookup(&mut self, c: &crate::front::syntax::Call, ty: &str, sampler: &str) -> bool {
+        if c.args.len() < 2 && c.name != "textureSize" {
+            return false;
+        }
+        let scaled: &[usize] = match c.name.as_str() {
+            "textureSize" if c.args.len() == 1 => {
+                self.edits.insert(c.args[0].end, ", 0");
+                return true;
+            }
+            "texelFetch" | "texelFetchOffset" => {
+                self.edits.insert(c.args[1].end, ", 0");
+                return true;
+            }
+            "texture" | "texture2DRect" if c.args.len() == 2 && matches!(ty, "isampler2DRect" | "usampler2DRect") => {
+                self.edits.replace(c.name_span.clone(), "texelFetch");
+                self.edits.insert(c.args[1].start, "ivec2(");
+                self.edits.insert(c.args[1].end, "), 0");
+                return true;
+            }
+            "texture"
+            | "texture2DRect"
+            | "textureOffset"
+            | "textureProj"
+            | "texture2DRectProj"
+            | "textureProjOffset"
+            | "shadow2DRect"
+            | "shadow2DRectProj"
+            | "textureGather"
+            | "textureGatherOffset"
+            | "textureGatherOffsets" => &[1],
+            "textureGrad" | "textureGradOffset" | "textureProjGrad" | "textureProjGradOffset" if c.args.len() >= 4 => &[1, 2, 3],
+            _ => return false,
+        };
+        let size = format!("vec2(textureSize({sampler}, 0))");
+        for &i in scaled {
+            self.edits.insert(c.args[i].start, "effectc_rect(");
+            self.edits.insert(c.args[i].end, format!(", {size})"));
+        }
+        if !self.polyfills.contains(&"rect") {
+            self.polyfills.push("rect");
+        }
+        false
     }
 
     /// The declaration the call's first argument (a bare identifier) names: a parameter of

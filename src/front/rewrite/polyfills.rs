@@ -81,6 +81,19 @@ pub(super) fn definitions(used: &[&str]) -> String {
             }
             "uaddCarry" | "usubBorrow" | "umulExtended" | "imulExtended" | "modf" => integer_and_modf(&mut h, b),
             "frexp" => frexp(&mut h),
+            "shadow1d" => {
+                // A 1D depth lookup's (s, unused, ref[, q]) at the middle of a 2D texture's
+                // one row: t = 0.5, times q when the lookup is projective.
+                h.push_str("vec3 effectc_shadow1d(vec3 p) { return vec3(p.x, 0.5, p.z); }\n");
+                h.push_str("vec4 effectc_shadow1d(vec4 p) { return vec4(p.x, 0.5 * p.w, p.z, p.w); }\n");
+            }
+            "rect" => {
+                // A rectangle texture's texel coordinates as a 2D texture's: x and y divided
+                // by the size; a projective divisor or a depth reference left as it is.
+                h.push_str("vec2 effectc_rect(vec2 p, vec2 size) { return p / size; }\n");
+                h.push_str("vec3 effectc_rect(vec3 p, vec2 size) { return vec3(p.xy / size, p.z); }\n");
+                h.push_str("vec4 effectc_rect(vec4 p, vec2 size) { return vec4(p.xy / size, p.zw); }\n");
+            }
             "noise1" | "noise2" | "noise3" | "noise4" => {
                 let result = if *b == "noise1" { "float".to_string() } else { format!("vec{}", &b[5..]) };
                 for arg in ["float", "vec2", "vec3", "vec4"] {

@@ -293,10 +293,15 @@ pub(super) fn names_builtin(s: &StageSyntax, u: &crate::front::syntax::Use) -> b
     }
 }
 
-/// The combined-sampler constructor naga knows for a user's sampler type.
+/// The combined-sampler constructor naga knows for a user's sampler type (a rectangle
+/// texture is read as a 2D one, its coordinates scaled, and so is a 1D depth texture, at
+/// the middle of its one row: `calls::reshaped_lookup`).
 pub(super) fn combined_ctor(user_ty: &str) -> &str {
     match user_ty {
         "sampler2DRect" => "sampler2D",
+        "isampler2DRect" => "isampler2D",
+        "usampler2DRect" => "usampler2D",
+        "sampler2DRectShadow" | "sampler1DShadow" => "sampler2DShadow",
         other => other,
     }
 }

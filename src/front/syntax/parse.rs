@@ -292,6 +292,19 @@ mod tests {
     }
 
     #[test]
+    fn unsized_arrays_are_sized_by_their_initializers_with_brackets_on_the_name_or_the_type() {
+        // GLSL 1.20: `T[] x = T[](…)` (brackets on the type) is sized like `T x[] = T[](…)`.
+        let src =
+            "#version 120\nfloat[] g = float[](1.0, 2.0);\nvoid main() {\n    ivec4[] n = ivec4[](ivec4(0), ivec4(1), ivec4(2));\n    \
+                   float k[] = float[](0.5, 0.25, 0.125, 1.0);\n    gl_FragColor = vec4(g[1], k[3], float(n[2].x), 1.0);\n}\n";
+        let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::Auto).map_err(|d| d[0].message.clone()).expect("parses");
+        let mut sizes: Vec<u32> = s.unsized_sizes.iter().map(|(_, n)| *n).collect();
+        sizes.sort();
+        // Each declaration and each constructor: g (2, 2), n (3, 3), k (4, 4).
+        assert_eq!(sizes, [2, 2, 3, 3, 4, 4]);
+    }
+
+    #[test]
     fn a_macro_naming_a_function_like_macro_invokes_it() {
         // `#define M2 CUNNY_M2` then `M2(…)`, at the top level and inside another macro's
         // arguments: C's rescanning (vendor/glsl-lang-pp/PATCHED.md).

@@ -120,6 +120,13 @@ pub fn dims_text(ty: &GlslType) -> String {
     ty.dims.iter().map(|d| d.map_or("[]".to_string(), |n| format!("[{n}]"))).collect()
 }
 
+/// Whether a sampler type reads a rectangle texture (`ARB_texture_rectangle`, GLSL 1.40):
+/// coordinates in texels, one level, clamped at the edges. effectc reads it as a 2D
+/// texture with its coordinates scaled.
+pub fn is_rect_sampler(base: &str) -> bool {
+    matches!(base, "sampler2DRect" | "isampler2DRect" | "usampler2DRect" | "sampler2DRectShadow")
+}
+
 /// For a combined sampler type, the separate texture type and sampler type naga wants.
 pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
     Some(match base {
@@ -131,6 +138,8 @@ pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
         "samplerCubeArray" => ("textureCubeArray", "sampler"),
         "sampler2DMS" => ("texture2DMS", "sampler"),
         "sampler2DShadow" => ("texture2D", "samplerShadow"),
+        // WGSL has no 1D depth texture: a 2D one of one row (`calls::reshaped_lookup`).
+        "sampler1DShadow" => ("texture2D", "samplerShadow"),
         "samplerCubeShadow" => ("textureCube", "samplerShadow"),
         "sampler2DArrayShadow" => ("texture2DArray", "samplerShadow"),
         "isampler2D" => ("itexture2D", "sampler"),
@@ -142,6 +151,9 @@ pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
         "usamplerCube" => ("utextureCube", "sampler"),
         "usampler2DArray" => ("utexture2DArray", "sampler"),
         "sampler2DRect" => ("texture2D", "sampler"),
+        "isampler2DRect" => ("itexture2D", "sampler"),
+        "usampler2DRect" => ("utexture2D", "sampler"),
+        "sampler2DRectShadow" => ("texture2D", "samplerShadow"),
         "samplerBuffer" => ("textureBuffer", "sampler"),
         _ => return None,
     })

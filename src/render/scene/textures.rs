@@ -86,15 +86,19 @@ impl Textures {
                     views.insert(b.name.clone(), view);
                 }
                 "sampler" | "comparison_sampler" => {
-                    let user = program_plan.textures.iter().find(|t| t.sampler_name == b.name).map(|t| t.user_name.clone());
+                    let texture = program_plan.textures.iter().find(|t| t.sampler_name == b.name);
+                    let user = texture.map(|t| t.user_name.clone());
+                    // A rectangle texture (read as 2D) has one level and clamps, as in GL.
+                    let rect = texture.is_some_and(|t| crate::front::syntax::is_rect_sampler(&t.user_ty));
                     let decl = user.as_deref().and_then(|u| input.effect.and_then(|e| e.texture(u)));
                     let target = user.as_deref().and_then(|u| input.pass.as_ref()?.sampled.get(u));
                     let (filter, wrap) = match target {
                         // Targets are read like GL render textures: clamped at the edges.
                         Some((_, filter, _)) => (*filter, Wrap::Clamp),
+                        None if rect => (decl.map(|d| d.filter).unwrap_or_default(), Wrap::Clamp),
                         None => decl.map(|d| (d.filter, d.wrap)).unwrap_or_default(),
                     };
-                    samplers.insert(b.name.clone(), sampler(gpu, filter, wrap, b.kind == "comparison_sampler"));
+                    samplers.insert(b.name.clone(), sampler(gpu, (filter, wrap, rect), b.kind == "comparison_sampler"));
                     replay_samplers.insert(b.name.clone(), (filter, wrap, b.kind == "comparison_sampler"));
                 }
                 _ => {}
@@ -267,7 +271,8 @@ fn integer_placeholder(gpu: &Gpu, b: &BindingInfo) -> wgpu::TextureView {
     texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
 }
 
-fn sampler(gpu: &Gpu, filter: Filter, wrap: Wrap, comparison: bool) -> wgpu::Sampler {
+/// A sampler with `filter` and `wrap`, reading the base level only when `level0`.
+fn sampler(gpu: &Gpu, (filter, wrap, level0): (Filter, Wrap, bool), comparison: bool) -> wgpu::Sampler {
     let mode = match filter {
         Filter::Linear => wgpu::FilterMode::Linear,
         Filter::Nearest => wgpu::FilterMode::Nearest,
@@ -289,6 +294,7 @@ fn sampler(gpu: &Gpu, filter: Filter, wrap: Wrap, comparison: bool) -> wgpu::Sam
             Filter::Nearest => wgpu::MipmapFilterMode::Nearest,
         },
         compare: comparison.then_some(wgpu::CompareFunction::LessEqual),
+        lod_max_clamp: if level0 { 0.0 } else { 32.0 },
         ..Default::default()
     })
 }
