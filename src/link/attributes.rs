@@ -1,6 +1,6 @@
 //! `effect.toml` against the vertex stage's inputs: every name in `[mesh.attributes]` and
-//! `[instances.attributes]` is a vertex input, no input is fed by both, and per-instance
-//! values have no more components than the input holds.
+//! `[instances.attributes]` is a vertex input, no input is fed by both, and the manifest's
+//! own per-vertex and per-instance values have no more components than the input holds.
 
 use super::list;
 use crate::diag::{Code, Diagnostic};
@@ -51,11 +51,21 @@ pub fn check(effect: &Effect, stages: &[StageSyntax]) -> Vec<Diagnostic> {
         }
         out.push(d);
     };
+    // (input, where the manifest names it) of every input fed per vertex.
+    let mut per_vertex: Vec<(&str, std::ops::Range<usize>)> = Vec::new();
     if let Some(mesh) = &effect.mesh {
         for ((name, _), span) in mesh.attributes.iter().zip(&mesh.attribute_spans) {
             if !names.contains(&name.as_str()) {
                 unknown(name, span.clone(), "mesh.attributes", &mut out);
             }
+            per_vertex.push((name, span.clone()));
+        }
+        for a in &mesh.values {
+            match inputs.iter().find(|(name, _)| *name == a.input) {
+                None => unknown(&a.input, a.input_span.clone(), "mesh.attributes", &mut out),
+                Some((_, n)) => out.extend(too_many_components(effect, a, *n, "vertex")),
+            }
+            per_vertex.push((&a.input, a.input_span.clone()));
         }
     }
     let Some(instances) = &effect.instances else { return out };
@@ -64,26 +74,28 @@ pub fn check(effect: &Effect, stages: &[StageSyntax]) -> Vec<Diagnostic> {
             unknown(&a.input, a.input_span.clone(), "instances.attributes", &mut out);
             continue;
         };
-        if let Some(mesh) = &effect.mesh {
-            if let Some(i) = mesh.attributes.iter().position(|(name, _)| *name == a.input) {
-                out.push(
-                    Diagnostic::new(Code::AttributeConflict, format!("vertex input `{}` is fed both per vertex and per instance", a.input))
-                        .at(effect.file, a.input_span.clone(), "per instance here")
-                        .with_label(effect.file, mesh.attribute_spans[i].clone(), "per vertex here")
-                        .with_help("keep one of the two entries"),
-                );
-                continue;
-            }
-        }
-        if *n > 0 && a.components > *n {
+        if let Some((_, span)) = per_vertex.iter().find(|(name, _)| *name == a.input) {
             out.push(
-                Diagnostic::new(
-                    Code::AttributeConflict,
-                    format!("`{}` gets {} components per instance but the input holds {n}", a.input, a.components),
-                )
-                .at(effect.file, a.input_span.clone(), "too many components"),
+                Diagnostic::new(Code::AttributeConflict, format!("vertex input `{}` is fed both per vertex and per instance", a.input))
+                    .at(effect.file, a.input_span.clone(), "per instance here")
+                    .with_label(effect.file, span.clone(), "per vertex here")
+                    .with_help("keep one of the two entries"),
             );
+            continue;
         }
+        out.extend(too_many_components(effect, a, *n, "instance"));
     }
     out
+}
+
+/// The manifest gives `a` more components per `element` (vertex, instance) than its input
+/// holds (`n`; 0 when unknown).
+fn too_many_components(effect: &Effect, a: &crate::manifest::InstanceAttribute, n: usize, element: &str) -> Option<Diagnostic> {
+    (n > 0 && a.components > n).then(|| {
+        Diagnostic::new(
+            Code::AttributeConflict,
+            format!("`{}` gets {} components per {element} but the input holds {n}", a.input, a.components),
+        )
+        .at(effect.file, a.input_span.clone(), "too many components")
+    })
 }

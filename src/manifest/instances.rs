@@ -13,18 +13,20 @@ pub struct InstancesDecl {
     pub attributes: Vec<InstanceAttribute>,
 }
 
-/// One per-instance vertex input and where its values come from.
+/// One vertex input fed the manifest's own numbers, and where they come from: one value
+/// per instance (`[instances.attributes]`) or per vertex (a table in `[mesh.attributes]`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct InstanceAttribute {
     /// The vertex shader input it feeds.
     pub input: String,
     pub input_span: Range<usize>,
     pub source: InstanceSource,
-    /// Components per instance (1–4).
+    /// Components per value (1–4).
     pub components: usize,
 }
 
-/// Where per-instance values come from.
+/// Where per-instance (or per-vertex) values come from; `i` below is the instance's (or
+/// the vertex's) index.
 #[derive(Debug, Clone, PartialEq)]
 pub enum InstanceSource {
     /// Exactly `count` values (each 1–4 numbers).

@@ -14,6 +14,9 @@ pub struct MeshDecl {
     pub attributes: Vec<(String, MeshAttribute)>,
     /// Spans of the shader input names in `attributes`, index for index.
     pub attribute_spans: Vec<Range<usize>>,
+    /// Inputs fed the manifest's own numbers, one per vertex (`aBone = { values = […] }`,
+    /// `{ sequence = … }`, `{ random = … }`): data no mesh file holds, integers included.
+    pub values: Vec<super::InstanceAttribute>,
 }
 
 /// An attribute a mesh provides, which `[mesh.attributes]` can map a vertex input to.

@@ -228,6 +228,7 @@ impl Effect {
                 source: super::MeshSource::Builtin(super::BuiltinMesh::FullscreenTriangle),
                 attributes: pass.mesh.as_ref().map(|m| m.attributes.clone()).unwrap_or_default(),
                 attribute_spans: pass.mesh.as_ref().map(|m| m.attribute_spans.clone()).unwrap_or_default(),
+                values: pass.mesh.as_ref().map(|m| m.values.clone()).unwrap_or_default(),
             });
             view.render.depth_test = false;
         } else if let Some(m) = &pass.mesh {

@@ -769,6 +769,32 @@ aTint = { values = [[1, 0, 0], [0, 1, 0], [0, 0, 1]] }
 }
 
 #[test]
+fn mesh_attribute_tables_give_values_per_vertex() {
+    let dir = minimal_dir();
+    let text = minimal(
+        r#"
+[mesh]
+builtin = "quad"
+
+[mesh.attributes]
+aPos = "position"
+aBone = { values = [[0, 1], [1, 2], [2, 3], [3, 4]] }
+aPhase = { sequence = [0.5, 0.25] }
+aJitter = { random = [0, 1], seed = 9 }
+"#,
+    );
+    let mesh = run(&text, &dir).unwrap().mesh.unwrap();
+    assert_eq!(mesh.attributes, [("aPos".to_owned(), MeshAttribute::Position)]);
+    let names: Vec<(&str, usize)> = mesh.values.iter().map(|a| (a.input.as_str(), a.components)).collect();
+    assert_eq!(names, vec![("aBone", 2), ("aPhase", 1), ("aJitter", 1)]);
+    assert_eq!(&text[mesh.values[0].input_span.clone()], "aBone");
+    assert_eq!(mesh.values[2].source, InstanceSource::Random { lo: [0.0; 4], hi: [1.0, 0.0, 0.0, 0.0], seed: 9 });
+    // The vertex count is the mesh's: any length parses; a table needs one source.
+    let diags = errors(&minimal("[mesh]\nbuiltin = \"quad\"\n[mesh.attributes]\naBone = { value = [1] }\n"), &dir);
+    assert!(one(&diags, Code::ManifestUnknownKey).message.contains("`value`"), "{diags:?}");
+}
+
+#[test]
 fn instance_errors_point_at_their_values() {
     let dir = minimal_dir();
     let text = minimal(

@@ -9,7 +9,7 @@
 use crate::assets::attribute_names::by_name;
 use crate::assets::mesh::Mesh;
 use crate::back::reflect::InterfaceVar;
-use crate::manifest::MeshAttribute;
+use crate::manifest::{InstanceAttribute, MeshAttribute};
 
 /// Where one vertex input's data comes from.
 #[derive(Debug, Clone, PartialEq)]
@@ -17,18 +17,24 @@ pub struct Choice {
     pub location: u32,
     pub input: String,
     pub format: wgpu::VertexFormat,
-    /// The mesh attribute, or `None` for zeros.
+    /// The mesh attribute, or `None` for zeros (or `values`).
     pub attribute: Option<MeshAttribute>,
+    /// The manifest's own numbers, one per vertex (`[mesh.attributes] x = { values = … }`).
+    pub values: Option<InstanceAttribute>,
     /// Why it was chosen, when the manifest did not say (`by its name`, `by its location`).
     pub guessed: Option<&'static str>,
 }
 
-/// Matches every input to a mesh attribute.
-pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, MeshAttribute)]) -> Vec<Choice> {
+/// Matches every input to a mesh attribute, or to the manifest's own per-vertex `values`.
+pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, MeshAttribute)], values: &[InstanceAttribute]) -> Vec<Choice> {
     inputs
         .iter()
         .map(|input| {
             let format = input_format(input);
+            if let Some(a) = values.iter().find(|a| a.input == input.name) {
+                let values = Some(a.clone());
+                return Choice { location: input.location, input: input.name.clone(), format, attribute: None, values, guessed: None };
+            }
             let given = explicit.iter().find(|(name, _)| *name == input.name).map(|(_, attr)| *attr);
             let (attribute, guessed) = match given {
                 Some(a) => (Some(a), None),
@@ -42,7 +48,7 @@ pub fn choose(inputs: &[InterfaceVar], explicit: &[(String, MeshAttribute)]) -> 
                     },
                 },
             };
-            Choice { location: input.location, input: input.name.clone(), format, attribute, guessed }
+            Choice { location: input.location, input: input.name.clone(), format, attribute, values: None, guessed }
         })
         .collect()
 }
@@ -131,15 +137,16 @@ pub fn instance_buffer(inputs: &[InterfaceVar], decl: &crate::manifest::Instance
     let mut bytes = Vec::with_capacity(decl.count as usize * stride as usize);
     for i in 0..decl.count {
         for ((_, a), attr) in fed.iter().zip(&attributes) {
-            push_vertex_value(&mut bytes, attr.format, instance_value(&a.source, i, a.components));
+            push_vertex_value(&mut bytes, attr.format, element_value(&a.source, i, a.components));
         }
     }
     Some(Interleaved { bytes, stride, attributes })
 }
 
-/// The value of one per-instance attribute for instance `i` (unused components 0, a fourth
-/// component 1 when the manifest gives three, like a position).
-fn instance_value(source: &crate::manifest::InstanceSource, i: u32, components: usize) -> [f32; 4] {
+/// The value of one attribute the manifest gives numbers for, for instance (or vertex) `i`
+/// (unused components 0, a fourth component 1 when the manifest gives three, like a
+/// position).
+fn element_value(source: &crate::manifest::InstanceSource, i: u32, components: usize) -> [f32; 4] {
     use crate::manifest::InstanceSource;
     let mut v = match source {
         InstanceSource::Values(values) => values.get(i as usize).copied().unwrap_or([0.0; 4]),
@@ -173,12 +180,21 @@ pub fn interleave(choices: &[Choice], mesh: &Mesh) -> Interleaved {
         for (c, column) in choices.iter().zip(&columns) {
             // An input nothing feeds reads zeros; a fixed-function one GL's current value.
             let unfed = crate::front::compat::attribute(&c.input).map_or([0.0; 4], |a| a.current);
-            let value = column.as_ref().and_then(|col| col.get(v)).copied().unwrap_or(unfed);
+            let value = vertex_value(c, column.as_deref(), v, unfed);
             push_vertex_value(&mut bytes, c.format, value);
         }
         bytes.resize(start + stride as usize, 0);
     }
     Interleaved { bytes, stride, attributes }
+}
+
+/// The value vertex `v` gives the input of `c`: the manifest's own number, else the mesh
+/// attribute's (`column`), else `unfed`.
+pub fn vertex_value(c: &Choice, column: Option<&[[f32; 4]]>, v: usize, unfed: [f32; 4]) -> [f32; 4] {
+    match &c.values {
+        Some(a) => element_value(&a.source, v as u32, a.components),
+        None => column.and_then(|col| col.get(v)).copied().unwrap_or(unfed),
+    }
 }
 
 /// Appends `value` converted to `format` (integers truncate; extra components dropped).
@@ -236,7 +252,7 @@ mod tests {
         let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Cube);
         let inputs = [input(0, "p0", "float32x3"), input(1, "weird", "float32x2"), input(2, "aNormal", "float32x3")];
         let explicit = vec![("p0".to_string(), MeshAttribute::Position)];
-        let c = choose(&inputs, &explicit);
+        let c = choose(&inputs, &explicit, &[]);
         assert_eq!((c[0].attribute, c[0].guessed), (Some(MeshAttribute::Position), None));
         assert_eq!((c[1].attribute, c[1].guessed), (Some(MeshAttribute::Uv), Some("by its location and type")));
         assert_eq!((c[2].attribute, c[2].guessed), (Some(MeshAttribute::Normal), Some("by its name")));

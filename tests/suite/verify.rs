@@ -296,6 +296,36 @@ fn gl_defaults_leave_unset_uniforms_at_zero_as_gl_does() {
     assert_eq!(png.get_pixel(8, 8).0, [128, 128, 128, 128]);
 }
 
+/// `[mesh.attributes]` tables feed vertex inputs of any type the manifest's own numbers, one
+/// per vertex (`values`, `sequence`, `random`), integers included: both drivers draw the same
+/// picture from them, and a `values` list of another length than the mesh's is an error.
+#[test]
+fn manifest_values_feed_vertex_inputs_of_any_type() {
+    if !can_verify() {
+        return;
+    }
+    let dir = scratch("verify-vertex-values", "program");
+    let out = effectc(&["verify", "tests/verify/vertex_values/effect.toml", "--size", "64x64", "--out", dir.join("o").to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let png = image::open(dir.join("o/vertex-values_0000.png")).unwrap().to_rgba8();
+    // Each triangle's flat `aIds` from its provoking vertex (ids.x 2 and 3, read as x / 4).
+    let (upper, lower) = (png.get_pixel(16, 16).0, png.get_pixel(48, 48).0);
+    assert_eq!((upper[0], lower[0]), (128, 191), "{upper:?} {lower:?}");
+    // The `sequence` interpolates across the quad; the `random` mask's w is 100..250.
+    assert_ne!(png.get_pixel(20, 44).0[2], png.get_pixel(44, 20).0[2]);
+    assert!(upper[3] >= 100 && lower[3] >= 100, "{upper:?} {lower:?}");
+    let bad = dir.join("bad");
+    std::fs::create_dir_all(&bad).unwrap();
+    for f in ["va.vert", "va.frag"] {
+        std::fs::copy(Path::new("tests/verify/vertex_values").join(f), bad.join(f)).unwrap();
+    }
+    let manifest = std::fs::read_to_string("tests/verify/vertex_values/effect.toml").unwrap().replace("[3, 7]]", "[3, 7], [1, 1]]");
+    std::fs::write(bad.join("effect.toml"), manifest).unwrap();
+    let wrong = effectc(&["render", bad.join("effect.toml").to_str().unwrap(), "--out", dir.join("w").to_str().unwrap()]);
+    assert_eq!(code(&wrong), 1, "{}", stdout(&wrong));
+    assert!(stdout(&wrong).contains("`mesh.attributes.aIds` has 5 values for a mesh of 4 vertices"), "{}", stdout(&wrong));
+}
+
 #[test]
 fn members_of_instance_named_blocks_take_values_by_gl_names() {
     // `uniform Block { vec4 a; } block_name;`: GL names the member `Block.a`; `--set` and the

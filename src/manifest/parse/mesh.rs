@@ -19,7 +19,7 @@ impl Ctx<'_> {
             DeValue::String(_) => {
                 let name = self.choice(v, "`mesh`", "builtin mesh", &builtin_choices)?;
                 let source = MeshSource::Builtin(builtin(name, None, None, None));
-                Some(MeshDecl { span: v.span(), source, attributes: Vec::new(), attribute_spans: Vec::new() })
+                Some(MeshDecl { span: v.span(), source, attributes: Vec::new(), attribute_spans: Vec::new(), values: Vec::new() })
             }
             DeValue::Table(t) => self.mesh_table(v, t, &builtin_choices),
             _ => {
@@ -27,6 +27,51 @@ impl Ctx<'_> {
                 None
             }
         }
+    }
+
+    /// `[mesh.attributes]`: each input mapped to a mesh attribute (with the input names'
+    /// spans), or fed the manifest's own numbers, one per vertex (a table). None after an
+    /// error.
+    #[allow(clippy::type_complexity)]
+    fn mesh_attributes(
+        &mut self,
+        v: &Val<'_>,
+        what: &str,
+    ) -> Option<(Vec<(String, MeshAttribute)>, Vec<Range<usize>>, Vec<crate::manifest::InstanceAttribute>)> {
+        let at = self.table(v, what)?;
+        let (mut attributes, mut spans, mut values) = (Vec::new(), Vec::new(), Vec::new());
+        let mut ok = true;
+        let choices: Vec<(&'static str, MeshAttribute)> = MeshAttribute::ALL.iter().map(|a| (a.name(), *a)).collect();
+        for (ak, av) in entries(at) {
+            let input = key(ak);
+            if !is_ident(input) || input.starts_with("gl_") {
+                self.report(
+                    Code::ManifestValue,
+                    ak.span(),
+                    format!("`{input}` is not a vertex shader input name"),
+                    "not a GLSL identifier",
+                );
+                ok = false;
+                continue;
+            }
+            if matches!(av.get_ref(), DeValue::Table(_)) {
+                // The manifest's own numbers, one per vertex (counted against the mesh when
+                // it is built).
+                match self.element_values("mesh.attributes", input, ak.span(), av, None) {
+                    Some(a) => values.push(a),
+                    None => ok = false,
+                }
+                continue;
+            }
+            match self.choice(av, &format!("`mesh.attributes.{input}`"), "mesh attribute", &choices) {
+                Some(attr) => {
+                    attributes.push((input.to_owned(), attr));
+                    spans.push(ak.span());
+                }
+                None => ok = false,
+            }
+        }
+        ok.then_some((attributes, spans, values))
     }
 
     fn mesh_table(&mut self, v: &Val<'_>, t: &DeTable<'_>, builtin_choices: &[(&'static str, &'static str)]) -> Option<MeshDecl> {
@@ -39,6 +84,7 @@ impl Ctx<'_> {
         let mut divisions = None;
         let mut attributes = Vec::new();
         let mut attribute_spans = Vec::new();
+        let mut values = Vec::new();
         for (k, v2) in entries(t) {
             let what = format!("`mesh.{}`", key(k));
             let what = what.as_str();
@@ -65,33 +111,14 @@ impl Ctx<'_> {
                     divisions = self.uint(v2, what, 1, MAX_MESH_DIVISIONS).map(|n| (n, k.span()));
                     ok &= divisions.is_some();
                 }
-                "attributes" => {
-                    let Some(at) = self.table(v2, what) else {
-                        ok = false;
-                        continue;
-                    };
-                    let choices: Vec<(&'static str, MeshAttribute)> = MeshAttribute::ALL.iter().map(|a| (a.name(), *a)).collect();
-                    for (ak, av) in entries(at) {
-                        let input = key(ak);
-                        if !is_ident(input) || input.starts_with("gl_") {
-                            self.report(
-                                Code::ManifestValue,
-                                ak.span(),
-                                format!("`{input}` is not a vertex shader input name"),
-                                "not a GLSL identifier",
-                            );
-                            ok = false;
-                            continue;
-                        }
-                        match self.choice(av, &format!("`mesh.attributes.{input}`"), "mesh attribute", &choices) {
-                            Some(attr) => {
-                                attributes.push((input.to_owned(), attr));
-                                attribute_spans.push(ak.span());
-                            }
-                            None => ok = false,
-                        }
+                "attributes" => match self.mesh_attributes(v2, what) {
+                    Some((a, spans, v)) => {
+                        attributes = a;
+                        attribute_spans = spans;
+                        values = v;
                     }
-                }
+                    None => ok = false,
+                },
                 other => {
                     self.unknown_key(other, k.span(), "in `[mesh]`", MESH_KEYS);
                     ok = false;
@@ -141,7 +168,7 @@ impl Ctx<'_> {
             (None, Some(path)) => MeshSource::Obj(path),
             (None, None) => return None,
         };
-        Some(MeshDecl { span: v.span(), source, attributes, attribute_spans })
+        Some(MeshDecl { span: v.span(), source, attributes, attribute_spans, values })
     }
 }
 

@@ -379,7 +379,7 @@ impl Ctx<'_> {
         if let Some(at) = attribute_table {
             let at = self.table(at, "`instances.attributes`")?;
             for (k, v2) in entries(at) {
-                match self.instance_attribute(key(k), k.span(), v2, count) {
+                match self.element_values("instances.attributes", key(k), k.span(), v2, Some(count)) {
                     Some(a) => attributes.push(a),
                     None => ok = false,
                 }
@@ -389,10 +389,19 @@ impl Ctx<'_> {
     }
 
     /// `input = { values = [...] }`, `{ random = [lo, hi], seed = n }` or
-    /// `{ sequence = [start, step] }`; `lo`, `hi`, `start`, `step` are numbers or vectors
-    /// of 1–4 numbers.
-    fn instance_attribute(&mut self, input: &str, input_span: Range<usize>, v: &Val<'_>, count: u32) -> Option<InstanceAttribute> {
-        let what = format!("`instances.attributes.{input}`");
+    /// `{ sequence = [start, step] }` in `section`; `lo`, `hi`, `start`, `step` are numbers or
+    /// vectors of 1–4 numbers. `count`: how many `values` an instance table needs (None: one
+    /// per vertex, counted when the mesh is built).
+    pub(super) fn element_values(
+        &mut self,
+        section: &str,
+        input: &str,
+        input_span: Range<usize>,
+        v: &Val<'_>,
+        count: Option<u32>,
+    ) -> Option<InstanceAttribute> {
+        let what = format!("`{section}.{input}`");
+        let per = if count.is_some() { "instance" } else { "vertex" };
         if !super::is_ident(input) || input.starts_with("gl_") {
             self.report(Code::ManifestValue, input_span, format!("`{input}` is not a vertex shader input name"), "not a GLSL identifier");
             return None;
@@ -409,11 +418,11 @@ impl Ctx<'_> {
                 "values" => {
                     sources += 1;
                     let DeValue::Array(items) = v2.get_ref() else {
-                        self.wrong_type(v2, &w, "an array with one value per instance");
+                        self.wrong_type(v2, &w, &format!("an array with one value per {per}"));
                         ok = false;
                         continue;
                     };
-                    if items.len() != count as usize {
+                    if let Some(count) = count.filter(|n| items.len() != *n as usize) {
                         self.report(
                             Code::ManifestValue,
                             v2.span(),
@@ -470,7 +479,7 @@ impl Ctx<'_> {
                     None => ok = false,
                 },
                 other => {
-                    self.unknown_key(other, k.span(), "in an instance attribute", INSTANCE_ATTRIBUTE_KEYS);
+                    self.unknown_key(other, k.span(), &format!("in {what}"), INSTANCE_ATTRIBUTE_KEYS);
                     ok = false;
                 }
             }

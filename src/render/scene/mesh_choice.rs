@@ -67,7 +67,7 @@ pub(super) fn choose_mesh(input: &PlanInput<'_>, warnings: &mut Vec<Diagnostic>)
     }
     let uses_matrices = transforms_positions(input.program);
     // A 2D position would flatten a cube's faces onto one plane, where they z-fight.
-    let flat_positions = attributes::choose(&r.vertex_inputs, &[])
+    let flat_positions = attributes::choose(&r.vertex_inputs, &[], &[])
         .iter()
         .any(|c| c.attribute == Some(MeshAttribute::Position) && c.format == wgpu::VertexFormat::Float32x2);
     let (mesh, note, what) = if uses_matrices && flat_positions {

@@ -69,10 +69,14 @@ pub(crate) fn plan<'a>(input: &PlanInput<'a>) -> Result<Plan<'a>, Vec<Diagnostic
     let mut warnings = Vec::new();
     let (mesh, mesh_note) = choose_mesh(input, &mut warnings)?;
     let explicit = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.attributes.clone()).unwrap_or_default();
+    let values = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.values.clone()).unwrap_or_default();
+    if let Some(e) = input.effect {
+        vertex_values_counted(e, &values, mesh.vertex_count())?;
+    }
     let instances = input.effect.and_then(|e| e.instances.as_ref());
     let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
     let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
-    let mut choices = attributes::choose(&per_vertex, &explicit);
+    let mut choices = attributes::choose(&per_vertex, &explicit, &values);
     // A full-screen pass draws effectc's triangle, whose attributes `position` and `uv` are
     // documented under those names: matching an input named so is the contract, not a guess.
     if input.pass.is_some() && matches!(mesh_note, MeshNote::Fullscreen) {
@@ -97,6 +101,31 @@ pub(crate) fn plan<'a>(input: &PlanInput<'a>) -> Result<Plan<'a>, Vec<Diagnostic
     let textures = textures(input, &mut warnings);
     let describe = describe(input, (&mesh_note, &mesh), &choices, &uniforms, &textures);
     Ok(Plan { mesh, mesh_note, choices, uniforms, textures, warnings, describe })
+}
+
+/// `[mesh.attributes] x = { values = […] }` gives exactly one value per vertex of the mesh
+/// drawn (known only once an OBJ file is read).
+fn vertex_values_counted(
+    effect: &crate::manifest::Effect,
+    values: &[crate::manifest::InstanceAttribute],
+    vertices: usize,
+) -> Result<(), Vec<Diagnostic>> {
+    let wrong: Vec<Diagnostic> = values
+        .iter()
+        .filter_map(|a| match &a.source {
+            crate::manifest::InstanceSource::Values(v) if v.len() != vertices => Some(
+                Diagnostic::new(Code::ManifestValue, format!("`mesh.attributes.{}` has {} values for a mesh of {vertices} vertices", a.input, v.len()))
+                    .at(effect.file, a.input_span.clone(), format!("expected {vertices} values"))
+                    .with_help("give one value per vertex (`effectc render --verbose` names the mesh and counts its vertices), or a `sequence` or `random` that needs no count"),
+            ),
+            _ => None,
+        })
+        .collect();
+    if wrong.is_empty() {
+        Ok(())
+    } else {
+        Err(wrong)
+    }
 }
 
 /// The source of every texture binding the program uses, and a warning for each placeholder.
@@ -159,7 +188,8 @@ fn describe(
         .map(|c| {
             let unfed = if crate::front::compat::attribute(&c.input).is_some() { "GL's current value" } else { "zeros" };
             let guess = if c.guessed.is_some() && c.attribute.is_some() { " (guessed)" } else { "" };
-            format!("{} ← {}{guess}", c.input, c.attribute.map_or(unfed, MeshAttribute::name))
+            let source = if c.values.is_some() { "the manifest's values" } else { c.attribute.map_or(unfed, MeshAttribute::name) };
+            format!("{} ← {source}{guess}", c.input)
         })
         .collect();
     if let Some(d) = instances {

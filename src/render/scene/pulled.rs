@@ -61,7 +61,7 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
     let mut vertices = Vec::with_capacity(vertex_count * choices.len() * 16);
     for v in 0..vertex_count {
         for (column, choice) in columns.iter().zip(choices) {
-            let value = column.as_ref().and_then(|col| col.get(v)).copied().unwrap_or([0.0; 4]);
+            let value = crate::render::attributes::vertex_value(choice, column.as_deref(), v, [0.0; 4]);
             // Integer inputs travel as their bit patterns (the stage reads floatBitsTo*Int).
             let bits = |x: f32| match choice.format {
                 F::Uint32 | F::Uint32x2 | F::Uint32x3 | F::Uint32x4 => (x.max(0.0) as u32).to_le_bytes(),
@@ -167,6 +167,7 @@ mod tests {
             input: "position".into(),
             format: wgpu::VertexFormat::Float32x3,
             attribute: Some(MeshAttribute::Position),
+            values: None,
             guessed: None,
         };
         let t = pulled(&draw("triangles", 3, 3), std::slice::from_ref(&position), &mesh, false);
