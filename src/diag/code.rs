@@ -148,6 +148,7 @@ codes! {
     PointCoordConstant => "N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU points are one pixel wide",
     LayerSelected => "N0105", "`gl_Layer`/`gl_ViewportIndex` select which primitives a draw keeps (WebGPU cannot route them)",
     ReferenceOnly => "N0106", "a stage the reference compiler accepts and effectc's own analysis cannot read: checked by glslang only",
+    TexelBufferAsStorage => "N0107", "a buffer texture (`samplerBuffer`) read from a read-only storage buffer: WebGPU has no buffer textures",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
     HazardAnalysisStopped => "N0701", "the static hazard analysis of a stage stopped at its work limit: its warnings are incomplete",
     // Warnings.

@@ -300,7 +300,12 @@ pub fn is_unblocked_opaque(base: &str) -> bool {
     let kinds = ["image", "texture", "subpassInput"];
     let of_kind = |b: &str| kinds.iter().any(|k| b.starts_with(k));
     let integer = base.strip_prefix('i').or_else(|| base.strip_prefix('u')).is_some_and(of_kind);
-    base == "atomic_uint" || base == "sampler" || base == "samplerShadow" || of_kind(base) || integer
+    base == "atomic_uint"
+        || base == "sampler"
+        || base == "samplerShadow"
+        || of_kind(base)
+        || integer
+        || crate::front::syntax::texel_buffer_element(base).is_some()
 }
 
 /// Builds the plan for a program (stages in pipeline order); `doubles_as_floats` as in
@@ -330,7 +335,9 @@ pub fn plan(stages: &[StageSyntax], doubles_as_floats: bool) -> Plan {
                 continue;
             }
             if is_unblocked_opaque(&g.ty.base) {
-                if !g.layout.iter().any(|(k, _)| k == "binding") {
+                // A buffer texture becomes a storage buffer in set 0 whatever its unit.
+                let texel_buffer = crate::front::syntax::texel_buffer_element(&g.ty.base).is_some();
+                if texel_buffer || !g.layout.iter().any(|(k, _)| k == "binding") {
                     plan.opaque.insert(g.name.clone(), 0);
                 }
                 continue;

@@ -90,7 +90,7 @@ impl Ctx<'_> {
                 }
                 continue;
             }
-            if self.reshaped_lookup(c) {
+            if self.texel_buffer_lookup(c) || self.reshaped_lookup(c) {
                 continue;
             }
             let implicit_lod =
@@ -157,6 +157,30 @@ impl Ctx<'_> {
                 Some((t.user_ty.clone(), format!("{}({}, {})", combined_ctor(&t.user_ty), t.name, t.sampler_name)))
             }
             FirstArg::Global(_) => None,
+        }
+    }
+
+    /// `texelFetch(s, P)` and `textureSize(s)` of a buffer texture `s` (a uniform, no
+    /// array), which the rewrite declares as a storage buffer of texels
+    /// (`declarations::texel_buffers`): `effectc_texels_s[int(P)]` and
+    /// `int(effectc_texels_s.length())`.
+    fn texel_buffer_lookup(&mut self, c: &crate::front::syntax::Call) -> bool {
+        let Some(FirstArg::Global(g)) = self.first_arg_sampler(c) else { return false };
+        if crate::front::syntax::texel_buffer_element(&g.ty.base).is_none() || g.ty.is_array() {
+            return false;
+        }
+        let texels = format!("effectc_texels_{}", g.name);
+        match (c.name.as_str(), c.args.len()) {
+            ("texelFetch", 2) => {
+                self.edits.replace(c.span.start..c.args[1].start, format!("{texels}[int("));
+                self.edits.replace(c.args[1].end..c.span.end, ")]");
+                true
+            }
+            ("textureSize", 1) => {
+                self.edits.replace(c.span.clone(), format!("int({texels}.length())"));
+                true
+            }
+            _ => false,
         }
     }
 

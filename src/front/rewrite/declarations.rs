@@ -37,6 +37,7 @@ impl Ctx<'_> {
             let decl = first.decl_span.clone();
             match first.storage {
                 Storage::Uniform | Storage::Buffer if first.block.is_some() => self.block_binding(first),
+                Storage::Uniform if crate::front::syntax::texel_buffer_element(&first.ty.base).is_some() => self.texel_buffers(decl, idxs),
                 Storage::Uniform if is_unblocked_opaque(&first.ty.base) => self.opaque_binding(first),
                 Storage::Uniform => self.loose_uniforms(decl, idxs),
                 Storage::In | Storage::Out | Storage::Attribute | Storage::Varying => {
@@ -77,6 +78,35 @@ impl Ctx<'_> {
             let binding = self.plan.user_blocks.get(&b.block_name).copied().unwrap_or(0);
             self.add_layout(first, &format!("set = 0, binding = {binding}"), "binding");
         }
+    }
+
+    /// Buffer textures (`uniform samplerBuffer s;`), which WebGPU lacks: each a read-only
+    /// storage buffer holding the array of its texels, `effectc_texels_s` (a block without
+    /// an instance name: naga's `.length()` of an instance's member loads the whole block;
+    /// lookups in `calls::texel_buffer_lookup`), at the plan's binding. Arrays of them are
+    /// left to naga.
+    fn texel_buffers(&mut self, decl: Range<usize>, idxs: Vec<usize>) {
+        let s = self.s;
+        if idxs.iter().any(|&i| s.globals[i].ty.is_array()) {
+            return;
+        }
+        let mut text = String::new();
+        for &i in &idxs {
+            let g = &s.globals[i];
+            let element = crate::front::syntax::texel_buffer_element(&g.ty.base).expect("a buffer texture");
+            let binding = self.plan.opaque.get(&g.name).copied().unwrap_or(0);
+            let _ = write!(
+                text,
+                "layout(std430, set = 0, binding = {binding}) readonly buffer effectc_texel_buffer_{name} {{ {element} effectc_texels_{name}[]; }};",
+                name = g.name
+            );
+            self.diags.push(
+                Diagnostic::new(Code::TexelBufferAsStorage, format!("buffer texture `{}` is read from a storage buffer", s.original_name(&g.name)))
+                    .at(s.file, g.name_span.clone(), "a buffer texture")
+                    .with_note("WebGPU has no buffer textures: `texelFetch` reads a read-only storage buffer of texels; `render` fills it with zeros, as GL reads a buffer texture with no buffer bound"),
+            );
+        }
+        self.edits.replace(decl, text);
     }
 
     /// An image, atomic counter or separate texture/sampler: the same, for opaque uniforms.

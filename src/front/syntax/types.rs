@@ -127,6 +127,17 @@ pub fn is_rect_sampler(base: &str) -> bool {
     matches!(base, "sampler2DRect" | "isampler2DRect" | "usampler2DRect" | "sampler2DRectShadow")
 }
 
+/// The texel type of a buffer texture (`samplerBuffer` → `vec4`): WebGPU has no buffer
+/// textures, so effectc reads one from a read-only storage buffer of such texels.
+pub fn texel_buffer_element(base: &str) -> Option<&'static str> {
+    Some(match base {
+        "samplerBuffer" => "vec4",
+        "isamplerBuffer" => "ivec4",
+        "usamplerBuffer" => "uvec4",
+        _ => return None,
+    })
+}
+
 /// For a combined sampler type, the separate texture type and sampler type naga wants.
 pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
     Some(match base {
@@ -154,7 +165,6 @@ pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
         "isampler2DRect" => ("itexture2D", "sampler"),
         "usampler2DRect" => ("utexture2D", "sampler"),
         "sampler2DRectShadow" => ("texture2D", "samplerShadow"),
-        "samplerBuffer" => ("textureBuffer", "sampler"),
         _ => return None,
     })
 }
