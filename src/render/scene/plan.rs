@@ -69,14 +69,15 @@ pub(crate) fn plan<'a>(input: &PlanInput<'a>) -> Result<Plan<'a>, Vec<Diagnostic
     let mut warnings = Vec::new();
     let (mesh, mesh_note) = choose_mesh(input, &mut warnings)?;
     let explicit = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.attributes.clone()).unwrap_or_default();
-    let values = input.effect.and_then(|e| e.mesh.as_ref()).map(|m| m.values.clone()).unwrap_or_default();
+    // Borrowed: a `values` list holds one entry per vertex of the mesh.
+    let values: &[crate::manifest::InstanceAttribute] = input.effect.and_then(|e| e.mesh.as_ref()).map_or(&[], |m| &m.values);
     if let Some(e) = input.effect {
-        vertex_values_counted(e, &values, mesh.vertex_count())?;
+        vertex_values_counted(e, values, mesh.vertex_count())?;
     }
     let instances = input.effect.and_then(|e| e.instances.as_ref());
     let per_instance = |name: &str| instances.is_some_and(|d| d.attributes.iter().any(|a| a.input == name));
     let per_vertex: Vec<_> = r.vertex_inputs.iter().filter(|v| !per_instance(&v.name)).cloned().collect();
-    let mut choices = attributes::choose(&per_vertex, &explicit, &values);
+    let mut choices = attributes::choose(&per_vertex, &explicit, values);
     // A full-screen pass draws effectc's triangle, whose attributes `position` and `uv` are
     // documented under those names: matching an input named so is the contract, not a guess.
     if input.pass.is_some() && matches!(mesh_note, MeshNote::Fullscreen) {
