@@ -72,6 +72,16 @@ impl Edits {
         out
     }
 
+    /// Moves `original[range]` out of its place: its text with the edits inside it applied
+    /// (as [`text_within`](Self::text_within)), which the caller writes elsewhere; the
+    /// range is deleted and the edits inside it go.
+    pub fn take_out(&mut self, original: &str, range: Range<usize>) -> String {
+        let text = self.text_within(original, range.clone());
+        self.edits.retain(|e| !(e.range.start >= range.start && e.range.end <= range.end));
+        self.delete(range);
+        text
+    }
+
     /// Apply to `original`. Overlapping edits are a bug in the caller: the later one (in
     /// offset order) is dropped rather than corrupting the output, and reported in the
     /// returned list so the caller can surface it.

@@ -21,9 +21,12 @@
 //!   with its errors at the user's lines.
 //! - [`parameters`]: `#pragma parameter` declarations (a host-set uniform and its range).
 //! - [`naga_run`]: naga parse + validate, panics contained, naga's limitations told from
-//!   errors with [`builtins`]; [`through_spirv`]: glslang → SPIR-V → naga, where naga's GLSL
-//!   front cannot take a stage glslang accepts; [`program`]: all of it per program.
+//!   errors with [`builtins`]; [`aggregate_varyings`]: the interpolation qualifiers naga's
+//!   GLSL front drops from struct and array varyings; [`through_spirv`]: glslang → SPIR-V →
+//!   naga, where naga's GLSL front cannot take a stage glslang accepts (as written, or from
+//!   the rewrite); [`program`]: all of it per program.
 
+pub mod aggregate_varyings;
 pub mod builtins;
 pub mod compat;
 pub mod conditionals;

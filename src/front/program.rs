@@ -9,6 +9,7 @@
 use std::ops::Range;
 
 use crate::diag::{Code, Diagnostic, FileId, Files};
+use crate::front::aggregate_varyings;
 use crate::front::edits::OffsetMap;
 use crate::front::geometry_fold::{self, Folded, Pulling};
 use crate::front::geometry_layout;
@@ -43,8 +44,9 @@ pub struct CompiledStage {
     pub naga: Option<Validated>,
     /// A legal construct naga cannot take (the stage is checked for syntax and interface only).
     pub limitation: Option<Limitation>,
-    /// `naga` was read from glslang's SPIR-V ([`through_spirv`]), not from the 4.50 rewrite;
-    /// `rewritten` is then the stage's own text, which the module's spans index.
+    /// `naga` was read from glslang's SPIR-V ([`through_spirv`]), not by naga's GLSL front;
+    /// `rewritten` is the text glslang compiled, which the module's spans index: the
+    /// stage's own text, or its 4.50 rewrite for a stage glslang makes no SPIR-V of as written.
     pub through_spirv: bool,
 }
 
@@ -147,20 +149,21 @@ pub fn compile(
             }
         }
         p.reference = Some(judgement);
-        if own_order == ordered {
-            through_spirv_where_naga_refuses(files, &ordered, dialect, &mut p, diags);
-        }
+        through_spirv_where_naga_refuses(files, (own_order == ordered).then_some(&ordered[..]), dialect, &mut p, diags);
         p
     })
 }
 
 /// A legal program (glslang accepts and links it) with a stage naga's GLSL front cannot
 /// take goes through SPIR-V instead ([`through_spirv`]), every stage of it, so the stages
-/// share one binding and location plan. When that works, naga's refusals are no longer
-/// limits of the program and their notes go; otherwise the program stays as it was.
+/// share one binding and location plan: the stages as written (`ordered`, when each stage
+/// is one file), else, where glslang makes no SPIR-V of them (GLSL below 1.40, the
+/// compatibility profile), effectc's 4.50 rewrite of them. When that works, naga's
+/// refusals are no longer limits of the program and their notes go; otherwise the program
+/// stays as it was.
 fn through_spirv_where_naga_refuses(
     files: &Files,
-    ordered: &[(FileId, StageKind)],
+    ordered: Option<&[(FileId, StageKind)]>,
     dialect: reference::Dialect,
     program: &mut CompiledProgram,
     diags: &mut Vec<Diagnostic>,
@@ -171,25 +174,42 @@ fn through_spirv_where_naga_refuses(
     if !legal || !refused || !naga_stages || diags.iter().any(Diagnostic::is_error) {
         return;
     }
-    let stages = match through_spirv::compile(files, ordered, dialect, &program.plan) {
-        Ok(stages) => stages,
-        Err(why) => {
-            if std::env::var_os("EFFECTC_DUMP_REFERENCE").is_some() {
-                // Debugging aid: why the route through SPIR-V did not take the program.
-                eprintln!("[through SPIR-V] {why}");
-            }
-            return;
+    let debug = |why: &str| {
+        if std::env::var_os("EFFECTC_DUMP_REFERENCE").is_some() {
+            // Debugging aid: why a route through SPIR-V did not take the program.
+            eprintln!("[through SPIR-V] {why}");
         }
     };
-    for (stage, spirv) in program.stages.iter_mut().zip(stages) {
-        debug_assert_eq!(stage.syntax.stage, spirv.kind);
-        let len = spirv.text.len();
-        stage.rewritten = Some(Rewritten { text: spirv.text, map: OffsetMap::identity(len), limitation: None });
-        stage.naga = Some(spirv.validated);
+    let as_written = match ordered {
+        Some(ordered) => through_spirv::compile(files, ordered, dialect, &program.plan).inspect_err(|why| debug(why)).ok(),
+        None => None,
+    };
+    if let Some(stages) = as_written {
+        for (stage, spirv) in program.stages.iter_mut().zip(stages) {
+            debug_assert_eq!(stage.syntax.stage, spirv.kind);
+            let len = spirv.text.len();
+            stage.rewritten = Some(Rewritten { text: spirv.text, map: OffsetMap::identity(len), limitation: None });
+            stage.naga = Some(spirv.validated);
+        }
+    } else {
+        let Some(texts) =
+            program.stages.iter().map(|s| Some((s.rewritten.as_ref()?.text.as_str(), s.syntax.stage))).collect::<Option<Vec<_>>>()
+        else {
+            return;
+        };
+        let validated = match through_spirv::compile_rewritten(&texts, &program.plan) {
+            Ok(v) => v,
+            Err(why) => return debug(&format!("from the rewrite: {why}")),
+        };
+        for (stage, v) in program.stages.iter_mut().zip(validated) {
+            stage.naga = Some(restore_member_names(v, &program.plan.renamed_members));
+        }
+    }
+    for stage in &mut program.stages {
         stage.limitation = None;
         stage.through_spirv = true;
     }
-    let files_of: Vec<FileId> = ordered.iter().map(|(f, _)| *f).collect();
+    let files_of: Vec<FileId> = program.stages.iter().map(|s| s.syntax.file).collect();
     diags.retain(|d| !(d.code == Code::NagaCannotTake && d.file.is_some_and(|f| files_of.contains(&f))));
 }
 
@@ -438,35 +458,42 @@ fn compile_own(
         if let Some(at) = lowered {
             diags.push(doubles_as_floats(&s, at));
         }
-        let mut limitation = None;
-        let naga = match outcome {
-            None => None,
-            Some(outcome) => match outcome {
-                Outcome::Valid(v) => Some(restore_member_names(v, &plan.renamed_members)),
-                Outcome::Limited(limit) => {
-                    let d = Diagnostic::new(
-                        Code::NagaCannotTake,
-                        format!("naga cannot take {}, so the {} stage is checked for syntax and interface only", limit.construct, s.stage),
-                    );
-                    diags.push(
-                        match &limit.span {
-                            Some(span) => d.at(s.file, span.clone(), "legal GLSL naga does not take"),
-                            None => d.in_file(s.file),
-                        }
-                        .with_note("`effectc translate` cannot translate this stage until naga takes it"),
-                    );
-                    limitation = Some(limit);
-                    None
-                }
-                Outcome::Invalid(errs) => {
-                    diags.extend(errs);
-                    None
-                }
-            },
+        let (naga, limitation) = match outcome {
+            Some(outcome) => module_or_limit(outcome, &s, &plan, diags),
+            None => (None, None),
         };
         compiled.push(CompiledStage { syntax: s, rewritten: Some(rewritten), naga, limitation, through_spirv: false });
     }
     Some(CompiledProgram { stages: compiled, plan, folded: None, reference: None })
+}
+
+/// What naga made of a stage: its module (struct and array varyings' qualifiers back, the
+/// user's member names), or the limit it hit (N0102 said where), or its errors (`diags`).
+fn module_or_limit(outcome: Outcome, s: &StageSyntax, plan: &Plan, diags: &mut Vec<Diagnostic>) -> (Option<Validated>, Option<Limitation>) {
+    match outcome {
+        Outcome::Valid(mut v) => {
+            aggregate_varyings::qualify(&mut v.module, s, plan);
+            (Some(restore_member_names(v, &plan.renamed_members)), None)
+        }
+        Outcome::Limited(limit) => {
+            let d = Diagnostic::new(
+                Code::NagaCannotTake,
+                format!("naga cannot take {}, so the {} stage is checked for syntax and interface only", limit.construct, s.stage),
+            );
+            diags.push(
+                match &limit.span {
+                    Some(span) => d.at(s.file, span.clone(), "legal GLSL naga does not take"),
+                    None => d.in_file(s.file),
+                }
+                .with_note("`effectc translate` cannot translate this stage until naga takes it"),
+            );
+            (None, Some(limit))
+        }
+        Outcome::Invalid(errs) => {
+            diags.extend(errs);
+            (None, None)
+        }
+    }
 }
 
 /// E0103: a stage without `main`.
@@ -612,13 +639,19 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
     };
     let validate = |lowered: geometry_fold::Lowered| -> Result<(geometry_fold::Lowered, Validated), String> {
         let as_stage = Rewritten { text: lowered.text.clone(), map: OffsetMap::identity(lowered.text.len()), limitation: None };
-        match naga_run::parse_and_validate(g.syntax.file, &as_stage, naga::ShaderStage::Vertex, &g.syntax.version) {
-            Outcome::Valid(v) if v.needs.is_empty() => Ok((lowered, v)),
-            Outcome::Valid(v) => Err(format!("a construct WebGPU lacks ({})", v.needs.join(", "))),
-            Outcome::Limited(limit) => Err(format!("{}, which naga cannot take", limit.construct)),
+        let refused = match naga_run::parse_and_validate(g.syntax.file, &as_stage, naga::ShaderStage::Vertex, &g.syntax.version) {
+            Outcome::Valid(v) if v.needs.is_empty() => return Ok((lowered, v)),
+            Outcome::Valid(v) => return Err(format!("a construct WebGPU lacks ({})", v.needs.join(", "))),
+            Outcome::Limited(limit) => format!("{}, which naga cannot take", limit.construct),
             Outcome::Invalid(errors) => {
-                Err(format!("naga rejects the folded stage: {}", errors.first().map(|d| d.message.as_str()).unwrap_or("no message")))
+                format!("naga rejects the folded stage: {}", errors.first().map(|d| d.message.as_str()).unwrap_or("no message"))
             }
+        };
+        // What naga's GLSL front refuses in the fold, glslang may compile to SPIR-V that
+        // naga's SPIR-V front reads (spans on the fold's lines, as on the GLSL route).
+        match through_spirv::compile_rewritten(&[(&lowered.text, StageKind::Vertex)], &program.plan) {
+            Ok(mut v) if v[0].needs.is_empty() => Ok((lowered, v.remove(0))),
+            _ => Err(refused),
         }
     };
     let drawn = lower(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 }, "folded.vert");

@@ -18,6 +18,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use naga::{AddressSpace, Block, Module, ResourceBinding, Span, Statement, TypeInner};
 use rspirv::spirv::Op;
 
+use crate::config::VulkanVersion;
 use crate::diag::{FileId, Files};
 use crate::front::naga_run::{self, Validated};
 use crate::front::plan::{Plan, UNIFORM_BLOCK};
@@ -56,31 +57,10 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
     let texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let binaries = compiler::spirv(&sources, dialect, &setup).map_err(|log| {
-        let first = log::parse(&log).into_iter().find(|m| m.error).map(|m| m.text);
-        format!("glslang makes no SPIR-V of it: {}", first.unwrap_or_else(|| log.trim().to_string()))
-    })?;
+    let binaries = compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?;
     let mut modules = Vec::new();
     for (words, (file, kind)) in binaries.into_iter().zip(ordered) {
-        let words = readable_by_naga(split_combined_samplers(words)?);
-        let lines = Lines::of(&words);
-        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-        // Clip space as the GLSL wrote it, as the GLSL route leaves it: the back end maps
-        // GL's conventions to WebGPU's for both routes alike.
-        let options = naga::front::spv::Options { adjust_coordinate_space: false, strict_capabilities: false, block_ctx_dump_prefix: None };
-        let mut module = match catch_unwind(AssertUnwindSafe(|| naga::front::spv::parse_u8_slice(&bytes, &options))) {
-            Ok(Ok(m)) => m,
-            Ok(Err(e)) => return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {e}")),
-            Err(_) => return Err(format!("naga's SPIR-V front crashed on the {kind} stage")),
-        };
-        let text = files.text(*file);
-        let table = LineTable::new(text);
-        respan_module(&mut module, &|span| lines.user_span(span, &table, text));
-        user_names(&mut module);
-        name_split_samplers(&mut module, plan);
-        name_stage_outputs(&mut module);
-        drop_outputs_webgpu_lacks(&mut module);
-        modules.push(module);
+        modules.push(module_of(words, *kind, files.text(*file), plan)?);
     }
     if dialect == Dialect::OpenGl {
         one_binding_per_resource(&mut modules);
@@ -91,6 +71,75 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
         out.push(SpirvStage { kind: *kind, validated: validate(module, immediates, *kind)?, text: files.text(*file).to_string() });
     }
     Ok(out)
+}
+
+/// Every stage of a program through SPIR-V from effectc's 4.50 rewrite of it (`stages`:
+/// each rewritten text, pipeline order), for legal programs glslang makes no SPIR-V of as
+/// written (GLSL below 1.40, the compatibility profile) and naga's GLSL front refuses: the
+/// rewrite has lowered what Vulkan GLSL lacks (fixed-function state, loose uniforms,
+/// combined legacy lookups) and holds the plan's bindings and locations, so glslang compiles
+/// it as Vulkan GLSL. The modules' spans index the rewritten texts, as on the GLSL route.
+pub fn compile_rewritten(stages: &[(&str, StageKind)], plan: &Plan) -> Result<Vec<Validated>, String> {
+    let texts: Vec<String> = stages.iter().map(|(t, _)| as_vulkan_glsl(t)).collect();
+    let sources: Vec<(&str, StageKind)> = texts.iter().zip(stages).map(|(t, (_, k))| (t.as_str(), *k)).collect();
+    let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
+    let binaries = compiler::spirv(&sources, Dialect::Vulkan(VulkanVersion::V1_0), &setup).map_err(no_spirv)?;
+    let mut modules = Vec::new();
+    for (words, (text, kind)) in binaries.into_iter().zip(stages) {
+        modules.push(module_of(words, *kind, text, plan)?);
+    }
+    let immediates = uniform_buffers_for_push_constants(&mut modules);
+    modules.into_iter().zip(stages).zip(immediates).map(|((module, (_, kind)), immediates)| validate(module, immediates, *kind)).collect()
+}
+
+/// A rewritten stage as glslang reads it as Vulkan GLSL: pragmas no compiler acts on and
+/// `#line` directives blanked (offsets and lines kept), and `GL_EXT_spirv_intrinsics`
+/// enabled after `#version`, the one way glslang takes declarations named `gl_…` (the
+/// rewrite declares GL's fixed-function attributes and varyings, `gl_Vertex`, under their
+/// own names); a `#line` after it keeps every line's number.
+fn as_vulkan_glsl(text: &str) -> String {
+    let quiet = crate::front::lexical::quiet_pragmas(text);
+    let text = crate::front::lexical::blank_line_directives(&quiet);
+    let Some(version) = text.lines().position(|l| l.trim_start().starts_with("#version")) else { return text.into_owned() };
+    let mut out = String::with_capacity(text.len() + 64);
+    for (i, line) in text.split_inclusive('\n').enumerate() {
+        out.push_str(line);
+        if i == version {
+            out.push_str(&format!("#extension GL_EXT_spirv_intrinsics : enable\n#line {}\n", version + 2));
+        }
+    }
+    out
+}
+
+fn no_spirv(log: String) -> String {
+    let first = log::parse(&log).into_iter().find(|m| m.error).map(|m| m.text);
+    format!("glslang makes no SPIR-V of it: {}", first.unwrap_or_else(|| log.trim().to_string()))
+}
+
+/// One stage's SPIR-V as a naga module: combined samplers split, read by naga's SPIR-V
+/// front (panics contained), every span moved to the line of `text` its `OpLine` names,
+/// names as the user wrote them.
+fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
+    let words = readable_by_naga(split_combined_samplers(words)?);
+    let lines = Lines::of(&words);
+    let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+    // Clip space as the GLSL wrote it, as the GLSL route leaves it: the back end maps
+    // GL's conventions to WebGPU's for both routes alike.
+    let options = naga::front::spv::Options { adjust_coordinate_space: false, strict_capabilities: false, block_ctx_dump_prefix: None };
+    let mut module = match catch_unwind(AssertUnwindSafe(|| naga::front::spv::parse_u8_slice(&bytes, &options))) {
+        Ok(Ok(m)) => m,
+        Ok(Err(e)) => return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {e}")),
+        Err(_) => return Err(format!("naga's SPIR-V front crashed on the {kind} stage")),
+    };
+    let table = LineTable::new(text);
+    respan_module(&mut module, &|span| lines.user_span(span, &table, text));
+    user_names(&mut module);
+    name_split_samplers(&mut module, plan);
+    name_stage_outputs(&mut module);
+    drop_outputs_webgpu_lacks(&mut module);
+    unreachable_ends_return_a_value(&mut module);
+    emit_only_what_needs_it(&mut module);
+    Ok(module)
 }
 
 /// naga's validation (with desktop GL's capabilities, as for the GLSL route); push
@@ -114,7 +163,15 @@ fn validate(mut module: Module, immediates: Vec<naga::Handle<naga::GlobalVariabl
             let needs = naga_run::needed_capabilities(&module);
             Ok(Validated { module, info, needs })
         }
-        Ok(Err(e)) => Err(format!("naga does not validate the {kind} stage read from SPIR-V: {}", e.as_inner())),
+        Ok(Err(e)) => {
+            let mut why = e.as_inner().to_string();
+            let mut cause = std::error::Error::source(e.as_inner());
+            while let Some(c) = cause {
+                why = format!("{why}: {c}");
+                cause = c.source();
+            }
+            Err(format!("naga does not validate the {kind} stage read from SPIR-V: {why}"))
+        }
         Err(_) => Err(format!("naga's validator crashed on the {kind} stage read from SPIR-V")),
     }
 }
@@ -367,6 +424,65 @@ fn name_stage_outputs(module: &mut Module) {
     }
 }
 
+/// A function that can fall off its end without returning (legal GLSL; what it returns is
+/// undefined) ends in `OpUnreachable` in glslang's SPIR-V, which naga's SPIR-V front reads
+/// as a `return` without a value, and its validator refuses: those returns, never reached,
+/// return the zero value of the function's type.
+fn unreachable_ends_return_a_value(module: &mut Module) {
+    let functions = module.functions.iter_mut().map(|(_, f)| f);
+    for f in functions.chain(module.entry_points.iter_mut().map(|ep| &mut ep.function)) {
+        let Some(ty) = f.result.as_ref().map(|r| r.ty) else { continue };
+        let mut zero = None;
+        let expressions = &mut f.expressions;
+        crate::front::statements::visit_statements(&mut f.body, &mut |st| {
+            if let Statement::Return { value: value @ None } = st {
+                *value = Some(*zero.get_or_insert_with(|| expressions.append(naga::Expression::ZeroValue(ty), Span::UNDEFINED)));
+            }
+        });
+    }
+}
+
+/// naga's SPIR-V front emits some expressions naga holds in scope from the start (the zero
+/// value it makes of an `OpUndef`), and its validator then refuses them as introduced
+/// twice: they leave their `Emit` ranges.
+fn emit_only_what_needs_it(module: &mut Module) {
+    let functions = module.functions.iter_mut().map(|(_, f)| f);
+    for f in functions.chain(module.entry_points.iter_mut().map(|ep| &mut ep.function)) {
+        emits_in(&mut f.body, &f.expressions);
+    }
+}
+
+fn emits_in(block: &mut Block, expressions: &naga::Arena<naga::Expression>) {
+    for st in block.iter_mut() {
+        for b in crate::front::statements::child_blocks(st) {
+            emits_in(b, expressions);
+        }
+    }
+    let pre_emitted = |r: &naga::Range<naga::Expression>| r.clone().any(|h| expressions[h].needs_pre_emit());
+    if !block.iter().any(|st| matches!(st, Statement::Emit(r) if pre_emitted(r))) {
+        return;
+    }
+    for (st, span) in std::mem::take(block).span_into_iter() {
+        let Statement::Emit(range) = st else {
+            block.push(st, span);
+            continue;
+        };
+        let mut run: Option<(naga::Handle<naga::Expression>, naga::Handle<naga::Expression>)> = None;
+        for h in range {
+            if expressions[h].needs_pre_emit() {
+                if let Some((first, last)) = run.take() {
+                    block.push(Statement::Emit(naga::Range::new_from_bounds(first, last)), span);
+                }
+            } else {
+                run = Some((run.map_or(h, |(first, _)| first), h));
+            }
+        }
+        if let Some((first, last)) = run {
+            block.push(Statement::Emit(naga::Range::new_from_bounds(first, last)), span);
+        }
+    }
+}
+
 /// Each instruction of a SPIR-V binary: its first word's index, opcode and word count.
 fn instructions(words: &[u32]) -> impl Iterator<Item = (usize, u16, usize)> + '_ {
     let mut i = HEADER_WORDS;
@@ -512,6 +628,30 @@ mod tests {
         assert_eq!(lines.changes[0], (48, Some((0, 7))));
         // naga reads the two interface ids without counting them: it puts OpLine at 40.
         assert_eq!((lines.in_binary(20), lines.in_binary(40)), (20, 48));
+    }
+
+    #[test]
+    fn the_rewrite_is_read_as_vulkan_glsl_with_its_lines_kept() {
+        let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\n#line 40\nvoid main() {}\n";
+        let vulkan = as_vulkan_glsl(text);
+        assert_eq!(
+            vulkan,
+            "#version 450\n#extension GL_EXT_spirv_intrinsics : enable\n#line 2\nlayout(location = 0) in vec4 gl_Vertex;\n        \nvoid main() {}\n"
+        );
+    }
+
+    /// A function that can fall off its end (legal GLSL) and a declaration named `gl_…`
+    /// (the rewrite's fixed-function attribute): glslang compiles the rewrite, naga's SPIR-V
+    /// front reads it, and the module validates, with spans on the rewrite's lines.
+    #[test]
+    fn a_rewritten_stage_goes_through_spirv() {
+        let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\nfloat f(float x) {\n    for (int i = 0; i < 2; i++) {\n        if (x < float(i)) return 1.0;\n    }\n}\nvoid main() {\n    gl_Position = gl_Vertex * f(gl_Vertex.x);\n}\n";
+        let validated = compile_rewritten(&[(text, StageKind::Vertex)], &Plan::default()).expect("through SPIR-V");
+        let module = &validated[0].module;
+        assert!(module.entry_points[0].function.arguments.iter().any(|a| a.name.as_deref() == Some("gl_Vertex")));
+        let f = module.functions.iter().find(|(_, f)| f.name.as_deref() == Some("f")).expect("f").1;
+        let lines: Vec<&str> = f.body.span_iter().filter_map(|(_, s)| s.to_range()).map(|r| &text[r]).collect();
+        assert!(lines.contains(&"for (int i = 0; i < 2; i++) {"), "{lines:?}");
     }
 
     #[test]

@@ -1,5 +1,6 @@
 //! The route through SPIR-V: `tests/through_spirv/NN-name/` holds legal programs (glslangValidator
-//! links them) with a construct naga's GLSL front does not take. Each checks without errors,
+//! links them) with a construct naga's GLSL front does not take (below GLSL 1.40, where
+//! glslang makes no SPIR-V of the text as written, from effectc's 4.50 rewrite of it). Each checks without errors,
 //! every stage goes through glslang's SPIR-V (so the fixture tests that route, not the GLSL
 //! one), and `check`'s report is snapshotted under `snapshots/through_spirv/`: a hazard in
 //! such a program is reported at the user's GLSL line. `translate` proves their output
@@ -15,7 +16,7 @@ fn legal_programs_naga_refuses_go_through_spirv() {
     settings.set_snapshot_path("../../snapshots/through_spirv");
     settings.set_prepend_module_to_snapshot(false);
     settings.set_omit_expression(true);
-    for dir in common::fixtures("tests/through_spirv", 4) {
+    for dir in common::fixtures("tests/through_spirv", 5) {
         let name = common::name_of(&dir);
         assert_ne!(common::glslang_links(&dir), Some(false), "{name}: glslangValidator does not link it, so it is no legal fixture");
         let (outcome, checked) = common::check(&dir);
@@ -38,4 +39,24 @@ fn hazards_through_spirv_point_at_the_glsl_line() {
     let (file, span) = (warning.file.expect("a file"), warning.span.clone().expect("a span"));
     assert!(outcome.files.path(file).ends_with("leaf.frag"));
     assert_eq!(&outcome.files.text(file)[span], "vec3 n = normalize(vNormal);");
+}
+
+/// A GLSL 1.20 program goes through glslang from effectc's rewrite: the module's spans index
+/// the rewritten text, and its hazard still names the user's line.
+#[test]
+fn hazards_through_spirv_from_the_rewrite_point_at_the_glsl_line() {
+    let (outcome, checked) = common::check(std::path::Path::new("tests/through_spirv/05-v120-compat-from-the-rewrite"));
+    let program = &checked[0].units.first().expect("a checked program").program;
+    let fragment = program.stage(effectc::stage::StageKind::Fragment).expect("a fragment stage");
+    let rewritten = fragment.rewritten.as_ref().expect("the rewrite");
+    assert!(rewritten.text.starts_with("#version 450"), "the module comes from the rewrite:\n{}", rewritten.text);
+    for (code, line) in
+        [(diag::Code::HazardLog, "float ev = log(exposure);"), (diag::Code::HazardNormalize, "vec2 needle = normalize(uv - 0.5);")]
+    {
+        let warning =
+            outcome.diagnostics.iter().find(|d| d.code == code).unwrap_or_else(|| panic!("{code:?}:\n{}", common::render(&outcome)));
+        let (file, span) = (warning.file.expect("a file"), warning.span.clone().expect("a span"));
+        assert!(outcome.files.path(file).ends_with("gauge.frag"));
+        assert_eq!(&outcome.files.text(file)[span], line);
+    }
 }

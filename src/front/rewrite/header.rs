@@ -45,8 +45,15 @@ impl Ctx<'_> {
         // goes, and which names the block's members must not take (a uniform of another
         // stage by a name this stage `#define`s before the block would be macro-expanded).
         let defines = crate::front::conditionals::define_lines(&s.text);
-        let at = self.header_position(&defines);
+        let hoisted = self.late_structs();
+        let at = self.header_position(&defines, &hoisted);
         let mut h = String::new();
+        for name in &hoisted {
+            let span = s.struct_def(name).expect("a struct of the stage").span.clone();
+            let with_semicolon = span.start..plain_definition_end(&s.text, &span).expect("a plain definition");
+            h.push_str(&self.edits.take_out(&s.text, with_semicolon));
+            h.push('\n');
+        }
         if self.plan.has_block() {
             for name in &self.plan.block_structs {
                 if s.struct_def(name).is_none() {
@@ -158,12 +165,19 @@ impl Ctx<'_> {
     /// OutputSize)`, emulator packs): the member keeps its name, which the macro's body
     /// reads.
     /// `defines`: the stage's `#define` lines (name, body).
-    fn header_position(&self, defines: &[(String, std::ops::Range<usize>)]) -> usize {
+    /// `hoisted`: the structs moved into the header ([`late_structs`](Self::late_structs)).
+    fn header_position(&self, defines: &[(String, std::ops::Range<usize>)], hoisted: &[String]) -> usize {
         let s = self.s;
-        let structs_end =
-            self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).map(|d| line_end(&s.text, d.span.end)).max().unwrap_or(0);
-        let first = s.first_function.unwrap_or(s.text.len());
-        let at = self.header_before.map_or(first, |b| b.min(first)).max(structs_end);
+        let structs_end = self
+            .plan
+            .block_structs
+            .iter()
+            .filter(|n| !hoisted.contains(n))
+            .filter_map(|n| s.struct_def(n))
+            .map(|d| line_end(&s.text, d.span.end))
+            .max()
+            .unwrap_or(0);
+        let at = self.header_point().max(structs_end);
         let member_define = defines
             .iter()
             .filter(|(name, _)| self.plan.member(name).is_some())
@@ -171,6 +185,50 @@ impl Ctx<'_> {
             .find(|&line| structs_end <= line && line < at);
         member_define.unwrap_or(at)
     }
+}
+
+impl Ctx<'_> {
+    /// Where the header must come at the latest: before the first function and before the
+    /// first use of a uniform the block holds.
+    fn header_point(&self) -> usize {
+        let first = self.s.first_function.unwrap_or(self.s.text.len());
+        self.header_before.map_or(first, |b| b.min(first))
+    }
+
+    /// Structs the block needs that the stage defines only after a function reads one of
+    /// the block's uniforms (`uniform float pick; void post() { … pick … } struct Light {
+    /// … }; uniform Light light;`): the block cannot follow them, so they move up into the
+    /// header, in the stage's order. Only plain definitions (`struct S { … };`) whose text
+    /// names no global declared between the header and them move; otherwise none does.
+    fn late_structs(&self) -> Vec<String> {
+        let s = self.s;
+        if !self.plan.has_block() {
+            return Vec::new();
+        }
+        let point = self.header_point();
+        let mut late: Vec<&crate::front::syntax::StructDef> =
+            self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).filter(|d| d.span.start >= point).collect();
+        late.sort_by_key(|d| d.span.start);
+        let movable = |d: &crate::front::syntax::StructDef| {
+            let text = &s.text[d.span.clone()];
+            let mut between = s.globals.iter().filter(|g| g.decl_span.start >= point && g.decl_span.start < d.span.start);
+            plain_definition_end(&s.text, &d.span).is_some()
+                && !between.any(|g| crate::front::lexical::identifiers(text).any(|w| w == g.name))
+        };
+        if late.iter().all(|d| movable(d)) {
+            late.into_iter().map(|d| d.name.clone()).collect()
+        } else {
+            Vec::new()
+        }
+    }
+}
+
+/// Where a struct specifier at `span` ends as a declaration of its own (`struct S { … };`):
+/// after the `;` that follows it; `None` when a declarator follows (`struct S { … } s;`).
+fn plain_definition_end(text: &str, span: &std::ops::Range<usize>) -> Option<usize> {
+    let after = &text[span.end..];
+    let rest = after.trim_start();
+    rest.starts_with(';').then(|| span.end + (after.len() - rest.len()) + 1)
 }
 
 fn line_end(text: &str, at: usize) -> usize {

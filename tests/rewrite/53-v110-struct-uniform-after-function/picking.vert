@@ -1,0 +1,6 @@
+#version 110
+void main()
+{
+    gl_Position = ftransform();
+    gl_FrontColor = gl_Color;
+}
