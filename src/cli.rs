@@ -528,7 +528,7 @@ impl CommonArgs {
             selection: config.selection.clone(),
             jobs: self.jobs.map(|j| j as usize),
             values: Vec::new(),
-            fixed_function_vertex: false,
+            fixed_function_stages: false,
             hazards: config.hazards,
             // The settings' macros, then the command line's (which win for a name both give).
             defines: config

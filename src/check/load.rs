@@ -22,8 +22,9 @@ pub struct Loaded {
     pub diagnostics: Vec<Diagnostic>,
     /// Some file could not be read at all (exit 2).
     pub io_error: bool,
-    /// The fragment stage given GL's fixed-function vertex stage (it is not alone).
-    pub vertex_added_for: Option<String>,
+    /// The lone stage given GL's fixed-function other stage (it is not alone): a fragment
+    /// stage GL's vertex processing, a vertex stage GL's fragment processing.
+    pub stage_added_for: Option<String>,
     /// The most bytes a stage or included file may hold (`[limits] file-bytes`).
     file_bytes: u64,
     /// Macros defined in every stage (`--define`), before a stage's own.
@@ -34,8 +35,10 @@ pub struct Loaded {
 #[derive(Debug, Clone, Copy)]
 pub struct Reading<'a> {
     /// A program that is one compatibility-profile fragment stage gets GL's fixed-function
-    /// vertex stage ([`compat::fixed_function_vertex_stage`]), as GL draws it.
-    pub fixed_function_vertex: bool,
+    /// vertex stage ([`compat::fixed_function_vertex_stage`]), one that is a vertex stage
+    /// GL's fixed-function fragment stage ([`compat::fixed_function_fragment_stage`]), as
+    /// GL draws them.
+    pub fixed_function_stages: bool,
     /// No stage or included file over this many bytes is read.
     pub file_bytes: u64,
     /// `--define`: macros defined in every stage.
@@ -70,7 +73,7 @@ pub fn load(input: &ProgramInput, files: &mut Files, how: &Reading<'_>) -> Loade
         body: Body::Nothing,
         diagnostics: Vec::new(),
         io_error: false,
-        vertex_added_for: None,
+        stage_added_for: None,
         file_bytes: how.file_bytes,
         defines: how.defines.to_vec(),
     };
@@ -98,18 +101,33 @@ pub fn load(input: &ProgramInput, files: &mut Files, how: &Reading<'_>) -> Loade
             l.body = read_all(&stages, files, &mut l).map_or(Body::Nothing, Body::Single);
         }
     }
-    if let (Body::Single(stages), true) = (&mut l.body, how.fixed_function_vertex) {
-        // The fragment stage alone (one file, or several shader objects of it).
-        if let Some(&(fragment, _)) = stages.first().filter(|_| stages.iter().all(|(_, k)| *k == StageKind::Fragment)) {
-            let texts: String = stages.iter().map(|(f, _)| files.text(*f)).collect::<Vec<_>>().join("\n");
-            if let Some(text) = compat::fixed_function_vertex_stage(&texts) {
-                let name = format!("{} (GL's fixed-function vertex stage)", files.path(fragment));
-                l.vertex_added_for = Some(files.path(fragment).to_string());
-                stages.insert(0, (files.add_generated(name, text), StageKind::Vertex));
+    if let (Body::Single(stages), true) = (&mut l.body, how.fixed_function_stages) {
+        let lone = |kind: StageKind| stages.first().filter(|_| stages.iter().all(|(_, k)| *k == kind)).map(|(f, _)| *f);
+        // The fragment stage alone (one file, or several shader objects of it), or the
+        // vertex stage alone.
+        let added = if let Some(fragment) = lone(StageKind::Fragment) {
+            compat::fixed_function_vertex_stage(&joined_text(stages, files)).map(|t| (fragment, t, StageKind::Vertex, "vertex"))
+        } else if let Some(vertex) = lone(StageKind::Vertex) {
+            compat::fixed_function_fragment_stage(&joined_text(stages, files)).map(|t| (vertex, t, StageKind::Fragment, "fragment"))
+        } else {
+            None
+        };
+        if let Some((lone, text, kind, words)) = added {
+            let name = format!("{} (GL's fixed-function {words} stage)", files.path(lone));
+            l.stage_added_for = Some(files.path(lone).to_string());
+            let generated = (files.add_generated(name, text), kind);
+            match kind {
+                StageKind::Vertex => stages.insert(0, generated),
+                _ => stages.push(generated),
             }
         }
     }
     l
+}
+
+/// The texts of `stages` joined (a stage made of several shader objects).
+fn joined_text(stages: &[(FileId, StageKind)], files: &Files) -> String {
+    stages.iter().map(|(f, _)| files.text(*f)).collect::<Vec<_>>().join("\n")
 }
 
 /// Every stage file, or `None` when one of them could not be read.

@@ -106,8 +106,9 @@ pub struct InputSpec {
     /// `--set NAME=VALUE` as typed: uniform values for every program that declares them.
     pub values: Vec<(String, String)>,
     /// A lone compatibility-profile fragment stage is drawn with GL's fixed-function
-    /// vertex stage (the commands that draw: render, verify, bench, stress).
-    pub fixed_function_vertex: bool,
+    /// vertex stage, a lone vertex stage with its fixed-function fragment stage (the
+    /// commands that draw: render, verify, bench, stress).
+    pub fixed_function_stages: bool,
     /// `--define`: macros defined in every stage read (before a stage's own defines).
     pub defines: Vec<crate::stage::Define>,
     /// What the hazard analysis assumes where no manifest says (`effectc.toml`'s `[hazards]`).
@@ -115,10 +116,10 @@ pub struct InputSpec {
 }
 
 impl InputSpec {
-    /// The spec of a command that draws on WebGPU: a lone compatibility fragment stage gets
-    /// GL's fixed-function vertex stage, and doubles are drawn as floats (W0131).
+    /// The spec of a command that draws on WebGPU: a lone compatibility fragment or vertex
+    /// stage gets GL's fixed-function other stage, and doubles are drawn as floats (W0131).
     pub fn for_drawing(self) -> InputSpec {
-        InputSpec { fixed_function_vertex: true, front: FrontOptions { doubles_as_floats: true, ..self.front }, ..self }
+        InputSpec { fixed_function_stages: true, front: FrontOptions { doubles_as_floats: true, ..self.front }, ..self }
     }
 
     /// Checks every program the spec names: files are read in input order, then the
@@ -133,15 +134,15 @@ impl InputSpec {
         for p in &programs {
             let before = out.files.len();
             let reading = load::Reading {
-                fixed_function_vertex: self.fixed_function_vertex,
+                fixed_function_stages: self.fixed_function_stages,
                 file_bytes: self.front.limits.file_bytes,
                 defines: &self.defines,
             };
             let l = load::load(p, &mut out.files, &reading);
             out.formed.push(formation::of(p, l.effect.as_ref(), &self.defines));
-            if let Some(fragment) = &l.vertex_added_for {
-                // Not alone after all: GL's fixed-function vertex stage links with it.
-                let alone = format!("`{fragment}` is checked alone");
+            if let Some(lone) = &l.stage_added_for {
+                // Not alone after all: GL's fixed-function stage links with it.
+                let alone = format!("`{lone}` is checked alone");
                 out.diagnostics.retain(|d| !(d.code == Code::StageAlone && d.message.starts_with(&alone)));
             }
             loaded.push(l);

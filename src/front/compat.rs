@@ -569,6 +569,24 @@ pub fn fixed_function_vertex_stage(fragment_text: &str) -> Option<String> {
     Some(text)
 }
 
+/// The fragment stage GL runs for a compatibility-profile program that has none: its
+/// fixed-function fragment processing in GL's initial state (texturing, fog and colour sum
+/// off), which writes the interpolated primary colour. Written as GLSL in the vertex
+/// stage's own version, for the vertex stage's text; `None` when that version has no
+/// fixed-function fragment stage (core and ES profiles).
+pub fn fixed_function_fragment_stage(vertex_text: &str) -> Option<String> {
+    let version = crate::front::version::parse_version(vertex_text).ok()?;
+    if !crate::front::builtins::has_compatibility_builtins(&version) {
+        return None;
+    }
+    let mut text = match &version.directive {
+        Some(line) => format!("{}\n", &vertex_text[line.clone()]),
+        None => String::new(),
+    };
+    text.push_str("// GL's fixed-function fragment processing in its initial state\nvoid main() {\n    gl_FragColor = gl_Color;\n}\n");
+    Some(text)
+}
+
 /// The `gl_TexCoord[]` elements a stage's text indexes: the literal indices, or all of
 /// them where an index is not a literal.
 fn tex_coords_read(text: &str) -> BTreeSet<u32> {
@@ -628,5 +646,13 @@ mod tests {
         assert_eq!(all.matches("gl_MultiTexCoord").count(), 8, "{all}");
         assert_eq!(fixed_function_vertex_stage("#version 330 core\nout vec4 c; void main() { c = vec4(1.0); }"), None);
         assert_eq!(fixed_function_vertex_stage("#version 300 es\nout highp vec4 c; void main() { c = vec4(1.0); }"), None);
+    }
+
+    #[test]
+    fn a_compatibility_vertex_stage_gets_gl_fixed_function_fragment_stage() {
+        let f = fixed_function_fragment_stage("#version 120\nvoid main() { gl_Position = ftransform(); }\n").unwrap();
+        assert!(f.starts_with("#version 120\n") && f.contains("gl_FragColor = gl_Color;"), "{f}");
+        assert!(fixed_function_fragment_stage("void main() { gl_Position = gl_Vertex; }").is_some());
+        assert_eq!(fixed_function_fragment_stage("#version 330 core\nin vec4 p; void main() { gl_Position = p; }"), None);
     }
 }

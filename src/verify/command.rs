@@ -232,10 +232,10 @@ impl GlDrawer {
         let fail = |e: String, file: FileId| vec![Diagnostic::new(Code::GlRejects, e).in_file(file)];
         for (pass, scene) in drawer.scenes() {
             let Some(unit) = c.units.iter().find(|u| u.pass == pass) else { continue };
-            // A vertex stage effectc wrote for a lone fragment stage is what GL does
-            // without one: GL runs its own fixed-function vertex processing instead.
-            let generated = unit.program.stages.iter().any(|s| files.is_generated(s.syntax.file));
-            fixed_function_vertex |= generated;
+            // A stage effectc wrote for a lone fragment or vertex stage is what GL does
+            // without one: GL runs its own fixed-function processing instead.
+            fixed_function_vertex |=
+                unit.program.stages.iter().any(|s| files.is_generated(s.syntax.file) && s.syntax.stage == StageKind::Vertex);
             let stages: Vec<(FileId, StageKind)> = unit
                 .program
                 .stages

@@ -16,7 +16,7 @@ const SEMANTICS: usize = 90;
 
 /// Programs in the compatibility-profile suite (`tests/verify/compat/`: one directory per
 /// program, GLSL 1.10–1.50 reading fixed-function state).
-const COMPAT: usize = 55;
+const COMPAT: usize = 56;
 
 /// Whether verify can run here: CI must have a GL driver and an adapter.
 fn can_verify() -> bool {
@@ -308,12 +308,14 @@ fn manifest_values_feed_vertex_inputs_of_any_type() {
     let out = effectc(&["verify", "tests/verify/vertex_values/effect.toml", "--size", "64x64", "--out", dir.join("o").to_str().unwrap()]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     let png = image::open(dir.join("o/vertex-values_0000.png")).unwrap().to_rgba8();
-    // Each triangle's flat `aIds` from its provoking vertex (ids.x 2 and 3, read as x / 4).
-    let (upper, lower) = (png.get_pixel(16, 16).0, png.get_pixel(48, 48).0);
-    assert_eq!((upper[0], lower[0]), (128, 191), "{upper:?} {lower:?}");
+    // Each triangle's flat `aIds` from its provoking vertex, GL's last (ids.x 2 and 3, read as
+    // x / 4): the quad's lower left triangle ends at its upper left corner (vertex 2), the
+    // upper right one at its upper right corner (vertex 3).
+    let (lower_left, upper_right) = (png.get_pixel(16, 48).0, png.get_pixel(48, 16).0);
+    assert_eq!((lower_left[0], upper_right[0]), (128, 191), "{lower_left:?} {upper_right:?}");
     // The `sequence` interpolates across the quad; the `random` mask's w is 100..250.
     assert_ne!(png.get_pixel(20, 44).0[2], png.get_pixel(44, 20).0[2]);
-    assert!(upper[3] >= 100 && lower[3] >= 100, "{upper:?} {lower:?}");
+    assert!(lower_left[3] >= 100 && upper_right[3] >= 100, "{lower_left:?} {upper_right:?}");
     let bad = dir.join("bad");
     std::fs::create_dir_all(&bad).unwrap();
     for f in ["va.vert", "va.frag"] {

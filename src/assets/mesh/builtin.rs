@@ -91,10 +91,15 @@ impl Builder {
     }
 }
 
-/// A square in the xy plane facing +z, `half` either side of the origin.
+/// A square in the xy plane facing +z, `half` either side of the origin: the corners in
+/// the order GL programs draw a rectangle in (lower left, lower right, upper left, upper
+/// right, as `piglit_draw_rect`'s triangle strip), as the strip's two triangles. So
+/// `gl_VertexID` and a `flat` varying's provoking vertex (the last) are GL's: the lower
+/// left triangle takes the upper left corner's, the other the upper right's.
 fn flat_quad(half: f32) -> Mesh {
     let mut b = Builder::default();
     b.patch(Vec3::ZERO, Vec3::X, Vec3::Y, half, 1);
+    b.indices = vec![0, 1, 2, 2, 1, 3];
     b.finish()
 }
 

@@ -158,6 +158,22 @@ fn quads_cover_their_square_with_gl_uvs() {
     }
 }
 
+/// The full-window rectangle is drawn as GL programs draw one (`piglit_draw_rect`'s
+/// triangle strip): corners lower left, lower right, upper left, upper right; triangles
+/// (0, 1, 2) and (2, 1, 3), both counter-clockwise, so the last vertex of each (GL's
+/// provoking vertex) is the upper left and the upper right corner.
+#[test]
+fn the_fullscreen_quad_is_gl_s_triangle_strip() {
+    let mesh = Mesh::builtin(BuiltinMesh::FullscreenQuad);
+    assert_eq!(mesh.positions, [[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [-1.0, 1.0, 0.0], [1.0, 1.0, 0.0]]);
+    assert_eq!(mesh.indices, [0, 1, 2, 2, 1, 3]);
+    for t in mesh.indices.chunks(3) {
+        let [a, b, c] = [t[0], t[1], t[2]].map(|i| mesh.positions[i as usize]);
+        let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        assert!(area > 0.0, "{t:?} is not counter-clockwise");
+    }
+}
+
 #[test]
 fn cube_faces_are_flat_outward_and_upright() {
     let mesh = Mesh::builtin(BuiltinMesh::Cube);
