@@ -144,11 +144,12 @@ codes! {
     StageFromText => "N0003", "a `.glsl` file's stage told from its text",
     SyntaxAndInterfaceOnly => "N0101", "stage checked for syntax and interface only",
     NagaCannotTake => "N0102", "a legal construct naga cannot take: stage checked for syntax and interface only",
-    ShadowBiasDropped => "N0103", "the bias of a shadow lookup is dropped",
+    ShadowBiasDropped => "N0103", "the bias or explicit gradients of a shadow lookup are dropped",
     PointCoordConstant => "N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU points are one pixel wide",
     LayerSelected => "N0105", "`gl_Layer`/`gl_ViewportIndex` select which primitives a draw keeps (WebGPU cannot route them)",
     ReferenceOnly => "N0106", "a stage the reference compiler accepts and effectc's own analysis cannot read: checked by glslang only",
     TexelBufferAsStorage => "N0107", "a buffer texture (`samplerBuffer`) read from a read-only storage buffer: WebGPU has no buffer textures",
+    ClipDistancesDropped => "N0108", "`gl_ClipDistance`/`gl_CullDistance` computed, not passed: WebGPU clips and culls by neither",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
     HazardAnalysisStopped => "N0701", "the static hazard analysis of a stage stopped at its work limit: its warnings are incomplete",
     // Warnings.

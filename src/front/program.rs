@@ -140,6 +140,9 @@ pub fn compile(
         // program is glslang's to link.
         diags.extend(judgement.link_errors.iter().cloned());
     }
+    if let Some(p) = &program {
+        diags.extend(clip_distances_dropped(p));
+    }
     let dialect = judgement.dialect;
     program.map(|mut p| {
         for stage in &mut p.stages {
@@ -494,6 +497,21 @@ fn module_or_limit(outcome: Outcome, s: &StageSyntax, plan: &Plan, diags: &mut V
             (None, None)
         }
     }
+}
+
+/// N0108 at the first use of `gl_ClipDistance` or `gl_CullDistance` in the stage that feeds
+/// the rasterizer (a geometry stage, else the vertex stage): WebGPU has no user clip or
+/// cull distances without a feature, so both routes compute them and pass neither, and a
+/// program GL draws with `GL_CLIP_DISTANCEi` enabled is drawn unclipped.
+fn clip_distances_dropped(program: &CompiledProgram) -> Option<Diagnostic> {
+    let last = program.stage(StageKind::Geometry).or_else(|| program.stage(StageKind::Vertex))?;
+    let s = &last.syntax;
+    let u = s.uses.iter().find(|u| matches!(u.name.as_str(), "gl_ClipDistance" | "gl_CullDistance") && rewrite::names_builtin(s, u))?;
+    Some(
+        Diagnostic::new(Code::ClipDistancesDropped, format!("`{}` is computed, not passed on: WebGPU clips and culls by neither", u.name))
+            .at(s.file, u.span.clone(), "computed, not passed")
+            .with_note("WebGPU has user clip distances only with the `clip-distances` feature, and no cull distances: a program GL draws with `GL_CLIP_DISTANCEi` enabled is drawn unclipped by the translation"),
+    )
 }
 
 /// E0103: a stage without `main`.

@@ -43,6 +43,24 @@ const LEGACY_FUNCTIONS: &[(&str, &str, bool)] = &[
     ("shadow1DProjLod", "textureProjLod", true),
     ("shadow2DRect", "texture", true),
     ("shadow2DRectProj", "textureProj", true),
+    // ARB_shader_texture_lod (GLSL 1.10+) and EXT_shader_texture_lod (ES): explicit gradients.
+    ("texture1DGradARB", "textureGrad", false),
+    ("texture1DProjGradARB", "textureProjGrad", false),
+    ("texture2DGradARB", "textureGrad", false),
+    ("texture2DProjGradARB", "textureProjGrad", false),
+    ("texture3DGradARB", "textureGrad", false),
+    ("texture3DProjGradARB", "textureProjGrad", false),
+    ("textureCubeGradARB", "textureGrad", false),
+    ("texture2DRectGradARB", "textureGrad", false),
+    ("texture2DRectProjGradARB", "textureProjGrad", false),
+    ("shadow1DGradARB", "textureGrad", true),
+    ("shadow1DProjGradARB", "textureProjGrad", true),
+    ("shadow2DGradARB", "textureGrad", true),
+    ("shadow2DProjGradARB", "textureProjGrad", true),
+    ("shadow2DRectGradARB", "textureGrad", true),
+    ("shadow2DRectProjGradARB", "textureProjGrad", true),
+    ("texture2DProjGradEXT", "textureProjGrad", false),
+    ("textureCubeGradEXT", "textureGrad", false),
 ];
 
 impl Ctx<'_> {
@@ -286,20 +304,29 @@ impl Ctx<'_> {
     /// comparison of a depth texture without mipmaps (the usual shadow map) never uses:
     /// the bias is dropped, with a note.
     fn shadow_bias(&mut self, c: &crate::front::syntax::Call) {
-        let base_args = match c.name.as_str() {
-            "texture" | "textureProj" | "shadow2D" | "shadow2DProj" | "shadow1D" | "shadow1DProj" => 2,
-            "textureOffset" | "textureProjOffset" => 3,
-            _ => return,
-        };
-        if c.args.len() != base_args + 1 {
-            return;
-        }
         let shadow = match self.first_arg_sampler(c) {
             Some(FirstArg::Param(ty)) => ty.ends_with("Shadow"),
             Some(FirstArg::Global(g)) => g.ty.base.ends_with("Shadow"),
             None => false,
         };
-        if !shadow {
+        let gradients = c.name.contains("Grad") && !c.name.starts_with("textureGather");
+        if shadow && gradients && c.args.len() >= 4 {
+            // WGSL compares depth at level 0 or with implicit derivatives only: naga reads a
+            // shadow lookup with explicit gradients at level 0.
+            let (first, last) = (c.args[2].clone(), c.args[3].clone());
+            self.diags.push(
+                Diagnostic::new(Code::ShadowBiasDropped, "the gradients of this shadow lookup are dropped: level 0 is read")
+                    .at(self.s.file, first.start..last.end, "explicit gradients on a depth comparison")
+                    .with_note("WGSL compares depth at level 0 or with implicit derivatives only; it changes nothing unless the depth texture has mipmaps"),
+            );
+            return;
+        }
+        let base_args = match c.name.as_str() {
+            "texture" | "textureProj" | "shadow2D" | "shadow2DProj" | "shadow1D" | "shadow1DProj" => 2,
+            "textureOffset" | "textureProjOffset" => 3,
+            _ => return,
+        };
+        if c.args.len() != base_args + 1 || !shadow {
             return;
         }
         let bias = c.args[base_args].clone();

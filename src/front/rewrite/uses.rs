@@ -282,7 +282,7 @@ impl Ctx<'_> {
 
 /// Whether `u` names a built-in variable: one declared nowhere, or one the stage redeclares
 /// (`out float gl_ClipDistance[2];`: the rewrite drops the redeclaration).
-pub(super) fn names_builtin(s: &StageSyntax, u: &crate::front::syntax::Use) -> bool {
+pub fn names_builtin(s: &StageSyntax, u: &crate::front::syntax::Use) -> bool {
     match u.target {
         Referent::Unresolved => true,
         Referent::Global(i) => {
