@@ -263,3 +263,37 @@ def cap_sample(items, cap=800, key=str):
         return items
     keep = set(sorted(range(len(items)), key=lambda i: hashlib.sha1(key(items[i]).encode()).hexdigest())[:cap])
     return [it for i, it in enumerate(items) if i in keep]
+
+
+def version_position(src):
+    """QOpenGLShader's findVersionDirectivePosition: (split position, line)."""
+    state, i = "sol", 0
+    while i < len(src):
+        c = src[i]
+        if state == "pp":
+            if c in " \t":
+                pass
+            elif src.startswith("version", i):
+                j = src.find("\n", i)
+                j = len(src) if j < 0 else j
+                return j + 1, src.count("\n", 0, j) + 1
+            elif c == "/":
+                state = "cs"
+            else:
+                state = "sol" if c == "\n" else "normal"
+        elif state == "sol" and c in " \t":
+            pass
+        elif state == "sol" and c == "#":
+            state = "pp"
+        elif state in ("sol", "normal"):
+            state = "cs" if c == "/" else "sol" if c == "\n" else "normal"
+        elif state == "cs":
+            state = "ml" if c == "*" else "sl" if c == "/" else "normal"
+        elif state == "ml":
+            state = "ce" if c == "*" else "ml"
+        elif state == "sl":
+            state = "normal" if c == "\n" else "sl"
+        elif state == "ce":
+            state = "normal" if c == "/" else "ce" if c == "*" else "ml"
+        i += 1
+    return 0, 1
