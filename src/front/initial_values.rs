@@ -6,6 +6,8 @@
 //!   are read back here.
 //! - `#pragma parameter NAME "Label" default min max step` ([`crate::front::parameters`]):
 //!   RetroArch starts the uniform (loose, or a member of a block) at its default.
+//!
+//! Also which block matrices are stored row-major ([`row_major`]): how their values are laid out.
 
 use naga::{Handle, Module};
 
@@ -59,6 +61,23 @@ pub fn of(program: &crate::front::program::CompiledProgram) -> Vec<Initial> {
         }
     }
     all
+}
+
+/// The square matrices the program's blocks store row-major (`layout(row_major)`), as
+/// (block name, member name): naga lays every matrix out column-major and the rewrite reads
+/// these transposed, so a value written for one is stored transposed, as GL stores it.
+pub fn row_major(program: &crate::front::program::CompiledProgram) -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = Vec::new();
+    for s in program.stages.iter().map(|s| &s.syntax) {
+        for (gi, member) in crate::front::rewrite::row_major_members(s) {
+            let Some(b) = &s.globals[gi].block else { continue };
+            let entry = (b.block_name.clone(), member);
+            if !out.contains(&entry) {
+                out.push(entry);
+            }
+        }
+    }
+    out
 }
 
 /// The values GLSL initializers give the program's uniforms.

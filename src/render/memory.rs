@@ -108,7 +108,7 @@ impl<'c> MemoryDrawer<'c> {
         let c = self.c;
         for (pass, scene) in drawer.scenes_mut() {
             let effect = c.unit(pass).and_then(|u| u.effect.as_ref()).map(|e| with_overrides(e, overrides));
-            let (buffers, _) = uniforms::buffers(&scene.module, effect.as_ref(), &scene.initial, overrides, true)?;
+            let (buffers, _) = uniforms::buffers(&scene.module, effect.as_ref(), &scene.initial, &scene.row_major, overrides, true)?;
             for (data, (old, _)) in buffers.into_iter().zip(&mut scene.uniforms) {
                 *old = data;
             }

@@ -27,6 +27,9 @@ pub struct UniformBuffer {
     /// What each uniform (a block member, by its GLSL path) receives, for `--verbose`:
     /// `the manifest's value`, `semantic time`, `its initializer`, a guess.
     pub sources: Vec<(String, String)>,
+    /// Square matrices stored row-major (`layout(row_major)`): (offset, order, column
+    /// stride). Values are written column-major, then these are transposed in place.
+    pub row_major: Vec<(u32, u32, u32)>,
 }
 
 #[derive(Debug, Clone)]
@@ -57,6 +60,7 @@ pub fn buffers(
     module: &Module,
     effect: Option<&Effect>,
     initial: &[Initial],
+    row_major: &[(String, String)],
     overrides: &[(String, UniformValue)],
     guesses: bool,
 ) -> Result<(Vec<UniformBuffer>, Vec<Guessed>), String> {
@@ -64,8 +68,14 @@ pub fn buffers(
     let mut guessed = Vec::new();
     for (_, g) in module.global_variables.iter() {
         let (naga::AddressSpace::Uniform, Some(rb)) = (g.space, &g.binding) else { continue };
-        let mut buffer =
-            UniformBuffer { group: rb.group, binding: rb.binding, bytes: Vec::new(), per_frame: Vec::new(), sources: Vec::new() };
+        let mut buffer = UniformBuffer {
+            group: rb.group,
+            binding: rb.binding,
+            bytes: Vec::new(),
+            per_frame: Vec::new(),
+            sources: Vec::new(),
+            row_major: row_major_slots(module, g.ty, row_major),
+        };
         let local = |name: &str| in_block(module, g, name).map(str::to_string);
         fill_block(module, g.ty, effect, initial, guesses, &mut buffer, &mut guessed)?;
         // A named block's members as GL names them (`Block.member`).
@@ -85,6 +95,9 @@ pub fn buffers(
             }
         }
         derive_gl_state(module, g.ty, &mut buffer.bytes);
+        for &(offset, order, stride) in &buffer.row_major {
+            transpose_in_place(&mut buffer.bytes, offset, order, stride);
+        }
         out.push(buffer);
     }
     Ok((out, guessed))
@@ -343,7 +356,50 @@ impl UniformBuffer {
         for s in &self.per_frame {
             let value = semantics::value(s.semantic, frame, s.shape);
             write_slot(module, s.ty, s.offset, &value, &mut self.bytes).map_err(|e| format!("semantic `{}`: {e}", s.semantic.name()))?;
+            if let Some(&(offset, order, stride)) = self.row_major.iter().find(|r| r.0 == s.offset) {
+                transpose_in_place(&mut self.bytes, offset, order, stride);
+            }
         }
         Ok(())
+    }
+}
+
+/// The row-major square matrices of the block `ty` (a struct named like its GLSL block):
+/// (offset, order, column stride) of each.
+fn row_major_slots(module: &Module, ty: Handle<Type>, row_major: &[(String, String)]) -> Vec<(u32, u32, u32)> {
+    let (Some(block), TypeInner::Struct { members, .. }) = (module.types[ty].name.as_deref(), &module.types[ty].inner) else {
+        return Vec::new();
+    };
+    let mut layouter = naga::proc::Layouter::default();
+    if layouter.update(module.to_ctx()).is_err() {
+        return Vec::new();
+    }
+    members
+        .iter()
+        .filter(|m| row_major.iter().any(|(b, name)| b == block && m.name.as_deref() == Some(name.as_str())))
+        .filter_map(|m| match module.types[m.ty].inner {
+            TypeInner::Matrix { columns, rows, .. } if columns == rows => {
+                let order = columns as u32;
+                Some((m.offset, order, layouter[m.ty].size / order))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// Transposes the `order`×`order` matrix of 4-byte components at `offset` (columns
+/// `stride` bytes apart) in place.
+fn transpose_in_place(bytes: &mut [u8], offset: u32, order: u32, stride: u32) {
+    let at = |c: u32, r: u32| (offset + c * stride + 4 * r) as usize;
+    for c in 0..order {
+        for r in c + 1..order {
+            let (a, b) = (at(c, r), at(r, c));
+            if b + 4 > bytes.len() || a + 4 > bytes.len() {
+                return;
+            }
+            for i in 0..4 {
+                bytes.swap(a + i, b + i);
+            }
+        }
     }
 }

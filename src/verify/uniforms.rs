@@ -202,7 +202,13 @@ impl GlUniforms {
             }
             for b in &mut self.blocks {
                 for m in &b.members {
-                    let v = read(module, scene, m.source, m.shape);
+                    let mut v = read(module, scene, m.source, m.shape);
+                    if m.row_major && m.shape.columns == m.shape.rows {
+                        // effectc stores a row-major block matrix transposed, as GL does:
+                        // its value is the transpose of the column-major read.
+                        let n = m.shape.rows as usize;
+                        v = (0..n * n).map(|i| v[(i % n) * n + i / n]).collect();
+                    }
                     for c in 0..m.shape.columns as usize {
                         for r in 0..m.shape.rows as usize {
                             let at = match (m.shape.columns, m.row_major) {

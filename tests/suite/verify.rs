@@ -355,6 +355,39 @@ fn members_of_instance_named_blocks_take_values_by_gl_names() {
     assert!(stdout(&wrong).contains("`Block.a`"), "{}", stdout(&wrong));
 }
 
+/// Row-major block matrices (a member's layout, a block's, and `column_major` overriding
+/// it) hold the values `--set` gives them as GLSL reads them: effectc stores them
+/// transposed as GL does, and the picture is GL's and the one the values give.
+#[test]
+fn row_major_block_matrices_hold_the_values_set_by_name() {
+    if !can_verify() {
+        return;
+    }
+    let dir = scratch("verify-row-major", "program");
+    let out = effectc(&[
+        "verify",
+        "tests/verify/ubo/row_major.vert",
+        "tests/verify/ubo/row_major.frag",
+        "--set",
+        "turn=0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9",
+        "--set",
+        "plain=0,0,0,0.3,0.4,0,0,0,0",
+        "--set",
+        "Mixed.whole=0.05,0.6,0,0,0.3,0,0,0,0,0,0,0,0,0,0,0",
+        "--set",
+        "Mixed.kept=0,0,0,0,0,0,0,0,0.7,0.2,0,0,0,0,0,0",
+        "--size",
+        "16x16",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let png = image::open(dir.join("row_major_0000.png")).unwrap().to_rgba8();
+    // turn's first column (0.1, 0.2, 0.3) + plain[1] (0.3, 0.4, 0); whole[0] (0.05, 0.6, …)
+    // + kept's third column (0.7, 0.2, …); halved: (0.2, 0.675, 0.4, 0.5).
+    assert_eq!(png.get_pixel(8, 8).0, [51, 172, 102, 128]);
+}
+
 /// The user's own std140 blocks with `bool`s and arrays of scalars and 2-vectors (stored in
 /// WGSL as words and 4-vectors, same offsets) draw what GL draws for the values `--set`
 /// gives them, and other values draw another picture.

@@ -9,7 +9,7 @@ use super::io_blocks::awkward_member;
 use super::Ctx;
 use crate::front::limitation::Limitation;
 use crate::front::plan::STRUCT_ALIGN_FILLER;
-use crate::front::syntax::{Referent, Storage};
+use crate::front::syntax::{Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
 
 impl Ctx<'_> {
@@ -122,56 +122,12 @@ impl Ctx<'_> {
         }
     }
 
-    /// Whether matrices of block `g` (a uniform or buffer block) are stored row-major.
-    fn block_row_major(&self, g: &crate::front::syntax::Global) -> bool {
-        let mut row = false;
-        for d in self.s.defaults.iter().filter(|d| d.span.end <= g.decl_span.start) {
-            if matches!(d.storage, Some(Storage::Uniform | Storage::Buffer)) && d.storage == Some(g.storage) {
-                for (k, _) in &d.layout {
-                    match k.as_str() {
-                        "row_major" => row = true,
-                        "column_major" => row = false,
-                        _ => {}
-                    }
-                }
-            }
-        }
-        for (k, _) in &g.layout {
-            match k.as_str() {
-                "row_major" => row = true,
-                "column_major" => row = false,
-                _ => {}
-            }
-        }
-        row
-    }
-
     /// Row-major square matrices in uniform and buffer blocks: naga reads every matrix
     /// column-major, so the stored matrix is the transpose; each read becomes
     /// `transpose(…)`.
     pub(super) fn row_major_uses(&mut self) {
         let s = self.s;
-        let mut row_major: Vec<(usize, String)> = Vec::new();
-        for (gi, g) in s.globals.iter().enumerate() {
-            let Some(b) = &g.block else { continue };
-            if !matches!(g.storage, Storage::Uniform | Storage::Buffer) {
-                continue;
-            }
-            let block_row = self.block_row_major(g);
-            for m in &b.members {
-                let mut row = block_row;
-                for (k, _) in &m.layout {
-                    match k.as_str() {
-                        "row_major" => row = true,
-                        "column_major" => row = false,
-                        _ => {}
-                    }
-                }
-                if row && matches!(m.ty.base.as_str(), "mat2" | "mat3" | "mat4" | "mat2x2" | "mat3x3" | "mat4x4") {
-                    row_major.push((gi, m.name.clone()));
-                }
-            }
-        }
+        let row_major = row_major_members(s);
         if row_major.is_empty() {
             return;
         }
@@ -187,4 +143,56 @@ impl Ctx<'_> {
             self.edits.insert(span.end, ")");
         }
     }
+}
+
+/// Whether matrices of block `g` (a uniform or buffer block) are stored row-major: the
+/// default-qualifier declarations before it, then its own layout.
+fn block_row_major(s: &StageSyntax, g: &crate::front::syntax::Global) -> bool {
+    let mut row = false;
+    let layouts = s
+        .defaults
+        .iter()
+        .filter(|d| d.span.end <= g.decl_span.start)
+        .filter(|d| matches!(d.storage, Some(Storage::Uniform | Storage::Buffer)) && d.storage == Some(g.storage))
+        .map(|d| &d.layout)
+        .chain([&g.layout]);
+    for layout in layouts {
+        for (k, _) in layout {
+            match k.as_str() {
+                "row_major" => row = true,
+                "column_major" => row = false,
+                _ => {}
+            }
+        }
+    }
+    row
+}
+
+/// The square matrices of uniform and buffer blocks stored row-major (by the member's own
+/// layout, its block's, or a default declaration): (index of the block's global, member).
+/// naga lays every matrix out column-major, so the rewrite reads these transposed and
+/// `render` stores them transposed.
+pub fn row_major_members(s: &StageSyntax) -> Vec<(usize, String)> {
+    let mut out = Vec::new();
+    for (gi, g) in s.globals.iter().enumerate() {
+        let Some(b) = &g.block else { continue };
+        if !matches!(g.storage, Storage::Uniform | Storage::Buffer) {
+            continue;
+        }
+        let block_row = block_row_major(s, g);
+        for m in &b.members {
+            let mut row = block_row;
+            for (k, _) in &m.layout {
+                match k.as_str() {
+                    "row_major" => row = true,
+                    "column_major" => row = false,
+                    _ => {}
+                }
+            }
+            if row && matches!(m.ty.base.as_str(), "mat2" | "mat3" | "mat4" | "mat2x2" | "mat3x3" | "mat4x4") {
+                out.push((gi, m.name.clone()));
+            }
+        }
+    }
+    out
 }

@@ -44,6 +44,7 @@ pub use crate::front::plan::is_unblocked_opaque;
 use crate::front::plan::Plan;
 pub use crate::front::syntax::dims_text;
 use crate::front::syntax::StageSyntax;
+pub use blocks::row_major_members;
 pub use uses::names_builtin;
 
 /// A stage rewritten to 4.50, with the map back to the user's file.

@@ -80,6 +80,8 @@ pub struct Scene {
     /// The values the program gives uniforms: GLSL initializers, `#pragma parameter`
     /// defaults ([`front::initial_values`](crate::front::initial_values)).
     pub initial: Vec<crate::front::initial_values::Initial>,
+    /// Block matrices stored row-major ([`front::initial_values::row_major`](crate::front::initial_values::row_major)).
+    pub row_major: Vec<(String, String)>,
     pub pipeline: wgpu::RenderPipeline,
     pub vertex_buffer: Option<wgpu::Buffer>,
     /// Per-instance attributes (vertex buffer slot after the mesh's, or 0 without one).
@@ -235,6 +237,7 @@ impl Scene {
         let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
         let draw = draw_of(gpu, r, pulled.as_ref().map(|p| p.count), &mesh_note, &mesh);
         let initial = crate::front::initial_values::of(input.program);
+        let row_major = crate::front::initial_values::row_major(input.program);
         let uniforms: Vec<(UniformBuffer, wgpu::Buffer)> = uniform_data
             .into_iter()
             .map(|u| {
@@ -277,6 +280,7 @@ impl Scene {
             degenerate,
             replay,
             initial,
+            row_major,
         })
     }
 }

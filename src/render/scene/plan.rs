@@ -87,8 +87,10 @@ pub(crate) fn plan<'a>(input: &PlanInput<'a>) -> Result<Plan<'a>, Vec<Diagnostic
     }
     report_attributes(input.program, &choices, &mut warnings);
     let initial = crate::front::initial_values::of(input.program);
-    let (uniforms, guessed) = uniforms::buffers(&input.translation.module, input.effect, &initial, input.overrides, !input.gl_defaults)
-        .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
+    let row_major = crate::front::initial_values::row_major(input.program);
+    let (uniforms, guessed) =
+        uniforms::buffers(&input.translation.module, input.effect, &initial, &row_major, input.overrides, !input.gl_defaults)
+            .map_err(|e| vec![Diagnostic::new(Code::PipelineRejected, e).in_file(first_file)])?;
     for g in guessed {
         let mut d = Diagnostic::new(Code::UniformGuessed, format!("uniform `{}` has no value in the manifest: using {}", g.name, g.what));
         d = at_declaration(d, input.program, &g.name, Storage::Uniform, "declared here");
