@@ -12,6 +12,9 @@
 //!   GL_EXT_shader_explicit_arithmetic_types): the 32-bit ones are exact aliases and become
 //!   the core type for both parsers; 8/16/64-bit ones become the core type of their kind
 //!   for glsl-lang, and naga (which has none of them) is not asked: the stage is limited;
+//! - 64-bit integer literals (`1693ul`, `7L`; GL_ARB_gpu_shader_int64): a 32-bit zero of
+//!   the same signedness for glsl-lang, put back for naga, and the stage is limited (naga
+//!   has no 64-bit integers in GLSL);
 //! - `buffer_reference` blocks (GL_EXT_buffer_reference), used as types: the block reads as
 //!   a struct for glsl-lang, and the stage is limited (naga has no buffer references);
 //! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited;
@@ -113,6 +116,17 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
                 i += 1;
             }
             let literal = std::str::from_utf8(&clean[start..i]).unwrap_or("");
+            if let Some(unsigned) = int64_literal(literal) {
+                // `1693ul`, `0x0ffffffffffffff0ul`, `-1L` (GL_ARB_gpu_shader_int64): a 32-bit
+                // zero of the same signedness for glsl-lang; naga has no 64-bit integers.
+                restore.push((start..i, literal.to_string()));
+                let zero: &[u8] = if unsigned { b"0u" } else { b"0" };
+                for (k, b) in parser[start..i].iter_mut().enumerate() {
+                    *b = zero.get(k).copied().unwrap_or(b' ');
+                }
+                limit("64-bit integer literals (GL_ARB_gpu_shader_int64)".to_string(), start..i);
+                continue;
+            }
             if wide_int_literal(literal) {
                 let digits_from = if literal.starts_with("0x") || literal.starts_with("0X") { start + 2 } else { start + 1 };
                 restore.push((start..i, literal.to_string()));
@@ -216,6 +230,21 @@ fn explicit_arithmetic_type(word: &str) -> Option<(String, bool)> {
         _ => return None,
     };
     (core.len() <= word.len()).then_some((core, exact))
+}
+
+/// An integer literal with a 64-bit suffix (`l`/`L`, `ul`/`UL`; not a double's `lf`):
+/// whether it is unsigned.
+fn int64_literal(literal: &str) -> Option<bool> {
+    let lower = literal.to_ascii_lowercase();
+    let hex = lower.starts_with("0x");
+    if lower.contains('.') || (!hex && lower.contains('e')) {
+        return None;
+    }
+    let unsigned = lower.ends_with("ul") || lower.ends_with("lu");
+    let digits = if unsigned { &lower[..lower.len() - 2] } else { lower.strip_suffix('l')? };
+    let digits = digits.strip_prefix("0x").unwrap_or(digits);
+    (!digits.is_empty() && digits.bytes().all(|b| b.is_ascii_hexdigit()) && (hex || digits.bytes().all(|b| b.is_ascii_digit())))
+        .then_some(unsigned)
 }
 
 /// Hex or octal integer literal without a `u` suffix above `INT_MAX` that still fits 32 bits.
@@ -404,6 +433,16 @@ mod tests {
         let m = mask(src, src.as_bytes());
         assert_eq!(m.for_parser.len(), src.len());
         m
+    }
+
+    #[test]
+    fn int64_literals_are_zeroed_for_the_parser_and_limit_the_stage() {
+        let m = masked("uint a = uint(1693ul * 0x0ffffffffffffff0UL); int b = int(-7L); double d = 1.5lf; uint c = 3u;");
+        assert!(m.for_parser.contains("a = uint(0u     * 0u                  );"), "{}", m.for_parser);
+        assert!(m.for_parser.contains("b = int(-0 );"), "{}", m.for_parser);
+        assert!(m.for_parser.contains("d = 1.5lf;") && m.for_parser.contains("c = 3u;"), "{}", m.for_parser);
+        assert_eq!(m.unsupported.as_ref().map(|(w, _)| w.as_str()), Some("64-bit integer literals (GL_ARB_gpu_shader_int64)"));
+        assert_eq!(m.restore.len(), 3, "{:?}", m.restore);
     }
 
     #[test]
