@@ -209,11 +209,19 @@ impl Ctx<'_> {
         let mut late: Vec<&crate::front::syntax::StructDef> =
             self.plan.block_structs.iter().filter_map(|n| s.struct_def(n)).filter(|d| d.span.start >= point).collect();
         late.sort_by_key(|d| d.span.start);
+        let moving: Vec<&str> = late.iter().map(|d| d.name.as_str()).collect();
         let movable = |d: &crate::front::syntax::StructDef| {
-            let text = &s.text[d.span.clone()];
-            let mut between = s.globals.iter().filter(|g| g.decl_span.start >= point && g.decl_span.start < d.span.start);
-            plain_definition_end(&s.text, &d.span).is_some()
-                && !between.any(|g| crate::front::lexical::identifiers(text).any(|w| w == g.name))
+            let names = || crate::front::lexical::identifiers(&s.text[d.span.clone()]);
+            let between = |at: usize| at >= point && at < d.span.start;
+            // What it names must not stay behind it: a global (a constant size) or a
+            // struct that does not move with it.
+            let globals = s.globals.iter().filter(|g| between(g.decl_span.start)).any(|g| names().any(|w| w == g.name));
+            let structs = s
+                .structs
+                .iter()
+                .filter(|t| between(t.span.start) && !moving.contains(&t.name.as_str()))
+                .any(|t| names().any(|w| w == t.name));
+            plain_definition_end(&s.text, &d.span).is_some() && !globals && !structs
         };
         if late.iter().all(|d| movable(d)) {
             late.into_iter().map(|d| d.name.clone()).collect()
