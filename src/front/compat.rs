@@ -550,14 +550,7 @@ fn products(s: &StageSyntax, d: &mut StageDeclarations) {
 /// that version has no fixed-function vertex stage (core and ES profiles).
 pub fn fixed_function_vertex_stage(fragment_text: &str) -> Option<String> {
     use std::fmt::Write;
-    let version = crate::front::version::parse_version(fragment_text).ok()?;
-    if !crate::front::builtins::has_compatibility_builtins(&version) {
-        return None;
-    }
-    let mut text = match &version.directive {
-        Some(line) => format!("{}\n", &fragment_text[line.clone()]),
-        None => String::new(),
-    };
+    let mut text = compatibility_version_line(fragment_text)?;
     text.push_str("// GL's fixed-function vertex processing in its initial state\nvoid main() {\n");
     text.push_str("    gl_Position = gl_Vertex;\n    gl_FrontColor = gl_Color;\n    gl_FrontSecondaryColor = gl_SecondaryColor;\n");
     // Fog from the fragment's depth (GL's initial fog coordinate source): |eye z|.
@@ -575,16 +568,19 @@ pub fn fixed_function_vertex_stage(fragment_text: &str) -> Option<String> {
 /// stage's own version, for the vertex stage's text; `None` when that version has no
 /// fixed-function fragment stage (core and ES profiles).
 pub fn fixed_function_fragment_stage(vertex_text: &str) -> Option<String> {
-    let version = crate::front::version::parse_version(vertex_text).ok()?;
+    let mut text = compatibility_version_line(vertex_text)?;
+    text.push_str("// GL's fixed-function fragment processing in its initial state\nvoid main() {\n    gl_FragColor = gl_Color;\n}\n");
+    Some(text)
+}
+
+/// The start of a stage GL adds to `text`'s: its `#version` line (none for 1.10 without
+/// one); `None` when that version has no fixed-function stages (core and ES profiles).
+fn compatibility_version_line(text: &str) -> Option<String> {
+    let version = crate::front::version::parse_version(text).ok()?;
     if !crate::front::builtins::has_compatibility_builtins(&version) {
         return None;
     }
-    let mut text = match &version.directive {
-        Some(line) => format!("{}\n", &vertex_text[line.clone()]),
-        None => String::new(),
-    };
-    text.push_str("// GL's fixed-function fragment processing in its initial state\nvoid main() {\n    gl_FragColor = gl_Color;\n}\n");
-    Some(text)
+    Some(version.directive.as_ref().map_or_else(String::new, |line| format!("{}\n", &text[line.clone()])))
 }
 
 /// The `gl_TexCoord[]` elements a stage's text indexes: the literal indices, or all of
