@@ -15,6 +15,7 @@ use crate::front::plan::UNIFORM_BLOCK;
 pub fn write(module: &Module, info: &ModuleInfo) -> Result<String, String> {
     let mut text = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
         .map_err(|e| format!("naga's WGSL writer: {e}"))?;
+    text = exact_largest_f32(text);
     if takes_derivatives(module) {
         text.insert_str(0, "diagnostic(off, derivative_uniformity);\n\n");
     }
@@ -23,6 +24,29 @@ pub fn write(module: &Module, info: &ModuleInfo) -> Result<String, String> {
         same_block_layout(module, &reparsed)?;
     }
     Ok(text)
+}
+
+/// naga writes an `f32` literal as Rust prints it, the shortest decimal that reads back as
+/// the same float. For the largest finite `f32` that decimal, `3.4028235e38`, lies above
+/// the value, and WGSL compilers that range-check a literal before rounding it refuse the
+/// text (tint: "value cannot be represented as 'f32'"); GLSL's `FLT_MAX` idioms meet it.
+/// The exact hexadecimal literal names the same value.
+fn exact_largest_f32(text: String) -> String {
+    let written = format!("{}f", f32::MAX);
+    if !text.contains(&written) {
+        return text;
+    }
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text.as_str();
+    while let Some(at) = rest.find(&written) {
+        let before = rest[..at].chars().next_back();
+        let whole = !before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
+        out.push_str(&rest[..at]);
+        out.push_str(if whole { "0x1.fffffep+127f" } else { &written });
+        rest = &rest[at + written.len()..];
+    }
+    out.push_str(rest);
+    out
 }
 
 /// Expressions in one function up to which the emitted WGSL is re-parsed to prove it.
@@ -77,4 +101,48 @@ fn takes_derivatives(module: &Module) -> bool {
             )
         })
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn written(wgsl: &str) -> String {
+        let module = naga::front::wgsl::parse_str(wgsl).unwrap();
+        let info = crate::front::naga_run::validator().validate(&module).unwrap();
+        write(&module, &info).unwrap()
+    }
+
+    #[test]
+    fn the_largest_f32_is_written_exactly() {
+        let text = written(
+            "@fragment fn main(@location(0) x: f32) -> @location(0) vec4<f32> {\n\
+             let big = select(0.0, 1.0, x == 3.40282347e38 || x == -3.40282347e38);\n\
+             return vec4<f32>(big);\n}\n",
+        );
+        assert!(!text.contains(&f32::MAX.to_string()), "{text}");
+        assert!(text.contains("== 0x1.fffffep+127f"), "{text}");
+        assert!(text.contains("-0x1.fffffep+127f"), "{text}");
+        // It reads back as the same value.
+        let reparsed = verify(&text).unwrap();
+        let literals: Vec<f32> = reparsed
+            .entry_points
+            .iter()
+            .flat_map(|e| e.function.expressions.iter())
+            .filter_map(|(_, e)| match e {
+                naga::Expression::Literal(naga::Literal::F32(v)) => Some(v.abs()),
+                _ => None,
+            })
+            .collect();
+        assert!(literals.contains(&f32::MAX), "{literals:?}");
+    }
+
+    #[test]
+    fn other_literals_are_left_as_naga_wrote_them() {
+        assert_eq!(
+            exact_largest_f32("x == 1340282350000000000000000000000000000000f".into()),
+            "x == 1340282350000000000000000000000000000000f"
+        );
+        assert_eq!(exact_largest_f32("a = 2.5f;".into()), "a = 2.5f;");
+    }
 }
