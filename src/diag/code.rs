@@ -142,6 +142,7 @@ codes! {
     PairedInFolder => "N0001", "a fragment stage paired with the one vertex stage of its folder",
     StageAlone => "N0002", "a stage checked alone: no link rule ran",
     StageFromText => "N0003", "a `.glsl` file's stage told from its text",
+    PairedByHostCode => "N0004", "stages paired as the host code names them together",
     SyntaxAndInterfaceOnly => "N0101", "stage checked for syntax and interface only",
     NagaCannotTake => "N0102", "a legal construct naga cannot take: stage checked for syntax and interface only",
     ShadowBiasDropped => "N0103", "the bias or explicit gradients of a shadow lookup are dropped",

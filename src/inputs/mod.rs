@@ -25,6 +25,7 @@ use crate::diag::{Code, Diagnostic};
 use crate::stage::{Define, StageKind};
 
 pub mod declared;
+pub mod host_code;
 pub mod stage_names;
 
 /// One program to check.
@@ -55,6 +56,8 @@ pub enum Formed {
     TwoStages,
     /// A `[[program]]` of `effectc.toml`.
     Declared,
+    /// Named together by the host code (note N0004, [`host_code`]).
+    HostCode,
 }
 
 impl Formed {
@@ -67,6 +70,7 @@ impl Formed {
             Formed::FolderVertex => "a fragment stage with the one vertex stage of its folder",
             Formed::TwoStages => "one file holding both stages, read with each stage's macro defined",
             Formed::Declared => "declared by a [[program]] in effectc.toml",
+            Formed::HostCode => "named together by the host code (one call or initializer, or consecutive statements)",
         }
     }
 }
@@ -251,7 +255,7 @@ pub(crate) fn without_comments(text: &str) -> String {
     }
 }
 
-fn program_name(files: &[(PathBuf, StageKind)]) -> String {
+pub(crate) fn program_name(files: &[(PathBuf, StageKind)]) -> String {
     let first = &files[0].0;
     let stem = first.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
     match first.parent().filter(|p| !p.as_os_str().is_empty()) {
@@ -291,6 +295,7 @@ fn collect_dir(dir: &Path, selection: &Selection, declared: &BTreeSet<PathBuf>) 
     let mut manifests = Vec::new();
     let mut stage_files = Vec::new();
     let mut two_stage = Vec::new();
+    let mut hosts = Vec::new();
     let mut diags = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
@@ -326,6 +331,8 @@ fn collect_dir(dir: &Path, selection: &Selection, declared: &BTreeSet<PathBuf>) 
             } else if let Some((kind, note)) = text.as_deref().and_then(|t| stage_from_text(&p, t)) {
                 diags.push(note);
                 stage_files.push((p, kind));
+            } else if host_code::is_host_file(&p) {
+                hosts.push(p);
             }
         }
     }
@@ -339,6 +346,7 @@ fn collect_dir(dir: &Path, selection: &Selection, declared: &BTreeSet<PathBuf>) 
     two_stage.retain(|p| !matches!(p, ProgramInput::Stages { files, .. } if in_manifest_dir(&files[0].0)));
     let mut programs: Vec<ProgramInput> = manifests.into_iter().map(ProgramInput::Manifest).collect();
     let mut groups = group_by_stem(stage_files);
+    diags.extend(host_code::pair_as_named(&mut groups, &hosts));
     diags.extend(pair_with_the_folders_vertex_stage(&mut groups));
     programs.extend(groups);
     programs.extend(two_stage);

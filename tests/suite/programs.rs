@@ -141,3 +141,42 @@ fn a_compute_stage_stands_apart_and_told_stages_keep_their_stem() {
     assert_eq!(shapes, [vec!["compute"], vec!["vertex", "fragment"], vec!["vertex", "tess_control", "tess_eval", "fragment"]], "{doc}");
     assert_eq!(code(&out), 0, "{doc}");
 }
+
+#[test]
+fn the_host_code_pairs_stages_it_names_together_and_a_mismatch_is_caught() {
+    let dir = common::scratch("programs", "host-code");
+    let data = dir.join("data");
+    std::fs::create_dir_all(&data).unwrap();
+    let unlit = "#version 330\nin vec3 p;\nout vec3 tint;\nvoid main() { tint = p; gl_Position = vec4(p, 1.0); }\n";
+    std::fs::write(data.join("PCN.vert"), VERT).unwrap();
+    std::fs::write(data.join("Unlit.vert"), unlit).unwrap();
+    std::fs::write(data.join("Diffuse.frag"), frag("normal").replace(" * LIGHTS", "")).unwrap();
+    std::fs::write(data.join("Flat.frag"), frag("tint").replace(" * LIGHTS", "")).unwrap();
+    // The tutorial's C++ names the pairs: in one initializer, and in consecutive statements.
+    std::fs::write(
+        dir.join("main.cpp"),
+        "// LoadProgram(\"Unlit.vert\", \"Diffuse.frag\");  (commented out: no pair)\n\
+         static const Pair pairs[] = { {\"PCN.vert\", \"Diffuse.frag\"} };\n\
+         void init() {\n\
+         \tshaders.push_back(LoadShader(GL_VERTEX_SHADER, \"Unlit.vert\"));\n\
+         \tshaders.push_back(LoadShader(GL_FRAGMENT_SHADER, \"Flat.frag\"));\n\
+         \tflat = CreateProgram(shaders);\n}\n",
+    )
+    .unwrap();
+    let out = effectc(&["check", "--color", "never", "--verbose", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("programs formed: 2"), "{text}");
+    assert_eq!(text.matches("named together by the host code").count(), 2, "{text}");
+    assert!(text.contains("N0004") && text.contains("main.cpp:2` names them together"), "{text}");
+    assert!(!text.contains("N0002"), "no stage is left alone: {text}");
+    // A typo in one fragment stage is now a link error against the vertex stage the code pairs it with.
+    std::fs::write(data.join("Flat.frag"), frag("tnit").replace(" * LIGHTS", "")).unwrap();
+    let out = effectc(&["check", "--color", "never", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0202") && stdout(&out).contains("tnit"), "{}", stdout(&out));
+    // Without the host file the folder has two vertex stages and nothing pairs its fragment stages.
+    std::fs::remove_file(dir.join("main.cpp")).unwrap();
+    let out = effectc(&["check", "--color", "never", dir.to_str().unwrap()]);
+    assert_eq!(stdout(&out).matches("N0002").count(), 4, "{}", stdout(&out));
+}
