@@ -214,21 +214,19 @@ fn load_passes(effect: &Effect, files: &mut Files, l: &mut Loaded) -> Vec<PassFi
 /// `defines` after its `#version` line: the id of the text the front reads.
 fn read_stage(path: &Path, defines: &[Define], files: &mut Files, l: &mut Loaded) -> Option<FileId> {
     match crate::read::bounded(path, l.file_bytes) {
-        Ok(bytes) => match String::from_utf8(bytes) {
+        Ok(bytes) => match crate::front::source_text::of(bytes) {
             Ok(text) => {
                 let id = files.add(path.display().to_string(), text);
                 let expanded = crate::front::includes::expand(path, id, files, l.file_bytes, &mut l.diagnostics)?;
                 let all: Vec<Define> = l.defines.iter().chain(defines).cloned().collect();
                 Some(crate::front::defines::apply(files, expanded, &all))
             }
-            Err(e) => {
-                let valid = e.utf8_error().valid_up_to();
-                let text = String::from_utf8_lossy(e.as_bytes()).to_string();
+            Err((at, text)) => {
                 let id = files.add(path.display().to_string(), text);
                 l.diagnostics.push(
                     Diagnostic::new(Code::NotText, "this stage file is not UTF-8 text")
-                        .at(id, valid..valid + 1, "invalid byte here")
-                        .with_note("GLSL sources are text; is this a binary file?"),
+                        .at(id, at..at + 1, "invalid byte here")
+                        .with_note("GLSL sources are text (bytes outside UTF-8 are read only inside comments); is this a binary file?"),
                 );
                 None
             }

@@ -60,7 +60,7 @@ codes! {
     // Inputs and outputs (`inputs`, `check`, `output`).
     InputIo => "E0010", "input missing or unreadable",
     UnknownStage => "E0011", "the stage of a file cannot be told from its name or its text",
-    NotText => "E0012", "stage file is not UTF-8 text",
+    NotText => "E0012", "stage file is not text: a byte outside UTF-8 outside comments",
     InputRefused => "E0013", "input is not a regular file, or over the size limit",
     OutputIo => "E0014", "output cannot be written",
     ConfigInvalid => "E0015", "`effectc.toml` cannot be read or has an invalid setting",

@@ -135,7 +135,9 @@ impl Expansion {
                 self.fail(diags, d);
                 return;
             }
-            let included = String::from_utf8_lossy(&bytes).into_owned();
+            // Bytes outside UTF-8 stand as `?`, one for one ([`source_text`]); outside
+            // comments the included text then fails to compile where they stand.
+            let included = crate::front::source_text::of(bytes).unwrap_or_else(|(_, text)| text);
             if guarded(&included) {
                 self.once.insert(key.clone());
             }

@@ -48,6 +48,7 @@ pub mod plan;
 pub mod program;
 pub mod reference;
 pub mod rewrite;
+pub mod source_text;
 pub mod statements;
 pub mod syntax;
 pub mod through_spirv;

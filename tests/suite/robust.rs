@@ -238,3 +238,26 @@ fn garbage_and_empty_files_are_errors() {
         spans_in_files(&outcome.diagnostics, &outcome.files).unwrap_or_else(|e| panic!("{name}: {e}"));
     }
 }
+
+#[test]
+fn latin1_in_comments_is_read_and_spans_after_it_hold() {
+    // Comments written before editors saved UTF-8 (`Iñigo Quílez` in Latin-1): glslang and
+    // Mesa read them; every byte stands for one byte, so a span after them is the user's.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("robust-latin1");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("quilez.frag");
+    std::fs::write(
+        &path,
+        b"#version 330\n// after I\xf1igo Qu\xedlez /* \xe9t\xe9 */\nout vec4 c;\nvoid main() { c = vec4(undeclared); }\n",
+    )
+    .unwrap();
+    let (outcome, _) = check_inputs(std::slice::from_ref(&path), None, FrontOptions::default());
+    let errors: Vec<&Diagnostic> = outcome.diagnostics.iter().filter(|d| d.is_error()).collect();
+    assert_eq!(errors.len(), 1, "{}", common::render(&outcome));
+    assert_ne!(errors[0].code.as_str(), "E0012", "{}", common::render(&outcome));
+    assert!(common::render(&outcome).contains("quilez.frag:4:24"), "{}", common::render(&outcome));
+    std::fs::write(&path, b"#version 330\n// I\xf1igo\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n").unwrap();
+    let (outcome, _) = check_inputs(std::slice::from_ref(&path), None, FrontOptions::default());
+    assert!(!diag::has_errors(&outcome.diagnostics), "{}", common::render(&outcome));
+}
