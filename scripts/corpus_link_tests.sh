@@ -12,6 +12,10 @@
 # (it may be older than the glslang the expectations come from): exit 0 accept, 2/3 reject,
 # 1 usage error (an option it does not know), a signal = crash.
 #
+# Where effectc disagrees with an OpenGL group's expectation, Mesa's verdict on the same files
+# (scripts/corpus/gl_verdict.c, one program of every file) says which side a real driver
+# takes; the totals count those groups apart ("effectc sides with Mesa").
+#
 # Groups with a stage effectc cannot read (.mesh, .task, ray tracing) are skipped and listed.
 # In multi-unit groups effectc sees two files of one stage and checks them as separate
 # programs (grouped by file stem), not as one linked stage: those figures are indicative.
@@ -25,6 +29,9 @@ glslang=${GLSLANG:-glslangValidator}
 [ -x "$bin" ] || { echo "no $bin: build it first (cargo build --release)" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+mesa_verdict=""
+if gcc -O2 -o "$tmp/gl_verdict" scripts/corpus/gl_verdict.c -lEGL -lGL 2>/dev/null; then mesa_verdict="$tmp/gl_verdict"; fi
+declare -A with_mesa
 
 declare -A groups agree disagree crash
 subsets="all opengl-single opengl-multi vulkan-single vulkan-multi"
@@ -66,6 +73,16 @@ for d in "$corpus"/*/; do
         echo "          files:$(for f in $names; do printf ' %s' "$f"; done)"
         [ -n "$first" ] && echo "          effectc: $first"
         [ -n "$reason" ] && echo "          glslang: $reason"
+        if [ -n "$mesa_verdict" ] && [ "$env" = opengl ] && [ "$got" != crash ]; then
+            rm -rf "$tmp/mesa"; mkdir "$tmp/mesa"
+            for f in $names; do cp "$d/$f" "$tmp/mesa/"; done
+            mesa=$("$mesa_verdict" "$tmp/mesa" 2>/dev/null | cut -f2-)
+            case "$mesa" in ok*) mv=accept ;; fail*) mv=reject ;; *) mv=unknown ;; esac
+            echo "          mesa: $mv ($(echo "$mesa" | cut -f2 | cut -c1-120))"
+            if [ "$mv" = "$got" ]; then
+                for s in all "$sub"; do with_mesa[$s]=$(( ${with_mesa[$s]:-0} + 1 )); done
+            fi
+        fi
     fi
 
     # The reference: does the installed glslangValidator give the expected verdict?
@@ -83,8 +100,8 @@ echo
 echo "== effectc vs glslang's expected verdicts ($skipped groups skipped)"
 for s in $subsets; do
     n=${groups[$s]}
-    printf '%-14s groups %3d  agree %3d (%3d%%)  disagree %3d  crashes %3d\n' "$s" "$n" "${agree[$s]}" \
-        $(( n ? 100 * agree[$s] / n : 0 )) "${disagree[$s]}" "${crash[$s]}"
+    printf '%-14s groups %3d  agree %3d (%3d%%)  disagree %3d (effectc sides with Mesa in %d)  crashes %3d\n' "$s" "$n" "${agree[$s]}" \
+        $(( n ? 100 * agree[$s] / n : 0 )) "${disagree[$s]}" "${with_mesa[$s]:-0}" "${crash[$s]}"
 done
 echo "acceptance figure (opengl-single): ${agree[opengl-single]}/${groups[opengl-single]} agree"
 echo
