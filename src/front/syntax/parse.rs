@@ -316,6 +316,15 @@ mod tests {
     }
 
     #[test]
+    fn a_sign_after_an_exponent_s_digits_is_an_operator() {
+        // `1e2+n.y` is `1e2`, `+`, `n.y`; `0xE+1` is `0xE`, `+`, `1` (vendor/glsl-lang-pp/PATCHED.md).
+        let src = "#version 330\nuniform vec2 n;\nout vec4 c;\n\
+                   void main() { float h = fract(sin((n.x*1e2+n.y*1e4+1475.4526)*1e-4)*1e6); int k = 0xE+1; c = vec4(h, float(k), 1.5e+2-3.0, 1.0); }\n";
+        let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::Auto).map_err(|d| d[0].message.clone());
+        assert!(s.expect("the numbers end before the sign").has_main);
+    }
+
+    #[test]
     fn comment_marks_in_a_pragma_s_quoted_text_hide_nothing() {
         let src = "#version 450\n#pragma parameter g \"// ANALOG /* //\" 0.0 0.0 1.0 1.0\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(1.0); }\n";
         let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::Auto).map_err(|d| d[0].message.clone());

@@ -22,8 +22,10 @@ enum State {
     Backslash,
     /// Building an identifier
     Ident,
-    /// Building a digit sequence
-    Digits { seen_e: bool, seen_dot: bool },
+    /// Building a digit sequence (effectc patch: `seen_e` is "the previous character is an
+    /// exponent's `e`", so only a sign right after it joins the number; `hex` after `0x`,
+    /// where `e` is a digit)
+    Digits { seen_e: bool, seen_dot: bool, hex: bool },
     /// Single-line comment
     SingleComment,
     /// Multi-line comment
@@ -148,6 +150,7 @@ impl<'i> Iterator for PreLexer<'i> {
                             State::Digits {
                                 seen_e: false,
                                 seen_dot: false,
+                                hex: false,
                             }
                         }
                         Some(NewlineToken {
@@ -305,7 +308,7 @@ impl<'i> Iterator for PreLexer<'i> {
                     }
                 }
 
-                State::Digits { seen_e, seen_dot } => {
+                State::Digits { seen_e, seen_dot, hex } => {
                     match self.peek_token() {
                         Some((
                             NewlineToken {
@@ -315,7 +318,9 @@ impl<'i> Iterator for PreLexer<'i> {
                             _,
                         )) => {
                             self.next_token();
-                            State::Digits { seen_e, seen_dot }
+                            // effectc patch: a digit ends the exponent's sign position
+                            // (`1e2+y` is `1e2`, `+`, `y`).
+                            State::Digits { seen_e: false, seen_dot, hex }
                         }
                         Some((
                             NewlineToken {
@@ -328,8 +333,9 @@ impl<'i> Iterator for PreLexer<'i> {
                         {
                             self.next_token();
                             State::Digits {
-                                seen_e,
+                                seen_e: false,
                                 seen_dot: punct == "." || seen_dot,
+                                hex,
                             }
                         }
                         Some((
@@ -340,14 +346,16 @@ impl<'i> Iterator for PreLexer<'i> {
                             ch,
                         )) => {
                             self.next_token();
+                            let hex = hex || ch == "x" || ch == "X";
                             State::Digits {
-                                seen_e: ch == "e" || ch == "E",
+                                seen_e: !hex && (ch == "e" || ch == "E"),
                                 seen_dot,
+                                hex,
                             }
                         }
                         Some((_, "\\")) => {
                             self.next_token();
-                            self.return_to = State::Digits { seen_e, seen_dot };
+                            self.return_to = State::Digits { seen_e, seen_dot, hex };
                             State::Backslash
                         }
                         _ => {

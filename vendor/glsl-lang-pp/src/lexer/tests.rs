@@ -47,6 +47,11 @@ fn test_digits() {
         &[(DIGITS, Cow::Borrowed("01214"))]
     );
     assert_eq!(&tokenize("3.2324e2")[..], &[DIGITS]);
+    // effectc patch: a sign joins the number only right after its exponent's `e`.
+    assert_eq!(&tokenize("1e-34")[..], &[DIGITS]);
+    assert_eq!(&tokenize("1e2+y")[..], &[DIGITS, PLUS, IDENT_KW]);
+    assert_eq!(&tokenize("1.5e+2-3")[..], &[DIGITS, DASH, DIGITS]);
+    assert_eq!(&tokenize("0xE+1")[..], &[DIGITS, PLUS, DIGITS]);
 }
 
 #[test]
