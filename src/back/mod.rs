@@ -87,18 +87,21 @@ pub struct TranslateOptions {
     /// Keep 64-bit floats (`double`, `dvec*`): every target asked for has them (SPIR-V with
     /// the Float64 capability, HLSL); WGSL, MSL and GLSL ES do not.
     pub float64: bool,
+    /// Keep 64-bit integers (`int64_t`, `uint64_t`, GL_ARB_gpu_shader_int64): every target
+    /// asked for has them (SPIR-V with the Int64 capability); WGSL and GLSL ES do not.
+    pub int64: bool,
 }
 
 impl Default for TranslateOptions {
     fn default() -> Self {
-        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false, float64: false }
+        TranslateOptions { gl_depth: true, widen_outputs: false, flip_y: false, float64: false, int64: false }
     }
 }
 
 impl TranslateOptions {
     /// What `effectc render` translates with: the render-only adaptations on.
     pub fn for_rendering(gl_depth: bool) -> Self {
-        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, float64: false }
+        TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, float64: false, int64: false }
     }
 }
 
@@ -139,7 +142,7 @@ pub fn translate(
         return Err(vec![Diagnostic::new(Code::StageNotValid, "the program has no stages to translate")]);
     };
     let file = first.syntax.file;
-    let modules = stage_modules(program, options.float64)?;
+    let modules = stage_modules(program, options)?;
     let refs: Vec<(StageKind, &Module)> = modules.iter().map(|(k, m)| (*k, m)).collect();
     let mut module = merge::merge(&refs).map_err(|c| {
         vec![Diagnostic::new(Code::BindingConflict, format!("the stages cannot share one module: {}", c.0))
@@ -156,11 +159,10 @@ pub fn translate(
     if options.widen_outputs {
         fixes::widen_fragment_outputs(&mut module);
     }
-    // Compaction assumes a valid module; prove it first (with 64-bit floats where every
-    // target has them).
+    // Compaction assumes a valid module; prove it first (with 64-bit floats and integers
+    // where every target has them).
     let validator = || {
-        let caps = crate::front::naga_run::webgpu_capabilities()
-            | if options.float64 { naga::valid::Capabilities::FLOAT64 } else { naga::valid::Capabilities::empty() };
+        let caps = crate::front::naga_run::webgpu_capabilities() | wide_capabilities(options);
         naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps)
     };
     validator()
@@ -218,7 +220,21 @@ fn with_causes(e: &dyn std::error::Error) -> String {
 /// Each stage's validated module, fixed per stage, in pipeline order (the vertex stage's
 /// is the fold of the vertex and geometry stages when there is a geometry stage); or why
 /// a stage cannot be translated.
-fn stage_modules(program: &CompiledProgram, float64: bool) -> Result<Vec<(StageKind, Module)>, Vec<Diagnostic>> {
+/// The 64-bit capabilities every requested target has ([`TranslateOptions::float64`],
+/// [`TranslateOptions::int64`]).
+fn wide_capabilities(options: TranslateOptions) -> naga::valid::Capabilities {
+    let mut caps = naga::valid::Capabilities::empty();
+    if options.float64 {
+        caps |= naga::valid::Capabilities::FLOAT64;
+    }
+    if options.int64 {
+        caps |= naga::valid::Capabilities::SHADER_INT64;
+    }
+    caps
+}
+
+fn stage_modules(program: &CompiledProgram, options: TranslateOptions) -> Result<Vec<(StageKind, Module)>, Vec<Diagnostic>> {
+    let wide = wide_capabilities(options);
     let mut diags = Vec::new();
     let mut modules = Vec::new();
     for stage in &program.stages {
@@ -277,7 +293,8 @@ fn stage_modules(program: &CompiledProgram, float64: bool) -> Result<Vec<(StageK
             v.needs
                 .iter()
                 .filter(|n| !(folded_primitive.is_some() && n.as_str() == "PRIMITIVE_INDEX"))
-                .filter(|n| !(float64 && n.as_str() == "FLOAT64"))
+                .filter(|n| !(wide.contains(naga::valid::Capabilities::FLOAT64) && n.as_str() == "FLOAT64"))
+                .filter(|n| !(wide.contains(naga::valid::Capabilities::SHADER_INT64) && n.as_str() == "SHADER_INT64"))
                 .cloned()
                 .collect()
         };
@@ -285,7 +302,7 @@ fn stage_modules(program: &CompiledProgram, float64: bool) -> Result<Vec<(StageK
             diags.push(
                 Diagnostic::new(
                     Code::TargetCannotExpress,
-                    format!("the {kind} stage needs {} , which WebGPU does not have", needs_of(validated).join(", ")),
+                    format!("the {kind} stage needs {}, which WebGPU does not have", needs_of(validated).join(", ")),
                 )
                 .in_file(stage.syntax.file)
                 .with_note(
@@ -355,6 +372,9 @@ fn capability_help(needs: &[String]) -> String {
     let mut help = format!("the construct: {}", what.join("; "));
     if needs.iter().any(|n| n == "FLOAT64") {
         help.push_str("; SPIR-V and HLSL have 64-bit floats: `effectc translate --to spv,spvasm,hlsl` keeps them");
+    }
+    if needs.iter().any(|n| n == "SHADER_INT64") {
+        help.push_str("; SPIR-V has 64-bit integers: `effectc translate --to spv,spvasm` keeps them");
     }
     help
 }

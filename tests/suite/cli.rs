@@ -321,6 +321,31 @@ fn doubles_are_kept_for_the_targets_that_have_them() {
 }
 
 #[test]
+fn integers_of_64_bits_are_kept_for_spirv_and_refused_for_wgsl_with_the_way_out() {
+    // GL_ARB_gpu_shader_int64: WGSL has no 64-bit integers (E0306, naming the targets that
+    // keep them); SPIR-V (Int64 capability) alone keeps them.
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("int64");
+    std::fs::create_dir_all(&dir).unwrap();
+    let frag = dir.join("i.frag");
+    std::fs::write(
+        &frag,
+        "#version 400\n#extension GL_ARB_gpu_shader_int64 : require\nout vec4 color;\nuniform uint val;\n\
+         void main() { int64_t t = int64_t(val) << 33; color = t == (1L << 33) ? vec4(0, 1, 0, 1) : vec4(1, 0, 0, 1); }\n",
+    )
+    .unwrap();
+    let out = effectc(&["check", frag.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let out = effectc(&["translate", frag.to_str().unwrap(), "--to", "wgsl,spv", "--out", dir.join("both").to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains("E0306") && stdout(&out).contains("--to spv,spvasm` keeps them"), "{}", stdout(&out));
+    let kept = dir.join("kept");
+    let out = effectc(&["translate", frag.to_str().unwrap(), "--to", "spvasm,spv", "--out", kept.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let asm = std::fs::read_to_string(kept.join("i.frag.spvasm")).unwrap();
+    assert!(asm.contains("OpCapability Int64") && asm.contains("OpTypeInt 64 1"), "{asm}");
+}
+
+#[test]
 fn vulkan_glsl_is_checked_for_the_vulkan_version_asked() {
     // Subgroup operations need SPIR-V 1.3 (Vulkan 1.1): refused under `glslangValidator -V`'s
     // Vulkan 1.0 with a help naming the option, accepted with `--target-env vulkan1.1` and in
