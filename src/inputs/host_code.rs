@@ -242,23 +242,22 @@ fn resolve(literal: &str, host: &Path, by_name: &BTreeMap<String, Vec<(PathBuf, 
         let shared = dir.components().zip(host_dir.components()).take_while(|(a, b)| a == b).count();
         (shared, usize::MAX - dir.components().count())
     };
-    let mut best: Option<((usize, usize), &(PathBuf, StageKind))> = None;
-    let mut tied = false;
-    for c in candidates.iter().filter(|(p, _)| ends_so(p)) {
-        let s = score(&c.0);
-        match best {
-            Some((b, _)) if s < b => {}
-            Some((b, _)) if s == b => tied = true,
-            _ => {
-                best = Some((s, c));
-                tied = false;
-            }
-        }
-    }
-    if tied {
+    let scored: Vec<(usize, usize, usize)> = candidates
+        .iter()
+        .enumerate()
+        .filter(|(_, (p, _))| ends_so(p))
+        .map(|(i, (p, _))| {
+            let (shared, shallow) = score(p);
+            (shared, shallow, i)
+        })
+        .collect();
+    let best = scored.iter().map(|(shared, shallow, _)| (*shared, *shallow)).max()?;
+    let mut nearest = scored.iter().filter(|(shared, shallow, _)| (*shared, *shallow) == best);
+    let (_, _, i) = nearest.next()?;
+    if nearest.next().is_some() {
         return None;
     }
-    best.map(|(_, c)| c.clone())
+    Some(candidates[*i].clone())
 }
 
 /// The string literals of host code that could name a file, with their group and statement.
