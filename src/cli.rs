@@ -554,20 +554,10 @@ impl TranslateArgs {
         }
         targets.sort();
         targets.dedup();
-        // 64-bit floats are kept when every target has them (SPIR-V, HLSL); otherwise they
-        // are taken as 32-bit ones, with W0131 (WGSL, MSL and GLSL ES have none).
-        let float64 = targets.iter().all(|t| matches!(t, Target::Spv | Target::Spvasm | Target::Hlsl | Target::Reflect | Target::Ir));
-        // 64-bit integers are kept where every target has them (SPIR-V); elsewhere the
-        // program is not translated (E0306 names the targets that keep them).
-        let int64 = targets.iter().all(|t| matches!(t, Target::Spv | Target::Spvasm | Target::Reflect | Target::Ir));
+        let back = TranslateOptions::for_targets(&targets, !self.keep_gl_depth);
         let mut input = self.common.input_spec(config);
-        input.front.doubles_as_floats = !float64;
-        translate::Request {
-            input,
-            back: TranslateOptions { gl_depth: !self.keep_gl_depth, float64, int64, ..TranslateOptions::default() },
-            targets,
-            out: self.out.clone(),
-        }
+        input.front.doubles_as_floats = !back.float64;
+        translate::Request { input, back, targets, out: self.out.clone() }
     }
 }
 

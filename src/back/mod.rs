@@ -99,6 +99,20 @@ impl Default for TranslateOptions {
 }
 
 impl TranslateOptions {
+    /// What `effectc translate` to `targets` uses. 64-bit floats are kept when every target
+    /// has them (SPIR-V, HLSL); otherwise they are taken as 32-bit ones, with W0131 (WGSL,
+    /// MSL and GLSL ES have none). 64-bit integers are kept when every target has them
+    /// (SPIR-V); otherwise the program is not translated (E0306 names the targets that do).
+    pub fn for_targets(targets: &[Target], gl_depth: bool) -> Self {
+        let all = |keeps: fn(&Target) -> bool| targets.iter().all(keeps);
+        TranslateOptions {
+            gl_depth,
+            float64: all(|t| matches!(t, Target::Spv | Target::Spvasm | Target::Hlsl | Target::Reflect | Target::Ir)),
+            int64: all(|t| matches!(t, Target::Spv | Target::Spvasm | Target::Reflect | Target::Ir)),
+            ..TranslateOptions::default()
+        }
+    }
+
     /// What `effectc render` translates with: the render-only adaptations on.
     pub fn for_rendering(gl_depth: bool) -> Self {
         TranslateOptions { gl_depth, widen_outputs: true, flip_y: true, float64: false, int64: false }
