@@ -7,8 +7,10 @@
 //! files named
 //! - in one call or one initializer: `LoadProgram("PCN.vert", "Diffuse.frag")`,
 //!   `{"PN.vert", "Phong.frag"}`, `Shader("a.vs", "a.fs")`, `<prog vert="a.vert" frag="b.frag"/>`;
-//! - or in consecutive statements, one literal each:
-//!   `list.push_back(LoadShader(GL_VERTEX_SHADER, "a.vert")); list.push_back(LoadShader(GL_FRAGMENT_SHADER, "b.frag"));`.
+//! - or in the statements of one function body, one literal each:
+//!   `list.push_back(LoadShader(GL_VERTEX_SHADER, "a.vert")); list.push_back(LoadShader(GL_FRAGMENT_SHADER, "b.frag"));`,
+//!   `if (!AddShader(GL_VERTEX_SHADER, "a.vs")) { return false; } if (!AddShader(…, "a.fs")) …`
+//!   (at top level, where no function bounds them, only consecutive statements).
 //!
 //! Within such a sequence each vertex stage pairs with the next fragment stage, with the
 //! geometry or tessellation stages named between them (`"a.vert", "b.vert", "x.frag"`:
@@ -106,6 +108,9 @@ struct Literal {
     /// Statements end at `;`, `{` and `}` (markup: at `>`): consecutive literals sit in
     /// consecutive statements.
     statement: usize,
+    /// The innermost block (`{ … }` that is not an initializer) around it: an id, 0 at top
+    /// level.
+    block: usize,
 }
 
 /// The programs the `hosts` files name among `stage_files` (each with its stage), in host
@@ -164,9 +169,15 @@ fn sequences(resolved: &[(Literal, PathBuf, StageKind)]) -> Vec<Vec<(PathBuf, St
             out.push((members[0], members.clone()));
         }
     }
+    // Inside a function body the statements of one block run on across statements that
+    // name no stage (`if (!AddShader(GL_VERTEX_SHADER, "a.vs")) { return false; }` then the
+    // fragment stage); at top level only the next statement follows.
     let mut run: Vec<usize> = Vec::new();
     for i in (0..resolved.len()).filter(|i| !in_group[*i]) {
-        let follows = run.last().is_some_and(|&j| resolved[i].0.statement <= resolved[j].0.statement + 1);
+        let follows = run.last().is_some_and(|&j| {
+            let (here, last) = (&resolved[i].0, &resolved[j].0);
+            here.block == last.block && (here.block != 0 || here.statement <= last.statement + 1)
+        });
         if !follows {
             if run.len() >= 2 {
                 out.push((run[0], std::mem::take(&mut run)));
@@ -184,8 +195,18 @@ fn sequences(resolved: &[(Literal, PathBuf, StageKind)]) -> Vec<Vec<(PathBuf, St
 
 /// Each vertex stage of a sequence with the next fragment stage, and the geometry and
 /// tessellation stages named between them; a vertex stage after a fragment stage starts
-/// the next program.
+/// the next program. Two parallel lists (`vs[] = {"a.vert", "b.vert"}; fs[] = {"a.frag",
+/// "b.frag"}`: as many vertex stages as fragment stages, all the vertex stages first) pair
+/// by position.
 fn in_order(sequence: &[(PathBuf, StageKind, usize)]) -> Vec<Vec<(PathBuf, StageKind, usize)>> {
+    let half = sequence.len() / 2;
+    let parallel = half >= 2
+        && sequence.len() == 2 * half
+        && sequence[..half].iter().all(|(_, k, _)| *k == StageKind::Vertex)
+        && sequence[half..].iter().all(|(_, k, _)| *k == StageKind::Fragment);
+    if parallel {
+        return sequence[..half].iter().zip(&sequence[half..]).map(|(v, f)| vec![v.clone(), f.clone()]).collect();
+    }
     let mut out = Vec::new();
     let mut vertices: Vec<&(PathBuf, StageKind, usize)> = Vec::new();
     let mut between: BTreeMap<StageKind, &(PathBuf, StageKind, usize)> = BTreeMap::new();
@@ -261,11 +282,15 @@ fn resolve(literal: &str, host: &Path, by_name: &BTreeMap<String, Vec<(PathBuf, 
 }
 
 /// The string literals of host code that could name a file, with their group and statement.
-/// Comments (`//`, `/* */`; markup `<!-- -->`) are skipped.
+/// Comments (`//`, `/* */`; markup `<!-- -->`) are skipped. A `{` after `=`, `,`, `(` or
+/// `{` opens an initializer, which holds no statements; any other opens a block, whose
+/// braces end statements.
 fn literals(text: &str, markup: bool) -> Vec<Literal> {
     let bytes = text.as_bytes();
     let mut out = Vec::new();
     let mut stack: Vec<usize> = Vec::new();
+    let mut blocks: Vec<bool> = Vec::new();
+    let mut block_ids: Vec<usize> = Vec::new();
     let (mut groups, mut statement, mut line, mut i) = (0usize, 0usize, 1usize, 0usize);
     // The offset just past `end`, searched from `from` (the text's end when missing).
     let past =
@@ -291,7 +316,8 @@ fn literals(text: &str, markup: bool) -> Vec<Literal> {
             let end = end.min(bytes.len());
             let content = String::from_utf8_lossy(&bytes[i + 1..end]);
             if content.contains('.') && content.len() < 512 {
-                out.push(Literal { text: content.into_owned(), line, group: stack.last().copied().unwrap_or(0), statement });
+                let (group, block) = (stack.last().copied().unwrap_or(0), block_ids.last().copied().unwrap_or(0));
+                out.push(Literal { text: content.into_owned(), line, group, statement, block });
             }
             // An unterminated literal ends at its line's end, which is counted below.
             i = if bytes.get(end) == Some(&q) { end + 1 } else { end };
@@ -310,14 +336,23 @@ fn literals(text: &str, markup: bool) -> Vec<Literal> {
             b'{' => {
                 groups += 1;
                 stack.push(groups);
-                statement += 1;
+                let before = bytes[..i].iter().rev().find(|b| !b.is_ascii_whitespace());
+                let block = !matches!(before, Some(b'=' | b',' | b'(' | b'{'));
+                blocks.push(block);
+                if block {
+                    block_ids.push(groups);
+                    statement += 1;
+                }
             }
             b')' | b']' => {
                 stack.pop();
             }
             b'}' => {
                 stack.pop();
-                statement += 1;
+                if blocks.pop().unwrap_or(true) {
+                    block_ids.pop();
+                    statement += 1;
+                }
             }
             b'>' if markup => {
                 stack.pop();
@@ -387,6 +422,25 @@ mod tests {
         let stages = files(&[("a.vs", V), ("b.vs", V), ("x.fs", F), ("c.vs", V), ("y.fs", F)]);
         let text = "SHADERS = [\"a.vs\", \"b.vs\", \"x.fs\", \"c.vs\", \"y.fs\"]\n";
         assert_eq!(named("load.py", text, &stages), [vec!["a.vs", "x.fs"], vec!["b.vs", "x.fs"], vec!["c.vs", "y.fs"]]);
+    }
+
+    #[test]
+    fn a_function_body_runs_on_across_statements_that_name_no_stage() {
+        let stages = files(&[("sky.vs", V), ("sky.fs", F), ("other.fs", F)]);
+        let text = "bool Init() {\n  if (!AddShader(GL_VERTEX_SHADER, \"sky.vs\")) {\n    return false;\n  }\n\
+                    \x20 if (!AddShader(GL_FRAGMENT_SHADER, \"sky.fs\")) {\n    return false;\n  }\n  return Finalize();\n}\n\
+                    bool Other() { return AddShader(GL_FRAGMENT_SHADER, \"other.fs\"); }\n";
+        assert_eq!(named("technique.cpp", text, &stages), [vec!["sky.vs", "sky.fs"]]);
+    }
+
+    #[test]
+    fn parallel_lists_pair_by_position() {
+        let stages = files(&[("a.vert", V), ("b.vert", V), ("x.frag", F), ("y.frag", F)]);
+        let text = "const char* vs[] = {\"a.vert\", \"b.vert\"};\nconst char* fs[] = {\"x.frag\", \"y.frag\"};\n";
+        assert_eq!(named("lists.c", text, &stages), [vec!["a.vert", "x.frag"], vec!["b.vert", "y.frag"]]);
+        // Two vertex stages before one fragment stage both pair with it.
+        let text = "{\"a.vert\", \"b.vert\", \"x.frag\"}";
+        assert_eq!(named("one.c", text, &stages), [vec!["a.vert", "x.frag"], vec!["b.vert", "x.frag"]]);
     }
 
     #[test]
