@@ -125,10 +125,9 @@ pub fn programs(hosts: &[PathBuf], stage_files: &[(PathBuf, StageKind)]) -> Vec<
     let mut seen: BTreeSet<Vec<PathBuf>> = BTreeSet::new();
     let mut out = Vec::new();
     for host in hosts {
-        if std::fs::metadata(host).map_or(true, |m| m.len() > HOST_BYTES) {
-            continue;
-        }
-        let Ok(bytes) = std::fs::read(host) else { continue };
+        // Regular files only (a FIFO named `x.cpp` would block a plain read), at most
+        // HOST_BYTES.
+        let Ok(bytes) = crate::read::bounded(host, HOST_BYTES) else { continue };
         let text = String::from_utf8_lossy(&bytes);
         let markup = host.extension().and_then(|e| e.to_str()).is_some_and(|e| MARKUP.iter().any(|m| e.eq_ignore_ascii_case(m)));
         let resolved: Vec<(Literal, PathBuf, StageKind)> = literals(&text, markup)
@@ -431,6 +430,19 @@ mod tests {
                     \x20 if (!AddShader(GL_FRAGMENT_SHADER, \"sky.fs\")) {\n    return false;\n  }\n  return Finalize();\n}\n\
                     bool Other() { return AddShader(GL_FRAGMENT_SHADER, \"other.fs\"); }\n";
         assert_eq!(named("technique.cpp", text, &stages), [vec!["sky.vs", "sky.fs"]]);
+    }
+
+    #[test]
+    fn a_fifo_named_like_host_code_is_not_read() {
+        // A plain read of a FIFO blocks until a writer comes: only regular files are read.
+        let dir = std::env::temp_dir().join(format!("effectc-host-fifo-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let fifo = dir.join("loader.cpp");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status().expect("mkfifo runs");
+        assert!(made.success());
+        let stages = vec![(dir.join("a.vert"), V), (dir.join("a.frag"), F)];
+        assert!(programs(&[fifo], &stages).is_empty());
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
