@@ -170,7 +170,7 @@ impl Scene {
         let first_file = input.program.stages[0].syntax.file;
         drawable(r, input.pass.is_some()).map_err(|d| vec![d.in_file(first_file)])?;
         let plan_input = input.plan_input();
-        let plan::Plan { mesh, mesh_note, choices, uniforms: uniform_data, textures: texture_plan, warnings, describe } =
+        let plan::Plan { mesh, mesh_note, choices, uniforms: uniform_data, textures: texture_plan, warnings, describe, initial, row_major } =
             plan::plan(&plan_input)?;
         let instances = input.effect.and_then(|e| e.instances.as_ref());
         let read: Vec<MeshAttribute> = choices.iter().filter_map(|c| c.attribute).collect();
@@ -236,8 +236,6 @@ impl Scene {
             (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));
         let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
         let draw = draw_of(gpu, r, pulled.as_ref().map(|p| p.count), &mesh_note, &mesh);
-        let initial = crate::front::initial_values::of(input.program);
-        let row_major = crate::front::initial_values::row_major(input.program);
         let uniforms: Vec<(UniformBuffer, wgpu::Buffer)> = uniform_data
             .into_iter()
             .map(|u| {

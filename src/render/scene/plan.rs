@@ -61,6 +61,10 @@ pub(crate) struct Plan<'a> {
     pub warnings: Vec<Diagnostic>,
     /// One line for `--verbose`: the mesh, and what feeds each input, uniform and sampler.
     pub describe: String,
+    /// The values the program gives its uniforms ([`crate::front::initial_values::of`]).
+    pub initial: Vec<crate::front::initial_values::Initial>,
+    /// Block matrices stored row-major ([`crate::front::initial_values::row_major`]).
+    pub row_major: Vec<(String, String)>,
 }
 
 pub(crate) fn plan<'a>(input: &PlanInput<'a>) -> Result<Plan<'a>, Vec<Diagnostic>> {
@@ -103,7 +107,7 @@ pub(crate) fn plan<'a>(input: &PlanInput<'a>) -> Result<Plan<'a>, Vec<Diagnostic
     }
     let textures = textures(input, &mut warnings);
     let describe = describe(input, (&mesh_note, &mesh), &choices, &uniforms, &textures);
-    Ok(Plan { mesh, mesh_note, choices, uniforms, textures, warnings, describe })
+    Ok(Plan { mesh, mesh_note, choices, uniforms, textures, warnings, describe, initial, row_major })
 }
 
 /// `[mesh.attributes] x = { values = […] }` gives exactly one value per vertex of the mesh
