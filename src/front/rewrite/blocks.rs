@@ -148,7 +148,6 @@ impl Ctx<'_> {
 /// Whether matrices of block `g` (a uniform or buffer block) are stored row-major: the
 /// default-qualifier declarations before it, then its own layout.
 fn block_row_major(s: &StageSyntax, g: &crate::front::syntax::Global) -> bool {
-    let mut row = false;
     let layouts = s
         .defaults
         .iter()
@@ -156,16 +155,17 @@ fn block_row_major(s: &StageSyntax, g: &crate::front::syntax::Global) -> bool {
         .filter(|d| matches!(d.storage, Some(Storage::Uniform | Storage::Buffer)) && d.storage == Some(g.storage))
         .map(|d| &d.layout)
         .chain([&g.layout]);
-    for layout in layouts {
-        for (k, _) in layout {
-            match k.as_str() {
-                "row_major" => row = true,
-                "column_major" => row = false,
-                _ => {}
-            }
-        }
-    }
-    row
+    layouts.fold(false, |row, layout| majority_after(row, layout))
+}
+
+/// Whether matrices are row-major after `layout`'s qualifiers (the last of `row_major` and
+/// `column_major` wins), starting from `row`.
+fn majority_after(row: bool, layout: &[(String, Option<i64>)]) -> bool {
+    layout.iter().fold(row, |row, (k, _)| match k.as_str() {
+        "row_major" => true,
+        "column_major" => false,
+        _ => row,
+    })
 }
 
 /// The square matrices of uniform and buffer blocks stored row-major (by the member's own
@@ -181,14 +181,7 @@ pub fn row_major_members(s: &StageSyntax) -> Vec<(usize, String)> {
         }
         let block_row = block_row_major(s, g);
         for m in &b.members {
-            let mut row = block_row;
-            for (k, _) in &m.layout {
-                match k.as_str() {
-                    "row_major" => row = true,
-                    "column_major" => row = false,
-                    _ => {}
-                }
-            }
+            let row = majority_after(block_row, &m.layout);
             if row && matches!(m.ty.base.as_str(), "mat2" | "mat3" | "mat4" | "mat2x2" | "mat3x3" | "mat4x4") {
                 out.push((gi, m.name.clone()));
             }
