@@ -58,32 +58,33 @@ pub struct Named {
 /// the `hosts` files name with them ([`programs`]); a note (N0004) names each program so
 /// formed and the host line that names it. Programs already formed are not formed twice.
 pub fn pair_as_named(groups: &mut Vec<ProgramInput>, hosts: &[PathBuf]) -> Vec<Diagnostic> {
-    let files_of = |g: &ProgramInput| match g {
-        ProgramInput::Stages { files, defines, .. } if defines.is_empty() => files.clone(),
-        _ => Vec::new(),
-    };
-    let lone: BTreeSet<PathBuf> = groups
+    // Each group's stage files (none for manifests and the two-stage files' macro programs).
+    let files: Vec<&[(PathBuf, StageKind)]> = groups
         .iter()
-        .map(files_of)
-        .filter_map(|f| match f.as_slice() {
-            [(p, k)] if *k != StageKind::Compute => Some(p.clone()),
-            _ => None,
+        .map(|g| match g {
+            ProgramInput::Stages { files, defines, .. } if defines.is_empty() => files.as_slice(),
+            _ => &[],
         })
         .collect();
+    let lone_of = |f: &[(PathBuf, StageKind)]| match f {
+        [(p, k)] if *k != StageKind::Compute => Some(p.clone()),
+        _ => None,
+    };
+    let lone: BTreeSet<PathBuf> = files.iter().filter_map(|f| lone_of(f)).collect();
     if lone.is_empty() || hosts.is_empty() {
         return Vec::new();
     }
-    let stage_files: Vec<(PathBuf, StageKind)> = groups.iter().flat_map(files_of).collect();
-    let formed: BTreeSet<Vec<PathBuf>> = groups.iter().map(|g| files_of(g).into_iter().map(|(p, _)| p).collect()).collect();
+    let stage_files: Vec<(PathBuf, StageKind)> = files.iter().flat_map(|f| f.iter().cloned()).collect();
+    let formed: BTreeSet<Vec<&PathBuf>> = files.iter().map(|f| f.iter().map(|(p, _)| p).collect()).collect();
     let mut joined: BTreeSet<PathBuf> = BTreeSet::new();
     let mut notes = Vec::new();
     let mut new = Vec::new();
     for n in programs(hosts, &stage_files) {
-        let paths: Vec<PathBuf> = n.files.iter().map(|(p, _)| p.clone()).collect();
-        if !paths.iter().any(|p| lone.contains(p)) || formed.contains(&paths) {
+        let paths: Vec<&PathBuf> = n.files.iter().map(|(p, _)| p).collect();
+        if !paths.iter().any(|p| lone.contains(*p)) || formed.contains(&paths) {
             continue;
         }
-        joined.extend(paths.iter().filter(|p| lone.contains(*p)).cloned());
+        joined.extend(paths.iter().filter(|p| lone.contains(**p)).map(|p| (*p).clone()));
         let shown: Vec<String> = paths.iter().map(|p| format!("`{}`", p.display())).collect();
         notes.push(Diagnostic::new(
             Code::PairedByHostCode,
@@ -93,7 +94,10 @@ pub fn pair_as_named(groups: &mut Vec<ProgramInput>, hosts: &[PathBuf]) -> Vec<D
         let last = n.files.last().cloned().into_iter().collect::<Vec<_>>();
         new.push(ProgramInput::Stages { name: program_name(&last), files: n.files, defines: Vec::new(), formed: Formed::HostCode });
     }
-    groups.retain(|g| !matches!(files_of(g).as_slice(), [(p, _)] if joined.contains(p)));
+    // A lone stage that joined a program is no program of its own.
+    let gone: Vec<bool> = files.iter().map(|f| lone_of(f).is_some_and(|p| joined.contains(&p))).collect();
+    let mut gone = gone.into_iter();
+    groups.retain(|_| !gone.next().unwrap_or(false));
     groups.extend(new);
     notes
 }
