@@ -3,7 +3,9 @@
 //! ([`crate::stress::sites`]) under the inputs the analysis assumed, and each warning gets
 //! a verdict:
 //! - **confirmed**: in some case the condition it names held where it points (the first
-//!   such case is named, with how many invocations hit it): error `E0703`;
+//!   such case is named, with how many invocations hit it), or, for a divisor, a normalized
+//!   vector or `atan`'s arguments in a fragment stage, they passed through zero between two
+//!   neighbouring pixel centres ([`crate::stress::crossing`]): error `E0703`;
 //! - **refuted**: the operation ran, in every case, and the condition never held;
 //! - **unreached**: the operation never ran in any case;
 //! - **untested**: the operation is not in the translation, or runs where this device
@@ -58,6 +60,9 @@ pub struct Tested {
     /// Invocations where the condition held, and those that reached the operation: in the
     /// confirming case, or over every case for the other verdicts.
     pub held: u64,
+    /// Invocations whose operands passed through zero between them and a neighbouring
+    /// pixel (same case as `held`).
+    pub between: u64,
     pub reached: u64,
     /// Invocations of the stage that counted them (same cases).
     pub invocations: u64,
@@ -140,8 +145,19 @@ struct Tally {
     reached: u64,
     invocations: u64,
     stage: Option<StageKind>,
-    /// The first case where the condition held: (case index, held, reached, invocations, stage).
-    first: Option<(usize, u64, u64, u64, StageKind)>,
+    /// The first case where the condition held or its zero lay between pixels.
+    first: Option<First>,
+}
+
+/// What confirmed a warning, summed over the stages that counted in that case.
+#[derive(Debug, Clone, Copy)]
+struct First {
+    case: usize,
+    held: u64,
+    between: u64,
+    reached: u64,
+    invocations: u64,
+    stage: StageKind,
 }
 
 /// The hazard warnings of `c` in `diagnostics`: those in files its stages read.
@@ -299,11 +315,11 @@ impl Runs<'_> {
             }
             _ => untested_reason(c, d, self.vertex),
         });
-        let (held, reached, invocations, stage) = match t.first {
-            Some((_, held, reached, inv, stage)) => (held, reached, inv, Some(stage)),
-            None => (0, t.reached, t.invocations, t.stage),
+        let (held, between, reached, invocations, stage) = match t.first {
+            Some(f) => (f.held, f.between, f.reached, f.invocations, Some(f.stage)),
+            None => (0, 0, t.reached, t.invocations, t.stage),
         };
-        let case = t.first.map(|(i, ..)| &self.cases[i]);
+        let case = t.first.map(|f| &self.cases[f.case]);
         Tested {
             code: d.code.as_str().to_string(),
             at: location(files, d),
@@ -313,6 +329,7 @@ impl Runs<'_> {
             case: case.map(|c| c.name.clone()),
             values: case.map(values),
             held,
+            between,
             reached,
             invocations,
             stage: stage.map(stage_name),
@@ -325,16 +342,19 @@ impl Runs<'_> {
 fn tally(tallies: &mut [Tally], s: &Sites, counted: &Counted, case: usize) {
     for (k, &w) in s.bits.iter().enumerate() {
         let t = &mut tallies[w];
-        let (reached, held) = (counted.reached[k], counted.held[k]);
+        let (reached, held, between) = (counted.reached[k], counted.held[k], counted.between[k]);
         if reached == 0 {
             continue;
         }
         t.reached += reached;
         t.invocations += counted.invocations;
         t.stage.get_or_insert(counted.stage);
-        if held > 0 && t.first.is_none_or(|f| f.0 == case) {
-            let (h, r, n) = t.first.map_or((0, 0, 0), |f| (f.1, f.2, f.3));
-            t.first = Some((case, h + held, r + reached, n + counted.invocations, counted.stage));
+        if (held > 0 || between > 0) && t.first.is_none_or(|f| f.case == case) {
+            let f = t.first.get_or_insert(First { case, held: 0, between: 0, reached: 0, invocations: 0, stage: counted.stage });
+            f.held += held;
+            f.between += between;
+            f.reached += reached;
+            f.invocations += counted.invocations;
         }
     }
 }
@@ -405,16 +425,29 @@ fn phrases(code: Code) -> (String, String) {
     (held.to_string(), never.to_string())
 }
 
+/// What confirmed warning `code`: the condition as it held and in how many invocations,
+/// else its zero between pixel centres and next to how many.
+fn seen(code: Code, t: &Tested) -> (String, u64) {
+    if t.held > 0 || t.between == 0 {
+        return (format!("{} in", phrases(code).0), t.held);
+    }
+    let what = match code {
+        Code::HazardNormalize => "the vector passed through zero",
+        Code::HazardAtan2 => "y and x passed through 0 at one point",
+        _ => "the divisor passed through 0",
+    };
+    (format!("{what} between neighbouring pixel centres, next to"), t.between)
+}
+
 /// The verdict as a note on the warning, and for a confirmed one error `E0703` at it.
 fn annotate(outcome: &mut Outcome, program: &str, d: &Diagnostic, t: &Tested, drawn: usize) {
     let stage = t.stage.as_deref().unwrap_or("");
-    let (held, never) = phrases(d.code);
+    let never = phrases(d.code).1;
+    let (held, count) = seen(d.code, t);
     let note = match t.verdict {
         Verdict::Confirmed => format!(
-            "`stress --confirm`: confirmed in case `{}`: {} in {} of {} {stage} invocations",
+            "`stress --confirm`: confirmed in case `{}`: {held} {count} of {} {stage} invocations",
             t.case.as_deref().unwrap_or(""),
-            held,
-            t.held,
             t.invocations
         ),
         Verdict::Refuted => format!(
@@ -432,12 +465,17 @@ fn annotate(outcome: &mut Outcome, program: &str, d: &Diagnostic, t: &Tested, dr
     }
     let (Some(file), Some(span)) = (d.file, d.span.clone()) else { return };
     let e = Diagnostic::new(Code::HazardConfirmed, format!("{program}: {} confirmed by a render: {}", d.code.as_str(), d.message))
-        .at(file, span, format!("{held} in {} of {} {stage} invocations", t.held, t.invocations))
+        .at(file, span, format!("{held} {count} of {} {stage} invocations", t.invocations))
         .with_note(format!(
             "case `{}`{}",
             t.case.as_deref().unwrap_or(""),
             t.values.as_deref().filter(|v| !v.is_empty()).map(|v| format!(": {v}")).unwrap_or_default()
         ));
+    let e = if t.held == 0 {
+        e.with_note("no pixel centre of this frame lies on that zero; one of another frame size or camera does")
+    } else {
+        e
+    };
     outcome.diagnostics.push(match &d.help {
         Some(h) => e.with_help(h.clone()),
         None => e,
@@ -466,11 +504,12 @@ pub fn table(r: &ConfirmReport) -> String {
     for t in &r.hazards {
         let detail = match t.verdict {
             Verdict::Confirmed => format!(
-                "case `{}`: {}/{} {} invocations",
+                "case `{}`: {}/{} {} invocations{}",
                 t.case.as_deref().unwrap_or(""),
-                t.held,
+                if t.held > 0 { t.held } else { t.between },
                 t.invocations,
-                t.stage.as_deref().unwrap_or("")
+                t.stage.as_deref().unwrap_or(""),
+                if t.held == 0 { ", zero between pixel centres" } else { "" }
             ),
             Verdict::Refuted => format!("ran in {} {} invocations", t.reached, t.stage.as_deref().unwrap_or("")),
             Verdict::Unreached => "never ran".into(),

@@ -18,6 +18,7 @@
 //! pixels are finite but whose intermediate values are not is a warning (`W0702`).
 
 pub mod confirm;
+mod crossing;
 pub mod culprit;
 pub mod inputs;
 mod ir;

@@ -8,10 +8,14 @@
 //! and a loop still running after [`LOOP_CAP`] iterations (which the instrumented program
 //! then leaves, so a runaway loop cannot hang the device).
 //!
-//! Each invocation keeps two bit masks (site reached, condition held) and adds them into a
-//! storage buffer when it ends: per instrumented entry point a region of `1 + 2 × sites`
-//! slots, slot 0 counting invocations, then per site (reached, held). Sites are matched to
-//! warnings by the span in the user's file, so it does not matter which front made the IR.
+//! In a fragment stage, a divisor, a normalized vector or `atan`'s arguments that pass
+//! through zero between two neighbouring pixel centres count too ([`crate::stress::crossing`]).
+//!
+//! Each invocation keeps three bit masks (site reached, condition held, zero between pixels)
+//! and adds them into a storage buffer when it ends: per instrumented entry point a region
+//! of `1 + 3 × sites` slots, slot 0 counting invocations, then per site (reached, held,
+//! between). Sites are matched to warnings by the span in the user's file, so it does not
+//! matter which front made the IR.
 
 use std::ops::Range;
 
@@ -23,6 +27,7 @@ use crate::front::macro_spans::narrowed_span;
 use crate::front::program::CompiledProgram;
 use crate::manifest::Effect;
 use crate::stage::StageKind;
+use crate::stress::crossing::{self, Continuity, Flow};
 use crate::stress::ir::{
     count_at_every_exit, counts_buffer, entries, free_binding, literal, map_blocks, private_u32, reachable, revalidate, stage_texts,
     types_of, Builder, Shape,
@@ -64,9 +69,11 @@ pub struct Sites {
 pub struct Counted {
     pub stage: StageKind,
     pub invocations: u64,
-    /// Per bit: invocations that reached the site, and those where its condition held.
+    /// Per bit: invocations that reached the site, those where its condition held, and
+    /// those whose operands passed through zero between them and a neighbouring pixel.
     pub reached: Vec<u64>,
     pub held: Vec<u64>,
+    pub between: Vec<u64>,
 }
 
 impl Sites {
@@ -75,12 +82,14 @@ impl Sites {
         self.regions
             .iter()
             .filter_map(|&(stage, base)| {
-                let r = counts.get(base as usize..base as usize + 1 + 2 * n)?;
+                let r = counts.get(base as usize..base as usize + 1 + 3 * n)?;
+                let slot = |k: usize, j: usize| u64::from(r[1 + 3 * k + j]);
                 Some(Counted {
                     stage,
                     invocations: u64::from(r[0]),
-                    reached: (0..n).map(|k| u64::from(r[1 + 2 * k])).collect(),
-                    held: (0..n).map(|k| u64::from(r[2 + 2 * k])).collect(),
+                    reached: (0..n).map(|k| slot(k, 0)).collect(),
+                    held: (0..n).map(|k| slot(k, 1)).collect(),
+                    between: (0..n).map(|k| slot(k, 2)).collect(),
                 })
             })
             .collect()
@@ -89,7 +98,8 @@ impl Sites {
 
 /// Instruments the sites of `wanted` in a translation of `program` (the vertex stage only
 /// with `vertex`: the device must allow storage writes there). Warnings whose operation
-/// is not found (or past [`MAX_SITES`]) get no bit.
+/// is not found (or past [`MAX_SITES`]) get no bit. Zeros between pixels are tested where
+/// the module still validates with them (else the sites are placed without them).
 pub fn instrument_translation(
     t: &mut Translation,
     program: &CompiledProgram,
@@ -97,8 +107,22 @@ pub fn instrument_translation(
     wanted: &[Wanted],
     vertex: bool,
 ) -> Result<Sites, String> {
+    let before = t.module.clone();
+    instrument(t, program, effect, wanted, vertex, true).or_else(|_| {
+        t.module = before;
+        instrument(t, program, effect, wanted, vertex, false)
+    })
+}
+
+fn instrument(
+    t: &mut Translation,
+    program: &CompiledProgram,
+    effect: Option<&Effect>,
+    wanted: &[Wanted],
+    vertex: bool,
+    between: bool,
+) -> Result<Sites, String> {
     let stages: &[StageKind] = if vertex { &[StageKind::Vertex, StageKind::Fragment] } else { &[StageKind::Fragment] };
-    let texts = stage_texts(program);
     let entries = entries(&t.module, stages);
     if entries.is_empty() {
         return Err("the program has no vertex or fragment stage to instrument".into());
@@ -113,9 +137,84 @@ pub fn instrument_translation(
         }
         functions.push((Place::Entry(entry), stage));
     }
+    let found = find(t, program, wanted, &functions);
+    // The operations of each warning: those at its very span; else those inside it (a
+    // front may place a chain `a / b / c` differently, and the divisor the warning means is
+    // one of them); else the best overlap.
+    let (bits, crowded, chosen) = choose(&found, wanted.len());
+    let flow = between.then(|| (Flow::of(&t.module, &t.info), Continuity::new(&t.module)));
+    let module = &mut t.module;
+    let reached = private_u32(module, "effectc_sites_reached");
+    let held = private_u32(module, "effectc_sites_held");
+    let crossed = private_u32(module, "effectc_sites_between");
+    let loops: Vec<(u32, Handle<naga::GlobalVariable>)> = bits
+        .iter()
+        .enumerate()
+        .filter(|(_, w)| wanted[**w].code == Code::HazardCounterOverflow)
+        .map(|(bit, _)| (bit as u32, private_u32(module, &format!("effectc_site_loop{bit}"))))
+        .collect();
+    for &(place, _) in &functions {
+        let here: Vec<(Handle<Expression>, u32)> = chosen.iter().filter(|c| c.0 == place).map(|c| (c.1, c.2)).collect();
+        if here.is_empty() {
+            continue;
+        }
+        // Where the body starts in uniform flow of a fragment stage: Some(true).
+        let start = flow.as_ref().map(|(flow, _)| match place {
+            Place::Function(f) => flow.function_is_uniform(f),
+            Place::Entry(e) => module.entry_points[e].stage == naga::ShaderStage::Fragment,
+        });
+        let (fun, info) = match place {
+            Place::Function(f) => (&mut module.functions[f], &t.info[f]),
+            Place::Entry(e) => (&mut module.entry_points[e].function, t.info.get_entry_point(e)),
+        };
+        let types = types_of_mut(&module.types, info, fun);
+        // The sites whose operands are continuous over a primitive, where a zero between
+        // pixels is tested.
+        let continuous: Vec<Handle<Expression>> = match (&flow, start) {
+            (Some((_, continuity)), Some(true)) => {
+                let entry = matches!(place, Place::Entry(_));
+                let code = |bit: u32| wanted[bits[bit as usize]].code;
+                here.iter()
+                    .filter(|(h, bit)| continuity.at(&module.global_variables, fun, entry, code(*bit), *h))
+                    .map(|(h, _)| *h)
+                    .collect()
+            }
+            _ => Vec::new(),
+        };
+        let ctx = Ctx {
+            here: &here,
+            continuous: &continuous,
+            types: &types,
+            uniform: &crossing::uniformity(info, fun),
+            codes: &bits.iter().map(|w| wanted[*w].code).collect::<Vec<_>>(),
+            reached,
+            held,
+            crossed,
+            loops: &loops,
+        };
+        let body = std::mem::take(&mut fun.body);
+        fun.body = ctx.block(fun, body, start);
+    }
+    let n = bits.len() as u32;
+    let width = 1 + 3 * n;
+    let binding = free_binding(module);
+    let counts = counts_buffer(module, width * entries.len() as u32, binding)?;
+    let mut regions = Vec::new();
+    for (k, &(entry, stage)) in entries.iter().enumerate() {
+        let base = k as u32 * width;
+        regions.push((stage, base));
+        count_at_every_exit(module, entry, &|fun, out| push_counts(fun, out, [reached, held, crossed], counts, base, n));
+    }
+    revalidate(t, program, effect)?;
+    Ok(Sites { bits, crowded, regions, slots: width * entries.len() as u32 })
+}
+
+/// The operations of `functions` that match a warning of `wanted` by code and span.
+fn find(t: &Translation, program: &CompiledProgram, wanted: &[Wanted], functions: &[(Place, StageKind)]) -> Vec<Found> {
+    let texts = stage_texts(program);
     let text_of = |stage: StageKind| texts.iter().find(|(s, _)| *s == stage).map(|(_, t)| *t).unwrap_or("");
     let mut found: Vec<Found> = Vec::new();
-    for &(place, stage) in &functions {
+    for &(place, stage) in functions {
         let (fun, info) = match place {
             Place::Function(f) => (&t.module.functions[f], &t.info[f]),
             Place::Entry(e) => (&t.module.entry_points[e].function, t.info.get_entry_point(e)),
@@ -147,52 +246,7 @@ pub fn instrument_translation(
             }
         }
     }
-    // The operations of each warning: those at its very span; else those inside it (a
-    // front may place a chain `a / b / c` differently, and the divisor the warning means is
-    // one of them); else the best overlap.
-    let (bits, crowded, chosen) = choose(&found, wanted.len());
-    let module = &mut t.module;
-    let reached = private_u32(module, "effectc_sites_reached");
-    let held = private_u32(module, "effectc_sites_held");
-    let loops: Vec<(u32, Handle<naga::GlobalVariable>)> = bits
-        .iter()
-        .enumerate()
-        .filter(|(_, w)| wanted[**w].code == Code::HazardCounterOverflow)
-        .map(|(bit, _)| (bit as u32, private_u32(module, &format!("effectc_site_loop{bit}"))))
-        .collect();
-    for &(place, _) in &functions {
-        let here: Vec<(Handle<Expression>, u32)> = chosen.iter().filter(|c| c.0 == place).map(|c| (c.1, c.2)).collect();
-        if here.is_empty() {
-            continue;
-        }
-        let (fun, info) = match place {
-            Place::Function(f) => (&mut module.functions[f], &t.info[f]),
-            Place::Entry(e) => (&mut module.entry_points[e].function, t.info.get_entry_point(e)),
-        };
-        let types = types_of_mut(&module.types, info, fun);
-        let ctx = Ctx {
-            here: &here,
-            types: &types,
-            codes: &bits.iter().map(|w| wanted[*w].code).collect::<Vec<_>>(),
-            reached,
-            held,
-            loops: &loops,
-        };
-        let body = std::mem::take(&mut fun.body);
-        fun.body = ctx.block(fun, body);
-    }
-    let n = bits.len() as u32;
-    let width = 1 + 2 * n;
-    let binding = free_binding(module);
-    let counts = counts_buffer(module, width * entries.len() as u32, binding)?;
-    let mut regions = Vec::new();
-    for (k, &(entry, stage)) in entries.iter().enumerate() {
-        let base = k as u32 * width;
-        regions.push((stage, base));
-        count_at_every_exit(module, entry, &|fun, out| push_counts(fun, out, (reached, held), counts, base, n));
-    }
-    revalidate(t, program, effect)?;
-    Ok(Sites { bits, crowded, regions, slots: width * entries.len() as u32 })
+    found
 }
 
 /// The operations each warning gets, with its bit: `(bits, crowded, chosen)`, where
@@ -304,25 +358,39 @@ fn hash_parts(arena: &naga::Arena<Expression>, product: Handle<Expression>) -> O
 struct Ctx<'a> {
     /// The operations of this function to test, with their bits.
     here: &'a [(Handle<Expression>, u32)],
+    /// Those of them whose operands are continuous over a primitive.
+    continuous: &'a [Handle<Expression>],
     /// Resolved types of the function's original expressions.
     types: &'a [TypeInner],
+    /// Which of them are the same in every invocation.
+    uniform: &'a [bool],
     /// The warning code of every bit.
     codes: &'a [Code],
     reached: Handle<naga::GlobalVariable>,
     held: Handle<naga::GlobalVariable>,
+    crossed: Handle<naga::GlobalVariable>,
     /// The iteration counter of every loop bit.
     loops: &'a [(u32, Handle<naga::GlobalVariable>)],
 }
 
 impl Ctx<'_> {
-    fn block(&self, fun: &mut Function, block: Block) -> Block {
+    /// `block` rewritten; `flow`: whether it runs in uniform flow of a fragment stage, where
+    /// zeros between pixels are tested (`None`: not tested in this function).
+    fn block(&self, fun: &mut Function, block: Block, mut flow: Option<bool>) -> Block {
         let mut out = Block::with_capacity(block.len());
         for (stmt, span) in block.span_into_iter() {
+            let (inside, after) = match flow {
+                Some(f) => {
+                    let (i, a) = crossing::flow_of(&stmt, f, self.uniform);
+                    (Some(i), Some(a))
+                }
+                None => (None, None),
+            };
             let stmt = match stmt {
                 Statement::Loop { body, continuing, break_if } => {
                     let bit = self.loop_bit(&continuing);
-                    let mut body = self.block(fun, body);
-                    let continuing = self.block(fun, continuing);
+                    let mut body = self.block(fun, body, inside);
+                    let continuing = self.block(fun, continuing, inside);
                     if let Some((bit, counter)) = bit {
                         let mut b = Builder::new(fun);
                         b.mark(self.reached, bit);
@@ -334,7 +402,7 @@ impl Ctx<'_> {
                     }
                     Statement::Loop { body, continuing, break_if }
                 }
-                other => map_blocks(other, &mut |b| self.block(fun, b)),
+                other => map_blocks(other, &mut |b| self.block(fun, b, inside)),
             };
             let emitted: Vec<Handle<Expression>> = if let Statement::Emit(r) = &stmt { r.clone().collect() } else { Vec::new() };
             out.push(stmt, span);
@@ -347,13 +415,31 @@ impl Ctx<'_> {
                     accept.mark(self.held, bit);
                     let accept = accept.finish();
                     b.stmt(Statement::If { condition, accept, reject: Block::new() });
+                    if flow == Some(true) {
+                        self.between(&mut b, h, bit);
+                    }
                     for (s, sp) in b.finish().span_into_iter() {
                         out.push(s, sp);
                     }
                 }
             }
+            flow = after;
         }
         out
+    }
+
+    /// `if (the operands of h pass through zero between pixels) { crossed |= bit; }`.
+    fn between(&self, b: &mut Builder<'_>, h: Handle<Expression>, bit: u32) {
+        let code = self.codes[bit as usize];
+        if !self.continuous.contains(&h) {
+            return;
+        }
+        let operands = crossing::operands(code, &b.fun.expressions[h]);
+        let Some(condition) = crossing::between_pixels(b, code, &operands, &|x| self.types.get(x.index())) else { return };
+        let mut accept = Builder::new(b.fun);
+        accept.mark(self.crossed, bit);
+        let accept = accept.finish();
+        b.stmt(Statement::If { condition, accept, reject: Block::new() });
     }
 
     /// The bit and counter of a loop whose `continuing` steps a counter warned about.
@@ -502,12 +588,12 @@ impl Ctx<'_> {
     }
 }
 
-/// At an exit: one invocation, and per bit whether it reached the site and whether the
-/// condition held there.
+/// At an exit: one invocation, and per bit whether it reached the site, whether the
+/// condition held there, and whether its operands passed through zero between pixels.
 fn push_counts(
     fun: &mut Function,
     out: &mut Block,
-    (reached, held): (Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>),
+    masks: [Handle<naga::GlobalVariable>; 3],
     counts: Handle<naga::GlobalVariable>,
     base: u32,
     bits: u32,
@@ -521,15 +607,15 @@ fn push_counts(
     };
     let one = b.add(Expression::Literal(Literal::U32(1)));
     add(&mut b, 0, one);
-    for (k, mask) in (0..bits).flat_map(|k| [(k, reached), (k, held)]) {
+    for (k, j) in (0..bits).flat_map(|k| (0..3).map(move |j| (k, j))) {
+        let mask = masks[j as usize];
         let ptr = b.add(Expression::GlobalVariable(mask));
         let now = b.add(Expression::Load { pointer: ptr });
         let shift = b.add(Expression::Literal(Literal::U32(k)));
         let moved = b.add(Expression::Binary { op: B::ShiftRight, left: now, right: shift });
         let one = b.add(Expression::Literal(Literal::U32(1)));
         let value = b.add(Expression::Binary { op: B::And, left: moved, right: one });
-        let slot = 1 + 2 * k + u32::from(mask == held);
-        add(&mut b, slot, value);
+        add(&mut b, 1 + 3 * k + j, value);
     }
     for (s, sp) in b.finish().span_into_iter() {
         out.push(s, sp);
@@ -550,12 +636,13 @@ mod tests {
     }
 
     #[test]
-    fn counts_split_into_invocations_reached_and_held_per_bit() {
+    fn counts_split_into_invocations_reached_held_and_between_per_bit() {
         let sites =
-            Sites { bits: vec![3, 0], crowded: Vec::new(), regions: vec![(StageKind::Vertex, 0), (StageKind::Fragment, 5)], slots: 10 };
-        let counts = sites.read(&[36, 36, 0, 9, 9, 100, 0, 0, 100, 7]);
-        assert_eq!(counts[0], Counted { stage: StageKind::Vertex, invocations: 36, reached: vec![36, 9], held: vec![0, 9] });
-        assert_eq!(counts[1], Counted { stage: StageKind::Fragment, invocations: 100, reached: vec![0, 100], held: vec![0, 7] });
+            Sites { bits: vec![3, 0], crowded: Vec::new(), regions: vec![(StageKind::Vertex, 0), (StageKind::Fragment, 7)], slots: 14 };
+        let counts = sites.read(&[36, 36, 0, 0, 9, 9, 0, 100, 0, 0, 0, 100, 7, 40]);
+        let counted = |stage, invocations, reached, held, between| Counted { stage, invocations, reached, held, between };
+        assert_eq!(counts[0], counted(StageKind::Vertex, 36, vec![36, 9], vec![0, 9], vec![0, 0]));
+        assert_eq!(counts[1], counted(StageKind::Fragment, 100, vec![0, 100], vec![0, 7], vec![0, 40]));
     }
 
     #[test]

@@ -178,16 +178,17 @@ fn confirm_puts_every_seed_hazard_warning_to_a_render() {
     // sin passes 1e4 rad only at bFrequency's high end after the hour the analysis assumes;
     // the hash, the runaway march (at the defaults already: the march's path wraps round the
     // texture without meeting a texel above 0.6 in some pixels), and all four Phong terms
-    // happen. A rasterizer never draws the fragments of a triangle whose derivatives are
-    // parallel, nor meets the flipped leaf normal exactly at zero: those two are refuted;
-    // the exploding mesh's collapsed triangles do make the geometry stage's cross product 0.
+    // happen. The seed's exploding geometry stage gets a zero cross product from the
+    // collapsed triangles of the degenerate mesh (in the fixture and in the stress test). No
+    // pixel centre meets the flipped leaf normal exactly at zero, but it passes through zero
+    // between neighbouring pixels, which confirms it too.
     let expected = "\
 flower-bend W0711 flower.vert:38 possible refuted
 flower-bend W0710 flower.vert:40 possible confirmed `lightX = 0`
 bloom-time W0717 sun.frag:25 possible confirmed `bFrequency high at 3600 s`
 sun-hash W0718 sun.vert:24 possible confirmed `defaults`
-degenerate-cross W0715 explode.frag:16 possible refuted
-zero-normal W0715 leaf.frag:13 possible refuted
+degenerate-cross W0715 explode.geom:32 possible confirmed `zero-area tris`
+zero-normal W0715 leaf.frag:13 possible confirmed `defaults`
 loop-counter W0719 march.frag:17 certain confirmed `defaults`
 pow-log-sqrt W0714 phong.frag:27 possible confirmed `defaults`
 pow-log-sqrt W0712 phong.frag:32 certain confirmed `sinT2Scale high`
@@ -203,6 +204,9 @@ explode-degenerate W0715 shards.geom:12 possible confirmed `zero-area tris`";
     // Every pixel takes the sqrt of a negative number at sinT2Scale = 1.5.
     let sqrt = hazard("pow-log-sqrt", "W0712");
     assert_eq!((sqrt["held"].as_u64(), sqrt["invocations"].as_u64(), sqrt["stage"].as_str()), (Some(13552), Some(13552), Some("fragment")));
+    // A zero between pixels is said so: no pixel centre held it.
+    let leaf = hazard("zero-normal", "W0715");
+    assert!(leaf["held"] == 0 && leaf["between"].as_u64().unwrap() > 0 && leaf["stage"] == "fragment", "{leaf}");
     // A refuted warning says how often its operation ran.
     let acos = hazard("flower-bend", "W0711");
     assert!(acos["held"] == 0 && acos["reached"].as_u64().unwrap() > 1000, "{acos}");
@@ -214,6 +218,53 @@ explode-degenerate W0715 shards.geom:12 possible confirmed `zero-area tris`";
     assert!(error.contains("the divisor was 0 (or a denormal, which GPUs flush to 0) in 1264 of 1264 vertex invocations"), "{error}");
     let refuted = diagnostic(&human, "warning[W0711]");
     assert!(refuted.contains("`stress --confirm`: refuted: the operation ran in"), "{refuted}");
+}
+
+#[test]
+fn confirm_finds_zeros_between_pixel_centres_only_in_values_that_pass_through_them() {
+    if !have_gpu() {
+        return;
+    }
+    // A full-window ramp crosses zero at x = 0.3, between two pixel centres of a 32-pixel
+    // frame: the divisor and the normalized vector are confirmed. The same ramp's sign times
+    // a positive value jumps from negative to positive without passing zero: refuted.
+    let dir = scratch("stress", "confirm-between-pixels");
+    std::fs::write(
+        dir.join("ramp.vert"),
+        "#version 330\nlayout(location = 0) in vec3 position;\nout vec2 vUv;\n\
+void main() { vUv = position.xy * 0.5 + 0.5; gl_Position = vec4(position.xy, 0.0, 1.0); }\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("ramp.frag"),
+        "#version 330\nin vec2 vUv;\nout vec4 color;\nvoid main()\n{\n    float ramp = vUv.x - 0.3;\n    \
+float jump = sign(ramp) * (vUv.y + 0.1);\n    float a = 1.0 / ramp;\n    float b = 1.0 / jump;\n    \
+vec3 n = normalize(vec3(vUv.y - 0.3, 0.0, 0.0));\n    color = vec4(a, b, n.x, 1.0);\n}\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("effect.toml"),
+        "name = \"ramp\"\n[stages]\nvertex = \"ramp.vert\"\nfragment = \"ramp.frag\"\n[mesh]\nbuiltin = \"fullscreen_quad\"\n\
+[mesh.attributes]\nposition = \"position\"\n",
+    )
+    .unwrap();
+    let out = effectc(&["stress", "--confirm", "--format", "json", "--size", "32x32", dir.to_str().unwrap()]);
+    let json = stdout(&out);
+    assert_eq!(code(&out), 1, "{json}");
+    assert_eq!(
+        verdicts(&json),
+        "ramp W0710 ramp.frag:8 possible confirmed `defaults`\nramp W0710 ramp.frag:9 possible refuted\nramp W0715 ramp.frag:10 possible confirmed `defaults`",
+        "{json}"
+    );
+    let doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    for h in doc["programs"][0]["hazards"].as_array().unwrap().iter().filter(|h| h["verdict"] == "confirmed") {
+        // One column of pixels on each side of x = 0.3 (and of y = 0.3): 32 rows each.
+        assert!(h["held"] == 0 && h["between"].as_u64().unwrap() >= 32, "{h}");
+    }
+    let human = stdout(&effectc(&["stress", "--confirm", "--size", "32x32", dir.to_str().unwrap()]));
+    let error = diagnostic(&human, "error[E0703]: ramp: W0710 confirmed by a render");
+    assert!(error.contains("the divisor passed through 0 between neighbouring pixel centres, next to"), "{error}");
+    assert!(error.contains("no pixel centre of this frame lies on that zero"), "{error}");
 }
 
 #[test]

@@ -1,18 +1,18 @@
-#version 330 core
-layout(location = 0) in vec3 aPos;
-layout(location = 1) in vec3 aNormal;
+#version 420 core
+// Seed 000's exploding mesh, vertex stage: positions go to clip space here; the geometry
+// stage moves each triangle along its face normal.
+layout(location = 0) in vec3 vertexPosition;
+layout(location = 1) in vec2 texCoords;
 
-uniform mat4 model;
-uniform mat4 view;
-uniform mat4 projection;
-uniform float explodeAmount; // how far each face is pushed out along its normal
+out vert_vars
+{
+    vec2 outputTexCoords;
+} vert_out;
 
-out vec3 vWorldPos;
+uniform mat4 transform;
 
 void main()
 {
-    // the cube has flat normals: every face moves out as one piece, as in the seed's explode
-    vec4 world = model * vec4(aPos + aNormal * explodeAmount, 1.0);
-    vWorldPos = world.xyz;
-    gl_Position = projection * view * world;
+    vert_out.outputTexCoords = texCoords;
+    gl_Position = transform * vec4(vertexPosition, 1.0);
 }
