@@ -52,7 +52,8 @@ pub use mesh::{BuiltinMesh, MeshAttribute, MeshDecl, MeshSource, MESH_ATTRIBUTES
 pub use passes::{PassClear, PassDecl, PassDraw, SampleDecl, SampleKind, TargetDecl, TargetFormat, TargetRef, TargetSize};
 pub use scene::{Blend, CameraDecl, CameraKey, Cull, DepthCompare, Ease, ModelDecl, RenderDecl, VerifyDecl, MAX_FRAMES, MAX_FRAME_SIDE};
 pub use textures::{
-    Filter, Generator, GeneratorParams, TextureDecl, TextureKind, TextureSource, Wrap, DEFAULT_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
+    Filter, Generator, GeneratorParams, TexelFormat, TexelKind, TextureDecl, TextureKind, TextureSource, Wrap, DEFAULT_TEXTURE_SIZE,
+    MAX_TEXTURE_SIZE,
 };
 pub use uniforms::{Semantic, UniformDefault, UniformValue};
 

@@ -16,6 +16,8 @@ pub struct TextureDecl {
     pub span: Range<usize>,
     pub filter: Filter,
     pub wrap: Wrap,
+    /// The texel format it is uploaded in (`format = "…"`; RGBA8 by default).
+    pub format: TexelFormat,
 }
 
 /// The sampler dimensionality a texture provides.
@@ -132,4 +134,92 @@ pub enum Wrap {
     Repeat,
     Clamp,
     Mirror,
+}
+
+/// The format a manifest texture is uploaded in (`format = "…"`), as GL's internal formats
+/// name them. Floating-point ones hold values beyond [0, 1]; integer ones are read by
+/// `isampler*`/`usampler*` as the integers given, one mipmap level, nearest filtering.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum TexelFormat {
+    /// 8 bits per channel, normalized: bytes read as 0..1.
+    #[default]
+    Rgba8,
+    Rgba16f,
+    Rgba32f,
+    R32f,
+    Rgba32i,
+    Rgba32ui,
+    R32i,
+    R32ui,
+}
+
+/// What a sampler reads from a texel format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TexelKind {
+    /// Floating-point values (normalized or not): `sampler*`.
+    Float,
+    /// Signed integers: `isampler*`.
+    Sint,
+    /// Unsigned integers: `usampler*`.
+    Uint,
+}
+
+impl TexelFormat {
+    pub const ALL: [TexelFormat; 8] = [
+        TexelFormat::Rgba8,
+        TexelFormat::Rgba16f,
+        TexelFormat::Rgba32f,
+        TexelFormat::R32f,
+        TexelFormat::Rgba32i,
+        TexelFormat::Rgba32ui,
+        TexelFormat::R32i,
+        TexelFormat::R32ui,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            TexelFormat::Rgba8 => "rgba8",
+            TexelFormat::Rgba16f => "rgba16f",
+            TexelFormat::Rgba32f => "rgba32f",
+            TexelFormat::R32f => "r32f",
+            TexelFormat::Rgba32i => "rgba32i",
+            TexelFormat::Rgba32ui => "rgba32ui",
+            TexelFormat::R32i => "r32i",
+            TexelFormat::R32ui => "r32ui",
+        }
+    }
+
+    pub fn kind(self) -> TexelKind {
+        match self {
+            TexelFormat::Rgba32i | TexelFormat::R32i => TexelKind::Sint,
+            TexelFormat::Rgba32ui | TexelFormat::R32ui => TexelKind::Uint,
+            _ => TexelKind::Float,
+        }
+    }
+
+    /// Channels stored: 1 for the `r` formats (a sampler reads (r, 0, 0, 1)), else 4.
+    pub fn channels(self) -> usize {
+        match self {
+            TexelFormat::R32f | TexelFormat::R32i | TexelFormat::R32ui => 1,
+            _ => 4,
+        }
+    }
+
+    /// Bytes per channel.
+    pub fn channel_bytes(self) -> usize {
+        match self {
+            TexelFormat::Rgba8 => 1,
+            TexelFormat::Rgba16f => 2,
+            _ => 4,
+        }
+    }
+
+    pub fn texel_bytes(self) -> usize {
+        self.channels() * self.channel_bytes()
+    }
+
+    /// Whether mipmaps are made and filtering applies (not for integer formats).
+    pub fn filterable(self) -> bool {
+        self.kind() == TexelKind::Float
+    }
 }

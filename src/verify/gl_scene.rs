@@ -8,7 +8,7 @@ use std::collections::BTreeMap;
 
 use glow::HasContext;
 
-use crate::manifest::{Blend, Cull, DepthCompare, Filter, Wrap};
+use crate::manifest::{Blend, Cull, DepthCompare, Filter, TexelFormat, Wrap};
 use crate::render::scene::replay::ReplayTexture;
 use crate::render::scene::Scene;
 
@@ -342,7 +342,10 @@ fn upload(
                 gl.bind_texture(target, Some(texture));
                 // As `render` uploads: a mip chain for every 2D-based texture (arrays and cube
                 // maps too), one level for 1D and 3D.
-                let mipmapped = !matches!(target, glow::TEXTURE_1D | glow::TEXTURE_3D | glow::TEXTURE_RECTANGLE);
+                let mipmapped =
+                    !matches!(target, glow::TEXTURE_1D | glow::TEXTURE_3D | glow::TEXTURE_RECTANGLE) && image.format.filterable();
+                let (internal, format, ty) = gl_format(image.format);
+                let internal = internal as i32;
                 let mut levels = vec![image.clone()];
                 if mipmapped {
                     levels.extend(image.mip_chain());
@@ -356,17 +359,7 @@ fn upload(
                         glow::TEXTURE_CUBE_MAP => {
                             for face in 0..6 {
                                 let target = glow::TEXTURE_CUBE_MAP_POSITIVE_X + face;
-                                gl.tex_image_2d(
-                                    target,
-                                    m,
-                                    glow::RGBA8 as i32,
-                                    w,
-                                    h,
-                                    0,
-                                    glow::RGBA,
-                                    glow::UNSIGNED_BYTE,
-                                    Slice(layer(face)),
-                                );
+                                gl.tex_image_2d(target, m, internal, w, h, 0, format, ty, Slice(layer(face)));
                             }
                         }
                         glow::TEXTURE_2D_ARRAY | glow::TEXTURE_3D | glow::TEXTURE_CUBE_MAP_ARRAY => {
@@ -376,27 +369,18 @@ fn upload(
                                 _ => level.layers.max(1) as i32,
                             };
                             let data: Vec<u8> = (0..depth as u32).filter_map(layer).flatten().copied().collect();
-                            gl.tex_image_3d(
-                                target,
-                                m,
-                                glow::RGBA8 as i32,
-                                w,
-                                h,
-                                depth,
-                                0,
-                                glow::RGBA,
-                                glow::UNSIGNED_BYTE,
-                                Slice(Some(&data)),
-                            );
+                            gl.tex_image_3d(target, m, internal, w, h, depth, 0, format, ty, Slice(Some(&data)));
                         }
                         glow::TEXTURE_1D => {
-                            let row = layer(0).map(|l| &l[..(w * 4) as usize]);
-                            gl.tex_image_1d(target, m, glow::RGBA8 as i32, w, 0, glow::RGBA, glow::UNSIGNED_BYTE, Slice(row));
+                            let row = layer(0).map(|l| &l[..w as usize * level.format.texel_bytes()]);
+                            gl.tex_image_1d(target, m, internal, w, 0, format, ty, Slice(row));
                         }
-                        _ => gl.tex_image_2d(target, m, glow::RGBA8 as i32, w, h, 0, glow::RGBA, glow::UNSIGNED_BYTE, Slice(layer(0))),
+                        _ => gl.tex_image_2d(target, m, internal, w, h, 0, format, ty, Slice(layer(0))),
                     }
                 }
                 gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, levels.len() as i32 - 1);
+                // GL reads an integer texture only when it is not filtered (else: incomplete, zeros).
+                let sampler = if image.format.filterable() { sampler } else { (Filter::Nearest, sampler.1, sampler.2) };
                 set_sampler(gl, target, sampler, mipmapped);
                 target
             }
@@ -429,6 +413,20 @@ fn upload(
             ReplayTexture::Target(_) => glow::TEXTURE_2D,
         };
         Ok((target, texture))
+    }
+}
+
+/// GL's internal format, pixel format and type for a manifest texture's texels.
+fn gl_format(format: TexelFormat) -> (u32, u32, u32) {
+    match format {
+        TexelFormat::Rgba8 => (glow::RGBA8, glow::RGBA, glow::UNSIGNED_BYTE),
+        TexelFormat::Rgba16f => (glow::RGBA16F, glow::RGBA, glow::HALF_FLOAT),
+        TexelFormat::Rgba32f => (glow::RGBA32F, glow::RGBA, glow::FLOAT),
+        TexelFormat::R32f => (glow::R32F, glow::RED, glow::FLOAT),
+        TexelFormat::Rgba32i => (glow::RGBA32I, glow::RGBA_INTEGER, glow::INT),
+        TexelFormat::Rgba32ui => (glow::RGBA32UI, glow::RGBA_INTEGER, glow::UNSIGNED_INT),
+        TexelFormat::R32i => (glow::R32I, glow::RED_INTEGER, glow::INT),
+        TexelFormat::R32ui => (glow::R32UI, glow::RED_INTEGER, glow::UNSIGNED_INT),
     }
 }
 

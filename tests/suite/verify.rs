@@ -437,3 +437,39 @@ fn std140_block_members_wgsl_cannot_hold_read_as_gl_reads_them() {
     }
     assert_ne!(frames[0], frames[1], "the block's values reach the picture");
 }
+
+/// `[textures]` entries in float and integer formats: a sampler reads the values the manifest
+/// gives (beyond [0, 1], integers), GL draws the same picture from the same texels, and a
+/// format its sampler cannot read or a colour its format cannot hold is an error.
+#[test]
+fn manifest_textures_in_float_and_integer_formats_read_as_given() {
+    if !can_verify() {
+        return;
+    }
+    let dir = scratch("verify-texel-formats", "program");
+    let out = effectc(&["verify", "tests/verify/texel_formats", "--size", "64x64", "--out", dir.join("o").to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let png = image::open(dir.join("o/texel-formats_0000.png")).unwrap().to_rgba8();
+    // Red: the rgba32f gradient's -2 (left) and 3 (right) as (h + 2) / 5; green: the
+    // rgba16f gradient's 0 and 50 as g / 50; blue: the r32ui checker's 7 (bottom left) and
+    // 1000 as id / 1000; alpha: the rgba32i texel's -5 + 5 + 3 as a share of 8.
+    assert_eq!(png.get_pixel(0, 63).0, [0, 0, 2, 96]);
+    assert_eq!(png.get_pixel(63, 63).0, [255, 255, 255, 96]);
+    assert_eq!(png.get_pixel(0, 0).0, [0, 0, 255, 96]);
+    let manifest = std::fs::read_to_string("tests/verify/texel_formats/effect.toml").unwrap();
+    let with = |name: &str, text: String| {
+        let bad = dir.join(name);
+        std::fs::create_dir_all(&bad).unwrap();
+        for f in ["quad.vert", "formats.frag"] {
+            std::fs::copy(Path::new("tests/verify/texel_formats").join(f), bad.join(f)).unwrap();
+        }
+        std::fs::write(bad.join("effect.toml"), text).unwrap();
+        let out = effectc(&["check", bad.to_str().unwrap()]);
+        assert_eq!(code(&out), 1, "{}", stdout(&out));
+        stdout(&out)
+    };
+    let float_for_uint = with("mismatch", manifest.replace("format = \"r32ui\"", "format = \"rgba32f\""));
+    assert!(float_for_uint.contains("texture `ids` is `rgba32f`, but sampler `ids` reads unsigned integers"), "{float_for_uint}");
+    let fractions = with("fractions", manifest.replace("[[7, 0, 0, 0]", "[[7.5, 0, 0, 0]"));
+    assert!(fractions.contains("`r32ui` holds integers; its colours must be whole numbers"), "{fractions}");
+}

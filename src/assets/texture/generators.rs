@@ -4,10 +4,10 @@
 use super::cube_map::{cube_direction, normalize};
 use super::noise::{sphere_noise, tileable_noise_2d};
 use super::{TexelImage, MAX_IMAGE_SIDE};
-use crate::manifest::{Generator, GeneratorParams, TextureKind};
+use crate::manifest::{Generator, GeneratorParams, TexelFormat, TextureKind};
 
 /// Generates a square texture of `size` texels per side (0 is treated as 1, more than
-/// [`MAX_IMAGE_SIDE`] as that). See the module doc for the colour encoding.
+/// [`MAX_IMAGE_SIDE`] as that) in `format`. See the module doc for the colour encoding.
 ///
 /// 2D (`u` = (column + ½) / size, `v` = (row + ½) / size, row 0 at the bottom):
 /// - checker: `cells`×`cells` squares; the square at uv (0, 0) (bottom-left) is colour a, then alternating;
@@ -21,11 +21,11 @@ use crate::manifest::{Generator, GeneratorParams, TextureKind};
 /// - gradient: by the normalised direction's y, colour a at y = −1 to colour b at y = +1 (a sky);
 /// - noise: 3D value noise on the normalised direction, about `cells` lattice cells across a face;
 /// - solid: colour a.
-pub fn generate(generator: Generator, size: u32, params: &GeneratorParams, kind: TextureKind) -> TexelImage {
+pub fn generate(generator: Generator, size: u32, params: &GeneratorParams, kind: TextureKind, format: TexelFormat) -> TexelImage {
     let size = size.clamp(1, MAX_IMAGE_SIDE);
     match kind {
-        TextureKind::D2 => build(size, 1, |_, column, row| texel_2d(generator, size, params, column, row)),
-        TextureKind::Cube => build(size, 6, |face, column, row| texel_cube(generator, size, params, face, column, row)),
+        TextureKind::D2 => build(size, 1, format, |_, column, row| texel_2d(generator, size, params, column, row)),
+        TextureKind::Cube => build(size, 6, format, |face, column, row| texel_cube(generator, size, params, face, column, row)),
     }
 }
 
@@ -39,31 +39,24 @@ pub fn placeholder(kind: TextureKind) -> TexelImage {
     match kind {
         TextureKind::D2 => {
             let params = GeneratorParams { colors: [[1.0, 0.0, 1.0, 1.0], [0.0, 0.0, 0.0, 1.0]], cells: 8, ..Default::default() };
-            generate(Generator::Checker, 64, &params, TextureKind::D2)
+            generate(Generator::Checker, 64, &params, TextureKind::D2, TexelFormat::Rgba8)
         }
         TextureKind::Cube => {
             let params = GeneratorParams { colors: [[0.12, 0.10, 0.08, 1.0], [0.25, 0.55, 0.95, 1.0]], ..Default::default() };
-            generate(Generator::Gradient, 32, &params, TextureKind::Cube)
+            generate(Generator::Gradient, 32, &params, TextureKind::Cube, TexelFormat::Rgba8)
         }
     }
 }
 
 /// Fills `layers` square layers of `size` texels, calling `texel(layer, column, row)` for each.
-fn build(size: u32, layers: u32, texel: impl Fn(u32, u32, u32) -> [u8; 4]) -> TexelImage {
-    let mut rgba8 = Vec::with_capacity(size as usize * size as usize * layers as usize * 4);
-    for layer in 0..layers {
-        for row in 0..size {
-            for column in 0..size {
-                rgba8.extend_from_slice(&texel(layer, column, row));
-            }
-        }
-    }
-    TexelImage { width: size, height: size, layers, rgba8 }
+fn build(size: u32, layers: u32, format: TexelFormat, texel: impl Fn(u32, u32, u32) -> [f32; 4]) -> TexelImage {
+    let texels = (0..layers).flat_map(|layer| (0..size).flat_map(move |row| (0..size).map(move |column| (layer, column, row))));
+    TexelImage::from_values(size, size, layers, format, texels.map(|(layer, column, row)| texel(layer, column, row).map(f64::from)))
 }
 
-fn texel_2d(generator: Generator, size: u32, params: &GeneratorParams, column: u32, row: u32) -> [u8; 4] {
+fn texel_2d(generator: Generator, size: u32, params: &GeneratorParams, column: u32, row: u32) -> [f32; 4] {
     let [a, b] = params.colors;
-    let color = match generator {
+    match generator {
         Generator::Checker => checker(params, size, column, row),
         Generator::Gradient => mix(a, b, ramp(column, size)),
         Generator::Noise => {
@@ -71,22 +64,20 @@ fn texel_2d(generator: Generator, size: u32, params: &GeneratorParams, column: u
             mix(a, b, tileable_noise_2d(u, v, params.cells, params.octaves, params.seed))
         }
         Generator::Solid => a,
-    };
-    to_rgba8(color)
+    }
 }
 
-fn texel_cube(generator: Generator, size: u32, params: &GeneratorParams, face: u32, column: u32, row: u32) -> [u8; 4] {
+fn texel_cube(generator: Generator, size: u32, params: &GeneratorParams, face: u32, column: u32, row: u32) -> [f32; 4] {
     let [a, b] = params.colors;
     let sc = texel_centre(column, size) * 2.0 - 1.0;
     let tc = texel_centre(row, size) * 2.0 - 1.0;
     let direction = normalize(cube_direction(face, sc, tc));
-    let color = match generator {
+    match generator {
         Generator::Checker => checker(params, size, column, row),
         Generator::Gradient => mix(a, b, ((direction[1] + 1.0) * 0.5) as f32),
         Generator::Noise => mix(a, b, sphere_noise(direction, params.cells, params.octaves, params.seed)),
         Generator::Solid => a,
-    };
-    to_rgba8(color)
+    }
 }
 
 /// Colour a or b for the checker square holding the texel's centre.
@@ -124,7 +115,7 @@ pub fn to_rgba8(color: [f32; 4]) -> [u8; 4] {
     color.map(unit_to_byte)
 }
 
-fn unit_to_byte(c: f32) -> u8 {
+pub(super) fn unit_to_byte(c: f32) -> u8 {
     if c.is_nan() {
         return 0;
     }

@@ -1,28 +1,63 @@
-//! Image files: 2D textures and the six faces of a cube texture, decoded to RGBA8 with the `image`
-//! crate (byte values kept as stored), within [`MAX_IMAGE_SIDE`] on a side.
+//! Image files: 2D textures and the six faces of a cube texture, decoded with the `image`
+//! crate into a texel format (RGBA8: byte values kept as stored; floating point: 8- and
+//! 16-bit channels as 0..1, HDR and EXR values as stored; integers: the stored 8- or 16-bit
+//! channel values), within [`MAX_IMAGE_SIDE`] on a side.
 
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use image::{ImageFormat, ImageReader, Limits};
+use image::{DynamicImage, ImageFormat, ImageReader, Limits};
 
 use super::{TexelImage, CUBE_FACE_NAMES, MAX_IMAGE_SIDE};
+use crate::manifest::{TexelFormat, TexelKind};
 
 /// Loads a 2D texture from any format the `image` crate was built with, converted to RGBA8
 /// (byte values kept as stored) and flipped so row 0 is the image's bottom.
 pub fn load_file(path: &Path) -> Result<TexelImage, String> {
-    let (rgba8, width, height) = decode_rgba8(path)?;
-    Ok(TexelImage { width, height, layers: 1, rgba8: flip_rows(&rgba8, width) })
+    load_file_as(path, TexelFormat::Rgba8)
+}
+
+/// [`load_file`] into `format` (see the module doc).
+pub fn load_file_as(path: &Path, format: TexelFormat) -> Result<TexelImage, String> {
+    let image = decode(path)?;
+    let (width, height) = (image.width(), image.height());
+    if format == TexelFormat::Rgba8 {
+        let rgba8 = image.to_rgba8().into_raw();
+        let rows: Vec<&[u8]> = rgba8.chunks_exact(width as usize * 4).rev().collect();
+        return Ok(TexelImage::rgba8(width, height, 1, rows.concat()));
+    }
+    let values = values_of(&image, format).map_err(|e| format!("{}: {e}", path.display()))?;
+    let rows: Vec<&[[f64; 4]]> = values.chunks_exact(width as usize).rev().collect();
+    Ok(TexelImage::from_values(width, height, 1, format, rows.into_iter().flatten().copied()))
+}
+
+/// The texel values of `image` as `format` takes them, rows top-down as stored.
+fn values_of(image: &DynamicImage, format: TexelFormat) -> Result<Vec<[f64; 4]>, String> {
+    let wide = |v: &[f32]| v.chunks_exact(4).map(|c| std::array::from_fn(|i| f64::from(c[i]))).collect();
+    let ints = |v: Vec<u32>| v.chunks_exact(4).map(|c| std::array::from_fn(|i| f64::from(c[i]))).collect();
+    Ok(match format.kind() {
+        TexelKind::Float if format == TexelFormat::Rgba8 => {
+            image.to_rgba8().into_raw().chunks_exact(4).map(|c| std::array::from_fn(|i| f64::from(c[i]) / 255.0)).collect()
+        }
+        TexelKind::Float => wide(image.to_rgba32f().as_raw()),
+        _ => match image.color().bytes_per_pixel() / image.color().channel_count() {
+            1 => ints(image.to_rgba8().into_raw().into_iter().map(u32::from).collect()),
+            2 => ints(image.to_rgba16().into_raw().into_iter().map(u32::from).collect()),
+            _ => return Err(format!("`{}` holds integers: it takes an image of 8- or 16-bit channels, not floating point", format.name())),
+        },
+    })
 }
 
 /// Loads the six faces of a cube texture, in layer order +x −x +y −y +z −z. Faces must be square and
 /// all the same size. Faces are *not* flipped: a face file's top row becomes row 0 (t = 0), which is
 /// the usual skybox convention (see [`TexelImage`]).
-pub fn load_faces(paths: &[PathBuf; 6]) -> Result<TexelImage, String> {
-    let mut rgba8 = Vec::new();
+pub fn load_faces(paths: &[PathBuf; 6], format: TexelFormat) -> Result<TexelImage, String> {
+    let mut values = Vec::new();
     let mut first_size = None;
     for (path, name) in paths.iter().zip(CUBE_FACE_NAMES) {
-        let (face, width, height) = decode_rgba8(path).map_err(|e| format!("cube face {name}: {e}"))?;
+        let image = decode(path).map_err(|e| format!("cube face {name}: {e}"))?;
+        let (width, height) = (image.width(), image.height());
+        let face = values_of(&image, format).map_err(|e| format!("cube face {name} ({}): {e}", path.display()))?;
         if width != height {
             return Err(format!("cube face {name} ({}) is {width}×{height}; faces must be square", path.display()));
         }
@@ -37,29 +72,33 @@ pub fn load_faces(paths: &[PathBuf; 6]) -> Result<TexelImage, String> {
             }
             Some(_) => {}
         }
-        rgba8.extend_from_slice(&face);
+        values.extend(face);
     }
     let size = first_size.unwrap_or(1);
-    Ok(TexelImage { width: size, height: size, layers: 6, rgba8 })
+    Ok(TexelImage::from_values(size, size, 6, format, values.into_iter()))
 }
 
 /// Decodes an image file to RGBA8, rows top-down as stored, returning (bytes, width, height).
 /// Errors name the path; images of zero size or larger than [`MAX_IMAGE_SIDE`] on a side are refused.
 pub fn decode_rgba8(path: &Path) -> Result<(Vec<u8>, u32, u32), String> {
+    let rgba = decode(path)?.to_rgba8();
+    let (width, height) = rgba.dimensions();
+    Ok((rgba.into_raw(), width, height))
+}
+
+/// Decodes an image file, within the size limits; errors name the path.
+fn decode(path: &Path) -> Result<DynamicImage, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let hint = ImageFormat::from_path(path).ok();
     decode_bytes(&bytes, hint).map_err(|e| format!("cannot load {}: {e}", path.display()))
 }
 
-fn decode_bytes(bytes: &[u8], hint: Option<ImageFormat>) -> Result<(Vec<u8>, u32, u32), String> {
+fn decode_bytes(bytes: &[u8], hint: Option<ImageFormat>) -> Result<DynamicImage, String> {
     let (width, height) = image_reader(bytes, hint)?.into_dimensions().map_err(|e| e.to_string())?;
     check_dimensions(width, height)?;
     let mut reader = image_reader(bytes, hint)?;
     reader.limits(decode_limits());
-    let image = reader.decode().map_err(|e| e.to_string())?;
-    let rgba = image.to_rgba8();
-    let (width, height) = rgba.dimensions();
-    Ok((rgba.into_raw(), width, height))
+    reader.decode().map_err(|e| e.to_string())
 }
 
 /// A reader that trusts the file's contents over its extension, falling back to the extension.
@@ -88,13 +127,4 @@ fn decode_limits() -> Limits {
     // Room for a 16-bit RGBA image of the largest accepted size.
     limits.max_alloc = Some(MAX_IMAGE_SIDE as u64 * MAX_IMAGE_SIDE as u64 * 8);
     limits
-}
-
-/// The rows of an RGBA8 image in reverse order.
-fn flip_rows(rgba8: &[u8], width: u32) -> Vec<u8> {
-    let row_len = width as usize * 4;
-    if row_len == 0 {
-        return rgba8.to_vec();
-    }
-    rgba8.chunks_exact(row_len).rev().flatten().copied().collect()
 }

@@ -54,9 +54,9 @@ fn colours_convert_by_clamp_and_round() {
 
 #[test]
 fn checker_corners_and_cell_boundaries() {
-    let image = generate(Generator::Checker, 16, &params([RED, BLUE], 4, 4, 0), TextureKind::D2);
+    let image = generate(Generator::Checker, 16, &params([RED, BLUE], 4, 4, 0), TextureKind::D2, TexelFormat::Rgba8);
     let (red, blue) = (to_rgba8(RED), to_rgba8(BLUE));
-    assert_eq!((image.width, image.height, image.layers, image.rgba8.len()), (16, 16, 1, 16 * 16 * 4));
+    assert_eq!((image.width, image.height, image.layers, image.bytes.len()), (16, 16, 1, 16 * 16 * 4));
     // Bottom-left (row 0 = v 0) is colour a; with 4 cells the opposite corner is a too.
     assert_eq!(texel(&image, 0, 0, 0), red);
     assert_eq!(texel(&image, 0, 15, 15), red);
@@ -74,15 +74,15 @@ fn checker_corners_and_cell_boundaries() {
 
 #[test]
 fn checker_with_more_cells_than_texels_or_zero_cells_does_not_panic() {
-    let fine = generate(Generator::Checker, 4, &params([WHITE, BLACK], 100, 1, 0), TextureKind::D2);
-    assert_eq!(fine.rgba8.len(), 4 * 4 * 4);
-    let zero = generate(Generator::Checker, 4, &params([WHITE, BLACK], 0, 0, 0), TextureKind::D2);
-    assert!(zero.rgba8.chunks_exact(4).all(|t| t == [255, 255, 255, 255]), "0 cells acts as one square");
+    let fine = generate(Generator::Checker, 4, &params([WHITE, BLACK], 100, 1, 0), TextureKind::D2, TexelFormat::Rgba8);
+    assert_eq!(fine.bytes.len(), 4 * 4 * 4);
+    let zero = generate(Generator::Checker, 4, &params([WHITE, BLACK], 0, 0, 0), TextureKind::D2, TexelFormat::Rgba8);
+    assert!(zero.bytes.chunks_exact(4).all(|t| t == [255, 255, 255, 255]), "0 cells acts as one square");
 }
 
 #[test]
 fn gradient_endpoints_and_monotonic() {
-    let image = generate(Generator::Gradient, 16, &params([BLACK, WHITE], 8, 4, 0), TextureKind::D2);
+    let image = generate(Generator::Gradient, 16, &params([BLACK, WHITE], 8, 4, 0), TextureKind::D2, TexelFormat::Rgba8);
     for row in 0..16 {
         assert_eq!(texel(&image, 0, 0, row), [0, 0, 0, 255]);
         assert_eq!(texel(&image, 0, 15, row), [255, 255, 255, 255]);
@@ -95,20 +95,20 @@ fn gradient_endpoints_and_monotonic() {
 #[test]
 fn solid_and_size_zero() {
     let color = [0.25, 0.5, 0.75, 0.5];
-    let image = generate(Generator::Solid, 0, &params([color, BLACK], 8, 4, 0), TextureKind::D2);
+    let image = generate(Generator::Solid, 0, &params([color, BLACK], 8, 4, 0), TextureKind::D2, TexelFormat::Rgba8);
     assert_eq!((image.width, image.height), (1, 1));
-    assert_eq!(image.rgba8, to_rgba8(color).to_vec());
-    let cube = generate(Generator::Solid, 3, &params([color, BLACK], 8, 4, 0), TextureKind::Cube);
-    assert_eq!((cube.layers, cube.rgba8.len()), (6, 6 * 3 * 3 * 4));
-    assert!(cube.rgba8.chunks_exact(4).all(|t| t == to_rgba8(color)));
+    assert_eq!(image.bytes, to_rgba8(color).to_vec());
+    let cube = generate(Generator::Solid, 3, &params([color, BLACK], 8, 4, 0), TextureKind::Cube, TexelFormat::Rgba8);
+    assert_eq!((cube.layers, cube.bytes.len()), (6, 6 * 3 * 3 * 4));
+    assert!(cube.bytes.chunks_exact(4).all(|t| t == to_rgba8(color)));
 }
 
 #[test]
 fn noise_is_deterministic_in_range_and_varied() {
     let p = params([BLACK, WHITE], 4, 4, 7);
-    let first = generate(Generator::Noise, 32, &p, TextureKind::D2);
-    assert_eq!(first, generate(Generator::Noise, 32, &p, TextureKind::D2));
-    let reds: Vec<u8> = first.rgba8.chunks_exact(4).map(|t| t[0]).collect();
+    let first = generate(Generator::Noise, 32, &p, TextureKind::D2, TexelFormat::Rgba8);
+    assert_eq!(first, generate(Generator::Noise, 32, &p, TextureKind::D2, TexelFormat::Rgba8));
+    let reds: Vec<u8> = first.bytes.chunks_exact(4).map(|t| t[0]).collect();
     let (min, max) = (reds.iter().min().copied(), reds.iter().max().copied());
     assert!(max.unwrap_or(0) - min.unwrap_or(0) > 100, "noise should vary: {min:?}..{max:?}");
     for i in 0..=200 {
@@ -137,7 +137,7 @@ fn noise_is_tileable() {
         }
     }
     // In the texture, the wrap-around step (last column → first) is no larger than steps inside.
-    let image = generate(Generator::Noise, 64, &params([BLACK, WHITE], 4, 3, 2), TextureKind::D2);
+    let image = generate(Generator::Noise, 64, &params([BLACK, WHITE], 4, 3, 2), TextureKind::D2, TexelFormat::Rgba8);
     let red = |c: u32, r: u32| texel(&image, 0, c, r)[0] as i32;
     let mut inner_max = 0;
     let mut wrap_max = 0;
@@ -153,8 +153,8 @@ fn noise_is_tileable() {
 
 #[test]
 fn noise_differs_by_seed_and_handles_extreme_params() {
-    let a = generate(Generator::Noise, 16, &params([BLACK, WHITE], 4, 4, 0), TextureKind::D2);
-    let b = generate(Generator::Noise, 16, &params([BLACK, WHITE], 4, 4, 1), TextureKind::D2);
+    let a = generate(Generator::Noise, 16, &params([BLACK, WHITE], 4, 4, 0), TextureKind::D2, TexelFormat::Rgba8);
+    let b = generate(Generator::Noise, 16, &params([BLACK, WHITE], 4, 4, 1), TextureKind::D2, TexelFormat::Rgba8);
     assert_ne!(a, b);
     for (cells, octaves) in [(0, 0), (u32::MAX, u32::MAX), (1, 100)] {
         let n = tileable_noise_2d(0.25, 0.75, cells, octaves, u32::MAX);
@@ -262,7 +262,7 @@ fn interior_difference(image: &TexelImage) -> i32 {
 
 #[test]
 fn cube_noise_is_seamless() {
-    let image = generate(Generator::Noise, 48, &params([BLACK, WHITE], 3, 3, 5), TextureKind::Cube);
+    let image = generate(Generator::Noise, 48, &params([BLACK, WHITE], 3, 3, 5), TextureKind::Cube, TexelFormat::Rgba8);
     let seam = seam_difference(&image, false);
     let interior = interior_difference(&image);
     assert!(interior > 0);
@@ -273,7 +273,7 @@ fn cube_noise_is_seamless() {
 
 #[test]
 fn cube_gradient_is_a_seamless_sky() {
-    let image = generate(Generator::Gradient, 32, &params([BLACK, WHITE], 8, 4, 0), TextureKind::Cube);
+    let image = generate(Generator::Gradient, 32, &params([BLACK, WHITE], 8, 4, 0), TextureKind::Cube, TexelFormat::Rgba8);
     let seam = seam_difference(&image, false);
     assert!(seam <= interior_difference(&image) + 1, "seam {seam}");
     // +y (layer 2) centre ≈ colour b, −y (layer 3) centre ≈ colour a.
@@ -288,7 +288,7 @@ fn cube_gradient_is_a_seamless_sky() {
 
 #[test]
 fn cube_checker_uses_face_local_tiles() {
-    let image = generate(Generator::Checker, 8, &params([RED, BLUE], 2, 4, 0), TextureKind::Cube);
+    let image = generate(Generator::Checker, 8, &params([RED, BLUE], 2, 4, 0), TextureKind::Cube, TexelFormat::Rgba8);
     for face in 0..6 {
         assert_eq!(texel(&image, face, 0, 0), to_rgba8(RED));
         assert_eq!(texel(&image, face, 4, 0), to_rgba8(BLUE));
@@ -303,7 +303,7 @@ fn placeholders() {
     assert_eq!(texel(&flat, 0, 0, 0), [255, 0, 255, 255]);
     assert_eq!(texel(&flat, 0, 8, 0), [0, 0, 0, 255]);
     let cube = placeholder(TextureKind::Cube);
-    assert_eq!((cube.width, cube.layers, cube.rgba8.len()), (32, 6, 32 * 32 * 6 * 4));
+    assert_eq!((cube.width, cube.layers, cube.bytes.len()), (32, 6, 32 * 32 * 6 * 4));
     let sky = to_rgba8([0.25, 0.55, 0.95, 1.0]);
     let up = texel(&cube, 2, 16, 16);
     assert!(up.iter().zip(sky).all(|(a, b)| a.abs_diff(b) <= 1), "{up:?}");
@@ -381,7 +381,7 @@ fn load_faces_keeps_face_rows_and_checks_sizes() {
         let top = [i as u8 * 10, 0, 0, 255];
         write_png(path, 2, 2, [top, top, [255; 4], [255; 4]].concat());
     }
-    let cube = load_faces(&paths).expect("faces");
+    let cube = load_faces(&paths, TexelFormat::Rgba8).expect("faces");
     assert_eq!((cube.width, cube.height, cube.layers), (2, 2, 6));
     for face in 0..6u32 {
         assert_eq!(texel(&cube, face, 1, 0), [face as u8 * 10, 0, 0, 255], "file top row is row 0");
@@ -389,31 +389,60 @@ fn load_faces_keeps_face_rows_and_checks_sizes() {
     }
 
     solid_png(&paths[3], 4, 4, [0, 0, 0, 255]);
-    let err = load_faces(&paths).expect_err("size mismatch");
+    let err = load_faces(&paths, TexelFormat::Rgba8).expect_err("size mismatch");
     assert!(err.contains("-y") && err.contains("face3.png"), "{err}");
 
     solid_png(&paths[3], 2, 2, [0, 0, 0, 255]);
     solid_png(&paths[0], 2, 3, [0, 0, 0, 255]);
-    let err = load_faces(&paths).expect_err("not square");
+    let err = load_faces(&paths, TexelFormat::Rgba8).expect_err("not square");
     assert!(err.contains("+x") && err.contains("square"), "{err}");
 
     solid_png(&paths[0], 2, 2, [0, 0, 0, 255]);
     std::fs::remove_file(&paths[5]).expect("remove");
-    let err = load_faces(&paths).expect_err("missing face");
+    let err = load_faces(&paths, TexelFormat::Rgba8).expect_err("missing face");
     assert!(err.contains("-z") && err.contains("face5.png"), "{err}");
 }
 
 #[test]
 fn mipmaps_halve_down_to_one_texel_and_average() {
-    let image = generate(Generator::Checker, 8, &GeneratorParams { cells: 8, ..Default::default() }, TextureKind::D2);
+    let image = generate(Generator::Checker, 8, &GeneratorParams { cells: 8, ..Default::default() }, TextureKind::D2, TexelFormat::Rgba8);
     let chain = image.mip_chain();
     let sizes: Vec<(u32, u32)> = chain.iter().map(|l| (l.width, l.height)).collect();
     assert_eq!(sizes, vec![(4, 4), (2, 2), (1, 1)]);
     // A one-texel checker of white and black averages to mid grey at the first level.
     let t = chain[0].texel(0, 0, 0).unwrap();
     assert!((126..=129).contains(&t[0]), "{t:?}");
-    let odd = TexelImage { width: 3, height: 1, layers: 1, rgba8: vec![0, 0, 0, 255, 255, 255, 255, 255, 90, 90, 90, 255] };
+    let odd = TexelImage::rgba8(3, 1, 1, vec![0, 0, 0, 255, 255, 255, 255, 255, 90, 90, 90, 255]);
     assert_eq!(odd.mip_chain().iter().map(|l| (l.width, l.height)).collect::<Vec<_>>(), vec![(1, 1)]);
-    let cube = generate(Generator::Gradient, 4, &GeneratorParams::default(), TextureKind::Cube);
-    assert!(cube.mip_chain().iter().all(|l| l.layers == 6 && l.rgba8.len() == l.layer_len() * 6));
+    let cube = generate(Generator::Gradient, 4, &GeneratorParams::default(), TextureKind::Cube, TexelFormat::Rgba8);
+    assert!(cube.mip_chain().iter().all(|l| l.layers == 6 && l.bytes.len() == l.layer_len() * 6));
+}
+
+#[test]
+fn float_and_integer_formats_keep_the_values_given() {
+    let values = [[-2.0, 0.5, 1000.0, 1.0], [3.25, 0.0, 7.0, 0.0]];
+    let f32s = TexelImage::from_values(2, 1, 1, TexelFormat::Rgba32f, values.into_iter());
+    assert_eq!(f32s.bytes.len(), 2 * 16);
+    assert_eq!(f32s.value(0, 0, 0), Some([-2.0, 0.5, 1000.0, 1.0]), "beyond [0, 1], unclamped");
+    let f16s = TexelImage::from_values(2, 1, 1, TexelFormat::Rgba16f, values.into_iter());
+    assert_eq!((f16s.bytes.len(), f16s.value(0, 1, 0)), (2 * 8, Some([3.25, 0.0, 7.0, 0.0])), "exact in half precision");
+    let red = TexelImage::from_values(2, 1, 1, TexelFormat::R32ui, [[7.0, 9.0, 9.0, 9.0], [-3.0, 0.0, 0.0, 0.0]].into_iter());
+    assert_eq!(red.bytes.len(), 2 * 4);
+    assert_eq!(
+        (red.value(0, 0, 0), red.value(0, 1, 0)),
+        (Some([7.0, 0.0, 0.0, 1.0]), Some([0.0, 0.0, 0.0, 1.0])),
+        "r: (r, 0, 0, 1), saturated"
+    );
+    let ints = TexelImage::from_values(1, 1, 1, TexelFormat::Rgba32i, [[-5.0, 3.0, 0.0, 1.0]].into_iter());
+    assert_eq!(ints.value(0, 0, 0), Some([-5.0, 3.0, 0.0, 1.0]));
+    assert!(ints.mip_chain().is_empty() && ints.texel(0, 0, 0).is_none(), "integer textures have one level and no RGBA8 bytes");
+    assert_eq!(ints.channel_ranges()[0], (-5.0, -5.0));
+    // Float mipmaps average in floating point.
+    let quad = TexelImage::from_values(2, 2, 1, TexelFormat::Rgba32f, [[-2.0; 4], [4.0; 4], [0.0; 4], [2.0; 4]].into_iter());
+    let mips = quad.mip_chain();
+    assert_eq!((mips.len(), mips[0].value(0, 0, 0)), (1, Some([1.0; 4])));
+    assert_eq!(quad.channel_ranges()[3], (-2.0, 4.0));
+    // RGBA8 keeps its bytes and reads them as 0..1.
+    let bytes = TexelImage::from_values(1, 1, 1, TexelFormat::Rgba8, [[1.5, 0.5, -1.0, 1.0]].into_iter());
+    assert_eq!((bytes.texel(0, 0, 0), bytes.value(0, 0, 0)), (Some([255, 128, 0, 255]), Some([1.0, 128.0 / 255.0, 0.0, 1.0])));
 }

@@ -135,7 +135,7 @@ impl Facts {
             f.vertices = u32::try_from(mesh.positions.len().max(mesh.indices.len())).ok();
         }
         for t in &e.textures {
-            if let Some(channels) = texture_channels(&t.source) {
+            if let Some(channels) = texture_channels(&t.source, t.format) {
                 f.textures.insert(t.name.clone(), channels);
             }
         }
@@ -264,24 +264,16 @@ fn cone_holds(mesh: &Mesh, data: &[[f32; 4]]) -> bool {
 
 /// Channel ranges over every texel of a manifest texture (mipmaps average texels, so they
 /// stay inside); `None` when it cannot be read (the renderer reports that).
-fn texture_channels(source: &TextureSource) -> Option<[Iv; 4]> {
+fn texture_channels(source: &TextureSource, format: crate::manifest::TexelFormat) -> Option<[Iv; 4]> {
     use crate::assets::texture;
     let image = match source {
-        TextureSource::File(p) => texture::load_file(p).ok()?,
-        TextureSource::Faces(paths) => texture::load_faces(paths).ok()?,
+        TextureSource::File(p) => texture::load_file_as(p, format).ok()?,
+        TextureSource::Faces(paths) => texture::load_faces(paths, format).ok()?,
         TextureSource::Generated { generator, size, params } => {
-            texture::generate(*generator, *size, params, crate::manifest::TextureKind::D2)
+            texture::generate(*generator, *size, params, crate::manifest::TextureKind::D2, format)
         }
     };
-    let mut lo = [255u8; 4];
-    let mut hi = [0u8; 4];
-    for px in image.rgba8.chunks_exact(4) {
-        for i in 0..4 {
-            lo[i] = lo[i].min(px[i]);
-            hi[i] = hi[i].max(px[i]);
-        }
-    }
-    Some(std::array::from_fn(|i| Iv::new(f64::from(lo[i]) / 255.0, f64::from(hi[i]) / 255.0)))
+    Some(image.channel_ranges().map(|(lo, hi)| Iv::new(lo, hi)))
 }
 
 /// Semantic values sampled over the effect's animation.

@@ -10,10 +10,12 @@ use toml::de::{DeTable, DeValue};
 use super::{entries, key, Ctx, Key, Val};
 use crate::diag::Code;
 use crate::manifest::{
-    Filter, Generator, GeneratorParams, TextureDecl, TextureKind, TextureSource, Wrap, DEFAULT_TEXTURE_SIZE, MAX_TEXTURE_SIZE,
+    Filter, Generator, GeneratorParams, TexelFormat, TexelKind, TextureDecl, TextureKind, TextureSource, Wrap, DEFAULT_TEXTURE_SIZE,
+    MAX_TEXTURE_SIZE,
 };
 
-const TEXTURE_KEYS: &[&str] = &["file", "cube", "generate", "kind", "size", "colors", "cells", "seed", "octaves", "filter", "wrap"];
+const TEXTURE_KEYS: &[&str] =
+    &["file", "cube", "generate", "kind", "size", "colors", "cells", "seed", "octaves", "filter", "wrap", "format"];
 const MAX_CELLS: u32 = 4096;
 const MAX_OCTAVES: u32 = 16;
 
@@ -37,6 +39,10 @@ struct TextureFields {
     params: GeneratorParams,
     filter: Filter,
     wrap: Wrap,
+    format: (TexelFormat, Option<Range<usize>>),
+    filter_given: bool,
+    /// The span of `colors`' value.
+    colors_span: Option<Range<usize>>,
 }
 
 impl TextureFields {
@@ -53,6 +59,9 @@ impl TextureFields {
             params: GeneratorParams::default(),
             filter: Filter::default(),
             wrap: Wrap::default(),
+            format: (TexelFormat::default(), None),
+            filter_given: false,
+            colors_span: None,
         }
     }
 }
@@ -73,6 +82,7 @@ impl Ctx<'_> {
                     span: v.span(),
                     filter: Filter::default(),
                     wrap: Wrap::default(),
+                    format: TexelFormat::default(),
                 }),
                 DeValue::Table(tt) => self.texture_table(name, k, v, tt),
                 _ => {
@@ -94,7 +104,8 @@ impl Ctx<'_> {
         let source_kind = self.texture_source(name, v, &f.sources)?;
         let tex_kind = self.texture_kind(name, source_kind, f.kind.clone());
         let params_ok = self.check_generator_params(name, source_kind, f.generator, &f.params_given);
-        if !(f.ok && tex_kind.is_some() && params_ok) {
+        let format_ok = self.check_format(name, &f, tex_kind);
+        if !(f.ok && tex_kind.is_some() && params_ok && format_ok) {
             return None;
         }
         let source = match source_kind {
@@ -108,9 +119,56 @@ impl Ctx<'_> {
             kind: tex_kind?,
             source,
             span: v.span(),
-            filter: f.filter,
+            // Integer textures are read texel by texel.
+            filter: if f.format.0.filterable() { f.filter } else { Filter::Nearest },
             wrap: f.wrap,
+            format: f.format.0,
         })
+    }
+
+    /// An integer format takes integer colours in its range, is sampled with `nearest` (GL
+    /// filters no integer texture) and is 2D; a filter asked of it is an error.
+    fn check_format(&mut self, name: &str, f: &TextureFields, kind: Option<TextureKind>) -> bool {
+        let (format, Some(span)) = (f.format.0, f.format.1.clone()) else { return true };
+        let (lo, hi) = match format.kind() {
+            TexelKind::Float => return true,
+            TexelKind::Sint => (f64::from(i32::MIN), f64::from(i32::MAX)),
+            TexelKind::Uint => (0.0, f64::from(u32::MAX)),
+        };
+        let mut ok = true;
+        if f.filter == Filter::Linear && f.filter_given {
+            let d = self.report(
+                Code::ManifestConflict,
+                span.clone(),
+                format!("texture `{name}`: an integer format cannot be filtered linearly"),
+                "integer format",
+            );
+            d.help = Some("drop `filter` or write `filter = \"nearest\"`: integer textures are read texel by texel".into());
+            ok = false;
+        }
+        if kind == Some(TextureKind::Cube) && format.kind() != TexelKind::Float {
+            let d = self.report(
+                Code::ManifestConflict,
+                span.clone(),
+                format!("texture `{name}`: integer cube maps are not supported"),
+                "integer format",
+            );
+            d.help = Some("use a 2D texture, or a floating-point format".into());
+            ok = false;
+        }
+        let bad = f.params.colors.iter().flatten().any(|c| c.fract() != 0.0 || f64::from(*c) < lo || f64::from(*c) > hi);
+        if bad {
+            let at = f.colors_span.clone().unwrap_or(span);
+            let d = self.report(
+                Code::ManifestValue,
+                at,
+                format!("texture `{name}`: `{}` holds integers; its colours must be whole numbers in [{lo}, {hi}]", format.name()),
+                "not an integer of this format",
+            );
+            d.help = Some("write the integer each texel holds, such as `colors = [[0, 0, 0, 0], [7, 1, 255, 1]]`".into());
+            ok = false;
+        }
+        ok
     }
 
     /// Reads every key of a texture table; what they say together is checked by the caller.
@@ -148,7 +206,10 @@ impl Ctx<'_> {
                     f.params_given.push((p, k2.span()));
                     let parsed = match p {
                         "size" => self.uint(v2, what, 1, MAX_TEXTURE_SIZE).map(|n| f.size = n),
-                        "colors" => self.colors(v2, what).map(|c| f.params.colors = c),
+                        "colors" => self.colors(v2, what).map(|c| {
+                            f.params.colors = c;
+                            f.colors_span = Some(v2.span());
+                        }),
                         "cells" => self.uint(v2, what, 1, MAX_CELLS).map(|n| f.params.cells = n),
                         "seed" => self.uint(v2, what, 0, u32::MAX).map(|n| f.params.seed = n),
                         _ => self.uint(v2, what, 1, MAX_OCTAVES).map(|n| f.params.octaves = n),
@@ -158,7 +219,17 @@ impl Ctx<'_> {
                 "filter" => {
                     let choices = [("linear", Filter::Linear), ("nearest", Filter::Nearest)];
                     match self.choice(v2, what, "filter", &choices) {
-                        Some(x) => f.filter = x,
+                        Some(x) => {
+                            f.filter = x;
+                            f.filter_given = true;
+                        }
+                        None => f.ok = false,
+                    }
+                }
+                "format" => {
+                    let choices: Vec<_> = TexelFormat::ALL.iter().map(|x| (x.name(), *x)).collect();
+                    match self.choice(v2, what, "texel format", &choices) {
+                        Some(x) => f.format = (x, Some(v2.span())),
                         None => f.ok = false,
                     }
                 }

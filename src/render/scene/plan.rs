@@ -11,7 +11,7 @@ use crate::back::Translation;
 use crate::diag::{Code, Diagnostic};
 use crate::front::program::CompiledProgram;
 use crate::front::syntax::Storage;
-use crate::manifest::{Effect, MeshAttribute, TextureDecl, TextureKind, TextureSource, UniformValue};
+use crate::manifest::{Effect, MeshAttribute, TexelKind, TextureDecl, TextureKind, TextureSource, UniformValue};
 use crate::render::attributes::{self, Choice};
 use crate::render::uniforms::{self, UniformBuffer};
 
@@ -105,7 +105,7 @@ pub(crate) fn plan<'a>(input: &PlanInput<'a>) -> Result<Plan<'a>, Vec<Diagnostic
         };
         warnings.push(d.with_help(help));
     }
-    let textures = textures(input, &mut warnings);
+    let textures = textures(input, &mut warnings)?;
     let describe = describe(input, (&mesh_note, &mesh), &choices, &uniforms, &textures);
     Ok(Plan { mesh, mesh_note, choices, uniforms, textures, warnings, describe, initial, row_major })
 }
@@ -135,10 +135,12 @@ fn vertex_values_counted(
     }
 }
 
-/// The source of every texture binding the program uses, and a warning for each placeholder.
-fn textures<'a>(input: &PlanInput<'a>, warnings: &mut Vec<Diagnostic>) -> BTreeMap<String, TextureChoice<'a>> {
+/// The source of every texture binding the program uses, and a warning for each placeholder;
+/// an error where a manifest texture's format is not of the kind its sampler reads.
+fn textures<'a>(input: &PlanInput<'a>, warnings: &mut Vec<Diagnostic>) -> Result<BTreeMap<String, TextureChoice<'a>>, Vec<Diagnostic>> {
     let plan = &input.program.plan;
     let mut out = BTreeMap::new();
+    let mut wrong = Vec::new();
     for b in input.translation.reflection.bindings.iter().filter(|b| !b.visibility.is_empty() && b.kind == "texture") {
         let user = plan.textures.iter().find(|t| t.name == b.name).map(|t| t.user_name.clone());
         let name = user.clone().unwrap_or_else(|| b.name.clone());
@@ -156,7 +158,13 @@ fn textures<'a>(input: &PlanInput<'a>, warnings: &mut Vec<Diagnostic>) -> BTreeM
                 TextureChoice::Multisampled { depth: sample_type == Some("depth") }
             }
             (None, _, Some("depth")) => TextureChoice::Depth,
-            (None, _, Some(kind @ ("sint" | "uint"))) => TextureChoice::Integer { unsigned: kind == "uint" },
+            (None, Some(decl), sample_type) if !reads(decl.format.kind(), sample_type) => {
+                if let Some(effect) = input.effect {
+                    wrong.push(format_mismatch(effect, decl, &name, sample_type));
+                }
+                continue;
+            }
+            (None, None, Some(kind @ ("sint" | "uint"))) => TextureChoice::Integer { unsigned: kind == "uint" },
             (None, Some(decl), _) => TextureChoice::Image(decl),
             (None, None, _) => {
                 let kind = if b.dimension == Some("cube") { TextureKind::Cube } else { TextureKind::D2 };
@@ -176,7 +184,35 @@ fn textures<'a>(input: &PlanInput<'a>, warnings: &mut Vec<Diagnostic>) -> BTreeM
         };
         out.insert(b.name.clone(), choice);
     }
-    out
+    if wrong.is_empty() {
+        Ok(out)
+    } else {
+        Err(wrong)
+    }
+}
+
+/// Whether a sampler of `sample_type` reads textures of `kind`.
+fn reads(kind: TexelKind, sample_type: Option<&str>) -> bool {
+    match sample_type {
+        Some("sint") => kind == TexelKind::Sint,
+        Some("uint") => kind == TexelKind::Uint,
+        _ => kind == TexelKind::Float,
+    }
+}
+
+/// A manifest texture whose format its sampler cannot read (GL leaves such reads undefined).
+fn format_mismatch(effect: &Effect, decl: &TextureDecl, sampler: &str, sample_type: Option<&str>) -> Diagnostic {
+    let (reads, formats) = match sample_type {
+        Some("sint") => ("signed integers (`isampler*`)", "`format = \"rgba32i\"` (or `\"r32i\"`)"),
+        Some("uint") => ("unsigned integers (`usampler*`)", "`format = \"rgba32ui\"` (or `\"r32ui\"`)"),
+        _ => ("floating-point values", "a floating-point format (`\"rgba8\"`, `\"rgba16f\"`, `\"rgba32f\"` or `\"r32f\"`)"),
+    };
+    Diagnostic::new(
+        Code::ManifestValue,
+        format!("texture `{}` is `{}`, but sampler `{sampler}` reads {reads}", decl.name, decl.format.name()),
+    )
+    .at(effect.file, decl.span.clone(), "this texture")
+    .with_help(format!("give the texture {formats}, or change the sampler's type"))
 }
 
 /// A one-line description for `--verbose`: the mesh, then what each vertex input,

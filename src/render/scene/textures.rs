@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use crate::assets::texture::{self, TexelImage};
 use crate::back::reflect::BindingInfo;
 use crate::diag::{Code, Diagnostic, FileId};
-use crate::manifest::{Filter, TextureSource, Wrap};
+use crate::manifest::{Filter, TexelFormat, TextureSource, Wrap};
 use crate::render::device::Gpu;
 
 use super::plan::TextureChoice;
@@ -110,9 +110,9 @@ impl Textures {
 
 fn load(decl: &crate::manifest::TextureDecl) -> Result<TexelImage, String> {
     match &decl.source {
-        TextureSource::File(p) => texture::load_file(p),
-        TextureSource::Faces(faces) => texture::load_faces(faces),
-        TextureSource::Generated { generator, size, params } => Ok(texture::generate(*generator, *size, params, decl.kind)),
+        TextureSource::File(p) => texture::load_file_as(p, decl.format),
+        TextureSource::Faces(faces) => texture::load_faces(faces, decl.format),
+        TextureSource::Generated { generator, size, params } => Ok(texture::generate(*generator, *size, params, decl.kind, decl.format)),
     }
 }
 
@@ -155,7 +155,7 @@ fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
         mip_level_count: levels.len() as u32,
         sample_count: 1,
         dimension,
-        format: wgpu::TextureFormat::Rgba8Unorm,
+        format: wgpu_format(image.format),
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
     });
@@ -163,7 +163,8 @@ fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
         let level_height = if dimension == wgpu::TextureDimension::D1 { 1 } else { level.height };
         for layer in 0..depth {
             let Some(data) = level.layer(layer % level.layers.max(1)) else { continue };
-            let rows = &data[..(level.width * level_height * 4) as usize];
+            let row = level.width * level.format.texel_bytes() as u32;
+            let rows = &data[..(row * level_height) as usize];
             gpu.queue.write_texture(
                 wgpu::TexelCopyTextureInfo {
                     texture: &texture,
@@ -172,12 +173,27 @@ fn upload(gpu: &Gpu, image: &TexelImage, b: &BindingInfo) -> wgpu::TextureView {
                     aspect: wgpu::TextureAspect::All,
                 },
                 rows,
-                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(level.width * 4), rows_per_image: Some(level_height) },
+                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: Some(level_height) },
                 wgpu::Extent3d { width: level.width, height: level_height, depth_or_array_layers: 1 },
             );
         }
     }
     texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(dim), ..Default::default() })
+}
+
+/// The wgpu format of a manifest texture's texels.
+pub(super) fn wgpu_format(format: TexelFormat) -> wgpu::TextureFormat {
+    use wgpu::TextureFormat as T;
+    match format {
+        TexelFormat::Rgba8 => T::Rgba8Unorm,
+        TexelFormat::Rgba16f => T::Rgba16Float,
+        TexelFormat::Rgba32f => T::Rgba32Float,
+        TexelFormat::R32f => T::R32Float,
+        TexelFormat::Rgba32i => T::Rgba32Sint,
+        TexelFormat::Rgba32ui => T::Rgba32Uint,
+        TexelFormat::R32i => T::R32Sint,
+        TexelFormat::R32ui => T::R32Uint,
+    }
 }
 
 /// A 1×1 depth texture cleared to 1.0 (everything lit, for shadow lookups).
