@@ -446,3 +446,26 @@ fn float_and_integer_formats_keep_the_values_given() {
     let bytes = TexelImage::from_values(1, 1, 1, TexelFormat::Rgba8, [[1.5, 0.5, -1.0, 1.0]].into_iter());
     assert_eq!((bytes.texel(0, 0, 0), bytes.value(0, 0, 0)), (Some([255, 128, 0, 255]), Some([1.0, 128.0 / 255.0, 0.0, 1.0])));
 }
+
+#[test]
+fn image_files_load_as_float_and_integer_texels() {
+    let dir = TempDir::new("formats");
+    // Radiance HDR keeps values past 1 (to its shared-exponent precision), bottom row first.
+    let hdr = dir.0.join("bright.hdr");
+    image::DynamicImage::ImageRgb32F(image::Rgb32FImage::from_raw(1, 2, vec![5.0, 0.25, 1.0, 0.5, 0.5, 0.5]).unwrap())
+        .save(&hdr)
+        .expect("save hdr");
+    let bright = load_file_as(&hdr, TexelFormat::Rgba32f).expect("load hdr");
+    let top = bright.value(0, 0, 1).expect("top row");
+    assert!((top[0] - 5.0).abs() < 0.05 && (top[1] - 0.25).abs() < 0.01 && top[3] == 1.0, "{top:?}");
+    assert_eq!(bright.value(0, 0, 0).map(|v| v[0]), Some(0.5));
+    // A 16-bit PNG gives its stored channel values to an integer format.
+    let ids = dir.0.join("ids.png");
+    image::DynamicImage::ImageLuma16(image::ImageBuffer::from_raw(2, 1, vec![1000u16, 65535]).unwrap()).save(&ids).expect("save png");
+    let texels = load_file_as(&ids, TexelFormat::R32ui).expect("load ids");
+    assert_eq!((texels.value(0, 0, 0), texels.value(0, 1, 0)), (Some([1000.0, 0.0, 0.0, 1.0]), Some([65535.0, 0.0, 0.0, 1.0])));
+    // ... and as 0..1 to a float one; a floating-point file is refused by an integer format.
+    assert_eq!(load_file_as(&ids, TexelFormat::R32f).expect("load").value(0, 1, 0), Some([1.0, 0.0, 0.0, 1.0]));
+    let refused = load_file_as(&hdr, TexelFormat::Rgba32i).expect_err("float image as integers");
+    assert!(refused.contains("holds integers") && refused.contains("bright.hdr"), "{refused}");
+}
