@@ -24,7 +24,7 @@ use naga::{
 
 use crate::diag::Code;
 use crate::stage::StageKind;
-use crate::stress::ir::{entries, reachable, Builder};
+use crate::stress::ir::{each_statement, entries, reachable, Builder};
 
 /// The sub-pixel precision of a rasterizer's grid (8 bits): components that reach zero
 /// within this share of the distance between two pixel centres reach it at one point.
@@ -101,14 +101,9 @@ pub fn flow_of(stmt: &Statement, flow: bool, uniform: &[bool]) -> (bool, bool) {
 
 /// `block` returns or discards somewhere (a loop's `break` only leaves the loop).
 fn leaves(block: &Block) -> bool {
-    block.iter().any(|s| match s {
-        Statement::Return { .. } | Statement::Kill => true,
-        Statement::Block(b) => leaves(b),
-        Statement::If { accept, reject, .. } => leaves(accept) || leaves(reject),
-        Statement::Loop { body, continuing, .. } => leaves(body) || leaves(continuing),
-        Statement::Switch { cases, .. } => cases.iter().any(|c| leaves(&c.body)),
-        _ => false,
-    })
+    let mut found = false;
+    each_statement(block, &mut |s| found |= matches!(s, Statement::Return { .. } | Statement::Kill));
+    found
 }
 
 /// Calls `call` with every function `block` calls and the flow at the call.
@@ -272,22 +267,11 @@ fn root(fun: &Function, pointer: Handle<Expression>) -> Option<Root> {
 
 /// Calls `f` with the pointer and value of every store in `block`.
 fn each_store(block: &Block, f: &mut dyn FnMut(Handle<Expression>, Handle<Expression>)) {
-    for s in block.iter() {
-        match s {
-            Statement::Store { pointer, value } => f(*pointer, *value),
-            Statement::Block(b) => each_store(b, f),
-            Statement::If { accept, reject, .. } => {
-                each_store(accept, f);
-                each_store(reject, f);
-            }
-            Statement::Loop { body, continuing, .. } => {
-                each_store(body, f);
-                each_store(continuing, f);
-            }
-            Statement::Switch { cases, .. } => cases.iter().for_each(|c| each_store(&c.body, f)),
-            _ => {}
+    each_statement(block, &mut |s| {
+        if let Statement::Store { pointer, value } = s {
+            f(*pointer, *value);
         }
-    }
+    })
 }
 
 /// The value of local `l` when it is written exactly once, whole, by a store at the top

@@ -63,26 +63,35 @@ pub fn free_binding(module: &Module) -> (u32, u32) {
     (group, binding)
 }
 
-/// Functions called, directly or not, from `f`, callees first.
-pub fn reachable(module: &Module, f: &Function) -> Vec<Handle<Function>> {
-    fn calls(block: &Block, out: &mut Vec<Handle<Function>>) {
-        for s in block.iter() {
-            match s {
-                Statement::Call { function, .. } => out.push(*function),
-                Statement::Block(b) => calls(b, out),
-                Statement::If { accept, reject, .. } => {
-                    calls(accept, out);
-                    calls(reject, out);
-                }
-                Statement::Loop { body, continuing, .. } => {
-                    calls(body, out);
-                    calls(continuing, out);
-                }
-                Statement::Switch { cases, .. } => cases.iter().for_each(|c| calls(&c.body, out)),
-                _ => {}
+/// Calls `f` with every statement of `block` and of the blocks it holds, outer first.
+pub fn each_statement(block: &Block, f: &mut dyn FnMut(&Statement)) {
+    for s in block.iter() {
+        f(s);
+        match s {
+            Statement::Block(b) => each_statement(b, f),
+            Statement::If { accept, reject, .. } => {
+                each_statement(accept, f);
+                each_statement(reject, f);
             }
+            Statement::Loop { body, continuing, .. } => {
+                each_statement(body, f);
+                each_statement(continuing, f);
+            }
+            Statement::Switch { cases, .. } => cases.iter().for_each(|c| each_statement(&c.body, f)),
+            _ => {}
         }
     }
+}
+
+/// Functions called, directly or not, from `f`, callees first.
+pub fn reachable(module: &Module, f: &Function) -> Vec<Handle<Function>> {
+    let calls = |block: &Block, out: &mut Vec<Handle<Function>>| {
+        each_statement(block, &mut |s| {
+            if let Statement::Call { function, .. } = s {
+                out.push(*function);
+            }
+        })
+    };
     let mut seen: Vec<Handle<Function>> = Vec::new();
     let mut todo = Vec::new();
     calls(&f.body, &mut todo);
