@@ -144,7 +144,7 @@ impl Continuity {
         let mut note = |fun: &Function, entry: bool| {
             each_store(&fun.body, &mut |pointer, value| {
                 if let Some(Root::Global(g)) = root(fun, pointer) {
-                    let from_argument = entry && matches!(fun.expressions[value], Expression::FunctionArgument(_));
+                    let from_argument = entry && argument_part(fun, value);
                     stores.push((g, from_argument));
                 }
             })
@@ -205,6 +205,15 @@ impl Continuity {
             },
             _ => false,
         }
+    }
+}
+
+/// An entry point's argument, or a member or element of one (an interface block's).
+fn argument_part(fun: &Function, h: Handle<Expression>) -> bool {
+    match fun.expressions[h] {
+        Expression::FunctionArgument(_) => true,
+        Expression::AccessIndex { base, .. } => argument_part(fun, base),
+        _ => false,
     }
 }
 

@@ -265,11 +265,14 @@ fn describe(
                     TextureChoice::Multisampled { .. } => "a cleared placeholder (multisampled)".to_string(),
                     TextureChoice::Depth => "a depth placeholder at the far plane".to_string(),
                     TextureChoice::Integer { .. } => "a zero placeholder (integer)".to_string(),
-                    TextureChoice::Image(decl) => match &decl.source {
-                        TextureSource::File(path) => path.display().to_string(),
-                        TextureSource::Faces(faces) => format!("six faces from {}", faces[0].display()),
-                        TextureSource::Generated { generator, .. } => format!("generated {}", generator.name()),
-                    },
+                    TextureChoice::Image(decl) => {
+                        let source = match &decl.source {
+                            TextureSource::File(path) => path.display().to_string(),
+                            TextureSource::Faces(faces) => format!("six faces from {}", faces[0].display()),
+                            TextureSource::Generated { generator, .. } => format!("generated {}", generator.name()),
+                        };
+                        format!("{source} ({})", decl.format.name())
+                    }
                     TextureChoice::Placeholder(TextureKind::Cube) => "a placeholder sky cube (guessed)".to_string(),
                     TextureChoice::Placeholder(TextureKind::D2) => "a placeholder checker (guessed)".to_string(),
                 };
