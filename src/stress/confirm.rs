@@ -425,18 +425,35 @@ fn phrases(code: Code) -> (String, String) {
     (held.to_string(), never.to_string())
 }
 
+impl Tested {
+    /// Confirmed only by a zero between pixel centres: no invocation held the condition.
+    fn between_only(&self) -> bool {
+        self.held == 0 && self.between > 0
+    }
+
+    /// The invocations that confirmed it: those that held the condition, else those next
+    /// to its zero.
+    fn confirming(&self) -> u64 {
+        if self.between_only() {
+            self.between
+        } else {
+            self.held
+        }
+    }
+}
+
 /// What confirmed warning `code`: the condition as it held and in how many invocations,
 /// else its zero between pixel centres and next to how many.
 fn seen(code: Code, t: &Tested) -> (String, u64) {
-    if t.held > 0 || t.between == 0 {
-        return (format!("{} in", phrases(code).0), t.held);
+    if !t.between_only() {
+        return (format!("{} in", phrases(code).0), t.confirming());
     }
     let what = match code {
         Code::HazardNormalize => "the vector passed through zero",
         Code::HazardAtan2 => "y and x passed through 0 at one point",
         _ => "the divisor passed through 0",
     };
-    (format!("{what} between neighbouring pixel centres, next to"), t.between)
+    (format!("{what} between neighbouring pixel centres, next to"), t.confirming())
 }
 
 /// The verdict as a note on the warning, and for a confirmed one error `E0703` at it.
@@ -471,7 +488,7 @@ fn annotate(outcome: &mut Outcome, program: &str, d: &Diagnostic, t: &Tested, dr
             t.case.as_deref().unwrap_or(""),
             t.values.as_deref().filter(|v| !v.is_empty()).map(|v| format!(": {v}")).unwrap_or_default()
         ));
-    let e = if t.held == 0 {
+    let e = if t.between_only() {
         e.with_note("no pixel centre of this frame lies on that zero; one of another frame size or camera does")
     } else {
         e
@@ -506,10 +523,10 @@ pub fn table(r: &ConfirmReport) -> String {
             Verdict::Confirmed => format!(
                 "case `{}`: {}/{} {} invocations{}",
                 t.case.as_deref().unwrap_or(""),
-                if t.held > 0 { t.held } else { t.between },
+                t.confirming(),
                 t.invocations,
                 t.stage.as_deref().unwrap_or(""),
-                if t.held == 0 { ", zero between pixel centres" } else { "" }
+                if t.between_only() { ", zero between pixel centres" } else { "" }
             ),
             Verdict::Refuted => format!("ran in {} {} invocations", t.reached, t.stage.as_deref().unwrap_or("")),
             Verdict::Unreached => "never ran".into(),

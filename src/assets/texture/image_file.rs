@@ -21,24 +21,25 @@ pub fn load_file(path: &Path) -> Result<TexelImage, String> {
 pub fn load_file_as(path: &Path, format: TexelFormat) -> Result<TexelImage, String> {
     let image = decode(path)?;
     let (width, height) = (image.width(), image.height());
-    if format == TexelFormat::Rgba8 {
-        let rgba8 = image.to_rgba8().into_raw();
-        let rows: Vec<&[u8]> = rgba8.chunks_exact(width as usize * 4).rev().collect();
-        return Ok(TexelImage::rgba8(width, height, 1, rows.concat()));
-    }
-    let values = values_of(&image, format).map_err(|e| format!("{}: {e}", path.display()))?;
-    let rows: Vec<&[[f64; 4]]> = values.chunks_exact(width as usize).rev().collect();
-    Ok(TexelImage::from_values(width, height, 1, format, rows.into_iter().flatten().copied()))
+    let bytes = texels(&image, format).map_err(|e| format!("{}: {e}", path.display()))?;
+    let rows: Vec<&[u8]> = bytes.chunks_exact(width as usize * format.texel_bytes()).rev().collect();
+    Ok(TexelImage { width, height, layers: 1, format, bytes: rows.concat() })
 }
 
-/// The texel values of `image` as `format` takes them, rows top-down as stored.
+/// The texels of `image` in `format`, rows top-down as stored: RGBA8 its bytes as they are.
+fn texels(image: &DynamicImage, format: TexelFormat) -> Result<Vec<u8>, String> {
+    if format == TexelFormat::Rgba8 {
+        return Ok(image.to_rgba8().into_raw());
+    }
+    let values = values_of(image, format)?;
+    Ok(TexelImage::from_values(image.width(), image.height(), 1, format, values.into_iter()).bytes)
+}
+
+/// The texel values of `image` as a format other than RGBA8 takes them, rows top-down.
 fn values_of(image: &DynamicImage, format: TexelFormat) -> Result<Vec<[f64; 4]>, String> {
     let wide = |v: &[f32]| v.chunks_exact(4).map(|c| std::array::from_fn(|i| f64::from(c[i]))).collect();
     let ints = |v: Vec<u32>| v.chunks_exact(4).map(|c| std::array::from_fn(|i| f64::from(c[i]))).collect();
     Ok(match format.kind() {
-        TexelKind::Float if format == TexelFormat::Rgba8 => {
-            image.to_rgba8().into_raw().chunks_exact(4).map(|c| std::array::from_fn(|i| f64::from(c[i]) / 255.0)).collect()
-        }
         TexelKind::Float => wide(image.to_rgba32f().as_raw()),
         _ => match image.color().bytes_per_pixel() / image.color().channel_count() {
             1 => ints(image.to_rgba8().into_raw().into_iter().map(u32::from).collect()),
@@ -52,12 +53,12 @@ fn values_of(image: &DynamicImage, format: TexelFormat) -> Result<Vec<[f64; 4]>,
 /// all the same size. Faces are *not* flipped: a face file's top row becomes row 0 (t = 0), which is
 /// the usual skybox convention (see [`TexelImage`]).
 pub fn load_faces(paths: &[PathBuf; 6], format: TexelFormat) -> Result<TexelImage, String> {
-    let mut values = Vec::new();
+    let mut bytes = Vec::new();
     let mut first_size = None;
     for (path, name) in paths.iter().zip(CUBE_FACE_NAMES) {
         let image = decode(path).map_err(|e| format!("cube face {name}: {e}"))?;
         let (width, height) = (image.width(), image.height());
-        let face = values_of(&image, format).map_err(|e| format!("cube face {name} ({}): {e}", path.display()))?;
+        let face = texels(&image, format).map_err(|e| format!("cube face {name} ({}): {e}", path.display()))?;
         if width != height {
             return Err(format!("cube face {name} ({}) is {width}×{height}; faces must be square", path.display()));
         }
@@ -72,10 +73,10 @@ pub fn load_faces(paths: &[PathBuf; 6], format: TexelFormat) -> Result<TexelImag
             }
             Some(_) => {}
         }
-        values.extend(face);
+        bytes.extend(face);
     }
     let size = first_size.unwrap_or(1);
-    Ok(TexelImage::from_values(size, size, 6, format, values.into_iter()))
+    Ok(TexelImage { width: size, height: size, layers: 6, format, bytes })
 }
 
 /// Decodes an image file to RGBA8, rows top-down as stored, returning (bytes, width, height).
