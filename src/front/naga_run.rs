@@ -78,17 +78,30 @@ pub fn gl_capabilities() -> Capabilities {
         | Capabilities::DRAW_INDEX
 }
 
-/// The capabilities of [`gl_capabilities`] beyond WebGPU's defaults that `module` needs.
-pub fn needed_capabilities(module: &naga::Module) -> Vec<String> {
-    let valid = |caps: Capabilities| {
-        catch_unwind(AssertUnwindSafe(|| naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps).validate(module).is_ok()))
-            .unwrap_or(false)
-    };
-    if valid(webgpu_capabilities()) {
-        return Vec::new();
-    }
+/// The capabilities of [`gl_capabilities`] beyond WebGPU's defaults that `module`, which
+/// WebGPU's defaults do not validate, needs.
+fn needed_beyond_webgpu(module: &naga::Module) -> Vec<String> {
     let extra = gl_capabilities() - webgpu_capabilities();
-    extra.iter_names().filter(|(_, cap)| !valid(gl_capabilities() - *cap)).map(|(name, _)| name.to_string()).collect()
+    extra.iter_names().filter(|(_, cap)| !valid_with(module, gl_capabilities() - *cap)).map(|(name, _)| name.to_string()).collect()
+}
+
+fn valid_with(module: &naga::Module, caps: Capabilities) -> bool {
+    catch_unwind(AssertUnwindSafe(|| naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps).validate(module).is_ok()))
+        .unwrap_or(false)
+}
+
+/// naga's validation with desktop GL's capabilities ([`gl_capabilities`]) and the ones
+/// beyond WebGPU's that the module needs. Most modules need
+/// none: WebGPU's defaults are tried first, and their analysis is the GL one (capabilities
+/// only decide what is refused), so such a module is validated once.
+pub fn validate_for_gl(
+    module: &naga::Module,
+) -> Result<(naga::valid::ModuleInfo, Vec<String>), naga::WithSpan<naga::valid::ValidationError>> {
+    if let Ok(info) = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), webgpu_capabilities()).validate(module) {
+        return Ok((info, Vec::new()));
+    }
+    let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), gl_capabilities()).validate(module)?;
+    Ok((info, needed_beyond_webgpu(module)))
 }
 
 /// Whether naga's error is about a construct GLSL allows (a naga limitation). The text
@@ -220,16 +233,9 @@ fn parse_and_validate_inner(
         Err(payload) => return Err(Err(vec![crash(file, "GLSL front", &*payload)])),
     };
     crate::front::function_order::callees_first(&mut module);
-    let gl = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), gl_capabilities());
-    let validated = catch_unwind(AssertUnwindSafe(|| {
-        let mut gl = gl;
-        gl.validate(&module)
-    }));
+    let validated = catch_unwind(AssertUnwindSafe(|| validate_for_gl(&module)));
     match validated {
-        Ok(Ok(info)) => {
-            let needs = needed_capabilities(&module);
-            Ok(Validated { module, info, needs })
-        }
+        Ok(Ok((info, needs))) => Ok(Validated { module, info, needs }),
         Ok(Err(err)) => match layout_limitation(&module, err.as_inner()) {
             Some(construct) => Err(Ok(Limitation { construct, span: err.spans().next().and_then(|(s, _)| map_span(*s)) })),
             None => Err(Err(vec![validation_diagnostic(file, &err, &map_span)])),

@@ -105,20 +105,28 @@ pub fn compile(
         diags.extend(beyond);
         return None;
     }
-    // glslang decides what is legal; effectc's own findings in a stage it accepts are
-    // effectc's limits, not the user's errors ([`accept_what_glslang_accepts`]).
-    let mut judgement = reference::judge(files, &ordered, options.env);
     // Shader objects of one stage: effectc reads their joined text (`units`), glslang each.
     let mut own_order = ordered.clone();
     if let Some(kind) = reference::repeated_stage(&ordered) {
         match joined_stages(files, &ordered) {
             Some(joined) => own_order = joined,
             None => {
-                diags.extend(units_judged_by_glslang(files, &ordered, kind, judgement));
+                diags.extend(units_judged_by_glslang(files, &ordered, kind, reference::judge(files, &ordered, options.env)));
                 return None;
             }
         }
     }
+    // glslang decides what is legal; effectc's own findings in a stage it accepts are its
+    // limits, not the user's errors ([`accept_what_glslang_accepts`]). Neither reads the
+    // other's result, so they run side by side (one large program uses two cores).
+    let (mut judgement, (program, own)) = rayon::join(
+        || reference::judge(files, &ordered, options.env),
+        || {
+            let mut own = Vec::new();
+            let program = compile_own(files, &own_order, options, &mut own);
+            (program, own)
+        },
+    );
     if let Some(j) = &mut judgement {
         // A joined text is accepted where glslang accepts each of its files.
         for &(f, _) in own_order.iter().filter(|(f, _)| !ordered.iter().any(|(o, _)| o == f)) {
@@ -127,8 +135,6 @@ pub fn compile(
             j.stages.push(reference::StageVerdict { file: f, accepted, errors: Vec::new() });
         }
     }
-    let mut own = Vec::new();
-    let program = compile_own(files, &own_order, options, &mut own);
     let Some(judgement) = judgement else {
         diags.extend(own);
         return program;

@@ -146,11 +146,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
 /// constants become a uniform buffer, or a read-only storage buffer when their layout
 /// breaks uniform alignment.
 fn validate(mut module: Module, immediates: Vec<naga::Handle<naga::GlobalVariable>>, kind: StageKind) -> Result<Validated, String> {
-    let run = |m: &Module| {
-        catch_unwind(AssertUnwindSafe(|| {
-            naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga_run::gl_capabilities()).validate(m)
-        }))
-    };
+    let run = |m: &Module| catch_unwind(AssertUnwindSafe(|| naga_run::validate_for_gl(m)));
     let mut result = run(&module);
     if !immediates.is_empty() && matches!(result, Ok(Err(_))) {
         for g in &immediates {
@@ -159,10 +155,7 @@ fn validate(mut module: Module, immediates: Vec<naga::Handle<naga::GlobalVariabl
         result = run(&module);
     }
     match result {
-        Ok(Ok(info)) => {
-            let needs = naga_run::needed_capabilities(&module);
-            Ok(Validated { module, info, needs })
-        }
+        Ok(Ok((info, needs))) => Ok(Validated { module, info, needs }),
         Ok(Err(e)) => {
             let mut why = e.as_inner().to_string();
             let mut cause = std::error::Error::source(e.as_inner());

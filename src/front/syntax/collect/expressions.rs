@@ -92,7 +92,7 @@ impl Collector<'_> {
                 if user_call_arg && object_like { vec![span.clone()] } else { word_occurrences(&self.s.text, span.clone(), &name) };
             // Else the name is written in `#define` bodies; record it there (once), so
             // rewrites edit the body.
-            let written = if in_args.is_empty() { macro_body_occurrences(&self.s.text, &name) } else { in_args };
+            let written = if in_args.is_empty() { self.macro_body_occurrences(&name) } else { in_args };
             for at in written {
                 if self.macro_uses.insert((name.clone(), at.start)) {
                     let (name, target, in_function) = (name.clone(), target.clone(), in_function.clone());
@@ -172,7 +172,7 @@ impl Collector<'_> {
                     });
                     if self.s.text.get(sp.clone()) != Some(n.as_str()) {
                         // Expanded from a macro: the name is written in `#define` bodies.
-                        for at in macro_body_occurrences(&self.s.text, &n) {
+                        for at in self.macro_body_occurrences(&n) {
                             if self.macro_uses.insert((n.clone(), at.start)) {
                                 self.s.calls.push(Call {
                                     name: n.clone(),
@@ -226,7 +226,9 @@ impl Collector<'_> {
     }
 }
 
-/// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
-fn macro_body_occurrences(text: &str, name: &str) -> Vec<Range<usize>> {
-    crate::front::conditionals::define_lines(text).into_iter().flat_map(|(_, body)| word_occurrences(text, body, name)).collect()
+impl Collector<'_> {
+    /// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
+    fn macro_body_occurrences(&self, name: &str) -> Vec<Range<usize>> {
+        self.macro_bodies.iter().flat_map(|body| word_occurrences(&self.s.text, body.clone(), name)).collect()
+    }
 }

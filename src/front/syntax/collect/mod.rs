@@ -29,6 +29,9 @@ pub(super) struct Collector<'a> {
     macro_uses: HashSet<(String, usize)>,
     /// `const int` locals of the current function with their values.
     local_consts: HashMap<String, i64>,
+    /// The body spans of the stage's `#define` lines, found once (a stage of many macro
+    /// uses asked the whole text for them at each use).
+    macro_bodies: Vec<std::ops::Range<usize>>,
 }
 
 impl<'a> Collector<'a> {
@@ -52,7 +55,9 @@ impl<'a> Collector<'a> {
             arg_context: false,
             macro_uses: HashSet::new(),
             local_consts: HashMap::new(),
+            macro_bodies: Vec::new(),
         };
+        c.macro_bodies = crate::front::conditionals::define_lines(&c.s.text).into_iter().map(|(_, body)| body).collect();
         for decl in &tu.0 {
             c.external(decl);
         }
