@@ -12,20 +12,16 @@ use crate::front::syntax::nodes::span_of;
 use crate::front::syntax::types::{GlslType, Interp, Storage};
 
 impl Collector<'_> {
-    fn type_name(&self, t: &ast::TypeSpecifierNonArray) -> String {
-        if let ast::TypeSpecifierNonArrayData::Struct(st) = &t.content {
-            return st.name.as_ref().map(|n| n.0.to_string()).unwrap_or_else(|| "<anonymous struct>".into());
-        }
-        let mut out = String::new();
-        let _ = show_type_specifier_non_array(&mut out, t, &mut FormattingState::default());
-        out
-    }
-
     pub(super) fn type_of(&mut self, t: &ast::TypeSpecifier) -> GlslType {
-        if let ast::TypeSpecifierNonArrayData::Struct(st) = &t.ty.content {
-            self.struct_def(st, span_of(st));
-        }
-        let mut ty = GlslType { base: self.type_name(&t.ty), dims: Vec::new() };
+        let base = match &t.ty.content {
+            ast::TypeSpecifierNonArrayData::Struct(st) => self.struct_def(st, span_of(st)),
+            _ => {
+                let mut out = String::new();
+                let _ = show_type_specifier_non_array(&mut out, &t.ty, &mut FormattingState::default());
+                out
+            }
+        };
+        let mut ty = GlslType { base, dims: Vec::new() };
         if let Some(a) = &t.array_specifier {
             ty.dims = self.dims(a);
         }
@@ -81,13 +77,23 @@ impl Collector<'_> {
         }
     }
 
-    pub(super) fn struct_def(&mut self, st: &ast::StructSpecifier, span: Range<usize>) {
-        let Some(name) = &st.name else { return };
-        if self.s.structs.iter().any(|s| s.name == name.0.as_str()) {
-            return;
+    /// Records the struct `st` defines and returns its name. An anonymous struct (`uniform
+    /// struct { vec4 x; } a;`) is named after its members ([`anonymous_struct_name`]), so
+    /// the same definition in two stages is one type of the shared uniform block, as GL
+    /// links it; its name span is the `struct` keyword.
+    pub(super) fn struct_def(&mut self, st: &ast::StructSpecifier, span: Range<usize>) -> String {
+        if let Some(name) = st.name.as_ref().filter(|n| self.s.structs.iter().any(|s| s.name == n.0.as_str())) {
+            return name.0.to_string();
         }
         let members = self.members(&st.fields);
-        self.s.structs.push(StructDef { name: name.0.to_string(), name_span: span_of(name), span, members });
+        let (name, name_span) = match &st.name {
+            Some(name) => (name.0.to_string(), span_of(name)),
+            None => (anonymous_struct_name(&members), span.start..span.start + "struct".len()),
+        };
+        if !self.s.structs.iter().any(|s| s.name == name) {
+            self.s.structs.push(StructDef { name: name.clone(), name_span, span, members });
+        }
+        name
     }
 
     pub(super) fn members(&mut self, fields: &[ast::StructFieldSpecifier]) -> Vec<Member> {
@@ -192,4 +198,15 @@ pub(super) struct Quals {
 
 pub(super) fn location_of(layout: &[(String, Option<i64>)]) -> Option<u32> {
     crate::front::syntax::layout_number(layout, "location")
+}
+
+/// The name effectc gives an anonymous struct: `effectc_struct_` and each member's type and
+/// name (`struct { vec4 x; float w[2]; }` → `effectc_struct_vec4_x_float_2_w`).
+fn anonymous_struct_name(members: &[Member]) -> String {
+    let mut name = String::from("effectc_struct");
+    for m in members {
+        let dims: String = m.ty.dims.iter().map(|d| d.map_or_else(|| "_".to_string(), |n| format!("_{n}"))).collect();
+        name.push_str(&format!("_{}{dims}_{}", m.ty.base, m.name));
+    }
+    name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect()
 }
