@@ -145,10 +145,20 @@ pub fn parse_version(text: &str) -> Result<Version, (String, Range<usize>)> {
     Ok(Version { number: 110, profile: Profile::Compatibility, directive: None, number_span: None, profile_span: None })
 }
 
-/// Keywords of GLSL 4.50 with the desktop version that introduced them.
+/// Keywords and type names of GLSL 4.50 with the desktop version that introduced them (an
+/// older stage may name a variable `mat4x2`).
 const NEWER_KEYWORDS: &[(&str, u16)] = &[
     ("centroid", 120),
     ("invariant", 120),
+    ("mat2x2", 120),
+    ("mat2x3", 120),
+    ("mat2x4", 120),
+    ("mat3x2", 120),
+    ("mat3x3", 120),
+    ("mat3x4", 120),
+    ("mat4x2", 120),
+    ("mat4x3", 120),
+    ("mat4x4", 120),
     ("flat", 130),
     ("smooth", 130),
     ("noperspective", 130),
