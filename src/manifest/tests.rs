@@ -450,6 +450,13 @@ fn texture_rules() {
     assert_eq!(params.colors, [[1.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.5]]);
     let TextureSource::Generated { params, .. } = &e.textures[2].source else { panic!() };
     assert_eq!(params.colors, [[0.5, 0.5, 0.5, 1.0], [0.0, 0.0, 0.0, 1.0]]);
+    // An integer format's colours are exact up to its range (u32::MAX, 2^24 + 1).
+    let text = minimal(
+        "[textures]\nids = { generate = \"checker\", format = \"rgba32ui\", colors = [[4294967295, 16777217, 0, 1], [0, 0, 0, 0]] }\n",
+    );
+    let e = run(&text, &dir).unwrap();
+    let TextureSource::Generated { params, .. } = &e.textures[0].source else { panic!() };
+    assert_eq!(params.colors[0], [4_294_967_295.0, 16_777_217.0, 0.0, 1.0]);
 
     // Unused generator parameter: a warning, still Ok.
     let text = minimal("[textures]\nt = { generate = \"checker\", seed = 3 }\n");

@@ -98,8 +98,9 @@ impl Generator {
 /// Parameters of a generated texture; keys a generator does not use keep their defaults.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GeneratorParams {
-    /// Linear RGBA colours a and b. Default: white `[1,1,1,1]` and black `[0,0,0,1]`.
-    pub colors: [[f32; 4]; 2],
+    /// Linear RGBA colours a and b, as written (f64: an integer format's whole numbers up
+    /// to `u32::MAX` are exact). Default: white `[1,1,1,1]` and black `[0,0,0,1]`.
+    pub colors: [[f64; 4]; 2],
     /// Checker squares / noise lattice cells per side. Default 8.
     pub cells: u32,
     /// Noise seed. Default 0.

@@ -452,10 +452,11 @@ fn manifest_textures_in_float_and_integer_formats_read_as_given() {
     let png = image::open(dir.join("o/texel-formats_0000.png")).unwrap().to_rgba8();
     // Red: the rgba32f gradient's -2 (left) and 3 (right) as (h + 2) / 5; green: the
     // rgba16f gradient's 0 and 50 as g / 50; blue: the r32ui checker's 7 (bottom left) and
-    // 1000 as id / 1000; alpha: the rgba32i texel's -5 + 5 + 3 as a share of 8.
-    assert_eq!(png.get_pixel(0, 63).0, [0, 0, 2, 96]);
-    assert_eq!(png.get_pixel(63, 63).0, [255, 255, 255, 96]);
-    assert_eq!(png.get_pixel(0, 0).0, [0, 0, 255, 96]);
+    // 1000 as id / 1000; alpha: the rgba32i texel's -5 + 5 + 3, and 1 for its exact
+    // 2^24 + 1 (beyond f32's integers), as a share of 8.
+    assert_eq!(png.get_pixel(0, 63).0, [0, 0, 2, 128]);
+    assert_eq!(png.get_pixel(63, 63).0, [255, 255, 255, 128]);
+    assert_eq!(png.get_pixel(0, 0).0, [0, 0, 255, 128]);
     let manifest = std::fs::read_to_string("tests/verify/texel_formats/effect.toml").unwrap();
     let with = |name: &str, text: String| {
         let bad = dir.join(name);

@@ -49,13 +49,19 @@ pub fn placeholder(kind: TextureKind) -> TexelImage {
 }
 
 /// Fills `layers` square layers of `size` texels, calling `texel(layer, column, row)` for each.
-fn build(size: u32, layers: u32, format: TexelFormat, texel: impl Fn(u32, u32, u32) -> [f32; 4]) -> TexelImage {
+fn build(size: u32, layers: u32, format: TexelFormat, texel: impl Fn(u32, u32, u32) -> [f64; 4]) -> TexelImage {
     let texels = (0..layers).flat_map(|layer| (0..size).flat_map(move |row| (0..size).map(move |column| (layer, column, row))));
-    TexelImage::from_values(size, size, layers, format, texels.map(|(layer, column, row)| texel(layer, column, row).map(f64::from)))
+    TexelImage::from_values(size, size, layers, format, texels.map(|(layer, column, row)| texel(layer, column, row)))
 }
 
-fn texel_2d(generator: Generator, size: u32, params: &GeneratorParams, column: u32, row: u32) -> [f32; 4] {
-    let [a, b] = params.colors;
+/// Colours a and b as the blending generators (gradient, noise) mix them, in f32; checker
+/// and solid texels are the colours as written.
+fn blend_colors(params: &GeneratorParams) -> [[f32; 4]; 2] {
+    params.colors.map(|c| c.map(|x| x as f32))
+}
+
+fn texel_2d(generator: Generator, size: u32, params: &GeneratorParams, column: u32, row: u32) -> [f64; 4] {
+    let [a, b] = blend_colors(params);
     match generator {
         Generator::Checker => checker(params, size, column, row),
         Generator::Gradient => mix(a, b, ramp(column, size)),
@@ -63,12 +69,12 @@ fn texel_2d(generator: Generator, size: u32, params: &GeneratorParams, column: u
             let (u, v) = (texel_centre(column, size), texel_centre(row, size));
             mix(a, b, tileable_noise_2d(u, v, params.cells, params.octaves, params.seed))
         }
-        Generator::Solid => a,
+        Generator::Solid => params.colors[0],
     }
 }
 
-fn texel_cube(generator: Generator, size: u32, params: &GeneratorParams, face: u32, column: u32, row: u32) -> [f32; 4] {
-    let [a, b] = params.colors;
+fn texel_cube(generator: Generator, size: u32, params: &GeneratorParams, face: u32, column: u32, row: u32) -> [f64; 4] {
+    let [a, b] = blend_colors(params);
     let sc = texel_centre(column, size) * 2.0 - 1.0;
     let tc = texel_centre(row, size) * 2.0 - 1.0;
     let direction = normalize(cube_direction(face, sc, tc));
@@ -76,12 +82,12 @@ fn texel_cube(generator: Generator, size: u32, params: &GeneratorParams, face: u
         Generator::Checker => checker(params, size, column, row),
         Generator::Gradient => mix(a, b, ((direction[1] + 1.0) * 0.5) as f32),
         Generator::Noise => mix(a, b, sphere_noise(direction, params.cells, params.octaves, params.seed)),
-        Generator::Solid => a,
+        Generator::Solid => params.colors[0],
     }
 }
 
 /// Colour a or b for the checker square holding the texel's centre.
-fn checker(params: &GeneratorParams, size: u32, column: u32, row: u32) -> [f32; 4] {
+fn checker(params: &GeneratorParams, size: u32, column: u32, row: u32) -> [f64; 4] {
     let cells = params.cells.max(1);
     let even = (checker_cell(column, size, cells) + checker_cell(row, size, cells)) & 1 == 0;
     params.colors[if even { 0 } else { 1 }]
@@ -106,8 +112,8 @@ fn texel_centre(index: u32, size: u32) -> f64 {
     (index as f64 + 0.5) / size.max(1) as f64
 }
 
-fn mix(a: [f32; 4], b: [f32; 4], t: f32) -> [f32; 4] {
-    std::array::from_fn(|i| a[i] + (b[i] - a[i]) * t)
+fn mix(a: [f32; 4], b: [f32; 4], t: f32) -> [f64; 4] {
+    std::array::from_fn(|i| f64::from(a[i] + (b[i] - a[i]) * t))
 }
 
 /// Linear float colour to bytes: `round(clamp(c, 0, 1) * 255)`, NaN → 0.

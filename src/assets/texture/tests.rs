@@ -12,7 +12,7 @@ const BLACK: [f32; 4] = [0.0, 0.0, 0.0, 1.0];
 const WHITE: [f32; 4] = [1.0, 1.0, 1.0, 1.0];
 
 fn params(colors: [[f32; 4]; 2], cells: u32, octaves: u32, seed: u32) -> GeneratorParams {
-    GeneratorParams { colors, cells, seed, octaves }
+    GeneratorParams { colors: colors.map(|c| c.map(f64::from)), cells, seed, octaves }
 }
 
 fn texel(image: &TexelImage, layer: u32, column: u32, row: u32) -> [u8; 4] {
@@ -416,6 +416,20 @@ fn mipmaps_halve_down_to_one_texel_and_average() {
     assert_eq!(odd.mip_chain().iter().map(|l| (l.width, l.height)).collect::<Vec<_>>(), vec![(1, 1)]);
     let cube = generate(Generator::Gradient, 4, &GeneratorParams::default(), TextureKind::Cube, TexelFormat::Rgba8);
     assert!(cube.mip_chain().iter().all(|l| l.layers == 6 && l.bytes.len() == l.layer_len() * 6));
+}
+
+/// An integer texture's colours are whole numbers as written, beyond f32's 2^24 too.
+#[test]
+fn generated_integer_textures_hold_their_colours_exactly() {
+    let exact = |colors: [[f64; 4]; 2], cells| GeneratorParams { colors, cells, ..GeneratorParams::default() };
+    let big = exact([[4_294_967_295.0, 16_777_217.0, 0.0, 1.0], [0.0, 0.0, 0.0, 1.0]], 2);
+    let texels = generate(Generator::Checker, 2, &big, TextureKind::D2, TexelFormat::Rgba32ui);
+    let first = |i: usize| u32::from_le_bytes(texels.bytes[i * 4..i * 4 + 4].try_into().unwrap());
+    assert_eq!((first(0), first(1)), (u32::MAX, 16_777_217), "checker colour a at the bottom-left texel");
+    let extremes = exact([[-2_147_483_648.0, 2_147_483_647.0, -16_777_217.0, 0.0], [0.0; 4]], 1);
+    let solid = generate(Generator::Solid, 1, &extremes, TextureKind::D2, TexelFormat::Rgba32i);
+    let ints: Vec<i32> = solid.bytes.chunks_exact(4).map(|b| i32::from_le_bytes(b.try_into().unwrap())).collect();
+    assert_eq!(ints, [i32::MIN, i32::MAX, -16_777_217, 0]);
 }
 
 #[test]

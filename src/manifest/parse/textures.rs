@@ -156,7 +156,7 @@ impl Ctx<'_> {
             d.help = Some("use a 2D texture, or a floating-point format".into());
             ok = false;
         }
-        let bad = f.params.colors.iter().flatten().any(|c| c.fract() != 0.0 || f64::from(*c) < lo || f64::from(*c) > hi);
+        let bad = f.params.colors.iter().flatten().any(|c| c.fract() != 0.0 || *c < lo || *c > hi);
         if bad {
             let at = f.colors_span.clone().unwrap_or(span);
             let d = self.report(
@@ -356,7 +356,7 @@ impl Ctx<'_> {
     }
 
     /// `colors = [a, b]` (each 3 or 4 numbers), `colors = [a]`, or a single colour `[r, g, b(, a)]`.
-    fn colors(&mut self, v: &Val<'_>, what: &str) -> Option<[[f32; 4]; 2]> {
+    fn colors(&mut self, v: &Val<'_>, what: &str) -> Option<[[f64; 4]; 2]> {
         const EXPECTED: &str = "one or two colours of 3 or 4 numbers (`[[1, 0, 0], [0, 0, 1]]`)";
         let DeValue::Array(items) = v.get_ref() else {
             self.wrong_type(v, what, EXPECTED);
@@ -379,7 +379,7 @@ impl Ctx<'_> {
         ok.then_some(out)
     }
 
-    fn colour(&mut self, v: &Val<'_>, what: &str) -> Option<[f32; 4]> {
+    fn colour(&mut self, v: &Val<'_>, what: &str) -> Option<[f64; 4]> {
         let DeValue::Array(items) = v.get_ref() else {
             self.wrong_type(v, what, "a colour of 3 or 4 numbers");
             return None;
@@ -393,11 +393,11 @@ impl Ctx<'_> {
             );
             return None;
         }
-        let mut rgba = [1.0f32; 4];
+        let mut rgba = [1.0f64; 4];
         let mut ok = true;
         for (i, item) in items.iter().enumerate() {
             match self.number(item, what) {
-                Some(x) if (x as f32).is_finite() => rgba[i] = x as f32,
+                Some(x) if (x as f32).is_finite() => rgba[i] = x,
                 Some(_) => {
                     self.report(Code::ManifestValue, item.span(), format!("{what}: component is too large"), "beyond f32 range");
                     ok = false;
