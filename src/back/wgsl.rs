@@ -13,6 +13,13 @@ use crate::front::plan::UNIFORM_BLOCK;
 
 /// Writes the module as WGSL and proves the text is valid WGSL.
 pub fn write(module: &Module, info: &ModuleInfo) -> Result<String, String> {
+    if let Some(arrays) = strided_arrays(module) {
+        return Err(format!(
+            "an array of 4- or 8-byte elements with a 16-byte stride in a uniform buffer ({arrays}) is not supported by WGSL: \
+             std140 gives each element of a `float`, `int` or `vec2` array 16 bytes, and WGSL packs such arrays \
+             (a `vec4` array, read as `.x`, has the same layout)"
+        ));
+    }
     let mut text = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
         .map_err(|e| format!("naga's WGSL writer: {e}"))?;
     text = exact_largest_f32(text);
@@ -90,6 +97,43 @@ pub fn verify(text: &str) -> Result<Module, String> {
     Ok(module)
 }
 
+/// The uniform-buffer arrays whose stride WGSL cannot write (`Light.falloff`, joined): an
+/// element of 4 or 8 bytes (a scalar or a 2-vector) laid out 16 bytes apart, as std140 lays
+/// out `float falloff[3]` in a struct. The uniform block's own arrays are widened to `vec4`
+/// by the rewrite, so these are struct members.
+fn strided_arrays(module: &Module) -> Option<String> {
+    let mut found: Vec<String> = Vec::new();
+    let mut seen = std::collections::HashSet::new();
+    let mut todo: Vec<naga::Handle<naga::Type>> =
+        module.global_variables.iter().filter(|(_, g)| g.space == naga::AddressSpace::Uniform).map(|(_, g)| g.ty).collect();
+    while let Some(ty) = todo.pop() {
+        if !seen.insert(ty) {
+            continue;
+        }
+        match &module.types[ty].inner {
+            naga::TypeInner::Struct { members, .. } => {
+                for m in members {
+                    if let naga::TypeInner::Array { base, stride, .. } = module.types[m.ty].inner {
+                        let packed = match module.types[base].inner {
+                            naga::TypeInner::Scalar(s) => Some(u32::from(s.width)),
+                            naga::TypeInner::Vector { size: naga::VectorSize::Bi, scalar } => Some(2 * u32::from(scalar.width)),
+                            _ => None,
+                        };
+                        if packed.is_some_and(|p| p != stride) {
+                            let owner = module.types[ty].name.as_deref().unwrap_or("struct");
+                            found.push(format!("`{owner}.{}`", m.name.as_deref().unwrap_or("?")));
+                        }
+                    }
+                    todo.push(m.ty);
+                }
+            }
+            naga::TypeInner::Array { base, .. } => todo.push(*base),
+            _ => {}
+        }
+    }
+    (!found.is_empty()).then(|| found.join(", "))
+}
+
 /// Whether any function samples with implicit derivatives or takes derivatives.
 fn takes_derivatives(module: &Module) -> bool {
     crate::back::merge::all_functions(module).any(|f| {
@@ -135,6 +179,22 @@ mod tests {
             })
             .collect();
         assert!(literals.contains(&f32::MAX), "{literals:?}");
+    }
+
+    /// std140 lays out a struct's `float` array 16 bytes an element; WGSL cannot write that
+    /// stride, and says so by naming the member (not as an internal error).
+    #[test]
+    fn a_struct_float_array_in_a_uniform_block_is_named_as_beyond_wgsl() {
+        let glsl = "#version 450\nstruct Light { vec4 colour; float falloff[3]; };\n\
+                    layout(std140, binding = 0) uniform Lights { Light light; vec4 tint[2]; };\n\
+                    layout(location = 0) out vec4 color;\n\
+                    void main() { color = vec4(light.falloff[2]) + light.colour + tint[1]; }\n";
+        let options = naga::front::glsl::Options::from(naga::ShaderStage::Fragment);
+        let module = naga::front::glsl::Frontend::default().parse(&options, glsl).unwrap();
+        let (info, _) = crate::front::naga_run::validate_for_gl(&module).unwrap();
+        let error = write(&module, &info).unwrap_err();
+        assert!(error.contains("(`Light.falloff`) is not supported by WGSL"), "{error}");
+        assert!(!error.contains("tint"), "a vec4 array's stride is its own: {error}");
     }
 
     #[test]
