@@ -91,9 +91,9 @@ fn valid_with(module: &naga::Module, caps: Capabilities) -> bool {
 }
 
 /// naga's validation with desktop GL's capabilities ([`gl_capabilities`]) and the ones
-/// beyond WebGPU's that the module needs. Most modules need
-/// none: WebGPU's defaults are tried first, and their analysis is the GL one (capabilities
-/// only decide what is refused), so such a module is validated once.
+/// beyond WebGPU's that the module needs. Most modules need none: WebGPU's defaults are
+/// tried first, and their analysis is the GL one (capabilities only decide what is
+/// refused), so such a module is validated once.
 pub fn validate_for_gl(
     module: &naga::Module,
 ) -> Result<(naga::valid::ModuleInfo, Vec<String>), naga::WithSpan<naga::valid::ValidationError>> {
