@@ -146,7 +146,7 @@ impl Ctx<'_> {
             d.help = Some("drop `filter` or write `filter = \"nearest\"`: integer textures are read texel by texel".into());
             ok = false;
         }
-        if kind == Some(TextureKind::Cube) && format.kind() != TexelKind::Float {
+        if kind == Some(TextureKind::Cube) {
             let d = self.report(
                 Code::ManifestConflict,
                 span.clone(),

@@ -11,6 +11,11 @@ use crate::front::syntax::model::{Call, Referent, Swizzle, Use};
 use crate::front::syntax::nodes::{span_of, word_occurrences};
 
 impl Collector<'_> {
+    /// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
+    fn macro_body_occurrences(&self, name: &str) -> Vec<Range<usize>> {
+        self.macro_bodies.iter().flat_map(|body| word_occurrences(&self.s.text, body.clone(), name)).collect()
+    }
+
     pub(super) fn initializer(&mut self, i: &ast::Initializer) {
         match &i.content {
             ast::InitializerData::Simple(e) => self.expr(e),
@@ -223,12 +228,5 @@ impl Collector<'_> {
             | ast::ExprData::FloatConst(_)
             | ast::ExprData::DoubleConst(_) => {}
         }
-    }
-}
-
-impl Collector<'_> {
-    /// Whole-word occurrences of `name` in the bodies of `#define` lines (after the macro's name).
-    fn macro_body_occurrences(&self, name: &str) -> Vec<Range<usize>> {
-        self.macro_bodies.iter().flat_map(|body| word_occurrences(&self.s.text, body.clone(), name)).collect()
     }
 }

@@ -47,6 +47,7 @@ impl<'a> Collector<'a> {
                     _ => None,
                 })
                 .collect();
+        let macro_bodies = crate::front::conditionals::define_lines(&s.text).into_iter().map(|(_, body)| body).collect();
         let mut c = Collector {
             s,
             scopes: Vec::new(),
@@ -55,9 +56,8 @@ impl<'a> Collector<'a> {
             arg_context: false,
             macro_uses: HashSet::new(),
             local_consts: HashMap::new(),
-            macro_bodies: Vec::new(),
+            macro_bodies,
         };
-        c.macro_bodies = crate::front::conditionals::define_lines(&c.s.text).into_iter().map(|(_, body)| body).collect();
         for decl in &tu.0 {
             c.external(decl);
         }
