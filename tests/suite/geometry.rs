@@ -111,10 +111,27 @@ fn what_is_not_folded_is_named_and_what_folds_differently_is_marked() {
     assert!(folded.text.contains("effectc_cap_Layer == effectc_keep_layer"), "{}", folded.text);
 }
 
+#[test]
+fn inputs_holding_arrays_are_read_at_a_run_time_corner_through_an_accessor() {
+    // `shades[next].tint[last]` indexed twice at run time takes llvmpipe minutes to compile
+    // (a piglit program: 98 s, 3.6 s through the accessor); a literal corner and an input
+    // without arrays (`gl_in[i].gl_Position`) stay plain indexing.
+    let (vs, gs, layout) = rewritten("tests/geometry/13-corner-arrays/effect.toml");
+    let text = lower(&vs, &gs, layout, Pulling::Attributes, None).unwrap().text;
+    assert!(text.contains("effectc_gs_shades_block effectc_gs_shades_at(int k) { if (k == 0) return effectc_gs_shades[0];"), "{text}");
+    assert!(text.contains("float[2] effectc_gs_weight_at(int k) {"), "{text}");
+    assert!(text.contains("effectc_gs_shades_at(int(next)).tint[last]"), "{text}");
+    assert!(text.contains("effectc_gs_weight_at(int(next))[last - 2]"), "{text}");
+    assert!(text.contains("effectc_gl_in[i].gl_Position") && !text.contains("effectc_gl_in_at"), "{text}");
+    let literal = gs.replace("shades[next].tint[last]", "shades[1].tint[last]");
+    let text = lower(&vs, &literal, layout, Pulling::Attributes, None).unwrap().text;
+    assert!(text.contains("effectc_gs_shades[1].tint[last]"), "{text}");
+}
+
 /// The fixtures with a manifest (`effect.toml`) and the expected image's manifest
 /// (`direct/effect.toml`: the triangles the geometry stage emits, drawn without one).
 fn compared_fixtures() -> Vec<std::path::PathBuf> {
-    common::fixtures("tests/geometry", 12).into_iter().filter(|d| d.join("direct/effect.toml").is_file()).collect()
+    common::fixtures("tests/geometry", 13).into_iter().filter(|d| d.join("direct/effect.toml").is_file()).collect()
 }
 
 #[test]
@@ -126,10 +143,11 @@ fn folded_draws_render_what_the_same_triangles_drawn_directly_render() {
     // must keep GL's winding) and unused slots; amplification to max_vertices; points →
     // quads; lines (a triangle mesh's edges) → bands; gl_PrimitiveIDIn; instancing;
     // gl_PrimitiveID written for the fragment stage; gl_Layer (the frame shows layer 0);
-    // invocations = 3 (gl_InvocationID).
+    // invocations = 3 (gl_InvocationID); a block's array member and an array of arrays read
+    // at a run-time corner.
     let fixtures = compared_fixtures();
     if std::env::var("EFFECTC_FIXTURE").is_err() {
-        assert_eq!(fixtures.len(), 9, "{fixtures:?}");
+        assert_eq!(fixtures.len(), 10, "{fixtures:?}");
     }
     let mut failures = Vec::new();
     for dir in fixtures {

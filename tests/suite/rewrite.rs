@@ -92,7 +92,7 @@ fn rewrite_known_failures_still_fail() {
 /// vertex input, which location matching does not mind.)
 #[test]
 fn geometry_programs_rewrite_to_legal_450_stages() {
-    for dir in common::fixtures("tests/geometry", 12) {
+    for dir in common::fixtures("tests/geometry", 13) {
         let name = common::name_of(&dir);
         assert_ne!(common::glslang_links(&dir), Some(false), "{name}: glslangValidator does not link it, so it is no legal fixture");
         let (outcome, checked) = common::check(&dir);

@@ -42,7 +42,7 @@ use crate::diag::FileId;
 use crate::front::edits::{Edits, OffsetMap};
 use crate::front::geometry_layout::{GeometryLayout, OutputPrimitive};
 use crate::front::naga_run::Validated;
-use crate::front::syntax::{self, Global, GlslType, Referent, StageSyntax, Storage};
+use crate::front::syntax::{self, matrix_shape, Global, GlslType, Referent, StageSyntax, Storage};
 use crate::stage::StageKind;
 use interface::{next_location, private_varying, Leaf};
 
@@ -244,6 +244,12 @@ impl Part {
                 edits.delete(d.span.clone());
             }
         }
+        // Geometry inputs whose corners hold arrays or matrices: user name → (private
+        // name, type at one corner); read at a run-time corner through an accessor.
+        let mut accessed: std::collections::BTreeMap<String, (String, String)> = Default::default();
+        if part.reads_clip_distance {
+            accessed.insert("gl_in".into(), ("effectc_gl_in".into(), "effectc_PerVertex".into()));
+        }
         let mut deleted: Vec<Range<usize>> = Vec::new();
         let mut delete = |edits: &mut Edits, span: &Range<usize>| {
             if !deleted.iter().any(|d| d.start < span.end && span.start < d.end) {
@@ -275,6 +281,9 @@ impl Part {
                     if g.storage == Storage::Out || (g.storage == Storage::Varying && geometry.is_none()) {
                         part.outputs.extend(leaves);
                     } else {
+                        if let Some(nested) = geometry.and_then(|_| nested_corner(g, prefix)) {
+                            accessed.insert(nested.0, (nested.1, nested.2));
+                        }
                         part.ins.extend(leaves);
                     }
                     delete(&mut edits, &g.decl_span);
@@ -285,6 +294,14 @@ impl Part {
         part.inputs.sort_by_key(|(location, _, _, _)| *location);
         let stage_word = if geometry.is_some() { "gs" } else { "vs" };
         for u in &s.uses {
+            if let Some((private, _)) = accessed.get(&u.name).filter(|_| matches!(u.target, Referent::Global(_)) || u.name == "gl_in") {
+                if let Some(call) = corner_call(text, u) {
+                    edits.replace(u.span.clone(), format!("{private}_at"));
+                    edits.replace(call.0, "(int(");
+                    edits.replace(call.1, "))");
+                    continue;
+                }
+            }
             match &u.target {
                 Referent::Global(i) if !is_shared(&s.globals[*i]) => edits.replace(u.span.clone(), format!("{prefix}{}", u.name)),
                 Referent::Unresolved => match u.name.as_str() {
@@ -319,9 +336,56 @@ impl Part {
                 _ => {}
             }
         }
+        if let Some((_, corners)) = geometry {
+            for (private, ty) in accessed.values() {
+                part.declarations.push_str(&corner_accessor(private, ty, corners));
+            }
+        }
         (part.body, part.map, _) = edits.apply(text);
         Ok(part)
     }
+}
+
+/// A geometry input whose corners hold arrays or matrices (a block with such members, or
+/// an array of arrays): the name its uses give, its private name and its type at one corner
+/// as a GLSL return type ([`interface::private_varying`]'s names). None for the others.
+/// Indexing such an input at a run-time corner and then inside the corner makes llvmpipe's
+/// code generator (lavapipe) take minutes; the accessor ([`corner_accessor`]) picks the
+/// corner by branches instead.
+fn nested_corner(g: &Global, prefix: &str) -> Option<(String, String, String)> {
+    let nested = |ty: &GlslType| !ty.dims.is_empty() || matrix_shape(&ty.base).is_some();
+    match &g.block {
+        Some(b) => {
+            let instance = b.instance.as_ref()?;
+            let private = format!("{prefix}{instance}");
+            let ty = format!("{private}_block");
+            b.members.iter().any(|m| nested(&m.ty)).then(|| (instance.clone(), private, ty))
+        }
+        None => {
+            let ty = g.ty.element();
+            nested(&ty).then(|| (g.name.clone(), format!("{prefix}{}", g.name), format!("{}{}", ty.base, syntax::dims_text(&ty))))
+        }
+    }
+}
+
+/// `T name_at(int k)`: corner `k` of a geometry input (the last corner past the end, where
+/// GL's read is undefined).
+fn corner_accessor(private: &str, ty: &str, corners: u32) -> String {
+    let mut t = format!("{ty} {private}_at(int k) {{");
+    for k in 0..corners.saturating_sub(1) {
+        write!(t, " if (k == {k}) return {private}[{k}];").unwrap();
+    }
+    writeln!(t, " return {private}[{}]; }}", corners.saturating_sub(1)).unwrap();
+    t
+}
+
+/// Where `u` (a geometry input) is indexed at a corner that is not a literal: the ranges of
+/// the opening (`[` and what precedes the index) and the closing `]`.
+fn corner_call(text: &str, u: &syntax::Use) -> Option<(Range<usize>, Range<usize>)> {
+    let (whole, index, literal) = u.index.clone()?;
+    let closes = whole.end > index.end && text.get(whole.end - 1..whole.end) == Some("]");
+    let opens = text.get(u.span.end..index.start).is_some_and(|t| t.trim() == "[");
+    (literal.is_none() && closes && opens).then(|| (u.span.end..index.start, index.end..whole.end))
 }
 
 /// Uniforms, textures and samplers: shared by the stages, kept under their names.
