@@ -15,9 +15,9 @@ use crate::front::plan::UNIFORM_BLOCK;
 pub fn write(module: &Module, info: &ModuleInfo) -> Result<String, String> {
     if let Some(arrays) = strided_arrays(module) {
         return Err(format!(
-            "an array of 4- or 8-byte elements with a 16-byte stride in a uniform buffer ({arrays}) is not supported by WGSL: \
-             std140 gives each element of a `float`, `int` or `vec2` array 16 bytes, and WGSL packs such arrays \
-             (a `vec4` array, read as `.x`, has the same layout)"
+            "an array in a uniform buffer whose std140 stride WGSL cannot write ({arrays}) is not supported by WGSL: \
+             std140 gives each element of a `float`, `int` or `vec2` array 16 bytes and each `mat2` column 16 bytes, \
+             and WGSL packs them (a `vec4` array, read as `.x` or `.xy`, has the same layout)"
         ));
     }
     let mut text = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
@@ -97,11 +97,14 @@ pub fn verify(text: &str) -> Result<Module, String> {
     Ok(module)
 }
 
-/// The uniform-buffer arrays whose stride WGSL cannot write (`Light.falloff`, joined): an
-/// element of 4 or 8 bytes (a scalar or a 2-vector) laid out 16 bytes apart, as std140 lays
-/// out `float falloff[3]` in a struct. The uniform block's own arrays are widened to `vec4`
-/// by the rewrite, so these are struct members.
+/// The uniform-buffer arrays whose stride WGSL cannot write (`` `Light.falloff` (16 bytes
+/// apart, WGSL 4) ``, joined): WGSL lays an array's elements out at their own aligned size,
+/// and std140 pads some further: a struct's `float` or `vec2` array to 16 bytes an element,
+/// a `mat2` array to two 16-byte columns. The uniform block's own arrays are widened to
+/// `vec4` by the rewrite, so these are struct members.
 fn strided_arrays(module: &Module) -> Option<String> {
+    let mut layouter = naga::proc::Layouter::default();
+    layouter.update(module.to_ctx()).ok()?;
     let mut found: Vec<String> = Vec::new();
     let mut seen = std::collections::HashSet::new();
     let mut todo: Vec<naga::Handle<naga::Type>> =
@@ -114,14 +117,11 @@ fn strided_arrays(module: &Module) -> Option<String> {
             naga::TypeInner::Struct { members, .. } => {
                 for m in members {
                     if let naga::TypeInner::Array { base, stride, .. } = module.types[m.ty].inner {
-                        let packed = match module.types[base].inner {
-                            naga::TypeInner::Scalar(s) => Some(u32::from(s.width)),
-                            naga::TypeInner::Vector { size: naga::VectorSize::Bi, scalar } => Some(2 * u32::from(scalar.width)),
-                            _ => None,
-                        };
-                        if packed.is_some_and(|p| p != stride) {
+                        let natural = layouter[base].to_stride();
+                        if natural != stride {
                             let owner = module.types[ty].name.as_deref().unwrap_or("struct");
-                            found.push(format!("`{owner}.{}`", m.name.as_deref().unwrap_or("?")));
+                            let member = m.name.as_deref().unwrap_or("?");
+                            found.push(format!("`{owner}.{member}` ({stride} bytes apart, WGSL {natural})"));
                         }
                     }
                     todo.push(m.ty);
@@ -193,8 +193,30 @@ mod tests {
         let module = naga::front::glsl::Frontend::default().parse(&options, glsl).unwrap();
         let (info, _) = crate::front::naga_run::validate_for_gl(&module).unwrap();
         let error = write(&module, &info).unwrap_err();
-        assert!(error.contains("(`Light.falloff`) is not supported by WGSL"), "{error}");
+        assert!(error.contains("(`Light.falloff` (16 bytes apart, WGSL 4)) is not supported by WGSL"), "{error}");
         assert!(!error.contains("tint"), "a vec4 array's stride is its own: {error}");
+    }
+
+    /// std140 lays out a `mat2` array 32 bytes an element; WGSL's `mat2x2` is 16 bytes (the
+    /// fronts refuse such arrays first: this is the writer's own guard).
+    #[test]
+    fn a_mat2_array_in_a_uniform_block_is_named_as_beyond_wgsl() {
+        let wgsl = "struct S2 { v2: vec4<f32>, m22: array<mat2x2<f32>, 2> }\n\
+                    @group(0) @binding(0) var<uniform> s: S2;\n\
+                    @fragment fn main() -> @location(0) vec4<f32> { return vec4<f32>(s.m22[1][1], s.v2.xy); }\n";
+        let mut module = naga::front::wgsl::parse_str(wgsl).unwrap();
+        let info = crate::front::naga_run::validator().validate(&module).unwrap();
+        let arrays: Vec<_> =
+            module.types.iter().filter(|(_, t)| matches!(t.inner, naga::TypeInner::Array { .. })).map(|(h, _)| h).collect();
+        for h in arrays {
+            let mut ty = module.types[h].clone();
+            if let naga::TypeInner::Array { stride, .. } = &mut ty.inner {
+                *stride = 32;
+            }
+            module.types.replace(h, ty);
+        }
+        let error = write(&module, &info).unwrap_err();
+        assert!(error.contains("(`S2.m22` (32 bytes apart, WGSL 16)) is not supported by WGSL"), "{error}");
     }
 
     #[test]

@@ -131,6 +131,9 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
         Ok(Err(e)) => return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {e}")),
         Err(_) => return Err(format!("naga's SPIR-V front crashed on the {kind} stage")),
     };
+    if let Some((construct, _)) = naga_run::std140_two_row_matrix(&module) {
+        return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {construct}"));
+    }
     let table = LineTable::new(text);
     respan_module(&mut module, &|span| lines.user_span(span, &table, text));
     user_names(&mut module);
@@ -645,6 +648,24 @@ mod tests {
         let f = module.functions.iter().find(|(_, f)| f.name.as_deref() == Some("f")).expect("f").1;
         let lines: Vec<&str> = f.body.span_iter().filter_map(|(_, s)| s.to_range()).map(|r| &text[r]).collect();
         assert!(lines.contains(&"for (int i = 0; i < 2; i++) {"), "{lines:?}");
+    }
+
+    /// std140 puts a `mat2` array's matrices 32 bytes apart and their columns 16; naga's IR
+    /// has 8-byte columns, so reading it would move every second column (silently wrong
+    /// SPIR-V before). A `vec4` array and a `mat4` array are read as they are.
+    #[test]
+    fn an_array_of_two_row_matrices_in_a_uniform_block_is_refused() {
+        let block = |members: &str| {
+            format!(
+                "#version 450\nlayout(std140, binding = 0) uniform Block {{ {members} }} b;\n\
+                 layout(location = 0) out vec4 c;\nvoid main() {{ c = vec4(b.m[1][1][1]) + b.x; }}\n"
+            )
+        };
+        let refused = block("vec4 x; mat2 m[2];");
+        let error = compile_rewritten(&[(&refused, StageKind::Fragment)], &Plan::default()).unwrap_err();
+        assert!(error.contains("`mat2x2` in `Block`, a std140 uniform block"), "{error}");
+        let mat4 = block("vec4 x; mat4 m[2];");
+        compile_rewritten(&[(&mat4, StageKind::Fragment)], &Plan::default()).expect("mat4 arrays are read");
     }
 
     #[test]
