@@ -16,7 +16,7 @@ const SEMANTICS: usize = 91;
 
 /// Programs in the compatibility-profile suite (`tests/verify/compat/`: one directory per
 /// program, GLSL 1.10–1.50 reading fixed-function state).
-const COMPAT: usize = 56;
+const COMPAT: usize = 57;
 
 /// Whether verify can run here: CI must have a GL driver and an adapter.
 fn can_verify() -> bool {

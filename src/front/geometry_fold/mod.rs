@@ -201,8 +201,8 @@ struct Part {
     /// Geometry stage: which of `gl_Layer` and `gl_ViewportIndex` it uses.
     selects: std::collections::BTreeSet<String>,
     /// The built-in outputs the rewrite made private globals ([`PRIVATE_BUILTINS`]) that the
-    /// stage declares.
-    private_builtins: Vec<&'static str>,
+    /// stage declares, with their array length (a redeclared `gl_ClipDistance[3]` has 3).
+    private_builtins: Vec<(&'static str, Option<u32>)>,
     /// Geometry stage: it reads `gl_in[].gl_ClipDistance`.
     reads_clip_distance: bool,
 }
@@ -260,7 +260,7 @@ impl Part {
         for g in &s.globals {
             let renamed = format!("{prefix}{}", g.name);
             if let Some((name, _, _)) = PRIVATE_BUILTINS.iter().find(|(n, _, _)| *n == g.name) {
-                part.private_builtins.push(name);
+                part.private_builtins.push((name, g.ty.dims.first().copied().flatten()));
             }
             match g.storage {
                 _ if is_shared(g) => {
@@ -521,7 +521,10 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
         writeln!(t, "    {}main();", vs.prefix).unwrap();
         writeln!(t, "    effectc_gl_in[{k}].gl_Position = effectc_vs_gl_Position;").unwrap();
         for (private, member, length) in PRIVATE_BUILTINS {
-            if vs.private_builtins.contains(&private) && (member != "gl_ClipDistance" || gs.reads_clip_distance) {
+            let Some((_, declared)) = vs.private_builtins.iter().find(|(p, _)| *p == private) else { continue };
+            if member != "gl_ClipDistance" || gs.reads_clip_distance {
+                // gl_in[]'s array is the largest; the vertex stage's may be shorter.
+                let length = length.map(|l| declared.map_or(l, |d| d.min(l)));
                 let ty = GlslType { base: "float".into(), dims: length.into_iter().map(Some).collect() };
                 writeln!(t, "   {}", ty.copy(&format!("effectc_gl_in[{k}].{member}"), &format!("{}{private}", vs.prefix))).unwrap();
             }

@@ -132,13 +132,13 @@ impl Ctx<'_> {
             // WebGPU draws points one pixel wide: the size is computed but not used.
             h.push_str("float effectc_PointSize;\n");
         }
-        if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && unresolved("gl_ClipDistance") {
-            // User clip planes need a WebGPU feature; the distances are computed, not used.
-            h.push_str("float effectc_ClipDistance[8];\n");
-        }
-        if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && unresolved("gl_CullDistance") {
-            // Cull distances have no WebGPU equivalent; computed, not used.
-            h.push_str("float effectc_CullDistance[8];\n");
+        // User clip planes need a WebGPU feature and cull distances have no WebGPU
+        // equivalent: the distances are computed, not used, in an array of the size the
+        // stage redeclares (its `length()`), else of Mesa's `gl_MaxClipDistances`.
+        for (builtin, private) in [("gl_ClipDistance", "effectc_ClipDistance"), ("gl_CullDistance", "effectc_CullDistance")] {
+            if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && unresolved(builtin) {
+                let _ = writeln!(h, "float {private}[{}];", redeclared_length(s, builtin).unwrap_or(8));
+            }
         }
         h.push_str(&self.compat_header);
         if self.need_mat2_helper {
@@ -241,4 +241,10 @@ fn plain_definition_end(text: &str, span: &std::ops::Range<usize>) -> Option<usi
 
 fn line_end(text: &str, at: usize) -> usize {
     text[at.min(text.len())..].find('\n').map(|i| at + i + 1).unwrap_or(text.len())
+}
+
+/// The length of a built-in output array the stage redeclares (`out float
+/// gl_ClipDistance[3];`).
+pub(crate) fn redeclared_length(s: &crate::front::syntax::StageSyntax, builtin: &str) -> Option<u32> {
+    s.globals.iter().find(|g| g.name == builtin && g.storage == Storage::Out).and_then(|g| g.ty.dims.first().copied().flatten())
 }
