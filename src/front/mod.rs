@@ -52,6 +52,7 @@ pub mod source_text;
 pub mod statements;
 pub mod syntax;
 pub mod through_spirv;
+pub mod uniform_struct_padding;
 pub mod units;
 pub mod varying_locations;
 pub mod version;

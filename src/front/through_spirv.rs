@@ -134,6 +134,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     if let Some((construct, _)) = naga_run::std140_two_row_matrix(&module) {
         return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {construct}"));
     }
+    crate::front::uniform_struct_padding::pad_uniform_structs(&mut module);
     let table = LineTable::new(text);
     respan_module(&mut module, &|span| lines.user_span(span, &table, text));
     user_names(&mut module);

@@ -1,0 +1,205 @@
+//! Structs in uniform buffers laid out the way WGSL writes them. naga's WGSL writer places a
+//! struct's members at their natural offsets and writes no offsets, so a struct whose IR
+//! offsets are larger — std140's, from SPIR-V: `struct PointLight { BaseLight Base; vec3
+//! LocalPos; vec3 WorldPos; Attenuation Atten; }` puts `Atten` at 64 where WGSL would put it
+//! at 60 — came out as WGSL that reads other bytes and that WGSL's uniform rules refuse.
+//! Such a struct gets `f32` filler members (`effectc_padN`, as the GLSL route's block has)
+//! in its gaps, so the natural layout is the IR's, and every member access is renumbered.
+
+use std::collections::{HashMap, HashSet};
+
+use naga::{AddressSpace, Expression, Function, Handle, Module, Scalar, StructMember, Type, TypeInner};
+
+/// Pads every struct reachable from a uniform buffer whose offsets WGSL's natural layout
+/// does not reproduce. Leaves the module as it is when that cannot be done (a gap that is no
+/// whole number of 4-byte words, no `f32`-sized scalar type to fill with, a struct built with
+/// a constructor), where the WGSL writer's own checks name the problem.
+pub fn pad_uniform_structs(module: &mut Module) {
+    let mut layouter = naga::proc::Layouter::default();
+    if layouter.update(module.to_ctx()).is_err() {
+        return;
+    }
+    let Some(plans) = plan(module, &layouter) else { return };
+    if plans.is_empty() || constructed(module, &plans) {
+        return;
+    }
+    // (function, or entry point by position) → (expression, new member index)
+    let mut renumbered: Vec<(Owner, Handle<Expression>, u32)> = Vec::new();
+    let owners = module.functions.iter().map(|(h, f)| (Owner::Function(h), f));
+    for (owner, f) in owners.chain(module.entry_points.iter().enumerate().map(|(i, e)| (Owner::EntryPoint(i), &e.function))) {
+        let Some(accesses) = struct_accesses(module, f) else { return };
+        for (e, s, index) in accesses {
+            if let Some((_, new)) = plans.get(&s) {
+                renumbered.push((owner, e, new[index as usize]));
+            }
+        }
+    }
+    for (ty, (padded, _)) in &plans {
+        module.types.replace(*ty, padded.clone());
+    }
+    for (owner, e, new) in renumbered {
+        let f = match owner {
+            Owner::Function(h) => &mut module.functions[h],
+            Owner::EntryPoint(i) => &mut module.entry_points[i].function,
+        };
+        if let Expression::AccessIndex { index, .. } = &mut f.expressions[e] {
+            *index = new;
+        }
+    }
+}
+
+#[derive(Clone, Copy)]
+enum Owner {
+    Function(Handle<Function>),
+    EntryPoint(usize),
+}
+
+/// Every member access of `f` on a struct (a struct value held by handle, or a pointer to
+/// one): (expression, struct type, member index). None when a type does not resolve.
+fn struct_accesses(module: &Module, f: &Function) -> Option<Vec<(Handle<Expression>, Handle<Type>, u32)>> {
+    let ctx = naga::proc::ResolveContext::with_locals(module, &f.local_variables, &f.arguments);
+    let mut typifier = naga::front::Typifier::new();
+    let mut out = Vec::new();
+    for (e, expression) in f.expressions.iter() {
+        typifier.grow(e, &f.expressions, &ctx).ok()?;
+        let Expression::AccessIndex { base, index } = *expression else { continue };
+        let accessed = match (typifier.get(base, &module.types), &typifier[base]) {
+            (TypeInner::Pointer { base, .. }, _) => Some(*base),
+            (TypeInner::Struct { .. }, naga::proc::TypeResolution::Handle(h)) => Some(*h),
+            _ => None,
+        };
+        if let Some(s) = accessed.filter(|s| matches!(module.types[*s].inner, TypeInner::Struct { .. })) {
+            out.push((e, s, index));
+        }
+    }
+    Some(out)
+}
+
+/// For each struct to pad: its padded type and each old member's new index. None when some
+/// struct cannot be padded.
+fn plan(module: &Module, layouter: &naga::proc::Layouter) -> Option<HashMap<Handle<Type>, (Type, Vec<u32>)>> {
+    let mut todo: Vec<Handle<Type>> =
+        module.global_variables.iter().filter(|(_, g)| g.space == AddressSpace::Uniform).map(|(_, g)| g.ty).collect();
+    let mut seen = HashSet::new();
+    let mut plans = HashMap::new();
+    while let Some(ty) = todo.pop() {
+        if !seen.insert(ty) {
+            continue;
+        }
+        match &module.types[ty].inner {
+            TypeInner::Struct { members, span } => {
+                todo.extend(members.iter().map(|m| m.ty));
+                if let Some(padded) = padded(module, layouter, ty, members, *span)? {
+                    plans.insert(ty, padded);
+                }
+            }
+            TypeInner::Array { base, .. } | TypeInner::BindingArray { base, .. } => todo.push(*base),
+            _ => {}
+        }
+    }
+    Some(plans)
+}
+
+/// The struct with fillers where WGSL's natural layout falls short of `members`' offsets,
+/// and the new index of each member; `Some(None)` when nothing needs filling, `None` when a
+/// gap cannot be filled.
+fn padded(
+    module: &Module,
+    layouter: &naga::proc::Layouter,
+    ty: Handle<Type>,
+    members: &[StructMember],
+    span: u32,
+) -> Option<Option<(Type, Vec<u32>)>> {
+    let mut out: Vec<StructMember> = Vec::new();
+    let mut index = Vec::new();
+    let mut cursor = 0u32;
+    let mut fillers = 0u32;
+    let mut align = naga::proc::Alignment::ONE;
+    let mut filler = None;
+    let mut fill = |out: &mut Vec<StructMember>, from: u32, to: u32| -> Option<()> {
+        if (to - from) % 4 != 0 || from % 4 != 0 {
+            return None;
+        }
+        // Types may refer only to earlier types: the filler must precede the struct.
+        let f32_ty = *filler.get_or_insert_with(|| word_type(module, ty));
+        let f32_ty = f32_ty?;
+        for offset in (from..to).step_by(4) {
+            out.push(StructMember { name: Some(format!("effectc_pad{fillers}")), ty: f32_ty, binding: None, offset });
+            fillers += 1;
+        }
+        Some(())
+    };
+    for m in members {
+        let layout = layouter[m.ty];
+        let natural = layout.alignment.round_up(cursor);
+        if m.offset < natural {
+            return None;
+        }
+        if m.offset > natural {
+            fill(&mut out, cursor, m.offset)?;
+        }
+        index.push(out.len() as u32);
+        out.push(m.clone());
+        cursor = m.offset + layout.size;
+        align = align.max(layout.alignment);
+    }
+    if align.round_up(cursor) < span {
+        fill(&mut out, cursor, span)?;
+    }
+    if fillers == 0 {
+        return Some(None);
+    }
+    let name = module.types[ty].name.clone();
+    Some(Some((Type { name, inner: TypeInner::Struct { members: out, span } }, index)))
+}
+
+/// A 4-byte scalar type declared before `before` (`f32`, else `u32` or `i32`).
+fn word_type(module: &Module, before: Handle<Type>) -> Option<Handle<Type>> {
+    [Scalar::F32, Scalar::U32, Scalar::I32]
+        .into_iter()
+        .find_map(|s| module.types.iter().find(|(h, t)| h.index() < before.index() && t.inner == TypeInner::Scalar(s)).map(|(h, _)| h))
+}
+
+/// Whether any code builds one of the structs with a constructor (it would need the fillers).
+fn constructed(module: &Module, plans: &HashMap<Handle<Type>, (Type, Vec<u32>)>) -> bool {
+    let builds = |e: &Expression| matches!(e, Expression::Compose { ty, .. } if plans.contains_key(ty));
+    module.global_expressions.iter().any(|(_, e)| builds(e))
+        || module.functions.iter().any(|(_, f)| f.expressions.iter().any(|(_, e)| builds(e)))
+        || module.entry_points.iter().any(|ep| ep.function.expressions.iter().any(|(_, e)| builds(e)))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::front::plan::Plan;
+    use crate::front::through_spirv::compile_rewritten;
+    use crate::stage::StageKind;
+
+    /// std140 puts `at` at 32 (a struct is 16-aligned); WGSL's natural place is 28. The
+    /// filler makes the WGSL offsets the IR's, member reads keep their members, and the
+    /// struct a function copies the block's into is left alone.
+    #[test]
+    fn a_struct_after_a_vec3_in_a_uniform_block_is_padded_to_std140() {
+        let text = "#version 450\n\
+                    struct Att { float c; float l; float e; };\n\
+                    struct PL { vec3 a; vec3 b; Att at; };\n\
+                    layout(std140, binding = 0) uniform B { PL p[2]; } u;\n\
+                    layout(location = 0) out vec4 o;\n\
+                    float e_of(PL l) { return l.at.e; }\n\
+                    void main() { o = vec4(u.p[1].at.e + e_of(u.p[0]), u.p[0].b); }\n";
+        let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+        let v = &validated[0];
+        let padded = v.module.types.iter().find_map(|(_, t)| match &t.inner {
+            naga::TypeInner::Struct { members, .. } if members.iter().any(|m| m.name.as_deref() == Some("effectc_pad0")) => Some(members),
+            _ => None,
+        });
+        let members = padded.expect("a padded struct");
+        let at: Vec<(Option<&str>, u32)> = members.iter().map(|m| (m.name.as_deref(), m.offset)).collect();
+        assert_eq!(at, [(Some("a"), 0), (Some("b"), 16), (Some("effectc_pad0"), 28), (Some("at"), 32)]);
+        let wgsl = naga::back::wgsl::write_string(&v.module, &v.info, naga::back::wgsl::WriterFlags::empty()).unwrap();
+        let reparsed = naga::front::wgsl::parse_str(&wgsl).unwrap();
+        crate::front::naga_run::validator().validate(&reparsed).unwrap_or_else(|e| panic!("{}\n{wgsl}", e.emit_to_string(&wgsl)));
+        assert!(wgsl.contains("effectc_pad0_: f32,\n    at: Att"), "{wgsl}");
+        // The read of `at.e` through the block still reads member 3 of the padded struct.
+        assert!(wgsl.contains(".at.e"), "{wgsl}");
+    }
+}
