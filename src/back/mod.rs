@@ -176,7 +176,9 @@ pub fn translate(
     // Compaction assumes a valid module; prove it first (with 64-bit floats and integers
     // where every target has them).
     let validator = || {
-        let caps = crate::front::naga_run::webgpu_capabilities() | wide_capabilities(options);
+        let caps = crate::front::naga_run::webgpu_capabilities()
+            | wide_capabilities(options)
+            | crate::front::naga_run::webgpu_optional_capabilities();
         naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps)
     };
     validator()
@@ -306,7 +308,8 @@ fn stage_modules(program: &CompiledProgram, options: TranslateOptions) -> Result
         let needs_of = |v: &crate::front::naga_run::Validated| -> Vec<String> {
             v.needs
                 .iter()
-                .filter(|n| !(folded_primitive.is_some() && n.as_str() == "PRIMITIVE_INDEX"))
+                // WebGPU's optional features (N0109): the WGSL enables them.
+                .filter(|n| !matches!(n.as_str(), "PRIMITIVE_INDEX" | "DUAL_SOURCE_BLENDING"))
                 .filter(|n| !(wide.contains(naga::valid::Capabilities::FLOAT64) && n.as_str() == "FLOAT64"))
                 .filter(|n| !(wide.contains(naga::valid::Capabilities::SHADER_INT64) && n.as_str() == "SHADER_INT64"))
                 .cloned()

@@ -56,3 +56,4 @@ pub mod uniform_struct_padding;
 pub mod units;
 pub mod varying_locations;
 pub mod version;
+pub mod webgpu_features;

@@ -39,9 +39,17 @@ pub enum Outcome {
     Invalid(Vec<Diagnostic>),
 }
 
-/// The validator every backend output goes through: all checks, WebGPU capabilities.
+/// The validator every backend output goes through: all checks, WebGPU capabilities and
+/// the optional features a translation may enable ([`webgpu_optional_capabilities`]).
 pub fn validator() -> naga::valid::Validator {
-    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), webgpu_capabilities())
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), webgpu_capabilities() | webgpu_optional_capabilities())
+}
+
+/// WebGPU's optional features a translation may use: the output enables them (`enable
+/// primitive_index;`, `enable dual_source_blending;`) and the front says so (N0109);
+/// `render` asks the device for them.
+pub fn webgpu_optional_capabilities() -> Capabilities {
+    Capabilities::PRIMITIVE_INDEX | Capabilities::DUAL_SOURCE_BLENDING
 }
 
 /// What every WebGPU implementation has: naga's defaults plus the half-float packing

@@ -20,6 +20,7 @@ use crate::front::reference;
 use crate::front::rewrite::{self, Rewritten};
 use crate::front::syntax::{self, StageSyntax};
 use crate::front::through_spirv;
+use crate::front::webgpu_features;
 use crate::stage::StageKind;
 
 /// Options for the front.
@@ -147,10 +148,10 @@ pub fn compile(
         diags.extend(judgement.link_errors.iter().cloned());
     }
     if let Some(p) = &program {
-        diags.extend(clip_distances_dropped(p));
+        diags.extend(webgpu_features::clip_distances_dropped(p));
     }
     let dialect = judgement.dialect;
-    program.map(|mut p| {
+    let program = program.map(|mut p| {
         for stage in &mut p.stages {
             if stage.naga.is_none() && stage.limitation.is_none() && stage.syntax.stage.naga().is_some() {
                 // naga refused a stage glslang accepts: translate names what naga said.
@@ -160,7 +161,9 @@ pub fn compile(
         p.reference = Some(judgement);
         through_spirv_where_naga_refuses(files, (own_order == ordered).then_some(&ordered[..]), dialect, &mut p, diags);
         p
-    })
+    });
+    diags.extend(program.as_ref().map(webgpu_features::optional_features_needed).unwrap_or_default());
+    program
 }
 
 /// A legal program (glslang accepts and links it) with a stage naga's GLSL front cannot
@@ -503,21 +506,6 @@ fn module_or_limit(outcome: Outcome, s: &StageSyntax, plan: &Plan, diags: &mut V
             (None, None)
         }
     }
-}
-
-/// N0108 at the first use of `gl_ClipDistance` or `gl_CullDistance` in the stage that feeds
-/// the rasterizer (a geometry stage, else the vertex stage): WebGPU has no user clip or
-/// cull distances without a feature, so both routes compute them and pass neither, and a
-/// program GL draws with `GL_CLIP_DISTANCEi` enabled is drawn unclipped.
-fn clip_distances_dropped(program: &CompiledProgram) -> Option<Diagnostic> {
-    let last = program.stage(StageKind::Geometry).or_else(|| program.stage(StageKind::Vertex))?;
-    let s = &last.syntax;
-    let u = s.uses.iter().find(|u| matches!(u.name.as_str(), "gl_ClipDistance" | "gl_CullDistance") && rewrite::names_builtin(s, u))?;
-    Some(
-        Diagnostic::new(Code::ClipDistancesDropped, format!("`{}` is computed, not passed on: WebGPU clips and culls by neither", u.name))
-            .at(s.file, u.span.clone(), "computed, not passed")
-            .with_note("WebGPU has user clip distances only with the `clip-distances` feature, and no cull distances: a program GL draws with `GL_CLIP_DISTANCEi` enabled is drawn unclipped by the translation"),
-    )
 }
 
 /// E0103: a stage without `main`.

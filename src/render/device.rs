@@ -75,7 +75,11 @@ impl Gpu {
         // target under --float) through filtering samplers, as GL does.
         // VERTEX_WRITABLE_STORAGE: `effectc stress` counts non-finite values of the vertex
         // stage in a storage buffer.
+        // PRIMITIVE_INDEX, DUAL_SOURCE_BLENDING: a fragment stage reading `gl_PrimitiveID`,
+        // or writing a second-source output (`layout(index = 1)`) (N0109).
         let wanted = wgpu::Features::TIMESTAMP_QUERY
+            | wgpu::Features::PRIMITIVE_INDEX
+            | wgpu::Features::DUAL_SOURCE_BLENDING
             | wgpu::Features::FLOAT32_BLENDABLE
             | wgpu::Features::FLOAT32_FILTERABLE
             | wgpu::Features::VERTEX_WRITABLE_STORAGE;

@@ -208,3 +208,47 @@ fn translate_refuses_a_program_with_check_errors() {
     assert!(stdout.contains(Code::InputBlockUnmatched.as_str()), "check's diagnostic is the output:\n{stdout}");
     assert!(!dir.exists(), "nothing is written for a refused program");
 }
+
+/// `gl_PrimitiveID` in a fragment stage: WebGPU has it as the optional `primitive-index`
+/// feature, so the WGSL enables it and N0109 says so (E0306 before: "which WebGPU does not
+/// have"), and a device with the feature draws it (lavapipe has it).
+#[test]
+fn a_fragment_primitive_id_translates_with_the_optional_feature() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-primitive-id");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("p.vert"),
+        "#version 330 core\nlayout(location = 0) in vec3 aPos;\nvoid main() { gl_Position = vec4(aPos, 1.0); }\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("p.frag"),
+        "#version 330 core\nout vec4 color;\nvoid main() { color = vec4(float(gl_PrimitiveID % 4) / 3.0, 0.0, 0.0, 1.0); }\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(["translate", "--to", "wgsl,spv", "--out"])
+        .arg(dir.join("out"))
+        .arg(dir.join("p.vert"))
+        .arg(dir.join("p.frag"))
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains(Code::OptionalWebGpuFeature.as_str()) && stdout.contains("p.frag:3:"), "{stdout}");
+    let wgsl = std::fs::read_to_string(dir.join("out/p.wgsl")).unwrap();
+    assert!(wgsl.starts_with("enable primitive_index;") && wgsl.contains("@builtin(primitive_index)"), "{wgsl}");
+    if crate::render::have_gpu() {
+        let frames = dir.join("frames");
+        let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
+            .args(["render", "--frames", "1", "--size", "16x16", "--out"])
+            .arg(&frames)
+            .arg(dir.join("p.vert"))
+            .arg(dir.join("p.frag"))
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    }
+}
