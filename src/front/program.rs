@@ -148,7 +148,8 @@ pub fn compile(
         diags.extend(judgement.link_errors.iter().cloned());
     }
     if let Some(p) = &program {
-        diags.extend(webgpu_features::clip_distances_dropped(p));
+        let last = p.stage(StageKind::Geometry).or_else(|| p.stage(StageKind::Vertex));
+        diags.extend(last.and_then(|s| webgpu_features::clip_distances_dropped(&s.syntax)));
     }
     let dialect = judgement.dialect;
     let program = program.map(|mut p| {
@@ -162,7 +163,12 @@ pub fn compile(
         through_spirv_where_naga_refuses(files, (own_order == ordered).then_some(&ordered[..]), dialect, &mut p, diags);
         p
     });
-    diags.extend(program.as_ref().map(webgpu_features::optional_features_needed).unwrap_or_default());
+    if let Some(p) = &program {
+        let folded = p.stage(StageKind::Geometry).is_some();
+        if let Some((s, v)) = p.stage(StageKind::Fragment).and_then(|f| Some((&f.syntax, f.naga.as_ref()?))) {
+            diags.extend(webgpu_features::optional_features_needed(s, v, folded));
+        }
+    }
     program
 }
 

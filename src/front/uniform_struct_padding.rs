@@ -48,6 +48,12 @@ pub fn pad_uniform_structs(module: &mut Module) {
     }
 }
 
+/// A member access: (expression, struct type, member index).
+type Access = (Handle<Expression>, Handle<Type>, u32);
+
+/// Per struct to pad: the padded type, and each old member's new index.
+type Plans = HashMap<Handle<Type>, (Type, Vec<u32>)>;
+
 #[derive(Clone, Copy)]
 enum Owner {
     Function(Handle<Function>),
@@ -56,7 +62,7 @@ enum Owner {
 
 /// Every member access of `f` on a struct (a struct value held by handle, or a pointer to
 /// one): (expression, struct type, member index). None when a type does not resolve.
-fn struct_accesses(module: &Module, f: &Function) -> Option<Vec<(Handle<Expression>, Handle<Type>, u32)>> {
+fn struct_accesses(module: &Module, f: &Function) -> Option<Vec<Access>> {
     let ctx = naga::proc::ResolveContext::with_locals(module, &f.local_variables, &f.arguments);
     let mut typifier = naga::front::Typifier::new();
     let mut out = Vec::new();
@@ -77,7 +83,7 @@ fn struct_accesses(module: &Module, f: &Function) -> Option<Vec<(Handle<Expressi
 
 /// For each struct to pad: its padded type and each old member's new index. None when some
 /// struct cannot be padded.
-fn plan(module: &Module, layouter: &naga::proc::Layouter) -> Option<HashMap<Handle<Type>, (Type, Vec<u32>)>> {
+fn plan(module: &Module, layouter: &naga::proc::Layouter) -> Option<Plans> {
     let mut todo: Vec<Handle<Type>> =
         module.global_variables.iter().filter(|(_, g)| g.space == AddressSpace::Uniform).map(|(_, g)| g.ty).collect();
     let mut seen = HashSet::new();
@@ -117,7 +123,7 @@ fn padded(
     let mut align = naga::proc::Alignment::ONE;
     let mut filler = None;
     let mut fill = |out: &mut Vec<StructMember>, from: u32, to: u32| -> Option<()> {
-        if (to - from) % 4 != 0 || from % 4 != 0 {
+        if !(to - from).is_multiple_of(4) || !from.is_multiple_of(4) {
             return None;
         }
         // Types may refer only to earlier types: the filler must precede the struct.
@@ -161,45 +167,9 @@ fn word_type(module: &Module, before: Handle<Type>) -> Option<Handle<Type>> {
 }
 
 /// Whether any code builds one of the structs with a constructor (it would need the fillers).
-fn constructed(module: &Module, plans: &HashMap<Handle<Type>, (Type, Vec<u32>)>) -> bool {
+fn constructed(module: &Module, plans: &Plans) -> bool {
     let builds = |e: &Expression| matches!(e, Expression::Compose { ty, .. } if plans.contains_key(ty));
     module.global_expressions.iter().any(|(_, e)| builds(e))
         || module.functions.iter().any(|(_, f)| f.expressions.iter().any(|(_, e)| builds(e)))
         || module.entry_points.iter().any(|ep| ep.function.expressions.iter().any(|(_, e)| builds(e)))
-}
-
-#[cfg(test)]
-mod tests {
-    use crate::front::plan::Plan;
-    use crate::front::through_spirv::compile_rewritten;
-    use crate::stage::StageKind;
-
-    /// std140 puts `at` at 32 (a struct is 16-aligned); WGSL's natural place is 28. The
-    /// filler makes the WGSL offsets the IR's, member reads keep their members, and the
-    /// struct a function copies the block's into is left alone.
-    #[test]
-    fn a_struct_after_a_vec3_in_a_uniform_block_is_padded_to_std140() {
-        let text = "#version 450\n\
-                    struct Att { float c; float l; float e; };\n\
-                    struct PL { vec3 a; vec3 b; Att at; };\n\
-                    layout(std140, binding = 0) uniform B { PL p[2]; } u;\n\
-                    layout(location = 0) out vec4 o;\n\
-                    float e_of(PL l) { return l.at.e; }\n\
-                    void main() { o = vec4(u.p[1].at.e + e_of(u.p[0]), u.p[0].b); }\n";
-        let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
-        let v = &validated[0];
-        let padded = v.module.types.iter().find_map(|(_, t)| match &t.inner {
-            naga::TypeInner::Struct { members, .. } if members.iter().any(|m| m.name.as_deref() == Some("effectc_pad0")) => Some(members),
-            _ => None,
-        });
-        let members = padded.expect("a padded struct");
-        let at: Vec<(Option<&str>, u32)> = members.iter().map(|m| (m.name.as_deref(), m.offset)).collect();
-        assert_eq!(at, [(Some("a"), 0), (Some("b"), 16), (Some("effectc_pad0"), 28), (Some("at"), 32)]);
-        let wgsl = naga::back::wgsl::write_string(&v.module, &v.info, naga::back::wgsl::WriterFlags::empty()).unwrap();
-        let reparsed = naga::front::wgsl::parse_str(&wgsl).unwrap();
-        crate::front::naga_run::validator().validate(&reparsed).unwrap_or_else(|e| panic!("{}\n{wgsl}", e.emit_to_string(&wgsl)));
-        assert!(wgsl.contains("effectc_pad0_: f32,\n    at: Att"), "{wgsl}");
-        // The read of `at.e` through the block still reads member 3 of the padded struct.
-        assert!(wgsl.contains(".at.e"), "{wgsl}");
-    }
 }

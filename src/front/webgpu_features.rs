@@ -2,17 +2,15 @@
 //! with them, at the GLSL that uses them.
 
 use crate::diag::{Code, Diagnostic};
-use crate::front::program::CompiledProgram;
+use crate::front::naga_run::Validated;
 use crate::front::rewrite;
-use crate::stage::StageKind;
+use crate::front::syntax::StageSyntax;
 
-/// N0108 at the first use of `gl_ClipDistance` or `gl_CullDistance` in the stage that feeds
-/// the rasterizer (a geometry stage, else the vertex stage): WebGPU has no user clip or
+/// N0108 at the first use of `gl_ClipDistance` or `gl_CullDistance` in `s`, the stage that
+/// feeds the rasterizer (a geometry stage, else the vertex stage): WebGPU has no user clip or
 /// cull distances without a feature, so both routes compute them and pass neither, and a
 /// program GL draws with `GL_CLIP_DISTANCEi` enabled is drawn unclipped.
-pub fn clip_distances_dropped(program: &CompiledProgram) -> Option<Diagnostic> {
-    let last = program.stage(StageKind::Geometry).or_else(|| program.stage(StageKind::Vertex))?;
-    let s = &last.syntax;
+pub fn clip_distances_dropped(s: &StageSyntax) -> Option<Diagnostic> {
     let u = s.uses.iter().find(|u| matches!(u.name.as_str(), "gl_ClipDistance" | "gl_CullDistance") && rewrite::names_builtin(s, u))?;
     Some(
         Diagnostic::new(Code::ClipDistancesDropped, format!("`{}` is computed, not passed on: WebGPU clips and culls by neither", u.name))
@@ -21,16 +19,13 @@ pub fn clip_distances_dropped(program: &CompiledProgram) -> Option<Diagnostic> {
     )
 }
 
-/// N0109 in a fragment stage that needs one of WebGPU's optional features: `gl_PrimitiveID`
+/// N0109 in fragment stage `s` when it needs one of WebGPU's optional features: `gl_PrimitiveID`
 /// read as the built-in (not the varying a folded geometry stage passes), or a
 /// second-source output (`layout(index = 1)`, dual-source blending). The WGSL enables the
 /// feature (`enable primitive_index;`), and it runs where the device has it.
-pub fn optional_features_needed(program: &CompiledProgram) -> Vec<Diagnostic> {
-    let Some(fragment) = program.stage(StageKind::Fragment) else { return Vec::new() };
-    let Some(validated) = fragment.naga.as_ref() else { return Vec::new() };
-    let s = &fragment.syntax;
+/// `folded`: the program has a geometry stage.
+pub fn optional_features_needed(s: &StageSyntax, validated: &Validated, folded: bool) -> Vec<Diagnostic> {
     let mut out = Vec::new();
-    let folded = program.stage(StageKind::Geometry).is_some();
     if !folded && validated.needs.iter().any(|n| n == "PRIMITIVE_INDEX") {
         let d = Diagnostic::new(Code::OptionalWebGpuFeature, "`gl_PrimitiveID` needs WebGPU's optional `primitive-index` feature");
         out.push(at_use(d, s, "gl_PrimitiveID"));
@@ -51,7 +46,7 @@ pub fn optional_features_needed(program: &CompiledProgram) -> Vec<Diagnostic> {
         .collect()
 }
 
-fn at_use(d: Diagnostic, s: &crate::front::syntax::StageSyntax, name: &str) -> Diagnostic {
+fn at_use(d: Diagnostic, s: &StageSyntax, name: &str) -> Diagnostic {
     match s.uses.iter().find(|u| u.name == name) {
         Some(u) => d.at(s.file, u.span.clone(), "read here"),
         None => d.in_file(s.file),

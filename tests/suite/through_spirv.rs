@@ -60,3 +60,36 @@ fn hazards_through_spirv_from_the_rewrite_point_at_the_glsl_line() {
         assert_eq!(&outcome.files.text(file)[span], line);
     }
 }
+
+/// std140 puts `at` at 32 (a struct is 16-aligned); WGSL's natural place is 28. The
+/// filler makes the WGSL offsets the IR's, member reads keep their members, and the
+/// struct a function copies the block's into is left alone.
+#[test]
+fn a_struct_after_a_vec3_in_a_uniform_block_is_padded_to_std140() {
+    let text = "#version 450\n\
+                struct Att { float c; float l; float e; };\n\
+                struct PL { vec3 a; vec3 b; Att at; };\n\
+                layout(std140, binding = 0) uniform B { PL p[2]; } u;\n\
+                layout(location = 0) out vec4 o;\n\
+                float e_of(PL l) { return l.at.e; }\n\
+                void main() { o = vec4(u.p[1].at.e + e_of(u.p[0]), u.p[0].b); }\n";
+    let validated = effectc::front::through_spirv::compile_rewritten(
+        &[(text, effectc::stage::StageKind::Fragment)],
+        &effectc::front::plan::Plan::default(),
+    )
+    .expect("through SPIR-V");
+    let v = &validated[0];
+    let padded = v.module.types.iter().find_map(|(_, t)| match &t.inner {
+        naga::TypeInner::Struct { members, .. } if members.iter().any(|m| m.name.as_deref() == Some("effectc_pad0")) => Some(members),
+        _ => None,
+    });
+    let members = padded.expect("a padded struct");
+    let at: Vec<(Option<&str>, u32)> = members.iter().map(|m| (m.name.as_deref(), m.offset)).collect();
+    assert_eq!(at, [(Some("a"), 0), (Some("b"), 16), (Some("effectc_pad0"), 28), (Some("at"), 32)]);
+    let wgsl = naga::back::wgsl::write_string(&v.module, &v.info, naga::back::wgsl::WriterFlags::empty()).unwrap();
+    let reparsed = naga::front::wgsl::parse_str(&wgsl).unwrap();
+    effectc::front::naga_run::validator().validate(&reparsed).unwrap_or_else(|e| panic!("{}\n{wgsl}", e.emit_to_string(&wgsl)));
+    assert!(wgsl.contains("effectc_pad0_: f32,\n    at: Att"), "{wgsl}");
+    // The read of `at.e` through the block still reads member 3 of the padded struct.
+    assert!(wgsl.contains(".at.e"), "{wgsl}");
+}

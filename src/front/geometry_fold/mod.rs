@@ -292,37 +292,7 @@ impl Part {
             }
         }
         part.inputs.sort_by_key(|(location, _, _, _)| *location);
-        let stage_word = if geometry.is_some() { "gs" } else { "vs" };
-        for u in &s.uses {
-            if let Some((private, _)) = accessed.get(&u.name).filter(|_| matches!(u.target, Referent::Global(_)) || u.name == "gl_in") {
-                if let Some(call) = corner_call(text, u) {
-                    edits.replace(u.span.clone(), format!("{private}_at"));
-                    edits.replace(call.0, "(int(");
-                    edits.replace(call.1, "))");
-                    continue;
-                }
-            }
-            match &u.target {
-                Referent::Global(i) if !is_shared(&s.globals[*i]) => edits.replace(u.span.clone(), format!("{prefix}{}", u.name)),
-                Referent::Unresolved => match u.name.as_str() {
-                    "gl_Position" | "gl_PointSize" => edits.replace(u.span.clone(), format!("effectc_{stage_word}_{}", u.name)),
-                    "gl_in" => edits.replace(u.span.clone(), "effectc_gl_in"),
-                    "gl_PrimitiveIDIn" | "gl_InvocationID" => edits.replace(u.span.clone(), format!("effectc_{}", &u.name[3..])),
-                    "gl_VertexID" | "gl_VertexIndex" => edits.replace(u.span.clone(), "effectc_VertexID"),
-                    "gl_InstanceID" | "gl_InstanceIndex" => edits.replace(u.span.clone(), "effectc_InstanceID"),
-                    "gl_Layer" | "gl_ViewportIndex" if geometry.is_some() => {
-                        part.selects.insert(u.name.clone());
-                        edits.replace(u.span.clone(), format!("effectc_gs_{}", u.name))
-                    }
-                    "gl_PrimitiveID" if geometry.is_some() => edits.replace(u.span.clone(), "effectc_gs_gl_PrimitiveID"),
-                    "gl_Layer" | "gl_ViewportIndex" | "gl_PrimitiveID" => {
-                        return Err(format!("`{}` in the vertex stage of a geometry program", u.name))
-                    }
-                    _ => {}
-                },
-                _ => {}
-            }
-        }
+        part.rename_uses(s, &accessed, geometry.is_some(), &mut edits)?;
         let user_functions: Vec<&str> = s.functions.iter().map(|f| f.name.as_str()).collect();
         for f in s.functions.iter().filter(|f| f.is_definition || f.name != "main") {
             let name_at = find_name(text, &f.span, &f.name).ok_or_else(|| format!("the definition of `{}`", f.name))?;
@@ -343,6 +313,49 @@ impl Part {
         }
         (part.body, part.map, _) = edits.apply(text);
         Ok(part)
+    }
+
+    /// Renames the stage's uses of its globals and of the built-ins the fold replaces;
+    /// geometry inputs in `accessed` read at a run-time corner go through their accessor.
+    fn rename_uses(
+        &mut self,
+        s: &StageSyntax,
+        accessed: &std::collections::BTreeMap<String, (String, String)>,
+        geometry: bool,
+        edits: &mut Edits,
+    ) -> Result<(), String> {
+        let stage_word = if geometry { "gs" } else { "vs" };
+        for u in &s.uses {
+            if let Some((private, _)) = accessed.get(&u.name).filter(|_| matches!(u.target, Referent::Global(_)) || u.name == "gl_in") {
+                if let Some(call) = corner_call(&s.text, u) {
+                    edits.replace(u.span.clone(), format!("{private}_at"));
+                    edits.replace(call.0, "(int(");
+                    edits.replace(call.1, "))");
+                    continue;
+                }
+            }
+            match &u.target {
+                Referent::Global(i) if !is_shared(&s.globals[*i]) => edits.replace(u.span.clone(), format!("{}{}", self.prefix, u.name)),
+                Referent::Unresolved => match u.name.as_str() {
+                    "gl_Position" | "gl_PointSize" => edits.replace(u.span.clone(), format!("effectc_{stage_word}_{}", u.name)),
+                    "gl_in" => edits.replace(u.span.clone(), "effectc_gl_in"),
+                    "gl_PrimitiveIDIn" | "gl_InvocationID" => edits.replace(u.span.clone(), format!("effectc_{}", &u.name[3..])),
+                    "gl_VertexID" | "gl_VertexIndex" => edits.replace(u.span.clone(), "effectc_VertexID"),
+                    "gl_InstanceID" | "gl_InstanceIndex" => edits.replace(u.span.clone(), "effectc_InstanceID"),
+                    "gl_Layer" | "gl_ViewportIndex" if geometry => {
+                        self.selects.insert(u.name.clone());
+                        edits.replace(u.span.clone(), format!("effectc_gs_{}", u.name))
+                    }
+                    "gl_PrimitiveID" if geometry => edits.replace(u.span.clone(), "effectc_gs_gl_PrimitiveID"),
+                    "gl_Layer" | "gl_ViewportIndex" | "gl_PrimitiveID" => {
+                        return Err(format!("`{}` in the vertex stage of a geometry program", u.name))
+                    }
+                    _ => {}
+                },
+                _ => {}
+            }
+        }
+        Ok(())
     }
 }
 
@@ -385,7 +398,7 @@ fn corner_call(text: &str, u: &syntax::Use) -> Option<(Range<usize>, Range<usize
     let (whole, index, literal) = u.index.clone()?;
     let closes = whole.end > index.end && text.get(whole.end - 1..whole.end) == Some("]");
     let opens = text.get(u.span.end..index.start).is_some_and(|t| t.trim() == "[");
-    (literal.is_none() && closes && opens).then(|| (u.span.end..index.start, index.end..whole.end))
+    (literal.is_none() && closes && opens).then_some((u.span.end..index.start, index.end..whole.end))
 }
 
 /// Uniforms, textures and samplers: shared by the stages, kept under their names.
