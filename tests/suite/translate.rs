@@ -162,6 +162,18 @@ void main() { normal = aNormal; debugPos = aPos; gl_Position = mvp * vec4(aPos, 
 const FRAG: &str = "#version 330 core\nin vec3 normal;\nin vec3 debugPos;\nuniform vec3 tint;\nout vec4 color;\n\
 void main() { color = vec4(normalize(normal) * 0.5 + 0.5, 1.0) * vec4(tint, 1.0); }\n";
 
+/// effectc with `args`, then `dir/out_name`, `dir/p.vert` and `dir/p.frag`.
+fn on_pair(dir: &Path, args: &[&str], out_name: &str) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(args)
+        .arg(dir.join(out_name))
+        .arg(dir.join("p.vert"))
+        .arg(dir.join("p.frag"))
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap()
+}
+
 #[test]
 fn unused_varyings_uniforms_and_functions_are_left_out_and_explained() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-prune");
@@ -169,14 +181,7 @@ fn unused_varyings_uniforms_and_functions_are_left_out_and_explained() {
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("p.vert"), VERT).unwrap();
     std::fs::write(dir.join("p.frag"), FRAG).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
-        .args(["translate", "--explain", "--to", "wgsl,reflect", "--out"])
-        .arg(dir.join("out"))
-        .arg(dir.join("p.vert"))
-        .arg(dir.join("p.frag"))
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
+    let out = on_pair(&dir, &["translate", "--explain", "--to", "wgsl,reflect", "--out"], "out");
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{stdout}");
     for expected in ["varying `debugPos`", "uniform `unusedScale`", "function `neverCalled`"] {
@@ -227,28 +232,14 @@ fn a_fragment_primitive_id_translates_with_the_optional_feature() {
         "#version 330 core\nout vec4 color;\nvoid main() { color = vec4(float(gl_PrimitiveID % 4) / 3.0, 0.0, 0.0, 1.0); }\n",
     )
     .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
-        .args(["translate", "--to", "wgsl,spv", "--out"])
-        .arg(dir.join("out"))
-        .arg(dir.join("p.vert"))
-        .arg(dir.join("p.frag"))
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
+    let out = on_pair(&dir, &["translate", "--to", "wgsl,spv", "--out"], "out");
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{stdout}");
     assert!(stdout.contains(Code::OptionalWebGpuFeature.as_str()) && stdout.contains("p.frag:3:"), "{stdout}");
     let wgsl = std::fs::read_to_string(dir.join("out/p.wgsl")).unwrap();
     assert!(wgsl.starts_with("enable primitive_index;") && wgsl.contains("@builtin(primitive_index)"), "{wgsl}");
     if crate::render::have_gpu() {
-        let frames = dir.join("frames");
-        let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
-            .args(["render", "--frames", "1", "--size", "16x16", "--out"])
-            .arg(&frames)
-            .arg(dir.join("p.vert"))
-            .arg(dir.join("p.frag"))
-            .output()
-            .unwrap();
+        let out = on_pair(&dir, &["render", "--frames", "1", "--size", "16x16", "--out"], "frames");
         assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
     }
 }
