@@ -30,7 +30,9 @@ pub fn pad_uniform_structs(module: &mut Module) {
         let Some(accesses) = struct_accesses(module, f) else { return };
         for (e, s, index) in accesses {
             if let Some((_, new)) = plans.get(&s) {
-                renumbered.push((owner, e, new[index as usize]));
+                // A member index past the struct: not naga's IR; leave the module alone.
+                let Some(&new) = new.get(index as usize) else { return };
+                renumbered.push((owner, e, new));
             }
         }
     }
