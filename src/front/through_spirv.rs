@@ -24,6 +24,7 @@ use crate::front::naga_run::{self, Validated};
 use crate::front::plan::{Plan, UNIFORM_BLOCK};
 use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
 use crate::front::reference::log::{self, LineTable};
+use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
 
 /// SPIR-V opcodes read here (SPIR-V 1.0 §3.32), from rspirv's grammar.
@@ -65,6 +66,7 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
     if dialect == Dialect::OpenGl {
         one_binding_per_resource(&mut modules);
     }
+    uniform_struct_padding::pad_uniform_structs(&mut modules);
     let immediates = uniform_buffers_for_push_constants(&mut modules);
     let mut out = Vec::new();
     for ((module, (file, kind)), immediates) in modules.into_iter().zip(ordered).zip(immediates) {
@@ -88,6 +90,7 @@ pub fn compile_rewritten(stages: &[(&str, StageKind)], plan: &Plan) -> Result<Ve
     for (words, (text, kind)) in binaries.into_iter().zip(stages) {
         modules.push(module_of(words, *kind, text, plan)?);
     }
+    uniform_struct_padding::pad_uniform_structs(&mut modules);
     let immediates = uniform_buffers_for_push_constants(&mut modules);
     modules.into_iter().zip(stages).zip(immediates).map(|((module, (_, kind)), immediates)| validate(module, immediates, *kind)).collect()
 }
@@ -134,7 +137,6 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     if let Some((construct, _)) = naga_run::std140_two_row_matrix(&module) {
         return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {construct}"));
     }
-    crate::front::uniform_struct_padding::pad_uniform_structs(&mut module);
     let table = LineTable::new(text);
     respan_module(&mut module, &|span| lines.user_span(span, &table, text));
     user_names(&mut module);

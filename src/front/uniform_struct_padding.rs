@@ -11,35 +11,56 @@ use std::collections::{HashMap, HashSet};
 use naga::{AddressSpace, Expression, Function, Handle, Module, Scalar, StructMember, Type, TypeInner};
 
 /// Pads every struct reachable from a uniform buffer whose offsets WGSL's natural layout
-/// does not reproduce. Leaves the module as it is when that cannot be done (a gap that is no
-/// whole number of 4-byte words, no `f32`-sized scalar type to fill with, a struct built with
-/// a constructor), where the WGSL writer's own checks name the problem.
-pub fn pad_uniform_structs(module: &mut Module) {
+/// does not reproduce, in each of a program's stage modules. Leaves the modules as they are
+/// when that cannot be done (a gap that is no whole number of 4-byte words or follows a
+/// struct or an array, no `f32`-sized scalar type to fill with, a struct built with a
+/// constructor), where the WGSL writer's own checks name the problem.
+///
+/// The stages of one program share their uniform buffers' types: either every module is
+/// padded or none is (one left unpadded would give the stages two types of one binding).
+pub fn pad_uniform_structs(modules: &mut [Module]) {
+    let prepared: Option<Vec<Padding>> = modules.iter().map(prepare).collect();
+    for (module, padding) in modules.iter_mut().zip(prepared.unwrap_or_default()) {
+        apply(module, padding);
+    }
+}
+
+/// What padding one module takes: the padded types and the renumbered member accesses.
+struct Padding {
+    plans: Plans,
+    /// (function, or entry point by position; expression; new member index)
+    renumbered: Vec<(Owner, Handle<Expression>, u32)>,
+}
+
+/// The module's padding (empty when it needs none); None when it cannot be padded.
+fn prepare(module: &Module) -> Option<Padding> {
     let mut layouter = naga::proc::Layouter::default();
-    if layouter.update(module.to_ctx()).is_err() {
-        return;
+    layouter.update(module.to_ctx()).ok()?;
+    let plans = plan(module, &layouter)?;
+    if plans.is_empty() {
+        return Some(Padding { plans, renumbered: Vec::new() });
     }
-    let Some(plans) = plan(module, &layouter) else { return };
-    if plans.is_empty() || constructed(module, &plans) {
-        return;
+    if constructed(module, &plans) {
+        return None;
     }
-    // (function, or entry point by position) → (expression, new member index)
-    let mut renumbered: Vec<(Owner, Handle<Expression>, u32)> = Vec::new();
+    let mut renumbered = Vec::new();
     let owners = module.functions.iter().map(|(h, f)| (Owner::Function(h), f));
     for (owner, f) in owners.chain(module.entry_points.iter().enumerate().map(|(i, e)| (Owner::EntryPoint(i), &e.function))) {
-        let Some(accesses) = struct_accesses(module, f) else { return };
-        for (e, s, index) in accesses {
+        for (e, s, index) in struct_accesses(module, f)? {
             if let Some((_, new)) = plans.get(&s) {
-                // A member index past the struct: not naga's IR; leave the module alone.
-                let Some(&new) = new.get(index as usize) else { return };
-                renumbered.push((owner, e, new));
+                // A member index past the struct is not naga's IR.
+                renumbered.push((owner, e, *new.get(index as usize)?));
             }
         }
     }
-    for (ty, (padded, _)) in &plans {
-        module.types.replace(*ty, padded.clone());
+    Some(Padding { plans, renumbered })
+}
+
+fn apply(module: &mut Module, padding: Padding) {
+    for (ty, (padded, _)) in padding.plans {
+        module.types.replace(ty, padded);
     }
-    for (owner, e, new) in renumbered {
+    for (owner, e, new) in padding.renumbered {
         let f = match owner {
             Owner::Function(h) => &mut module.functions[h],
             Owner::EntryPoint(i) => &mut module.entry_points[i].function,
@@ -137,6 +158,10 @@ fn padded(
         }
         Some(())
     };
+    // WGSL's uniform rules want a struct or array member followed by nothing closer than
+    // roundUp(16, its size): a filler cannot go there (std140 rounds a struct's size to 16,
+    // which naga's span of it does not say).
+    let mut after_aggregate = false;
     for m in members {
         let layout = layouter[m.ty];
         let natural = layout.alignment.round_up(cursor);
@@ -144,14 +169,21 @@ fn padded(
             return None;
         }
         if m.offset > natural {
+            if after_aggregate {
+                return None;
+            }
             fill(&mut out, cursor, m.offset)?;
         }
         index.push(out.len() as u32);
         out.push(m.clone());
         cursor = m.offset + layout.size;
         align = align.max(layout.alignment);
+        after_aggregate = matches!(module.types[m.ty].inner, TypeInner::Struct { .. } | TypeInner::Array { .. });
     }
     if align.round_up(cursor) < span {
+        if after_aggregate {
+            return None;
+        }
         fill(&mut out, cursor, span)?;
     }
     if fillers == 0 {
