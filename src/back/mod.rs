@@ -309,7 +309,7 @@ fn stage_modules(program: &CompiledProgram, options: TranslateOptions) -> Result
             v.needs
                 .iter()
                 // WebGPU's optional features (N0109): the WGSL enables them.
-                .filter(|n| !matches!(n.as_str(), "PRIMITIVE_INDEX" | "DUAL_SOURCE_BLENDING"))
+                .filter(|n| !crate::front::naga_run::webgpu_optional_capabilities().iter_names().any(|(name, _)| name == n.as_str()))
                 .filter(|n| !(wide.contains(naga::valid::Capabilities::FLOAT64) && n.as_str() == "FLOAT64"))
                 .filter(|n| !(wide.contains(naga::valid::Capabilities::SHADER_INT64) && n.as_str() == "SHADER_INT64"))
                 .cloned()

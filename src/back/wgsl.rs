@@ -106,29 +106,17 @@ fn strided_arrays(module: &Module) -> Option<String> {
     let mut layouter = naga::proc::Layouter::default();
     layouter.update(module.to_ctx()).ok()?;
     let mut found: Vec<String> = Vec::new();
-    let mut seen = std::collections::HashSet::new();
-    let mut todo: Vec<naga::Handle<naga::Type>> =
-        module.global_variables.iter().filter(|(_, g)| g.space == naga::AddressSpace::Uniform).map(|(_, g)| g.ty).collect();
-    while let Some(ty) = todo.pop() {
-        if !seen.insert(ty) {
-            continue;
-        }
-        match &module.types[ty].inner {
-            naga::TypeInner::Struct { members, .. } => {
-                for m in members {
-                    if let naga::TypeInner::Array { base, stride, .. } = module.types[m.ty].inner {
-                        let natural = layouter[base].to_stride();
-                        if natural != stride {
-                            let owner = module.types[ty].name.as_deref().unwrap_or("struct");
-                            let member = m.name.as_deref().unwrap_or("?");
-                            found.push(format!("`{owner}.{member}` ({stride} bytes apart, WGSL {natural})"));
-                        }
-                    }
-                    todo.push(m.ty);
+    for ty in crate::front::naga_run::uniform_structs(module, |_| true) {
+        let naga::TypeInner::Struct { members, .. } = &module.types[ty].inner else { continue };
+        for m in members {
+            if let naga::TypeInner::Array { base, stride, .. } = module.types[m.ty].inner {
+                let natural = layouter[base].to_stride();
+                if natural != stride {
+                    let owner = module.types[ty].name.as_deref().unwrap_or("struct");
+                    let member = m.name.as_deref().unwrap_or("?");
+                    found.push(format!("`{owner}.{member}` ({stride} bytes apart, WGSL {natural})"));
                 }
             }
-            naga::TypeInner::Array { base, .. } => todo.push(*base),
-            _ => {}
         }
     }
     (!found.is_empty()).then(|| found.join(", "))

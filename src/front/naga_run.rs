@@ -177,34 +177,54 @@ fn layout_limitation(module: &naga::Module, err: &naga::valid::ValidationError) 
     }
 }
 
-/// A two-row matrix (`mat2`, `mat3x2`, `mat4x2`) in one of the user's uniform blocks, named
-/// with the struct holding it, and that struct's span. std140 puts its columns 16 bytes
-/// apart, which naga's IR cannot say (its `mat2x2` columns are 8 bytes apart). naga's fronts
-/// refuse such a matrix as a struct member themselves, but naga's SPIR-V front takes an
-/// array of them (`mat2 m[2]`, std140 stride 32) as an array of its own 16-byte matrices:
-/// every target would then read the block's bytes wrongly. effectc's own block of loose
-/// uniforms is laid out by the IR itself and is not concerned.
-pub fn std140_two_row_matrix(module: &naga::Module) -> Option<(String, naga::Span)> {
-    let blocks = module.global_variables.iter().filter(|(_, g)| g.space == naga::AddressSpace::Uniform).map(|(_, g)| g.ty);
-    let mut todo: Vec<(naga::Handle<naga::Type>, naga::Handle<naga::Type>)> =
-        blocks.filter(|ty| module.types[*ty].name.as_deref() != Some(crate::front::plan::UNIFORM_BLOCK)).map(|ty| (ty, ty)).collect();
+/// Every struct type reachable from a uniform buffer whose own type `root` accepts (through
+/// struct members and array elements), each once.
+pub fn uniform_structs(module: &naga::Module, root: impl Fn(&naga::Type) -> bool) -> Vec<naga::Handle<naga::Type>> {
+    let mut todo: Vec<naga::Handle<naga::Type>> = module
+        .global_variables
+        .iter()
+        .filter(|(_, g)| g.space == naga::AddressSpace::Uniform && root(&module.types[g.ty]))
+        .map(|(_, g)| g.ty)
+        .collect();
     let mut seen = std::collections::HashSet::new();
-    while let Some((ty, owner)) = todo.pop() {
-        if !seen.insert((ty, owner)) {
+    let mut structs = Vec::new();
+    while let Some(ty) = todo.pop() {
+        if !seen.insert(ty) {
             continue;
         }
         match &module.types[ty].inner {
-            naga::TypeInner::Matrix { columns, rows: naga::VectorSize::Bi, .. } => {
-                let name = module.types[owner].name.as_deref().unwrap_or("a uniform block");
-                let construct = format!("`mat{}x2` in `{name}`, a std140 uniform block (naga issue gfx-rs/wgpu#4375)", *columns as u8);
-                return Some((construct, module.types.get_span(owner)));
+            naga::TypeInner::Struct { members, .. } => {
+                todo.extend(members.iter().map(|m| m.ty));
+                structs.push(ty);
             }
-            naga::TypeInner::Struct { members, .. } => todo.extend(members.iter().map(|m| (m.ty, ty))),
-            naga::TypeInner::Array { base, .. } => todo.push((*base, owner)),
+            naga::TypeInner::Array { base, .. } | naga::TypeInner::BindingArray { base, .. } => todo.push(*base),
             _ => {}
         }
     }
-    None
+    structs
+}
+
+/// A two-row matrix (`mat2`, `mat3x2`, `mat4x2`) in one of the user's uniform blocks, named
+/// with the struct holding it. std140 puts its columns 16 bytes apart, which naga's IR
+/// cannot say (its `mat2x2` columns are 8 bytes apart). naga's fronts refuse such a matrix
+/// as a struct member themselves, but naga's SPIR-V front takes an array of them (`mat2
+/// m[2]`, std140 stride 32) as an array of its own 16-byte matrices: every target would
+/// then read the block's bytes wrongly. effectc's own block of loose uniforms is laid out
+/// by the IR itself and is not concerned.
+pub fn std140_two_row_matrix(module: &naga::Module) -> Option<String> {
+    let user = |t: &naga::Type| t.name.as_deref() != Some(crate::front::plan::UNIFORM_BLOCK);
+    uniform_structs(module, user).into_iter().find_map(|owner| {
+        let naga::TypeInner::Struct { members, .. } = &module.types[owner].inner else { return None };
+        members.iter().find_map(|m| {
+            let mut ty = m.ty;
+            while let naga::TypeInner::Array { base, .. } = module.types[ty].inner {
+                ty = base;
+            }
+            let naga::TypeInner::Matrix { columns, rows: naga::VectorSize::Bi, .. } = module.types[ty].inner else { return None };
+            let name = module.types[owner].name.as_deref().unwrap_or("a uniform block");
+            Some(format!("`mat{}x2` in `{name}`, a std140 uniform block (naga issue gfx-rs/wgpu#4375)", columns as u8))
+        })
+    })
 }
 
 /// Indices into `s.swizzles` of the accesses naga's `errors` (E0150, at the user's spans)

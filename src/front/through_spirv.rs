@@ -134,7 +134,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
         Ok(Err(e)) => return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {e}")),
         Err(_) => return Err(format!("naga's SPIR-V front crashed on the {kind} stage")),
     };
-    if let Some((construct, _)) = naga_run::std140_two_row_matrix(&module) {
+    if let Some(construct) = naga_run::std140_two_row_matrix(&module) {
         return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {construct}"));
     }
     let table = LineTable::new(text);

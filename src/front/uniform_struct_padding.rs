@@ -6,9 +6,9 @@
 //! Such a struct gets `f32` filler members (`effectc_padN`, as the GLSL route's block has)
 //! in its gaps, so the natural layout is the IR's, and every member access is renumbered.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 
-use naga::{AddressSpace, Expression, Function, Handle, Module, Scalar, StructMember, Type, TypeInner};
+use naga::{Expression, Function, Handle, Module, Scalar, StructMember, Type, TypeInner};
 
 /// Pads every struct reachable from a uniform buffer whose offsets WGSL's natural layout
 /// does not reproduce, in each of a program's stage modules. Leaves the modules as they are
@@ -107,23 +107,11 @@ fn struct_accesses(module: &Module, f: &Function) -> Option<Vec<Access>> {
 /// For each struct to pad: its padded type and each old member's new index. None when some
 /// struct cannot be padded.
 fn plan(module: &Module, layouter: &naga::proc::Layouter) -> Option<Plans> {
-    let mut todo: Vec<Handle<Type>> =
-        module.global_variables.iter().filter(|(_, g)| g.space == AddressSpace::Uniform).map(|(_, g)| g.ty).collect();
-    let mut seen = HashSet::new();
     let mut plans = HashMap::new();
-    while let Some(ty) = todo.pop() {
-        if !seen.insert(ty) {
-            continue;
-        }
-        match &module.types[ty].inner {
-            TypeInner::Struct { members, span } => {
-                todo.extend(members.iter().map(|m| m.ty));
-                if let Some(padded) = padded(module, layouter, ty, members, *span)? {
-                    plans.insert(ty, padded);
-                }
-            }
-            TypeInner::Array { base, .. } | TypeInner::BindingArray { base, .. } => todo.push(*base),
-            _ => {}
+    for ty in crate::front::naga_run::uniform_structs(module, |_| true) {
+        let TypeInner::Struct { members, span } = &module.types[ty].inner else { continue };
+        if let Some(padded) = padded(module, layouter, ty, members, *span)? {
+            plans.insert(ty, padded);
         }
     }
     Some(plans)
