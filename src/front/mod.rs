@@ -24,7 +24,9 @@
 //!   errors with [`builtins`]; [`aggregate_varyings`]: the interpolation qualifiers naga's
 //!   GLSL front drops from struct and array varyings; [`through_spirv`]: glslang → SPIR-V →
 //!   naga, where naga's GLSL front cannot take a stage glslang accepts (as written, or from
-//!   the rewrite); [`program`]: all of it per program.
+//!   the rewrite), on the SPIR-V words as [`spirv_binary`] reads and edits them
+//!   ([`spirv_interface_blocks`]: blocks between stages as one variable per member);
+//!   [`program`]: all of it per program.
 
 pub mod aggregate_varyings;
 pub mod builtins;
@@ -49,6 +51,8 @@ pub mod program;
 pub mod reference;
 pub mod rewrite;
 pub mod source_text;
+pub mod spirv_binary;
+pub mod spirv_interface_blocks;
 pub mod statements;
 pub mod syntax;
 pub mod through_spirv;

@@ -12,11 +12,9 @@
 //! Push constants, which WebGPU lacks, become a uniform buffer (a read-only storage buffer
 //! when their layout breaks uniform alignment).
 
-use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use naga::{AddressSpace, Block, Module, ResourceBinding, Span, Statement, TypeInner};
-use rspirv::spirv::Op;
 
 use crate::config::VulkanVersion;
 use crate::diag::{FileId, Files};
@@ -24,24 +22,10 @@ use crate::front::naga_run::{self, Validated};
 use crate::front::plan::{Plan, UNIFORM_BLOCK};
 use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
 use crate::front::reference::log::{self, LineTable};
+use crate::front::spirv_binary::{readable_by_naga, split_combined_samplers, Lines};
+use crate::front::spirv_interface_blocks::split_interface_blocks;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
-
-/// SPIR-V opcodes read here (SPIR-V 1.0 §3.32), from rspirv's grammar.
-const OP_SOURCE_CONTINUED: u16 = Op::SourceContinued as u16;
-const OP_SOURCE: u16 = Op::Source as u16;
-const OP_STRING: u16 = Op::String as u16;
-const OP_LINE: u16 = Op::Line as u16;
-const OP_FUNCTION: u16 = Op::Function as u16;
-const OP_LABEL: u16 = Op::Label as u16;
-const OP_FUNCTION_END: u16 = Op::FunctionEnd as u16;
-const OP_TYPE_SAMPLED_IMAGE: u16 = Op::TypeSampledImage as u16;
-const OP_NO_LINE: u16 = Op::NoLine as u16;
-const OP_ENTRY_POINT: u16 = Op::EntryPoint as u16;
-const OP_EXECUTION_MODE: u16 = Op::ExecutionMode as u16;
-const OP_TYPE_FUNCTION: u16 = Op::TypeFunction as u16;
-/// Words in the SPIR-V header before the first instruction.
-const HEADER_WORDS: usize = 5;
 
 /// One stage through SPIR-V: its validated module, spans indexing `text` (the stage's text
 /// as glslang compiled it, includes inlined: offsets are those of the user's stage).
@@ -123,7 +107,9 @@ fn no_spirv(log: String) -> String {
 /// front (panics contained), every span moved to the line of `text` its `OpLine` names,
 /// names as the user wrote them.
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
-    let words = readable_by_naga(split_combined_samplers(words)?);
+    dump_spirv(&words, &format!("{kind}.glslang"));
+    let words = split_interface_blocks(readable_by_naga(split_combined_samplers(words)?));
+    dump_spirv(&words, &kind.to_string());
     let lines = Lines::of(&words);
     let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
     // Clip space as the GLSL wrote it, as the GLSL route leaves it: the back end maps
@@ -146,6 +132,15 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     unreachable_ends_return_a_value(&mut module);
     emit_only_what_needs_it(&mut module);
     Ok(module)
+}
+
+/// Debugging aid: with `EFFECTC_DUMP_SPIRV=DIR`, the SPIR-V glslang made of a stage
+/// (`<stage>.glslang.spv`) and the words naga's SPIR-V front reads (`<stage>.spv`).
+fn dump_spirv(words: &[u32], name: &str) {
+    if let Some(dir) = std::env::var_os("EFFECTC_DUMP_SPIRV") {
+        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+        let _ = std::fs::write(std::path::Path::new(&dir).join(format!("{name}.spv")), bytes);
+    }
 }
 
 /// naga's validation (with desktop GL's capabilities, as for the GLSL route); push
@@ -226,18 +221,6 @@ fn uniform_buffers_for_push_constants(modules: &mut [Module]) -> Vec<Vec<naga::H
         .collect()
 }
 
-/// Splits combined image samplers (absent from WGSL and naga) into a texture and a sampler
-/// at the next binding, with `spirv_combimgsampsplitter` (panics contained).
-fn split_combined_samplers(words: Vec<u32>) -> Result<Vec<u32>, String> {
-    if !instructions(&words).any(|(_, op, _)| op == OP_TYPE_SAMPLED_IMAGE) {
-        return Ok(words);
-    }
-    match catch_unwind(AssertUnwindSafe(|| spirv_combimgsampsplitter::combimgsampsplitter(&words))) {
-        Ok(Ok(split)) => Ok(split),
-        _ => Err("its combined image samplers could not be split into textures and samplers (arrays of samplers, or samplers passed in ways the splitter does not follow)".into()),
-    }
-}
-
 /// glslang names an anonymous block's variable (the loose uniforms' block, `gl_PerVertex`)
 /// with the empty string, which writers print as `unnamed`: the uniform block gets no name
 /// (the back end names it `uniforms`, as for the GLSL route), `gl_PerVertex` is
@@ -284,32 +267,6 @@ fn name_split_samplers(module: &mut Module, plan: &Plan) {
             g.name = Some(planned.unwrap_or_else(|| format!("{t}_sampler")));
         }
     }
-}
-
-/// `words` without the debug instructions naga's SPIR-V front does not read: `OpLine` and
-/// `OpNoLine` among the global declarations and in a function's header (before its first
-/// `OpLabel`), where glslang also puts them, and the stage's source text (`OpSource`'s
-/// text operand and `OpSourceContinued`).
-fn readable_by_naga(words: Vec<u32>) -> Vec<u32> {
-    let mut out = words[..HEADER_WORDS.min(words.len())].to_vec();
-    let mut in_body = false;
-    for (at, op, count) in instructions(&words) {
-        match op {
-            OP_FUNCTION | OP_FUNCTION_END => in_body = false,
-            OP_LABEL => in_body = true,
-            OP_LINE | OP_NO_LINE if !in_body => continue,
-            OP_SOURCE_CONTINUED => continue,
-            // OpSource language version [file] [text]: the text goes.
-            OP_SOURCE if count > 4 => {
-                out.push((4 << 16) | u32::from(OP_SOURCE));
-                out.extend_from_slice(&words[at + 1..at + 4]);
-                continue;
-            }
-            _ => {}
-        }
-        out.extend_from_slice(&words[at..(at + count.max(1)).min(words.len())]);
-    }
-    out
 }
 
 /// naga's SPIR-V front returns a stage's outputs as a struct with unnamed members: each
@@ -482,96 +439,6 @@ fn emits_in(block: &mut Block, expressions: &naga::Arena<naga::Expression>) {
     }
 }
 
-/// Each instruction of a SPIR-V binary: its first word's index, opcode and word count.
-fn instructions(words: &[u32]) -> impl Iterator<Item = (usize, u16, usize)> + '_ {
-    let mut i = HEADER_WORDS;
-    std::iter::from_fn(move || {
-        let w = *words.get(i)?;
-        let (count, op) = ((w >> 16) as usize, (w & 0xffff) as u16);
-        let at = i;
-        i += count.max(1);
-        Some((at, op, count))
-    })
-}
-
-/// The `OpLine` in force at each point of a SPIR-V binary: (byte offset where it starts to
-/// hold; the source string and line, or None after `OpNoLine` and at the end of a function).
-struct Lines {
-    changes: Vec<(usize, Option<(i64, i64)>)>,
-    /// (offset as naga counts it, bytes naga's count lags behind the binary from there).
-    lags: Vec<(usize, usize)>,
-}
-
-impl Lines {
-    fn of(words: &[u32]) -> Lines {
-        let mut strings: Vec<(u32, String)> = Vec::new();
-        let mut changes = Vec::new();
-        let mut lags = vec![(0, 0)];
-        let mut lag = 0;
-        for (at, op, count) in instructions(words) {
-            let operands = words.get(at + 1..at + count).unwrap_or(&[]);
-            // naga's SPIR-V front reads some operand lists past its byte count (the entry
-            // point's interface, execution mode operands, a function type's parameters):
-            // its spans lag behind the binary by those words from there on.
-            let unread = match op {
-                OP_ENTRY_POINT => {
-                    count.saturating_sub(3 + operands.iter().skip(2).position(|w| w.to_le_bytes().contains(&0)).map_or(0, |i| i + 1))
-                }
-                OP_EXECUTION_MODE | OP_TYPE_FUNCTION => count.saturating_sub(3),
-                _ => 0,
-            };
-            if unread > 0 {
-                lag += unread * 4;
-                lags.push(((at + count) * 4 - lag, lag));
-            }
-            match op {
-                OP_STRING if !operands.is_empty() => {
-                    let bytes: Vec<u8> = operands[1..].iter().flat_map(|w| w.to_le_bytes()).take_while(|b| *b != 0).collect();
-                    strings.push((operands[0], String::from_utf8_lossy(&bytes).into_owned()));
-                }
-                OP_LINE if operands.len() >= 3 => {
-                    // The first string is the stage's own text (string 0); another is a
-                    // source string a `#line N "name"` or `#line N M` directive named.
-                    let string = match strings.iter().position(|(id, _)| *id == operands[0]) {
-                        Some(0) | None => 0,
-                        Some(i) => strings[i].1.parse::<i64>().unwrap_or_else(|_| log::string_id(&strings[i].1)),
-                    };
-                    changes.push((at * 4, Some((string, i64::from(operands[1])))));
-                }
-                OP_NO_LINE | OP_FUNCTION_END => changes.push((at * 4, None)),
-                _ => {}
-            }
-        }
-        Lines { changes, lags }
-    }
-
-    /// The binary offset of what naga counts as offset `naga`.
-    fn in_binary(&self, naga: usize) -> usize {
-        let i = self.lags.partition_point(|(at, _)| *at <= naga);
-        naga + i.checked_sub(1).map_or(0, |i| self.lags[i].1)
-    }
-
-    /// The user's line (trimmed) for a span naga gave in SPIR-V bytes.
-    fn user_span(&self, span: Span, table: &LineTable, text: &str) -> Span {
-        let Some(range) = span.to_range() else { return Span::UNDEFINED };
-        let start = self.in_binary(range.start);
-        let i = self.changes.partition_point(|(at, _)| *at <= start);
-        let Some((string, line)) = i.checked_sub(1).and_then(|i| self.changes[i].1) else { return Span::UNDEFINED };
-        match table.line_range(string, line) {
-            Some(r) => Span::from(trimmed(text, r)),
-            None => Span::UNDEFINED,
-        }
-    }
-}
-
-/// A line's range without its indentation and line break.
-fn trimmed(text: &str, line: Range<usize>) -> Range<usize> {
-    let body = &text[line.clone()];
-    let start = line.start + (body.len() - body.trim_start().len());
-    let end = line.start + body.trim_end().len();
-    start..end.max(start)
-}
-
 /// Every span of `module` through `f` (naga keeps spans in its arenas and blocks).
 fn respan_module(module: &mut Module, f: &dyn Fn(Span) -> Span) {
     respan_arena(&mut module.global_variables, f);
@@ -609,27 +476,6 @@ mod tests {
     use super::*;
 
     #[test]
-    fn instructions_walk_the_binary_after_the_header() {
-        // header, OpNop (1 word), OpLine %1 7 3 (4 words), OpFunctionEnd (1 word)
-        let words = [0x0723_0203, 0x0001_0000, 0, 10, 0, 0x0001_0000, (4 << 16) | 8, 1, 7, 3, (1 << 16) | 56];
-        let ops: Vec<(usize, u16)> = instructions(&words).map(|(at, op, _)| (at, op)).collect();
-        assert_eq!(ops, [(5, 0), (6, OP_LINE), (10, OP_FUNCTION_END)]);
-        let lines = Lines::of(&words);
-        assert_eq!(lines.changes, [(24, Some((0, 7))), (40, None)]);
-    }
-
-    #[test]
-    fn spans_after_an_entry_point_interface_are_moved_by_what_naga_does_not_count() {
-        // header, OpEntryPoint Fragment %4 "main" %5 %6 (7 words), OpLine %1 7 3, OpFunctionEnd
-        let main = u32::from_le_bytes(*b"main");
-        let words = [0x0723_0203, 0x0001_0000, 0, 10, 0, (7 << 16) | 15, 4, 4, main, 0, 5, 6, (4 << 16) | 8, 1, 7, 3, (1 << 16) | 56];
-        let lines = Lines::of(&words);
-        assert_eq!(lines.changes[0], (48, Some((0, 7))));
-        // naga reads the two interface ids without counting them: it puts OpLine at 40.
-        assert_eq!((lines.in_binary(20), lines.in_binary(40)), (20, 48));
-    }
-
-    #[test]
     fn the_rewrite_is_read_as_vulkan_glsl_with_its_lines_kept() {
         let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\n#line 40\nvoid main() {}\n";
         let vulkan = as_vulkan_glsl(text);
@@ -653,6 +499,51 @@ mod tests {
         assert!(lines.contains(&"for (int i = 0; i < 2; i++) {"), "{lines:?}");
     }
 
+    /// glslang writes `OpUndef` for what a function returns when its end is reachable; the
+    /// sampler splitter used to delete it with the instructions it blanks out, and naga
+    /// then met an undefined id.
+    #[test]
+    fn a_function_that_can_fall_off_its_end_keeps_its_undefined_value_beside_a_sampler() {
+        let text = "#version 450\nlayout(binding = 0) uniform sampler2D tex;\nlayout(location = 0) in vec2 uv;\n\
+                    layout(location = 0) out vec4 c;\nvec4 pick(float x) {\n    if (x < 0.5) return vec4(1.0);\n    \
+                    else if (x < 2.0) return texture(tex, uv);\n}\nvoid main() { c = pick(uv.x); }\n";
+        compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    }
+
+    /// An interface block's members are varyings at GL's locations: the block's, counted on
+    /// (a `vec4` takes one, a `mat2` two), a member's own and what follows it, with the
+    /// block's and the member's interpolation, named as the members.
+    #[test]
+    fn interface_blocks_become_one_varying_per_member() {
+        let block = "layout(location = 2) BLOCK {\n    vec4 a;\n    flat ivec2 b;\n    layout(location = 7) vec2 c;\n    vec3 d;\n} s;\n";
+        let vertex = format!(
+            "#version 450\n{}void main() {{ s.a = vec4(1.0); s.b = ivec2(2); s.c = vec2(3.0); s.d = vec3(4.0); gl_Position = s.a; }}\n",
+            block.replace("BLOCK", "out Block")
+        );
+        let fragment = format!(
+            "#version 450\n{}layout(location = 0) out vec4 o;\nvoid main() {{ o = s.a + vec4(s.b, s.c) + s.d.xyzx; }}\n",
+            block.replace("BLOCK", "in Block")
+        );
+        let stages = [(vertex.as_str(), StageKind::Vertex), (fragment.as_str(), StageKind::Fragment)];
+        let validated = compile_rewritten(&stages, &Plan::default()).expect("through SPIR-V");
+        let location = |b: &Option<naga::Binding>| match b {
+            Some(naga::Binding::Location { location, interpolation, .. }) => Some((*location, *interpolation)),
+            _ => None,
+        };
+        let (flat, perspective) = (Some(naga::Interpolation::Flat), Some(naga::Interpolation::Perspective));
+        let expected = [(2, perspective), (3, flat), (7, perspective), (8, perspective)];
+        let vs = &validated[0].module;
+        let result = vs.entry_points[0].function.result.as_ref().expect("outputs");
+        let TypeInner::Struct { members, .. } = &vs.types[result.ty].inner else { panic!("a struct of outputs") };
+        let outputs: Vec<_> = members.iter().filter_map(|m| location(&m.binding)).collect();
+        assert_eq!(outputs, expected);
+        let fs = &validated[1].module.entry_points[0].function;
+        let inputs: Vec<_> = fs.arguments.iter().filter_map(|a| Some((a.name.clone()?, location(&a.binding)?))).collect();
+        let names: Vec<&str> = inputs.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["a", "b", "c", "d"]);
+        assert_eq!(inputs.iter().map(|(_, l)| *l).collect::<Vec<_>>(), expected);
+    }
+
     /// std140 puts a `mat2` array's matrices 32 bytes apart and their columns 16; naga's IR
     /// has 8-byte columns, so reading it would move every second column (silently wrong
     /// SPIR-V before). A `vec4` array and a `mat4` array are read as they are.
@@ -669,16 +560,5 @@ mod tests {
         assert!(error.contains("`mat2x2` in `Block`, a std140 uniform block"), "{error}");
         let mat4 = block("vec4 x; mat4 m[2];");
         compile_rewritten(&[(&mat4, StageKind::Fragment)], &Plan::default()).expect("mat4 arrays are read");
-    }
-
-    #[test]
-    fn a_span_takes_the_line_in_force() {
-        let text = "#version 450\nvoid main() {\n    float x = 1.0;\n}\n";
-        let table = LineTable::new(text);
-        let lines = Lines { changes: vec![(24, Some((0, 3))), (40, None)], lags: vec![(0, 0)] };
-        let at = |r: Range<usize>| lines.user_span(Span::from(r), &table, text).to_range();
-        assert_eq!(at(28..32).map(|r| &text[r]), Some("float x = 1.0;"));
-        assert_eq!(at(8..12), None, "before any OpLine");
-        assert_eq!(at(44..48), None, "after the function ends");
     }
 }
