@@ -150,7 +150,10 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
 }
 
 /// For a parse error on a struct's name used as a variable at `at`, the text with that
-/// name renamed (same length) from `at` to the end of the enclosing `{ … }` block.
+/// name renamed (same length) from `at` to the end of the enclosing `{ … }` block. One
+/// name is renamed to one new name however many blocks hide it; a struct member named so
+/// (`struct camera { ray ray; }`) is renamed with every field selection of that name
+/// (`cam.ray`), which no type name can be.
 fn rename_struct_hiding_local(text: &str, msg: &str, at: usize, renames: &mut Renames) -> Option<String> {
     let name = msg.strip_prefix("unexpected type name `")?.split('`').next()?;
     if !text.get(at..)?.starts_with(name) || name.len() < 2 {
@@ -163,40 +166,62 @@ fn rename_struct_hiding_local(text: &str, msg: &str, at: usize, renames: &mut Re
     if !declared_struct {
         return None;
     }
-    // The local's scope: to the brace that closes the block it is declared in.
+    // The local's scope: from the brace that opens the block it is declared in to the one
+    // that closes it.
     let bytes = text.as_bytes();
-    let mut depth = 0i32;
-    let mut end = text.len();
+    let (mut depth, mut end) = (0i32, text.len());
     for (i, &b) in bytes.iter().enumerate().skip(at) {
         match b {
             b'{' => depth += 1,
-            b'}' => {
-                depth -= 1;
-                if depth < 0 {
-                    end = i;
-                    break;
-                }
+            b'}' if depth == 0 => {
+                end = i;
+                break;
             }
+            b'}' => depth -= 1,
             _ => {}
         }
     }
-    let new = (0..100)
-        .map(|k| format!("{}{}", &name[..name.len() - 1], (b'a' + (k % 26) as u8) as char))
-        .find(|c| c != name && !text.contains(c.as_str()))?;
+    let (mut depth, mut open) = (0i32, None);
+    for i in (0..at).rev() {
+        match bytes[i] {
+            b'}' => depth += 1,
+            b'{' if depth == 0 => {
+                open = Some(i);
+                break;
+            }
+            b'{' => depth -= 1,
+            _ => {}
+        }
+    }
+    let member = open.is_some_and(|o| opens_struct_body(&text[..o]));
+    let known = renames.to_original.iter().find(|(_, original)| original.as_str() == name).map(|(new, _)| new.clone());
+    let new = known.or_else(|| {
+        (0..100)
+            .map(|k| format!("{}{}", &name[..name.len() - 1], (b'a' + (k % 26) as u8) as char))
+            .find(|c| c != name && !text.contains(c.as_str()))
+    })?;
     let mut out = text.as_bytes().to_vec();
-    let mut i = at;
-    while let Some(off) = text[i..end].find(name) {
+    let mut i = 0;
+    while let Some(off) = text[i..].find(name) {
         let s = i + off;
         let e = s + name.len();
-        let before_ok = s == 0 || !is_ident(bytes[s - 1]);
-        let after_ok = e >= bytes.len() || !is_ident(bytes[e]);
-        if before_ok && after_ok {
+        i = e;
+        let whole = (s == 0 || !is_ident(bytes[s - 1])) && (e >= bytes.len() || !is_ident(bytes[e]));
+        let selected = text[..s].trim_end().ends_with('.');
+        if whole && ((at <= s && s < end) || (member && selected)) {
             out[s..e].copy_from_slice(new.as_bytes());
         }
-        i = e;
     }
     renames.to_original.insert(new, name.to_string());
     String::from_utf8(out).ok()
+}
+
+/// Whether `before` (the text up to a `{`) ends with `struct` and an optional name: the
+/// brace opens a struct's member list.
+fn opens_struct_body(before: &str) -> bool {
+    let head = before.trim_end();
+    let head = head.trim_end_matches(|c: char| c.is_ascii_alphanumeric() || c == '_').trim_end();
+    head.ends_with("struct") && !head[..head.len() - 6].ends_with(|c: char| c.is_ascii_alphanumeric() || c == '_')
 }
 
 /// glsl-lang lists every token it would accept; keep the message readable.
@@ -279,6 +304,24 @@ fn size_globals_by_initializer(syntax: &mut StageSyntax) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A member named like a struct (`ray ray;`) and a local hiding the struct take one new
+    /// name, in the member list, in every field selection and in the local's block; the
+    /// struct itself keeps its name.
+    #[test]
+    fn a_struct_s_name_on_a_member_and_a_local_is_renamed_alike() {
+        let src = "#version 130\nstruct ray { vec3 o; };\nstruct camera { vec3 p; ray ray; };\ncamera cam;\nout vec4 c;\n\
+                   void main() {\n    cam.ray.o = vec3(1.0);\n    ray ray = cam. ray;\n    c = vec4(ray.o, 1.0);\n}\n";
+        let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::Auto).map_err(|d| d[0].message.clone()).expect("parses");
+        let new = s.renames.to_original.iter().find(|(_, o)| o.as_str() == "ray").map(|(n, _)| n.clone()).expect("renamed");
+        assert_eq!(s.renames.to_original.len(), 1, "{:?}", s.renames.to_original);
+        let expected = src
+            .replace("ray ray;", &format!("ray {new};"))
+            .replace("cam.ray.o", &format!("cam.{new}.o"))
+            .replace("ray ray = cam. ray", &format!("ray {new} = cam. {new}"))
+            .replace("ray.o, 1.0", &format!("{new}.o, 1.0"));
+        assert_eq!(s.text, expected);
+    }
 
     #[test]
     fn fp64_types_by_extension_are_read_below_400() {
