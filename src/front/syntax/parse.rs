@@ -258,19 +258,35 @@ fn compiled_include(text: &str) -> Option<Range<usize>> {
 }
 
 /// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
-/// constants, subpass inputs, separate texture and sampler uniforms)?
+/// constants, specialization constants, subpass inputs, separate texture and sampler
+/// uniforms, `gl_VertexIndex`/`gl_InstanceIndex`)? Comments do not count.
 pub(crate) fn vulkan_source(text: &str) -> bool {
-    let squeezed: String = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    // Comments say anything ("a lookup with the uniform sampler"): only code counts.
+    let code = crate::front::version::blank_comments(text);
+    let code = String::from_utf8_lossy(&code);
+    let squeezed: String = code.split_whitespace().collect::<Vec<_>>().join(" ");
+    let words: Vec<&str> = squeezed.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).filter(|w| !w.is_empty()).collect();
+    let separate_texture = |w: &str| {
+        let t = w.trim_start_matches(['i', 'u']);
+        t.strip_prefix("texture").is_some_and(|d| {
+            let d = d.strip_suffix("Array").unwrap_or(d);
+            matches!(d, "1D" | "2D" | "3D" | "Cube" | "2DRect" | "2DMS" | "Buffer")
+        })
+    };
+    let uniform_of = |pred: &dyn Fn(&str) -> bool| words.windows(2).any(|w| w[0] == "uniform" && pred(w[1]));
     squeezed.contains("push_constant")
-        || squeezed.contains("subpassInput")
         || squeezed.contains("input_attachment_index")
         || squeezed.contains("GL_KHR_vulkan_glsl")
-        || squeezed.contains("uniform sampler ")
-        || squeezed.contains("uniform samplerShadow ")
-        || ["texture2D", "texture3D", "textureCube", "texture2DArray"].iter().any(|t| squeezed.contains(&format!("uniform {t} ")))
+        || words
+            .iter()
+            .any(|w| matches!(*w, "gl_VertexIndex" | "gl_InstanceIndex") || w.trim_start_matches(['i', 'u']).starts_with("subpassInput"))
+        || uniform_of(&|w| matches!(w, "sampler" | "samplerShadow") || separate_texture(w))
         || squeezed.split("layout").skip(1).any(|l| {
             let inside = l.trim_start().strip_prefix('(').and_then(|r| r.split(')').next()).unwrap_or("");
-            inside.split(',').any(|item| item.trim().starts_with("set"))
+            inside.split(',').any(|item| {
+                let key = item.trim().split(['=', ' ']).next().unwrap_or("");
+                matches!(key, "set" | "constant_id")
+            })
         })
 }
 
@@ -304,6 +320,25 @@ fn size_globals_by_initializer(syntax: &mut StageSyntax) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Vulkan GLSL shows itself in code, not in comments: a GLSL 1.10 stage whose comment
+    /// speaks of "the uniform sampler" is OpenGL GLSL (it was compiled as Vulkan GLSL and
+    /// refused: "ES shaders for SPIR-V require version 310").
+    #[test]
+    fn vulkan_is_told_from_code_not_comments() {
+        let gl = "uniform sampler2D t;\n// a lookup with the uniform sampler\nvec4 f() { return texture2D(t, vec2(0.0)); }\n";
+        assert!(!vulkan_source(gl));
+        let gl_block = "/* layout(set = 0) uniform sampler s; */ void main() {}\n";
+        assert!(!vulkan_source(gl_block));
+        assert!(vulkan_source("layout(set = 0, binding = 1) uniform sampler s;\n"));
+        assert!(vulkan_source("layout(push_constant) uniform P { vec4 c; } p;\n"));
+        // What Vulkan GLSL may hold without descriptor sets: the vertex and instance
+        // index, specialization constants, separate integer and multisampled textures.
+        assert!(vulkan_source("void main() { gl_Position = vec4(float(gl_VertexIndex)); }\n"));
+        assert!(vulkan_source("layout(constant_id = 0) const int N = 4;\n"));
+        assert!(vulkan_source("layout(binding = 1) uniform utexture2DMS t;\n"));
+        assert!(!vulkan_source("uniform sampler2DMS t; int settings; // gl_VertexIndex\n"));
+    }
 
     /// A member named like a struct (`ray ray;`) and a local hiding the struct take one new
     /// name, in the member list, in every field selection and in the local's block; the
