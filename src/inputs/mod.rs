@@ -52,6 +52,8 @@ pub enum Formed {
     Stem,
     /// A fragment stage with the one vertex stage of its folder (note N0001).
     FolderVertex,
+    /// The one program of a folder with the folder's one geometry stage (note N0001).
+    FolderGeometry,
     /// One file holding both stages behind `VERTEX`/`FRAGMENT` macros.
     TwoStages,
     /// A `[[program]]` of `effectc.toml`.
@@ -68,6 +70,7 @@ impl Formed {
             Formed::Named => "named together on the command line",
             Formed::Stem => "one folder and one stem",
             Formed::FolderVertex => "a fragment stage with the one vertex stage of its folder",
+            Formed::FolderGeometry => "the one program of its folder with the folder's one geometry stage",
             Formed::TwoStages => "one file holding both stages, read with each stage's macro defined",
             Formed::Declared => "declared by a [[program]] in effectc.toml",
             Formed::HostCode => "named together by the host code (one call or initializer, or consecutive statements)",
@@ -348,6 +351,7 @@ fn collect_dir(dir: &Path, selection: &Selection, declared: &BTreeSet<PathBuf>) 
     let mut groups = group_by_stem(stage_files);
     diags.extend(host_code::pair_as_named(&mut groups, &hosts));
     diags.extend(pair_with_the_folders_vertex_stage(&mut groups));
+    diags.extend(join_the_folders_geometry_stage(&mut groups));
     programs.extend(groups);
     programs.extend(two_stage);
     (programs, diags)
@@ -457,6 +461,45 @@ fn pair_with_the_folders_vertex_stage(groups: &mut Vec<ProgramInput>) -> Vec<Dia
     }
     // A vertex (or geometry) stage now checked with its fragment stages is no program of its own.
     groups.retain(|g| !matches!(g, ProgramInput::Stages { files, .. } if files.len() == 1 && paired_vertex.contains(&files[0].0)));
+    notes
+}
+
+/// A folder's one geometry stage that stands alone joins the folder's one program of a
+/// vertex and a fragment stage without a geometry stage (`scene.vert` + `scene.frag` and
+/// `multiview.geom`, as the host code links them): alone it is no program, and that program
+/// is the only one it can belong to. With two such programs in the folder it stays alone
+/// (N0002 says how to pair it). A note (N0001) names the joining.
+fn join_the_folders_geometry_stage(groups: &mut Vec<ProgramInput>) -> Vec<Diagnostic> {
+    let dir_of = |path: &Path| path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let mut lone: BTreeMap<PathBuf, Vec<PathBuf>> = BTreeMap::new();
+    let mut joinable: BTreeMap<PathBuf, Vec<usize>> = BTreeMap::new();
+    for (i, g) in groups.iter().enumerate() {
+        let ProgramInput::Stages { files, .. } = g else { continue };
+        let kinds: BTreeSet<StageKind> = files.iter().map(|(_, k)| *k).collect();
+        let dirs: BTreeSet<PathBuf> = files.iter().map(|(p, _)| dir_of(p)).collect();
+        let (Some(dir), 1) = (dirs.first().cloned(), dirs.len()) else { continue };
+        if let [(path, StageKind::Geometry)] = files.as_slice() {
+            lone.entry(dir).or_default().push(path.clone());
+        } else if kinds == BTreeSet::from([StageKind::Vertex, StageKind::Fragment]) {
+            joinable.entry(dir).or_default().push(i);
+        }
+    }
+    let mut notes = Vec::new();
+    let mut joined: BTreeSet<PathBuf> = BTreeSet::new();
+    for (dir, geometry) in &lone {
+        let ([geometry], Some([program])) = (geometry.as_slice(), joinable.get(dir).map(Vec::as_slice)) else { continue };
+        let ProgramInput::Stages { files, formed, .. } = &mut groups[*program] else { continue };
+        let names: Vec<String> = files.iter().map(|(p, _)| format!("`{}`", p.display())).collect();
+        notes.push(Diagnostic::new(
+            Code::PairedInFolder,
+            format!("`{}` joins {}, the one program of its folder", geometry.display(), names.join(" and ")),
+        ));
+        files.push((geometry.clone(), StageKind::Geometry));
+        files.sort_by_key(|(_, k)| *k);
+        *formed = Formed::FolderGeometry;
+        joined.insert(geometry.clone());
+    }
+    groups.retain(|g| !matches!(g, ProgramInput::Stages { files, .. } if files.len() == 1 && joined.contains(&files[0].0)));
     notes
 }
 

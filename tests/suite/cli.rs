@@ -289,6 +289,41 @@ fn folders_form_the_programs_their_layout_means() {
 }
 
 #[test]
+fn a_folders_one_geometry_stage_joins_its_one_program() {
+    // `scene.vert` + `scene.frag` and `multiview.geom` (Sascha Willems' viewport-array sample):
+    // the host links the three, and the fragment stage reads what only the geometry stage
+    // writes. With a second program in the folder the geometry stage stays alone.
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("lone-geometry");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let vert = "#version 450\nlayout(location = 0) in vec3 pos;\nlayout(location = 0) out vec3 n;\n\
+                void main() { n = pos; gl_Position = vec4(pos, 1.0); }\n";
+    let geom = "#version 450\nlayout(triangles) in;\nlayout(triangle_strip, max_vertices = 3) out;\n\
+                layout(location = 0) in vec3 n[];\nlayout(location = 0) out vec3 outN;\nlayout(location = 1) out vec3 view;\n\
+                void main() { for (int i = 0; i < 3; i++) { outN = n[i]; view = -gl_in[i].gl_Position.xyz; \
+                gl_Position = gl_in[i].gl_Position; EmitVertex(); } EndPrimitive(); }\n";
+    let frag = "#version 450\nlayout(location = 0) in vec3 outN;\nlayout(location = 1) in vec3 view;\n\
+                layout(location = 0) out vec4 c;\nvoid main() { c = vec4(outN * dot(outN, view), 1.0); }\n";
+    std::fs::write(dir.join("scene.vert"), vert).unwrap();
+    std::fs::write(dir.join("multiview.geom"), geom).unwrap();
+    std::fs::write(dir.join("scene.frag"), frag).unwrap();
+    let out = effectc(&["check", "--color", "never", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("N0001") && text.contains("multiview.geom` joins") && text.contains("checked 1 program"), "{text}");
+    std::fs::write(dir.join("other.vert"), vert).unwrap();
+    std::fs::write(
+        dir.join("other.frag"),
+        "#version 450\nlayout(location = 0) in vec3 n;\nlayout(location = 0) out vec4 c;\n\
+                                            void main() { c = vec4(n, 1.0); }\n",
+    )
+    .unwrap();
+    let out = effectc(&["check", "--color", "never", dir.to_str().unwrap()]);
+    let text = stdout(&out);
+    assert!(text.contains("N0002") && text.contains("multiview.geom") && !text.contains("` joins `"), "{text}");
+}
+
+#[test]
 fn doubles_are_kept_for_the_targets_that_have_them() {
     // `dvec4`/`double` (GLSL 4.00): WGSL, MSL and GLSL ES have no 64-bit floats, so translating
     // to one of them takes the doubles as floats (W0131 at the first, naming the targets that
