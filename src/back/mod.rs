@@ -380,7 +380,7 @@ fn capability_help(needs: &[String]) -> String {
             "MULTIVIEW" => "`gl_ViewIndex` (multiview)",
             "EARLY_DEPTH_TEST" => "`layout(early_fragment_tests)` / depth layout qualifiers",
             "SHADER_INT64" => "64-bit integers",
-            "SHADER_FLOAT16" => "16-bit floats",
+            "SHADER_FLOAT16" => "16-bit floats (`float16_t`, `f16vec*`; WebGPU feature `shader-f16`)",
             "SHADER_INT16" => "16-bit integers",
             "DRAW_INDEX" => "`gl_DrawID`",
             _ => "arrays of textures, samplers or buffers (binding arrays)",

@@ -46,10 +46,10 @@ pub fn validator() -> naga::valid::Validator {
 }
 
 /// WebGPU's optional features a translation may use: the output enables them (`enable
-/// primitive_index;`, `enable dual_source_blending;`) and the front says so (N0109);
-/// `render` asks the device for them.
+/// primitive_index;`, `enable dual_source_blending;`, `enable f16;`) and the front says so
+/// (N0109); `render` asks the device for them.
 pub fn webgpu_optional_capabilities() -> Capabilities {
-    Capabilities::PRIMITIVE_INDEX | Capabilities::DUAL_SOURCE_BLENDING
+    Capabilities::PRIMITIVE_INDEX | Capabilities::DUAL_SOURCE_BLENDING | Capabilities::SHADER_FLOAT16
 }
 
 /// What every WebGPU implementation has: naga's defaults plus the half-float packing

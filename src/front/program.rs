@@ -168,6 +168,9 @@ pub fn compile(
         if let Some((s, v)) = p.stage(StageKind::Fragment).and_then(|f| Some((&f.syntax, f.naga.as_ref()?))) {
             diags.extend(webgpu_features::optional_features_needed(s, v, folded));
         }
+        for stage in &p.stages {
+            diags.extend(stage.naga.as_ref().and_then(|v| webgpu_features::float16_needed(&stage.syntax, v)));
+        }
     }
     program
 }

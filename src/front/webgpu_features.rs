@@ -46,6 +46,21 @@ pub fn optional_features_needed(s: &StageSyntax, validated: &Validated, folded: 
         .collect()
 }
 
+/// N0109 in stage `s` when it computes with 16-bit floats (`float16_t`, `f16vec4`,
+/// GL_EXT_shader_explicit_arithmetic_types): WGSL has them with the optional `shader-f16`
+/// feature, which the translation enables (`enable f16;`). At the first such type.
+pub fn float16_needed(s: &StageSyntax, validated: &Validated) -> Option<Diagnostic> {
+    if !validated.needs.iter().any(|n| n == "SHADER_FLOAT16") {
+        return None;
+    }
+    let d = Diagnostic::new(Code::OptionalWebGpuFeature, "16-bit floats need WebGPU's optional `shader-f16` feature")
+        .with_note("the WGSL enables the feature (`enable f16;`); a device without it refuses the pipeline");
+    Some(match &s.unsupported {
+        Some((what, span)) if what.contains("16") => d.at(s.file, span.clone(), "a 16-bit float type"),
+        _ => d.in_file(s.file),
+    })
+}
+
 fn at_use(d: Diagnostic, s: &StageSyntax, name: &str) -> Diagnostic {
     match s.uses.iter().find(|u| u.name == name) {
         Some(u) => d.at(s.file, u.span.clone(), "read here"),

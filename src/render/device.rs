@@ -75,11 +75,13 @@ impl Gpu {
         // target under --float) through filtering samplers, as GL does.
         // VERTEX_WRITABLE_STORAGE: `effectc stress` counts non-finite values of the vertex
         // stage in a storage buffer.
-        // PRIMITIVE_INDEX, DUAL_SOURCE_BLENDING: a fragment stage reading `gl_PrimitiveID`,
-        // or writing a second-source output (`layout(index = 1)`) (N0109).
+        // PRIMITIVE_INDEX, DUAL_SOURCE_BLENDING, SHADER_F16: a fragment stage reading
+        // `gl_PrimitiveID`, writing a second-source output (`layout(index = 1)`), or a stage
+        // computing with 16-bit floats (N0109).
         let wanted = wgpu::Features::TIMESTAMP_QUERY
             | wgpu::Features::PRIMITIVE_INDEX
             | wgpu::Features::DUAL_SOURCE_BLENDING
+            | wgpu::Features::SHADER_F16
             | wgpu::Features::FLOAT32_BLENDABLE
             | wgpu::Features::FLOAT32_FILTERABLE
             | wgpu::Features::VERTEX_WRITABLE_STORAGE;

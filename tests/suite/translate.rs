@@ -217,6 +217,39 @@ fn translate_refuses_a_program_with_check_errors() {
 /// `gl_PrimitiveID` in a fragment stage: WebGPU has it as the optional `primitive-index`
 /// feature, so the WGSL enables it and N0109 says so (E0306 before: "which WebGPU does not
 /// have"), and a device with the feature draws it (lavapipe has it).
+/// 16-bit floats (GL_EXT_shader_explicit_arithmetic_types_float16) translate with WebGPU's
+/// optional `shader-f16` feature: the WGSL enables it, N0109 points at the first 16-bit type,
+/// and render asks the device for it. They were E0306 "which WebGPU does not have".
+#[test]
+fn sixteen_bit_floats_translate_with_the_optional_feature() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-f16");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("p.vert"),
+        "#version 450\nlayout(location = 0) in vec3 pos;\nlayout(location = 0) out vec4 c;\n\
+         void main() { c = vec4(pos * 0.5 + 0.5, 1.0); gl_Position = vec4(pos, 1.0); }\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("p.frag"),
+        "#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_float16 : require\n\
+         layout(location = 0) in vec4 c;\nlayout(location = 0) out vec4 o;\n\
+         void main() {\n    f16vec4 h = f16vec4(c);\n    o = vec4(h * float16_t(0.5));\n}\n",
+    )
+    .unwrap();
+    let out = on_pair(&dir, &["translate", "--target-env", "vulkan", "--to", "wgsl,spv", "--out"], "out");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains(Code::OptionalWebGpuFeature.as_str()) && stdout.contains("p.frag:6:5"), "{stdout}");
+    let wgsl = std::fs::read_to_string(dir.join("out/p.wgsl")).unwrap();
+    assert!(wgsl.starts_with("enable f16;") && wgsl.contains("vec4<f16>"), "{wgsl}");
+    if crate::render::have_gpu() {
+        let out = on_pair(&dir, &["render", "--target-env", "vulkan", "--frames", "1", "--size", "16x16", "--out"], "frames");
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    }
+}
+
 #[test]
 fn a_fragment_primitive_id_translates_with_the_optional_feature() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-primitive-id");

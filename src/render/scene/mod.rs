@@ -54,13 +54,18 @@ fn drawable(r: &crate::back::reflect::Reflection, in_pass: bool) -> Result<(), D
         return Err(Diagnostic::new(Code::Unrenderable, "the program has no vertex stage to draw with")
             .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)"));
     }
-    match r.fragment_outputs.first().filter(|o| !in_pass && o.location == 0 && !o.wgsl_type.contains("f32")) {
-        Some(first) => Err(Diagnostic::new(
-            Code::Unrenderable,
-            format!("fragment output `{}` is an integer; frames can only show float colours", first.name),
-        )),
-        None => Ok(()),
-    }
+    let Some(first) = r.fragment_outputs.first().filter(|o| !in_pass && o.location == 0 && !o.wgsl_type.contains("f32")) else {
+        return Ok(());
+    };
+    let output =
+        if first.name.is_empty() { "the fragment output at location 0".to_string() } else { format!("fragment output `{}`", first.name) };
+    // wgpu matches a 16-bit float output with no colour target (WebGPU allows it).
+    let message = if first.wgsl_type.contains("f16") {
+        format!("{output} is a 16-bit float; wgpu draws frames only from 32-bit float colours")
+    } else {
+        format!("{output} is an integer; frames can only show float colours")
+    };
+    Err(Diagnostic::new(Code::Unrenderable, message))
 }
 
 /// How the mesh is drawn.
