@@ -180,6 +180,13 @@ impl<'a> Importer<'a> {
         }
         let o = &self.src.overrides[h];
         let ty = self.ty(o.ty);
+        // A specialization constant two stages declare alike (`layout(constant_id = 0) const
+        // int type = 0;` in both) is one override of the merged module: WGSL allows one per id.
+        let same = |d: &Override| d.id.is_some() && d.id == o.id && d.name == o.name && d.ty == ty;
+        if let Some((existing, _)) = self.dst.overrides.iter().find(|(_, d)| same(d)) {
+            self.overrides.insert(h, existing);
+            return existing;
+        }
         let init = o.init.map(|e| self.global_expr(e));
         let span = self.src.overrides.get_span(h);
         let new = self.dst.overrides.append(Override { name: o.name.clone(), id: o.id, ty, init }, span);
@@ -437,6 +444,20 @@ mod tests {
         let wgsl = naga::back::wgsl::write_string(&m, &validate(&m), naga::back::wgsl::WriterFlags::empty()).unwrap();
         assert!(wgsl.contains("fn vs_main(") && wgsl.contains("fn fs_main("), "{wgsl}");
         assert!(wgsl.contains("fn vert_glsl_main(") && wgsl.contains("fn frag_glsl_main("), "{wgsl}");
+    }
+
+    /// `layout(constant_id = 0) const int kind = 0;` in both stages is one override of the
+    /// merged module (two with one id do not validate: E0305 before, on Khronos samples).
+    #[test]
+    fn a_specialization_constant_both_stages_declare_is_one_override() {
+        let spec = "layout(constant_id = 0) const int kind = 0;\n";
+        let v =
+            format!("#version 450\n{spec}layout(location=0) in vec3 pos;\nvoid main() {{ gl_Position = vec4(pos * float(kind), 1.0); }}\n");
+        let f = format!("#version 450\n{spec}layout(location=0) out vec4 color;\nvoid main() {{ color = vec4(float(kind)); }}\n");
+        let (v, f) = (module(&v, naga::ShaderStage::Vertex), module(&f, naga::ShaderStage::Fragment));
+        let m = merge(&[(StageKind::Vertex, &v), (StageKind::Fragment, &f)]).unwrap();
+        validate(&m);
+        assert_eq!(m.overrides.len(), 1);
     }
 
     #[test]
