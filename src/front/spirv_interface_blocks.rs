@@ -25,18 +25,16 @@ pub fn split_interface_blocks(words: Vec<u32>) -> Vec<u32> {
     }
     let Ok(mut module) = dr::load_words(&words) else { return words };
     let blocks = Blocks::of(&module);
-    let mut changed = false;
-    for var in blocks.variables(&module) {
-        match split(&mut module, &blocks, &var) {
-            Some(()) => changed = true,
-            None => return words,
+    let variables = blocks.variables(&module);
+    if variables.is_empty() {
+        return words;
+    }
+    for var in &variables {
+        if split(&mut module, &blocks, var).is_none() {
+            return words;
         }
     }
-    if changed {
-        module.assemble()
-    } else {
-        words
-    }
+    module.assemble()
 }
 
 /// Whether some input or output pointer type points at a `Block`-decorated struct: the
@@ -160,7 +158,7 @@ fn split(module: &mut dr::Module, blocks: &Blocks, var: &BlockVariable) -> Optio
         module
             .annotations
             .iter()
-            .filter(move |a| a.class.opcode == Op::MemberDecorate && a.operands[0] == Operand::IdRef(var.ty))
+            .filter(move |a| a.class.opcode == Op::MemberDecorate && a.operands.first() == Some(&Operand::IdRef(var.ty)))
             .filter(move |a| a.operands.get(1) == Some(&Operand::LiteralBit32(i as u32)))
     };
     let mut bound = module.header.as_ref()?.bound;
@@ -213,12 +211,12 @@ fn split(module: &mut dr::Module, blocks: &Blocks, var: &BlockVariable) -> Optio
         };
         annotations.push(decorate(&[Operand::Decoration(Decoration::Location), Operand::LiteralBit32(m.location)]));
         for a in &decorations_of_var {
-            if interpolation(&a.operands[1]) {
+            if a.operands.get(1).is_some_and(interpolation) {
                 annotations.push(decorate(&a.operands[1..]));
             }
         }
         for a in member_decorations(i) {
-            if interpolation(&a.operands[2]) || a.operands[2] == Operand::Decoration(Decoration::Component) {
+            if a.operands.get(2).is_some_and(|d| interpolation(d) || *d == Operand::Decoration(Decoration::Component)) {
                 annotations.push(decorate(&a.operands[2..]));
             }
         }
@@ -230,7 +228,7 @@ fn split(module: &mut dr::Module, blocks: &Blocks, var: &BlockVariable) -> Optio
         .annotations
         .retain(|a| !targets(a, var.id) && !a.operands.first().and_then(Operand::id_ref_any).is_some_and(|t| alias.contains_key(&t)));
     module.annotations.extend(annotations);
-    module.debug_names.retain(|n| !(n.class.opcode == Op::Name && n.operands[0] == Operand::IdRef(var.id)));
+    module.debug_names.retain(|n| !(n.class.opcode == Op::Name && n.operands.first() == Some(&Operand::IdRef(var.id))));
     module.debug_names.extend(names);
     let member_ids: Vec<Operand> = members.iter().map(|m| Operand::IdRef(m.id)).collect();
     for ep in &mut module.entry_points {

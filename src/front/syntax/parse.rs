@@ -266,21 +266,13 @@ pub(crate) fn vulkan_source(text: &str) -> bool {
     let code = String::from_utf8_lossy(&code);
     let squeezed: String = code.split_whitespace().collect::<Vec<_>>().join(" ");
     let words: Vec<&str> = squeezed.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).filter(|w| !w.is_empty()).collect();
-    let separate_texture = |w: &str| {
-        let t = w.trim_start_matches(['i', 'u']);
-        t.strip_prefix("texture").is_some_and(|d| {
-            let d = d.strip_suffix("Array").unwrap_or(d);
-            matches!(d, "1D" | "2D" | "3D" | "Cube" | "2DRect" | "2DMS" | "Buffer")
-        })
-    };
-    let uniform_of = |pred: &dyn Fn(&str) -> bool| words.windows(2).any(|w| w[0] == "uniform" && pred(w[1]));
     squeezed.contains("push_constant")
         || squeezed.contains("input_attachment_index")
         || squeezed.contains("GL_KHR_vulkan_glsl")
         || words
             .iter()
             .any(|w| matches!(*w, "gl_VertexIndex" | "gl_InstanceIndex") || w.trim_start_matches(['i', 'u']).starts_with("subpassInput"))
-        || uniform_of(&|w| matches!(w, "sampler" | "samplerShadow") || separate_texture(w))
+        || words.windows(2).any(|w| w[0] == "uniform" && vulkan_only_uniform_type(w[1]))
         || squeezed.split("layout").skip(1).any(|l| {
             let inside = l.trim_start().strip_prefix('(').and_then(|r| r.split(')').next()).unwrap_or("");
             inside.split(',').any(|item| {
@@ -290,16 +282,23 @@ pub(crate) fn vulkan_source(text: &str) -> bool {
         })
 }
 
+/// Whether `ty` is a uniform type only Vulkan GLSL has: a sampler on its own (`sampler`,
+/// `samplerShadow`) or a texture without one (`texture2D`, `utexture2DMS`, `textureCubeArray`).
+fn vulkan_only_uniform_type(ty: &str) -> bool {
+    let texture = ty.trim_start_matches(['i', 'u']).strip_prefix("texture").is_some_and(|d| {
+        let d = d.strip_suffix("Array").unwrap_or(d);
+        matches!(d, "1D" | "2D" | "3D" | "Cube" | "2DRect" | "2DMS" | "Buffer")
+    });
+    texture || matches!(ty, "sampler" | "samplerShadow")
+}
+
 /// Vulkan GLSL shows itself by what only Vulkan has.
 fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
     let layout_vulkan = s
         .globals
         .iter()
         .any(|g| g.layout.iter().any(|(k, _)| matches!(k.as_str(), "set" | "push_constant" | "constant_id" | "input_attachment_index")));
-    let separate = s.globals.iter().any(|g| {
-        g.storage == Storage::Uniform
-            && matches!(g.ty.base.as_str(), "sampler" | "samplerShadow" | "texture2D" | "textureCube" | "texture2DArray" | "texture3D")
-    });
+    let separate = s.globals.iter().any(|g| g.storage == Storage::Uniform && vulkan_only_uniform_type(&g.ty.base));
     layout_vulkan
         || separate
         || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Referent::Unresolved)
