@@ -14,7 +14,8 @@
 //! matrices), `expressions` (array sizes, scalar swizzles), `header` (what goes before the
 //! first function: the shared block, split textures, built-in replacements),
 //! `initializers` (globals initialised from uniforms or inputs, assigned first in `main`),
-//! `file_scope` (a `;` after a function body), `evaluation` (short-circuit operators with
+//! `file_scope` (a `;` after a function body), `dynamic_samplers` (a sampler array element
+//! chosen at run time), `evaluation` (short-circuit operators with
 //! side effects, `continue` in `do … while`), `polyfills` (built-ins naga cannot write),
 //! `fixed_function` (the compatibility profile's built-ins).
 
@@ -22,6 +23,7 @@ mod block_members;
 mod blocks;
 mod calls;
 mod declarations;
+mod dynamic_samplers;
 mod evaluation;
 mod expressions;
 mod file_scope;
@@ -93,6 +95,8 @@ struct Ctx<'a> {
     polyfills: Vec<&'static str>,
     /// Declarations of the compatibility built-ins the stage uses ([`fixed_function`]).
     compat_header: String,
+    /// Built-in calls on a sampler array element chosen at run time ([`dynamic_samplers`]).
+    dynamic_lookups: Vec<dynamic_samplers::DynamicLookup>,
 }
 
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
@@ -118,6 +122,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
         limitation,
         polyfills: Vec::new(),
         compat_header: String::new(),
+        dynamic_lookups: Vec::new(),
     };
     c.version();
     // First: at the first declaration, the constants go before what the rewrite inserts there.
@@ -139,6 +144,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.scalar_swizzles(scalar_swizzles);
     c.polyfills();
     c.subpass_inputs();
+    c.dynamic_lookups();
     c.lazy_logic();
     c.do_while_continue();
     c.insert_header();

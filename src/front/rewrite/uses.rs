@@ -36,7 +36,10 @@ impl Ctx<'_> {
                                 if self.plan.textures.iter().any(|t| {
                                     t.user_path.starts_with(&format!("{}[", g.name)) && t.user_path.ends_with(&format!(".{field}"))
                                 }) {
-                                    self.dynamic_sampler_index(isp.clone(), &g.name);
+                                    if !(self.dynamic_sampler_index_legal() && self.dynamic_lookup(u, dot_span, isp, &g.name, Some(field)))
+                                    {
+                                        self.dynamic_sampler_index(isp.clone(), &g.name);
+                                    }
                                     continue;
                                 }
                                 String::new()
@@ -147,8 +150,10 @@ impl Ctx<'_> {
     fn sampler_use(&mut self, u: &crate::front::syntax::Use, name: &str, ty: &GlslType) {
         let (span, path) = match &u.index {
             Some((bracket, _, Some(k))) if ty.is_array() => (bracket.clone(), format!("{name}[{k}]")),
-            Some((_, isp, None)) if ty.is_array() => {
-                self.dynamic_sampler_index(isp.clone(), name);
+            Some((bracket, isp, None)) if ty.is_array() => {
+                if !(self.dynamic_sampler_index_legal() && self.dynamic_lookup(u, bracket, isp, name, None)) {
+                    self.dynamic_sampler_index(isp.clone(), name);
+                }
                 return;
             }
             _ => (u.span.clone(), name.to_string()),
@@ -162,9 +167,20 @@ impl Ctx<'_> {
         self.edits.replace(span, text);
     }
 
-    fn dynamic_sampler_index(&mut self, span: Range<usize>, name: &str) {
+    /// Whether the stage may index a sampler array with a non-constant expression: GLSL
+    /// 4.00 and ES 3.20 on, ES 1.00 (loop indices, its constant-index-expressions), or a
+    /// `gpu_shader5` extension enabled.
+    fn dynamic_sampler_index_legal(&self) -> bool {
         let v = &self.s.version;
-        if (!v.is_es() && v.number >= 400) || (v.is_es() && v.number >= 320) {
+        let extension = self.s.text.lines().any(|l| {
+            let l = l.trim_start();
+            l.starts_with("#extension") && l.contains("_gpu_shader5") && !l.contains("disable")
+        });
+        (!v.is_es() && v.number >= 400) || (v.is_es() && (v.number >= 320 || v.number == 100)) || extension
+    }
+
+    fn dynamic_sampler_index(&mut self, span: Range<usize>, name: &str) {
+        if self.dynamic_sampler_index_legal() {
             // Legal since GLSL 4.00 (dynamically uniform indices); WGSL has no arrays of
             // combined samplers, which is a translation limit, not an error.
             if self.limitation.is_none() {

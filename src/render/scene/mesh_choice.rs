@@ -203,6 +203,8 @@ pub(super) fn documented_fullscreen_input(name: &str) -> Option<MeshAttribute> {
 pub(super) fn at_declaration(d: Diagnostic, program: &CompiledProgram, name: &str, storage: Storage, label: &str) -> Diagnostic {
     let input = storage == Storage::In;
     let matches = |s: Storage| s == storage || (input && s == Storage::Attribute);
+    // An element or member (`tex[2]`, `layers[1].map`) points at its array's declaration.
+    let name = name.split(['[', '.']).next().unwrap_or(name);
     for stage in &program.stages {
         if input && stage.syntax.stage != StageKind::Vertex {
             continue;
