@@ -3,9 +3,10 @@
 //! struct (and an array of structs) to 16 bytes and rounds its size up to 16, and WGSL's
 //! uniform rules want the same, so naga refused such a block. Float fillers
 //! (`effectc_pad_<struct or block>_<byte>`, which reflection marks as padding) go where
-//! std140 leaves a gap: before a struct member, inside a struct or in the block, and at a
-//! struct's end. Every offset is then std140's, so the bytes a host packs by std140 read
-//! the same.
+//! std140 leaves a gap: before a struct member, inside a struct or in the block, at a
+//! struct's end, and at the end of a block declared as an array (`uniform B { float v; }
+//! b[4];`: each element is a buffer of its own, naga's IR an array of 16-byte stride).
+//! Every offset is then std140's, so the bytes a host packs by std140 read the same.
 //!
 //! Only what the fillers can make exact is touched: members that are scalars, vectors,
 //! matrices with 3- or 4-row columns (16-byte column strides in both layouts), such structs,
@@ -137,7 +138,10 @@ impl Ctx<'_> {
         for g in s.globals.iter().filter(|g| g.storage == Storage::Uniform) {
             let Some(b) = &g.block else { continue };
             let std430 = g.layout_items.iter().any(|(k, _)| k == "std430" || k == "push_constant");
-            if std430 || !b.members.iter().any(|m| s.struct_def(&m.ty.base).is_some()) {
+            // An array of blocks is an array of structs in naga's IR: its stride is the
+            // block's size, which std140 and WGSL round up to 16.
+            let array = !b.instance_dims.is_empty();
+            if std430 || !(array || b.members.iter().any(|m| s.struct_def(&m.ty.base).is_some())) {
                 continue;
             }
             let mut layouts = Layouts {
@@ -147,7 +151,10 @@ impl Ctx<'_> {
                 sizes: done.clone(),
                 fillers: Vec::new(),
             };
-            if layouts.members(&b.block_name, &b.members, true).is_some() {
+            if let Some(end) = layouts.members(&b.block_name, &b.members, true) {
+                if let Some(last) = b.members.last().filter(|_| array && !end.is_multiple_of(16)) {
+                    layouts.fillers.push((last.field_span.end, (end.next_multiple_of(16) - end) / 4, b.block_name.clone(), end));
+                }
                 done = layouts.sizes;
                 all.extend(layouts.fillers);
             }
