@@ -51,6 +51,17 @@ fn run() -> ExitCode {
             }
         }
     };
+    // A driver that crashes on one program must not take the others' verdicts with it.
+    let verifies = match &cli.command {
+        Command::Verify(_) => true,
+        Command::Render(args) => args.verify && !args.watch && !args.streams(),
+        _ => false,
+    };
+    if verifies {
+        if let Some(code) = effectc::verify::isolation::supervise() {
+            return code;
+        }
+    }
     match &cli.command {
         Command::Check(args) => repeat(common, args.watch, false, |s, _| check(args, s)),
         Command::Translate(args) => repeat(common, args.watch, false, |s, _| translate(args, s)),

@@ -79,7 +79,16 @@ pub fn run(request: &VerifyRequest) -> RunResult {
     let inputs = output::input_paths(&outcome, &request.render.input.paths);
     let mut gpu: Option<Gpu> = None;
     let mut gl: Option<GlContext> = None;
-    for c in &checked {
+    let crashed = super::isolation::crashed();
+    for (index, c) in checked.iter().enumerate() {
+        if let Some((_, signal)) = crashed.iter().find(|(i, _)| *i == index) {
+            if let Some(stage) = c.units.first().and_then(|u| u.program.stages.first()) {
+                let name = c.effect.as_ref().map_or(c.name.as_str(), |e| e.name.as_str());
+                outcome.diagnostics.push(super::isolation::crash_diagnostic(name, stage.syntax.file, *signal));
+            }
+            continue;
+        }
+        super::isolation::drawing(index);
         if let Some(d) = vulkan_dialect(c) {
             outcome.diagnostics.push(d);
             continue;

@@ -10,6 +10,8 @@
 //! - [`gl_frame`]: targets, passes in order, the output read back.
 //! - [`diff`]: the comparison of two frames and its heat map.
 //! - [`command`]: the run.
+//! - [`isolation`]: the run in a child process, so a driver that crashes on one program
+//!   costs only that program's verdict.
 
 pub mod command;
 pub mod context;
@@ -17,5 +19,6 @@ pub mod diff;
 pub mod fixed_function;
 pub mod gl_frame;
 pub mod gl_scene;
+pub mod isolation;
 pub mod program;
 pub mod uniforms;

@@ -53,6 +53,49 @@ fn every_effect_matches_the_gl_driver() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// A driver that crashes on one program (simulated: the child process that draws aborts on
+/// the first program) costs that program's verdict only: E0502 names it, the other program
+/// is verified, and effectc exits 1 with its report, not with the signal.
+#[test]
+fn a_driver_crash_costs_one_programs_verdict() {
+    if !can_verify() {
+        return;
+    }
+    let dir = Path::new("tests/verify/semantics");
+    let (a, b) = (dir.join("anonymous_structs"), dir.join("flat_aggregates"));
+    let out_dir = scratch("verify-crash", "two");
+    let args = [
+        "verify",
+        a.to_str().unwrap(),
+        b.to_str().unwrap(),
+        "--format",
+        "json",
+        "--size",
+        SEMANTICS_SIZE,
+        "--out",
+        out_dir.to_str().unwrap(),
+    ];
+    let run = |fault: Option<&str>| {
+        let mut c = std::process::Command::new(env!("CARGO_BIN_EXE_effectc"));
+        c.args(args);
+        if let Some(f) = fault {
+            c.env("EFFECTC_VERIFY_FAULT", f);
+        }
+        c.output().unwrap()
+    };
+    let clean = run(None);
+    assert_eq!(code(&clean), 0, "{}", stdout(&clean));
+    let out = run(Some("0"));
+    let text = stdout(&out);
+    assert_eq!(code(&out), 1, "{text}");
+    let doc: serde_json::Value = serde_json::from_str(&text).expect("one JSON report");
+    let crashes: Vec<&serde_json::Value> =
+        doc["diagnostics"]["diagnostics"].as_array().unwrap().iter().filter(|d| d["code"] == "E0502").collect();
+    assert_eq!(crashes.len(), 1, "{text}");
+    assert!(crashes[0]["message"].as_str().unwrap().contains("SIGABRT"), "{text}");
+    assert_eq!(doc["programs"].as_array().unwrap().len(), 1, "the other program is verified: {text}");
+}
+
 fn known_failures() -> Vec<String> {
     let text = std::fs::read_to_string("tests/verify/known_failures.txt").unwrap();
     text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()).map(|l| l.split_whitespace().next().unwrap().to_string()).collect()
