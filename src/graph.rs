@@ -205,15 +205,15 @@ mod tests {
 
     /// An effect from `[[passes]]` text (stage files are not read by the parser's graph part).
     fn effect(passes: &str) -> Effect {
-        let dir = std::env::temp_dir().join(format!("effectc-graph-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        let root = tempfile::Builder::new().prefix("effectc-graph-").tempdir().unwrap();
+        let dir = root.path();
         for f in ["a.vert", "a.frag"] {
             std::fs::write(dir.join(f), "").unwrap();
         }
         let text = format!(
             "output = \"final\"\n[targets]\na = {{}}\nb = {{}}\nc = {{}}\nd = {{ format = \"rgba16f\" }}\nz = {{ format = \"depth32f\" }}\nfinal = {{}}\n{passes}"
         );
-        crate::manifest::parse_for_tests(&text, FileId(0), &dir).unwrap()
+        crate::manifest::parse_for_tests(&text, FileId(0), dir).unwrap()
     }
 
     fn pass(name: &str, extra: &str) -> String {

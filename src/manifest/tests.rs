@@ -1,21 +1,30 @@
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use super::*;
 use crate::diag::{Code, Diagnostic, FileId, Files, Severity};
 use crate::stage::StageKind;
 
-static COUNTER: AtomicUsize = AtomicUsize::new(0);
+/// A fresh directory `<tmp>/<random>/<name>` holding empty `files`, removed with the value.
+struct Fixture {
+    _root: tempfile::TempDir,
+    dir: PathBuf,
+}
 
-/// A fresh directory `<tmp>/effectc-manifest-<pid>-<n>/<name>` holding empty `files`.
-fn fixture_dir(name: &str, files: &[&str]) -> PathBuf {
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let dir = std::env::temp_dir().join(format!("effectc-manifest-{}-{n}", std::process::id())).join(name);
+impl std::ops::Deref for Fixture {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.dir
+    }
+}
+
+fn fixture_dir(name: &str, files: &[&str]) -> Fixture {
+    let root = tempfile::Builder::new().prefix("effectc-manifest-").tempdir().unwrap();
+    let dir = root.path().join(name);
     std::fs::create_dir_all(&dir).unwrap();
     for f in files {
         std::fs::write(dir.join(f), "").unwrap();
     }
-    dir
+    Fixture { _root: root, dir }
 }
 
 const SUN_FILES: &[&str] = &["sun.vert", "sun.frag", "px.png", "nx.png", "py.png", "ny.png", "pz.png", "nz.png", "wood.png"];
@@ -76,7 +85,7 @@ fn minimal(extra: &str) -> String {
     format!("{extra}\n[stages]\nvertex = \"a.vert\"\nfragment = \"a.frag\"\n")
 }
 
-fn minimal_dir() -> PathBuf {
+fn minimal_dir() -> Fixture {
     fixture_dir("fx", &["a.vert", "a.frag", "img.png", "teapot.obj"])
 }
 
@@ -87,7 +96,7 @@ fn full_example_parses() {
     assert_eq!(e.name, "sun");
     assert_eq!(&SUN[e.name_span.clone()], "\"sun\"");
     assert_eq!(e.description.as_deref(), Some("Swirling sun with pulsing bloom"));
-    assert_eq!(e.dir, dir);
+    assert_eq!(e.dir, dir.to_path_buf());
     assert!(e.warnings.is_empty(), "{:#?}", e.warnings);
 
     let kinds: Vec<StageKind> = e.stages.iter().map(|s| s.kind).collect();
@@ -589,7 +598,7 @@ fn load_reads_registers_and_reports_io_errors() {
     let mut files = Files::new();
     let e = load(&path, &mut files).unwrap();
     assert_eq!(e.name, "loaded");
-    assert_eq!(e.dir, dir);
+    assert_eq!(e.dir, dir.to_path_buf());
     assert_eq!(files.path(e.file), path.display().to_string());
     assert_eq!(&files.text(e.file)[e.uniforms[0].value_span.clone()], "1.0");
 

@@ -1,31 +1,28 @@
 //! `effect.toml` against the shaders.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
-
 use super::*;
 use crate::manifest::Effect;
 use crate::stage::StageKind::{Fragment, Vertex};
-
-static COUNTER: AtomicUsize = AtomicUsize::new(0);
 
 /// The program plus its parsed manifest (`extra` is appended after `[stages]`).
 struct Setup {
     p: Program,
     effect: Effect,
+    /// The manifest's directory, removed with the setup.
+    _dir: tempfile::TempDir,
 }
 
 impl Setup {
     fn new(vert: &str, frag: &str, extra: &str) -> Setup {
-        let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-        let dir = std::env::temp_dir().join(format!("effectc-link-{}-{n}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        let root = tempfile::Builder::new().prefix("effectc-link-").tempdir().unwrap();
+        let dir = root.path();
         std::fs::write(dir.join("shader.vert"), vert).unwrap();
         std::fs::write(dir.join("shader.frag"), frag).unwrap();
         let text = format!("[stages]\nvertex = \"shader.vert\"\nfragment = \"shader.frag\"\n\n{extra}");
         let mut p = Program::new(&[(Vertex, vert), (Fragment, frag)]);
         let id = p.files.add("effect.toml", text.clone());
-        let effect = crate::manifest::parse(&text, id, &dir).expect("the manifest parses");
-        Setup { p, effect }
+        let effect = crate::manifest::parse(&text, id, dir).expect("the manifest parses");
+        Setup { p, effect, _dir: root }
     }
     fn check(&self) -> Vec<Diagnostic> {
         super::super::check_manifest(&self.effect, &self.p.stages, &self.p.files)
