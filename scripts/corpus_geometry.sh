@@ -11,7 +11,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 corpus=${1:?usage: scripts/corpus_geometry.sh CORPUS_DIR [opengl|vulkan]}
 env=${2:-opengl}
-bin=$PWD/target/release/effectc
+bin=${EFFECTC:-$PWD/target/release/effectc}
 [ -x "$bin" ] || cargo build --release
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
