@@ -27,6 +27,8 @@ pub(crate) const OP_TYPE_FUNCTION: u16 = Op::TypeFunction as u16;
 pub(crate) const OP_DECORATE: u16 = Op::Decorate as u16;
 pub(crate) const OP_TYPE_POINTER: u16 = Op::TypePointer as u16;
 pub(crate) const OP_UNDEF: u16 = Op::Undef as u16;
+pub(crate) const OP_VARIABLE: u16 = Op::Variable as u16;
+pub(crate) const OP_TYPE_ARRAY: u16 = Op::TypeArray as u16;
 /// An opcode SPIR-V does not define, under which `OpUndef` waits out the sampler splitter.
 pub(crate) const PARKED_UNDEF: u16 = 0xfffe;
 /// Words in the SPIR-V header before the first instruction.
@@ -139,6 +141,83 @@ pub(crate) fn split_combined_samplers(words: Vec<u32>) -> Result<Vec<u32>, Strin
         Ok(Ok(split)) => Ok(with_opcode(split, PARKED_UNDEF, OP_UNDEF)),
         _ => Err("its combined image samplers could not be split into textures and samplers (arrays of samplers, or samplers passed in ways the splitter does not follow)".into()),
     }
+}
+
+/// Bindings of every stage of a program spaced so that the sampler split off each combined
+/// image sampler (at its binding + 1) takes a binding no other resource holds: within a
+/// descriptor set, a resource's binding grows by the number of combined samplers at lower
+/// bindings in any stage of the program, so every stage keeps the same numbers. Without the
+/// gap the splitter moves colliding bindings itself, in an order that changes from run to
+/// run (its hash maps), and two resources could share one. Stages are left as they are
+/// where no split sampler would collide.
+pub(crate) fn space_bindings_for_split(stages: &mut [Vec<u32>]) {
+    let decorations: Vec<Vec<Decoration>> = stages.iter().map(|w| resource_decorations(w)).collect();
+    let mut combined: Vec<(u32, u32)> = decorations.iter().flatten().filter(|d| d.combined).map(|d| (d.set, d.binding)).collect();
+    combined.sort_unstable();
+    combined.dedup();
+    let held = |set: u32, binding: u32| decorations.iter().flatten().any(|d| d.set == set && d.binding == binding);
+    if !combined.iter().any(|&(set, binding)| held(set, binding + 1)) {
+        return;
+    }
+    for (words, decorations) in stages.iter_mut().zip(&decorations) {
+        for d in decorations {
+            let below = combined.iter().filter(|&&(set, binding)| set == d.set && binding < d.binding).count();
+            words[d.binding_word] = d.binding + u32::try_from(below).unwrap_or(0);
+        }
+    }
+}
+
+/// A resource variable's set and binding decorations.
+struct Decoration {
+    set: u32,
+    binding: u32,
+    /// Index of the binding's word in the binary.
+    binding_word: usize,
+    /// The variable is a combined image sampler (or an array of them).
+    combined: bool,
+}
+
+fn resource_decorations(words: &[u32]) -> Vec<Decoration> {
+    const DESCRIPTOR_SET: u32 = 34;
+    const BINDING: u32 = 33;
+    let mut sets: Vec<(u32, u32)> = Vec::new();
+    let mut bindings: Vec<(u32, u32, usize)> = Vec::new();
+    let mut sampled_images: Vec<u32> = Vec::new();
+    let mut pointers: Vec<(u32, u32)> = Vec::new();
+    let mut variables: Vec<(u32, u32)> = Vec::new();
+    for (at, op, count) in instructions(words) {
+        let operand = |i: usize| words.get(at + i).copied().filter(|_| i < count);
+        match op {
+            OP_DECORATE => match (operand(1), operand(2), operand(3)) {
+                (Some(id), Some(DESCRIPTOR_SET), Some(set)) => sets.push((id, set)),
+                (Some(id), Some(BINDING), Some(binding)) => bindings.push((id, binding, at + 3)),
+                _ => {}
+            },
+            OP_TYPE_SAMPLED_IMAGE => sampled_images.extend(operand(1)),
+            OP_TYPE_ARRAY => {
+                if let (Some(id), Some(element)) = (operand(1), operand(2)) {
+                    if sampled_images.contains(&element) {
+                        sampled_images.push(id);
+                    }
+                }
+            }
+            OP_TYPE_POINTER => pointers.extend(operand(1).zip(operand(3))),
+            OP_VARIABLE => variables.extend(operand(2).zip(operand(1))),
+            _ => {}
+        }
+    }
+    bindings
+        .into_iter()
+        .map(|(id, binding, binding_word)| {
+            let ty = variables.iter().find(|(v, _)| *v == id).and_then(|(_, p)| pointers.iter().find(|(q, _)| q == p)).map(|(_, t)| *t);
+            Decoration {
+                set: sets.iter().find(|(v, _)| *v == id).map_or(0, |(_, s)| *s),
+                binding,
+                binding_word,
+                combined: ty.is_some_and(|t| sampled_images.contains(&t)),
+            }
+        })
+        .collect()
 }
 
 /// `words` with every instruction of opcode `from` given opcode `to`.

@@ -22,7 +22,7 @@ use crate::front::naga_run::{self, Validated};
 use crate::front::plan::{Plan, UNIFORM_BLOCK};
 use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
 use crate::front::reference::log::{self, LineTable};
-use crate::front::spirv_binary::{readable_by_naga, split_combined_samplers, Lines};
+use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, split_combined_samplers, Lines};
 use crate::front::spirv_interface_blocks::split_interface_blocks;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
@@ -42,7 +42,8 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
     let texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let binaries = compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?;
+    let mut binaries = compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?;
+    space_bindings_for_split(&mut binaries);
     let mut modules = Vec::new();
     for (words, (file, kind)) in binaries.into_iter().zip(ordered) {
         modules.push(module_of(words, *kind, files.text(*file), plan)?);
@@ -69,7 +70,8 @@ pub fn compile_rewritten(stages: &[(&str, StageKind)], plan: &Plan) -> Result<Ve
     let texts: Vec<String> = stages.iter().map(|(t, _)| as_vulkan_glsl(t)).collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(stages).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let binaries = compiler::spirv(&sources, Dialect::Vulkan(VulkanVersion::V1_0), &setup).map_err(no_spirv)?;
+    let mut binaries = compiler::spirv(&sources, Dialect::Vulkan(VulkanVersion::V1_0), &setup).map_err(no_spirv)?;
+    space_bindings_for_split(&mut binaries);
     let mut modules = Vec::new();
     for (words, (text, kind)) in binaries.into_iter().zip(stages) {
         modules.push(module_of(words, *kind, text, plan)?);
@@ -130,6 +132,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     name_stage_outputs(&mut module);
     drop_outputs_webgpu_lacks(&mut module);
     unreachable_ends_return_a_value(&mut module);
+    comparison_parameters(&mut module);
     emit_only_what_needs_it(&mut module);
     Ok(module)
 }
@@ -398,6 +401,76 @@ fn unreachable_ends_return_a_value(module: &mut Module) {
     }
 }
 
+/// A shadow sampler passed to a function (`float pcf(sampler2DShadow s, vec4 p)`) reaches
+/// naga's SPIR-V front as a texture and a sampler parameter of their own, which it types as
+/// a plain texture and sampler even where the function compares with them (`texture(s, p)`,
+/// `textureGather(s, p.xy, p.z)`), and its validator then refuses the comparison. Such
+/// parameters are a depth texture and a comparison sampler, and so are the parameters and
+/// globals passed to them.
+fn comparison_parameters(module: &mut Module) {
+    use naga::{Expression, Function, GlobalVariable, Handle};
+    type Passed = (Option<Handle<Function>>, Handle<Function>, usize, Expression);
+    // Every argument passed to a function: (caller, callee, index, what is passed).
+    let mut passed: Vec<Passed> = Vec::new();
+    let functions = module.functions.iter_mut().map(|(h, f)| (Some(h), f));
+    for (caller, f) in functions.chain(module.entry_points.iter_mut().map(|ep| (None, &mut ep.function))) {
+        let expressions = &f.expressions;
+        crate::front::statements::visit_statements(&mut f.body, &mut |st| {
+            if let Statement::Call { function, arguments, .. } = st {
+                for (i, a) in arguments.iter().enumerate() {
+                    passed.push((caller, *function, i, expressions[*a].clone()));
+                }
+            }
+        });
+    }
+    let mut compares: Vec<(Handle<Function>, usize)> = Vec::new();
+    for (h, f) in module.functions.iter() {
+        for (_, e) in f.expressions.iter() {
+            if let Expression::ImageSample { image, sampler, depth_ref: Some(_), .. } = e {
+                for operand in [image, sampler] {
+                    if let Expression::FunctionArgument(i) = f.expressions[*operand] {
+                        compares.push((h, i as usize));
+                    }
+                }
+            }
+        }
+    }
+    let mut globals: Vec<Handle<GlobalVariable>> = Vec::new();
+    let mut i = 0;
+    while i < compares.len() {
+        let target = compares[i];
+        for (caller, _, _, what) in passed.iter().filter(|(_, callee, at, _)| (*callee, *at) == target) {
+            match (what, caller) {
+                (Expression::FunctionArgument(j), Some(c)) if !compares.contains(&(*c, *j as usize)) => compares.push((*c, *j as usize)),
+                (Expression::GlobalVariable(g), _) => globals.push(*g),
+                _ => {}
+            }
+        }
+        i += 1;
+    }
+    let comparing = |inner: &TypeInner| match *inner {
+        TypeInner::Sampler { comparison: false } => Some(TypeInner::Sampler { comparison: true }),
+        TypeInner::Image { dim, arrayed, class: naga::ImageClass::Sampled { kind: naga::ScalarKind::Float, multi } } => {
+            Some(TypeInner::Image { dim, arrayed, class: naga::ImageClass::Depth { multi } })
+        }
+        _ => None,
+    };
+    let retype = |types: &mut naga::UniqueArena<naga::Type>, ty: &mut Handle<naga::Type>| {
+        if let Some(inner) = comparing(&types[*ty].inner) {
+            *ty = types.insert(naga::Type { name: None, inner }, Span::UNDEFINED);
+        }
+    };
+    for (f, i) in compares {
+        if let Some(a) = module.functions[f].arguments.get_mut(i) {
+            retype(&mut module.types, &mut a.ty);
+        }
+    }
+    globals.dedup();
+    for g in globals {
+        retype(&mut module.types, &mut module.global_variables[g].ty);
+    }
+}
+
 /// naga's SPIR-V front emits some expressions naga holds in scope from the start (the zero
 /// value it makes of an `OpUndef`), and its validator then refuses them as introduced
 /// twice: they leave their `Emit` ranges.
@@ -472,93 +545,4 @@ fn respan_block(block: &mut Block, f: &dyn Fn(Span) -> Span) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_rewrite_is_read_as_vulkan_glsl_with_its_lines_kept() {
-        let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\n#line 40\nvoid main() {}\n";
-        let vulkan = as_vulkan_glsl(text);
-        assert_eq!(
-            vulkan,
-            "#version 450\n#extension GL_EXT_spirv_intrinsics : enable\n#line 2\nlayout(location = 0) in vec4 gl_Vertex;\n        \nvoid main() {}\n"
-        );
-    }
-
-    /// A function that can fall off its end (legal GLSL) and a declaration named `gl_…`
-    /// (the rewrite's fixed-function attribute): glslang compiles the rewrite, naga's SPIR-V
-    /// front reads it, and the module validates, with spans on the rewrite's lines.
-    #[test]
-    fn a_rewritten_stage_goes_through_spirv() {
-        let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\nfloat f(float x) {\n    for (int i = 0; i < 2; i++) {\n        if (x < float(i)) return 1.0;\n    }\n}\nvoid main() {\n    gl_Position = gl_Vertex * f(gl_Vertex.x);\n}\n";
-        let validated = compile_rewritten(&[(text, StageKind::Vertex)], &Plan::default()).expect("through SPIR-V");
-        let module = &validated[0].module;
-        assert!(module.entry_points[0].function.arguments.iter().any(|a| a.name.as_deref() == Some("gl_Vertex")));
-        let f = module.functions.iter().find(|(_, f)| f.name.as_deref() == Some("f")).expect("f").1;
-        let lines: Vec<&str> = f.body.span_iter().filter_map(|(_, s)| s.to_range()).map(|r| &text[r]).collect();
-        assert!(lines.contains(&"for (int i = 0; i < 2; i++) {"), "{lines:?}");
-    }
-
-    /// glslang writes `OpUndef` for what a function returns when its end is reachable; the
-    /// sampler splitter used to delete it with the instructions it blanks out, and naga
-    /// then met an undefined id.
-    #[test]
-    fn a_function_that_can_fall_off_its_end_keeps_its_undefined_value_beside_a_sampler() {
-        let text = "#version 450\nlayout(binding = 0) uniform sampler2D tex;\nlayout(location = 0) in vec2 uv;\n\
-                    layout(location = 0) out vec4 c;\nvec4 pick(float x) {\n    if (x < 0.5) return vec4(1.0);\n    \
-                    else if (x < 2.0) return texture(tex, uv);\n}\nvoid main() { c = pick(uv.x); }\n";
-        compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
-    }
-
-    /// An interface block's members are varyings at GL's locations: the block's, counted on
-    /// (a `vec4` takes one, a `mat2` two), a member's own and what follows it, with the
-    /// block's and the member's interpolation, named as the members.
-    #[test]
-    fn interface_blocks_become_one_varying_per_member() {
-        let block = "layout(location = 2) BLOCK {\n    vec4 a;\n    flat ivec2 b;\n    layout(location = 7) vec2 c;\n    vec3 d;\n} s;\n";
-        let vertex = format!(
-            "#version 450\n{}void main() {{ s.a = vec4(1.0); s.b = ivec2(2); s.c = vec2(3.0); s.d = vec3(4.0); gl_Position = s.a; }}\n",
-            block.replace("BLOCK", "out Block")
-        );
-        let fragment = format!(
-            "#version 450\n{}layout(location = 0) out vec4 o;\nvoid main() {{ o = s.a + vec4(s.b, s.c) + s.d.xyzx; }}\n",
-            block.replace("BLOCK", "in Block")
-        );
-        let stages = [(vertex.as_str(), StageKind::Vertex), (fragment.as_str(), StageKind::Fragment)];
-        let validated = compile_rewritten(&stages, &Plan::default()).expect("through SPIR-V");
-        let location = |b: &Option<naga::Binding>| match b {
-            Some(naga::Binding::Location { location, interpolation, .. }) => Some((*location, *interpolation)),
-            _ => None,
-        };
-        let (flat, perspective) = (Some(naga::Interpolation::Flat), Some(naga::Interpolation::Perspective));
-        let expected = [(2, perspective), (3, flat), (7, perspective), (8, perspective)];
-        let vs = &validated[0].module;
-        let result = vs.entry_points[0].function.result.as_ref().expect("outputs");
-        let TypeInner::Struct { members, .. } = &vs.types[result.ty].inner else { panic!("a struct of outputs") };
-        let outputs: Vec<_> = members.iter().filter_map(|m| location(&m.binding)).collect();
-        assert_eq!(outputs, expected);
-        let fs = &validated[1].module.entry_points[0].function;
-        let inputs: Vec<_> = fs.arguments.iter().filter_map(|a| Some((a.name.clone()?, location(&a.binding)?))).collect();
-        let names: Vec<&str> = inputs.iter().map(|(n, _)| n.as_str()).collect();
-        assert_eq!(names, ["a", "b", "c", "d"]);
-        assert_eq!(inputs.iter().map(|(_, l)| *l).collect::<Vec<_>>(), expected);
-    }
-
-    /// std140 puts a `mat2` array's matrices 32 bytes apart and their columns 16; naga's IR
-    /// has 8-byte columns, so reading it would move every second column (silently wrong
-    /// SPIR-V before). A `vec4` array and a `mat4` array are read as they are.
-    #[test]
-    fn an_array_of_two_row_matrices_in_a_uniform_block_is_refused() {
-        let block = |members: &str| {
-            format!(
-                "#version 450\nlayout(std140, binding = 0) uniform Block {{ {members} }} b;\n\
-                 layout(location = 0) out vec4 c;\nvoid main() {{ c = vec4(b.m[1][1][1]) + b.x; }}\n"
-            )
-        };
-        let refused = block("vec4 x; mat2 m[2];");
-        let error = compile_rewritten(&[(&refused, StageKind::Fragment)], &Plan::default()).unwrap_err();
-        assert!(error.contains("`mat2x2` in `Block`, a std140 uniform block"), "{error}");
-        let mat4 = block("vec4 x; mat4 m[2];");
-        compile_rewritten(&[(&mat4, StageKind::Fragment)], &Plan::default()).expect("mat4 arrays are read");
-    }
-}
+mod tests;

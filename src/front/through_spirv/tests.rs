@@ -1,0 +1,157 @@
+//! The route through SPIR-V on small programs: what each of its passes makes of glslang's SPIR-V.
+
+use super::*;
+
+#[test]
+fn the_rewrite_is_read_as_vulkan_glsl_with_its_lines_kept() {
+    let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\n#line 40\nvoid main() {}\n";
+    let vulkan = as_vulkan_glsl(text);
+    assert_eq!(
+        vulkan,
+        "#version 450\n#extension GL_EXT_spirv_intrinsics : enable\n#line 2\nlayout(location = 0) in vec4 gl_Vertex;\n        \nvoid main() {}\n"
+    );
+}
+
+/// A function that can fall off its end (legal GLSL) and a declaration named `gl_…`
+/// (the rewrite's fixed-function attribute): glslang compiles the rewrite, naga's SPIR-V
+/// front reads it, and the module validates, with spans on the rewrite's lines.
+#[test]
+fn a_rewritten_stage_goes_through_spirv() {
+    let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\nfloat f(float x) {\n    for (int i = 0; i < 2; i++) {\n        if (x < float(i)) return 1.0;\n    }\n}\nvoid main() {\n    gl_Position = gl_Vertex * f(gl_Vertex.x);\n}\n";
+    let validated = compile_rewritten(&[(text, StageKind::Vertex)], &Plan::default()).expect("through SPIR-V");
+    let module = &validated[0].module;
+    assert!(module.entry_points[0].function.arguments.iter().any(|a| a.name.as_deref() == Some("gl_Vertex")));
+    let f = module.functions.iter().find(|(_, f)| f.name.as_deref() == Some("f")).expect("f").1;
+    let lines: Vec<&str> = f.body.span_iter().filter_map(|(_, s)| s.to_range()).map(|r| &text[r]).collect();
+    assert!(lines.contains(&"for (int i = 0; i < 2; i++) {"), "{lines:?}");
+}
+
+/// glslang writes `OpUndef` for what a function returns when its end is reachable; the
+/// sampler splitter used to delete it with the instructions it blanks out, and naga
+/// then met an undefined id.
+#[test]
+fn a_function_that_can_fall_off_its_end_keeps_its_undefined_value_beside_a_sampler() {
+    let text = "#version 450\nlayout(binding = 0) uniform sampler2D tex;\nlayout(location = 0) in vec2 uv;\n\
+                layout(location = 0) out vec4 c;\nvec4 pick(float x) {\n    if (x < 0.5) return vec4(1.0);\n    \
+                else if (x < 2.0) return texture(tex, uv);\n}\nvoid main() { c = pick(uv.x); }\n";
+    compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+}
+
+/// A shadow sampler passed to a function that compares with it (`texture`, `textureGather`
+/// with a reference) reaches the function as a depth texture and a comparison sampler.
+#[test]
+fn a_shadow_sampler_passed_to_a_function_compares_there() {
+    let text = "#version 450\nlayout(binding = 0) uniform sampler2DShadow s;\nlayout(location = 0) in vec3 p;\n\
+                layout(location = 0) out vec4 c;\nfloat pcf(sampler2DShadow t, vec3 q) { return texture(t, q) + textureGather(t, q.xy, q.z).x; }\n\
+                void main() { c = vec4(pcf(s, p)); }\n";
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    let module = &validated[0].module;
+    let pcf = module.functions.iter().find(|(_, f)| f.name.as_deref() == Some("pcf")).expect("pcf").1;
+    let kinds: Vec<&TypeInner> = pcf.arguments.iter().map(|a| &module.types[a.ty].inner).collect();
+    assert!(kinds.iter().any(|k| matches!(k, TypeInner::Image { class: naga::ImageClass::Depth { .. }, .. })), "{kinds:?}");
+    assert!(kinds.iter().any(|k| matches!(k, TypeInner::Sampler { comparison: true })), "{kinds:?}");
+}
+
+/// The sampler split off a combined one takes a binding no other resource holds, the
+/// same on every run (the splitter alone moved colliding bindings in hash-map order).
+#[test]
+fn split_samplers_take_bindings_no_other_resource_holds() {
+    let text = "#version 450\nlayout(binding = 0) uniform sampler2D a;\nlayout(binding = 1) uniform sampler2D b;\n\
+                layout(binding = 2) uniform U { vec4 k; } u;\nlayout(location = 0) out vec4 c;\n\
+                void main() { c = texture(a, vec2(0.5)) + texture(b, vec2(0.5)) + u.k; }\n";
+    let bindings = || {
+        let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+        validated[0].module.global_variables.iter().filter_map(|(_, g)| g.binding.map(|b| (b.binding, g.name.clone()))).collect::<Vec<_>>()
+    };
+    let first = bindings();
+    let mut numbers: Vec<u32> = first.iter().map(|(b, _)| *b).collect();
+    numbers.sort_unstable();
+    numbers.dedup();
+    assert_eq!(numbers.len(), 5, "{first:?}");
+    for _ in 0..4 {
+        assert_eq!(bindings(), first);
+    }
+}
+
+/// OpenGL GLSL matches varyings by name: an output and the next stage's input of one name
+/// take one location, whatever order each stage declares them in.
+#[test]
+fn opengl_varyings_meet_by_name() {
+    let mut files = Files::new();
+    let vertex =
+        files.add("a.vert", "#version 330 core\nout vec4 a;\nout float b;\nvoid main() { a = vec4(1.0); b = 2.0; gl_Position = a; }\n");
+    let fragment = files.add("a.frag", "#version 330 core\nin float b;\nin vec4 a;\nout vec4 c;\nvoid main() { c = a * b; }\n");
+    let ordered = [(vertex, StageKind::Vertex), (fragment, StageKind::Fragment)];
+    let stages = compile(&files, &ordered, Dialect::OpenGl, &Plan::default()).expect("through SPIR-V");
+    let location = |m: &Module, arguments: bool, name: &str| -> Option<u32> {
+        let ep = &m.entry_points[0];
+        let members: Vec<(Option<String>, Option<naga::Binding>)> = if arguments {
+            ep.function.arguments.iter().map(|a| (a.name.clone(), a.binding.clone())).collect()
+        } else {
+            let ty = ep.function.result.as_ref()?.ty;
+            let TypeInner::Struct { members, .. } = &m.types[ty].inner else { return None };
+            members.iter().map(|s| (s.name.clone(), s.binding.clone())).collect()
+        };
+        members.into_iter().find(|(n, _)| n.as_deref() == Some(name)).and_then(|(_, b)| match b {
+            Some(naga::Binding::Location { location, .. }) => Some(location),
+            _ => None,
+        })
+    };
+    for name in ["a", "b"] {
+        let out = location(&stages[0].validated.module, false, name);
+        assert!(out.is_some(), "{name} has a location");
+        assert_eq!(out, location(&stages[1].validated.module, true, name), "{name}");
+    }
+}
+
+/// An interface block's members are varyings at GL's locations: the block's, counted on
+/// (a `vec4` takes one, a `mat2` two), a member's own and what follows it, with the
+/// block's and the member's interpolation, named as the members.
+#[test]
+fn interface_blocks_become_one_varying_per_member() {
+    let block = "layout(location = 2) BLOCK {\n    vec4 a;\n    flat ivec2 b;\n    layout(location = 7) vec2 c;\n    vec3 d;\n} s;\n";
+    let vertex = format!(
+        "#version 450\n{}void main() {{ s.a = vec4(1.0); s.b = ivec2(2); s.c = vec2(3.0); s.d = vec3(4.0); gl_Position = s.a; }}\n",
+        block.replace("BLOCK", "out Block")
+    );
+    let fragment = format!(
+        "#version 450\n{}layout(location = 0) out vec4 o;\nvoid main() {{ o = s.a + vec4(s.b, s.c) + s.d.xyzx; }}\n",
+        block.replace("BLOCK", "in Block")
+    );
+    let stages = [(vertex.as_str(), StageKind::Vertex), (fragment.as_str(), StageKind::Fragment)];
+    let validated = compile_rewritten(&stages, &Plan::default()).expect("through SPIR-V");
+    let location = |b: &Option<naga::Binding>| match b {
+        Some(naga::Binding::Location { location, interpolation, .. }) => Some((*location, *interpolation)),
+        _ => None,
+    };
+    let (flat, perspective) = (Some(naga::Interpolation::Flat), Some(naga::Interpolation::Perspective));
+    let expected = [(2, perspective), (3, flat), (7, perspective), (8, perspective)];
+    let vs = &validated[0].module;
+    let result = vs.entry_points[0].function.result.as_ref().expect("outputs");
+    let TypeInner::Struct { members, .. } = &vs.types[result.ty].inner else { panic!("a struct of outputs") };
+    let outputs: Vec<_> = members.iter().filter_map(|m| location(&m.binding)).collect();
+    assert_eq!(outputs, expected);
+    let fs = &validated[1].module.entry_points[0].function;
+    let inputs: Vec<_> = fs.arguments.iter().filter_map(|a| Some((a.name.clone()?, location(&a.binding)?))).collect();
+    let names: Vec<&str> = inputs.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["a", "b", "c", "d"]);
+    assert_eq!(inputs.iter().map(|(_, l)| *l).collect::<Vec<_>>(), expected);
+}
+
+/// std140 puts a `mat2` array's matrices 32 bytes apart and their columns 16; naga's IR
+/// has 8-byte columns, so reading it would move every second column (silently wrong
+/// SPIR-V before). A `vec4` array and a `mat4` array are read as they are.
+#[test]
+fn an_array_of_two_row_matrices_in_a_uniform_block_is_refused() {
+    let block = |members: &str| {
+        format!(
+            "#version 450\nlayout(std140, binding = 0) uniform Block {{ {members} }} b;\n\
+             layout(location = 0) out vec4 c;\nvoid main() {{ c = vec4(b.m[1][1][1]) + b.x; }}\n"
+        )
+    };
+    let refused = block("vec4 x; mat2 m[2];");
+    let error = compile_rewritten(&[(&refused, StageKind::Fragment)], &Plan::default()).unwrap_err();
+    assert!(error.contains("`mat2x2` in `Block`, a std140 uniform block"), "{error}");
+    let mat4 = block("vec4 x; mat4 m[2];");
+    compile_rewritten(&[(&mat4, StageKind::Fragment)], &Plan::default()).expect("mat4 arrays are read");
+}
