@@ -226,7 +226,7 @@ pub fn spirv(stages: &[(&str, StageKind)], dialect: Dialect, setup: &SpirvSetup)
                 program.as_ptr(),
                 (messages(Dialect::Vulkan(VulkanVersion::V1_0)) | sys::glslang_messages_t::DEBUG_INFO).0,
             ) != 0
-                && sys::glslang_program_map_io(program.as_ptr()) != 0;
+                && map_io(program, dialect, group[0].kind);
             if !linked {
                 let log = log_of(sys::glslang_program_get_info_log(program.as_ptr()));
                 sys::glslang_program_delete(program.as_ptr());
@@ -262,6 +262,32 @@ pub fn spirv(stages: &[(&str, StageKind)], dialect: Dialect, setup: &SpirvSetup)
         }
     }
     Ok(out)
+}
+
+/// Assigns the locations and bindings the stages leave open. OpenGL GLSL: with glslang's
+/// GLSL mapper, which gives an output and the next stage's input of one name one location
+/// (GL matches varyings by name; the default mapper numbers each stage's in declaration
+/// order, so `out vec4 a; out float b;` met `in float b; in vec4 a;` at swapped locations).
+/// Vulkan GLSL: the default mapper, stage by stage.
+///
+/// # Safety
+/// `program` is a linked glslang program.
+unsafe fn map_io(program: NonNull<sys::glslang_program_t>, dialect: Dialect, first: StageKind) -> bool {
+    if dialect != Dialect::OpenGl {
+        return sys::glslang_program_map_io(program.as_ptr()) != 0;
+    }
+    let resolver = sys::glslang_glsl_resolver_create(program.as_ptr(), stage_of(first));
+    let mapper = sys::glslang_glsl_mapper_create();
+    let mapped = !resolver.is_null()
+        && !mapper.is_null()
+        && sys::glslang_program_map_io_with_resolver_and_mapper(program.as_ptr(), resolver, mapper) != 0;
+    if !resolver.is_null() {
+        sys::glslang_glsl_resolver_delete(resolver);
+    }
+    if !mapper.is_null() {
+        sys::glslang_glsl_mapper_delete(mapper);
+    }
+    mapped
 }
 
 /// Links compiled stages as one program by `dialect`'s rules (GL: what `glslangValidator -l`
