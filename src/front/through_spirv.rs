@@ -251,8 +251,18 @@ fn user_names(module: &mut Module) {
 
 /// The sampler split off a combined image sampler has no name: it takes the plan's sampler
 /// name for its texture (what the GLSL route calls it, so manifests and the renderer find
-/// it), else `<texture>_sampler`.
+/// it), else `<texture>_sampler`; a function's sampler parameter split off one (right after
+/// its texture parameter) is `<parameter>_sampler`.
 fn name_split_samplers(module: &mut Module, plan: &Plan) {
+    for (_, f) in module.functions.iter_mut() {
+        for i in 1..f.arguments.len() {
+            let is_sampler = matches!(module.types[f.arguments[i].ty].inner, TypeInner::Sampler { .. });
+            let texture = matches!(module.types[f.arguments[i - 1].ty].inner, TypeInner::Image { .. });
+            if is_sampler && texture && f.arguments[i].name.is_none() {
+                f.arguments[i].name = f.arguments[i - 1].name.as_ref().map(|t| format!("{t}_sampler"));
+            }
+        }
+    }
     let textures: Vec<(ResourceBinding, String)> = module
         .global_variables
         .iter()

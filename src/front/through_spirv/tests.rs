@@ -50,6 +50,8 @@ fn a_shadow_sampler_passed_to_a_function_compares_there() {
     let kinds: Vec<&TypeInner> = pcf.arguments.iter().map(|a| &module.types[a.ty].inner).collect();
     assert!(kinds.iter().any(|k| matches!(k, TypeInner::Image { class: naga::ImageClass::Depth { .. }, .. })), "{kinds:?}");
     assert!(kinds.iter().any(|k| matches!(k, TypeInner::Sampler { comparison: true })), "{kinds:?}");
+    let names: Vec<Option<&str>> = pcf.arguments.iter().map(|a| a.name.as_deref()).collect();
+    assert_eq!(names, [Some("t"), Some("t_sampler"), Some("q")]);
 }
 
 /// The sampler split off a combined one takes a binding no other resource holds, the
