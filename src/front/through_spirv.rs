@@ -131,6 +131,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     name_split_samplers(&mut module, plan);
     name_stage_outputs(&mut module);
     drop_outputs_webgpu_lacks(&mut module);
+    single_source_outputs(&mut module);
     unreachable_ends_return_a_value(&mut module);
     comparison_parameters(&mut module);
     emit_only_what_needs_it(&mut module);
@@ -279,6 +280,39 @@ fn name_split_samplers(module: &mut Module, plan: &Plan) {
             let planned = plan.textures.iter().find(|p| &p.name == t).map(|p| p.sampler_name.clone());
             g.name = Some(planned.unwrap_or_else(|| format!("{t}_sampler")));
         }
+    }
+}
+
+/// `layout(location = 0, index = 0) out vec4 c;` with no output at index 1 is an ordinary
+/// colour output in GL; naga takes a blend source only as one of a dual-source pair in a
+/// struct: without index 1 the index goes.
+fn single_source_outputs(module: &mut Module) {
+    use naga::Binding;
+    let lone = |b: &Option<Binding>| matches!(b, Some(Binding::Location { blend_src: Some(_), .. }));
+    let mut structs = Vec::new();
+    for ep in module.entry_points.iter_mut().filter(|ep| ep.stage == naga::ShaderStage::Fragment) {
+        let Some(result) = &mut ep.function.result else { continue };
+        if lone(&result.binding) {
+            if let Some(Binding::Location { blend_src, .. }) = &mut result.binding {
+                *blend_src = None;
+            }
+        } else if let TypeInner::Struct { members, .. } = &module.types[result.ty].inner {
+            let pair = members.iter().any(|m| matches!(m.binding, Some(Binding::Location { blend_src: Some(1), .. })));
+            if !pair && members.iter().any(|m| lone(&m.binding)) {
+                structs.push(result.ty);
+            }
+        }
+    }
+    for ty in structs {
+        let mut t = module.types[ty].clone();
+        if let TypeInner::Struct { members, .. } = &mut t.inner {
+            for m in members {
+                if let Some(Binding::Location { blend_src, .. }) = &mut m.binding {
+                    *blend_src = None;
+                }
+            }
+        }
+        module.types.replace(ty, t);
     }
 }
 

@@ -157,3 +157,13 @@ fn an_array_of_two_row_matrices_in_a_uniform_block_is_refused() {
     let mat4 = block("vec4 x; mat4 m[2];");
     compile_rewritten(&[(&mat4, StageKind::Fragment)], &Plan::default()).expect("mat4 arrays are read");
 }
+
+/// `index = 0` on the only colour output is an ordinary output in GL; naga takes a blend
+/// source only as half of a dual-source pair.
+#[test]
+fn a_lone_index_zero_output_is_an_ordinary_colour() {
+    let text = "#version 450\nlayout(location = 0, index = 0) out vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    let result = validated[0].module.entry_points[0].function.result.as_ref().expect("a result");
+    assert!(matches!(result.binding, Some(naga::Binding::Location { location: 0, blend_src: None, .. })), "{:?}", result.binding);
+}
