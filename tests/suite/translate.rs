@@ -272,3 +272,23 @@ fn a_fragment_primitive_id_translates_with_the_optional_feature() {
         assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
     }
 }
+
+/// A sampler array indexed at run time is legal below GLSL 4.00 with `GL_ARB_gpu_shader5`
+/// (effectc reads the extension from the file, whose `#extension` lines its own parse does
+/// not keep): the call on the chosen element translates; without the extension it is E0110.
+#[test]
+fn a_sampler_array_indexed_at_run_time_translates_with_gpu_shader5() {
+    let vert = "#version 150\nin vec2 pos;\nout vec2 uv;\nvoid main() { uv = pos; gl_Position = vec4(pos, 0.0, 1.0); }\n";
+    let frag = "#version 150\n#extension GL_ARB_gpu_shader5 : require\nuniform sampler2D layers[3];\nuniform int n;\nin vec2 uv;\n\
+                out vec4 c;\nvoid main() { c = texture(layers[n], uv); }\n";
+    let dir = pair_dir("translate-sampler-array-gpu-shader5", vert, frag);
+    let out = on_pair(&dir, &["translate", "--to", "wgsl,spv", "--out"], "out");
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    let wgsl = std::fs::read_to_string(dir.join("out/p.wgsl")).unwrap();
+    assert!(wgsl.contains("layers_2"), "one texture per element: {wgsl}");
+    let dir = pair_dir("translate-sampler-array-no-extension", vert, &frag.replace("#extension GL_ARB_gpu_shader5 : require\n", ""));
+    let out = on_pair(&dir, &["translate", "--to", "wgsl", "--out"], "out");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{stdout}");
+    assert!(stdout.contains(Code::NonConstantSamplerIndex.as_str()), "{stdout}");
+}

@@ -172,11 +172,7 @@ impl Ctx<'_> {
     /// `gpu_shader5` extension enabled.
     fn dynamic_sampler_index_legal(&self) -> bool {
         let v = &self.s.version;
-        let extension = self.s.text.lines().any(|l| {
-            let l = l.trim_start();
-            l.starts_with("#extension") && l.contains("_gpu_shader5") && !l.contains("disable")
-        });
-        (!v.is_es() && v.number >= 400) || (v.is_es() && (v.number >= 320 || v.number == 100)) || extension
+        (!v.is_es() && v.number >= 400) || (v.is_es() && (v.number >= 320 || v.number == 100)) || self.s.gpu_shader5
     }
 
     fn dynamic_sampler_index(&mut self, span: Range<usize>, name: &str) {

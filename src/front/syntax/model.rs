@@ -164,6 +164,10 @@ pub struct StageSyntax {
     pub file: FileId,
     pub stage: StageKind,
     pub version: Version,
+    /// A `gpu_shader5` extension is enabled (`#extension GL_ARB_gpu_shader5 : require`): what
+    /// GLSL 4.00 allows below it (sampler arrays indexed at run time). `text` has no
+    /// `#extension` lines.
+    pub gpu_shader5: bool,
     /// A legal construct naga has no form of, found while masking the text for glsl-lang
     /// (what, where): the stage is checked for syntax and interface only.
     pub unsupported: Option<(String, Range<usize>)>,

@@ -16,16 +16,19 @@ use crate::front::syntax::types::Storage;
 use crate::front::version::{self, Renames};
 use crate::stage::StageKind;
 
+/// The stage enables an extension whose name holds one of `names` (an `#extension` line
+/// not set to `disable`).
+fn enables(text: &str, names: &[&str]) -> bool {
+    text.lines().any(|l| {
+        let t = l.trim_start();
+        t.starts_with('#') && t[1..].trim_start().starts_with("extension") && names.iter().any(|n| t.contains(n)) && !t.contains("disable")
+    })
+}
+
 /// The stage enables 64-bit floating-point types by extension (`GL_ARB_gpu_shader_fp64`,
 /// `GL_ARB_vertex_attrib_64bit`).
 fn enables_fp64(text: &str) -> bool {
-    text.lines().any(|l| {
-        let t = l.trim_start();
-        t.starts_with('#')
-            && t[1..].trim_start().starts_with("extension")
-            && (t.contains("GL_ARB_gpu_shader_fp64") || t.contains("GL_ARB_vertex_attrib_64bit"))
-            && !t.contains("disable")
-    })
+    enables(text, &["GL_ARB_gpu_shader_fp64", "GL_ARB_vertex_attrib_64bit"])
 }
 
 /// Parses one stage. Errors are syntax diagnostics at the user's spans.
@@ -115,6 +118,7 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
     let mut syntax = StageSyntax {
         file,
         stage,
+        gpu_shader5: enables(original, &["_gpu_shader5"]),
         version,
         renames,
         text: crate::front::lexical::restored(&text, &masked.restore),
