@@ -136,6 +136,7 @@ pub fn run(request: &VerifyRequest) -> RunResult {
             result.verified.push(v);
         }
     }
+    super::isolation::drawn_all();
     crate::diag::sort(&mut outcome.diagnostics);
     result.outcome = outcome;
     result

@@ -90,6 +90,14 @@ pub fn drawing(index: usize) {
     }
 }
 
+/// In the child: notes that no program is being drawn any more (a crash after the last one,
+/// in a driver's teardown, is no program's).
+pub fn drawn_all() {
+    if let Some(path) = std::env::var_os(PROGRESS) {
+        let _ = std::fs::write(path, "");
+    }
+}
+
 /// The diagnostic for a program a driver crashed on.
 pub fn crash_diagnostic(name: &str, file: FileId, signal: i32) -> Diagnostic {
     Diagnostic::new(Code::GlRejects, format!("a driver crashed ({}) while `{name}` was drawn: it is not verified", signal_name(signal)))
