@@ -178,8 +178,8 @@ struct Decoration {
 }
 
 fn resource_decorations(words: &[u32]) -> Vec<Decoration> {
-    const DESCRIPTOR_SET: u32 = 34;
-    const BINDING: u32 = 33;
+    const DESCRIPTOR_SET: u32 = rspirv::spirv::Decoration::DescriptorSet as u32;
+    const BINDING: u32 = rspirv::spirv::Decoration::Binding as u32;
     let mut sets: Vec<(u32, u32)> = Vec::new();
     let mut bindings: Vec<(u32, u32, usize)> = Vec::new();
     let mut sampled_images: Vec<u32> = Vec::new();

@@ -453,6 +453,21 @@ fn unreachable_ends_return_a_value(module: &mut Module) {
 /// globals passed to them.
 fn comparison_parameters(module: &mut Module) {
     use naga::{Expression, Function, GlobalVariable, Handle};
+    let mut compares: Vec<(Handle<Function>, usize)> = Vec::new();
+    for (h, f) in module.functions.iter() {
+        for (_, e) in f.expressions.iter() {
+            if let Expression::ImageSample { image, sampler, depth_ref: Some(_), .. } = e {
+                for operand in [image, sampler] {
+                    if let Expression::FunctionArgument(i) = f.expressions[*operand] {
+                        compares.push((h, i as usize));
+                    }
+                }
+            }
+        }
+    }
+    if compares.is_empty() {
+        return;
+    }
     type Passed = (Option<Handle<Function>>, Handle<Function>, usize, Expression);
     // Every argument passed to a function: (caller, callee, index, what is passed).
     let mut passed: Vec<Passed> = Vec::new();
@@ -466,18 +481,6 @@ fn comparison_parameters(module: &mut Module) {
                 }
             }
         });
-    }
-    let mut compares: Vec<(Handle<Function>, usize)> = Vec::new();
-    for (h, f) in module.functions.iter() {
-        for (_, e) in f.expressions.iter() {
-            if let Expression::ImageSample { image, sampler, depth_ref: Some(_), .. } = e {
-                for operand in [image, sampler] {
-                    if let Expression::FunctionArgument(i) = f.expressions[*operand] {
-                        compares.push((h, i as usize));
-                    }
-                }
-            }
-        }
     }
     let mut globals: Vec<Handle<GlobalVariable>> = Vec::new();
     let mut i = 0;
@@ -509,7 +512,6 @@ fn comparison_parameters(module: &mut Module) {
             retype(&mut module.types, &mut a.ty);
         }
     }
-    globals.dedup();
     for g in globals {
         retype(&mut module.types, &mut module.global_variables[g].ty);
     }
