@@ -51,6 +51,7 @@ pub mod program;
 pub mod reference;
 pub mod rewrite;
 pub mod source_text;
+pub mod spirv_aggregate_varyings;
 pub mod spirv_binary;
 pub mod spirv_interface_blocks;
 pub mod statements;

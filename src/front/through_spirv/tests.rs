@@ -167,3 +167,50 @@ fn a_lone_index_zero_output_is_an_ordinary_colour() {
     let result = validated[0].module.entry_points[0].function.result.as_ref().expect("a result");
     assert!(matches!(result.binding, Some(naga::Binding::Location { location: 0, blend_src: None, .. })), "{:?}", result.binding);
 }
+
+/// Varyings of aggregate type (an array, a matrix, a block member array; here a fragment
+/// stage's inputs) reach naga as one scalar or vector input per element or column, at the
+/// locations GL gives them, with their interpolation; the stage reads the array through a
+/// private copy, so a run-time index still works.
+#[test]
+fn aggregate_varyings_become_one_input_per_element() {
+    let text = "#version 450\nlayout(location = 0) in vec4 offsets[3];\nlayout(location = 3) in mat2 spin;\n\
+                layout(location = 5) flat in ivec2 cells[2];\nlayout(location = 7) in Surface { vec2 uv[2]; float w; } s;\n\
+                layout(location = 0) out vec4 c;\n\
+                void main() { c = offsets[cells[0].x] + vec4(spin * s.uv[1], s.w, float(cells[1].y)); }\n";
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    let module = &validated[0].module;
+    let inputs: Vec<(String, u32, bool)> = module.entry_points[0]
+        .function
+        .arguments
+        .iter()
+        .filter_map(|a| match a.binding {
+            Some(naga::Binding::Location { location, interpolation, .. }) => {
+                Some((a.name.clone().unwrap_or_default(), location, interpolation == Some(naga::Interpolation::Flat)))
+            }
+            _ => None,
+        })
+        .collect();
+    let expected: Vec<(String, u32, bool)> = [
+        ("offsets_0", 0, false),
+        ("offsets_1", 1, false),
+        ("offsets_2", 2, false),
+        ("spin_0", 3, false),
+        ("spin_1", 4, false),
+        ("cells_0", 5, true),
+        ("cells_1", 6, true),
+        ("uv_0", 7, false),
+        ("uv_1", 8, false),
+        ("w", 9, false),
+    ]
+    .iter()
+    .map(|(n, l, f)| (n.to_string(), *l, *f))
+    .collect();
+    let mut sorted = inputs.clone();
+    sorted.sort_by_key(|(_, l, _)| *l);
+    assert_eq!(sorted, expected);
+    assert!(
+        module.global_variables.iter().any(|(_, g)| g.space == naga::AddressSpace::Private && g.name.as_deref() == Some("offsets")),
+        "the array stays as a private copy"
+    );
+}
