@@ -84,7 +84,7 @@ impl Types {
         let built_in = module
             .annotations
             .iter()
-            .filter(|a| a.operands.iter().any(|o| *o == Operand::Decoration(Decoration::BuiltIn)))
+            .filter(|a| a.operands.contains(&Operand::Decoration(Decoration::BuiltIn)))
             .filter_map(|a| a.operands.first()?.id_ref_any())
             .collect();
         Types { defs, built_in }
@@ -158,6 +158,10 @@ impl Types {
     }
 }
 
+/// A varying made private: its id, its storage class as a varying, and each leaf's
+/// variable with the leaf.
+type Copies = (Word, StorageClass, Vec<(Word, Leaf)>);
+
 /// The split in progress: new types, variables, names and decorations, and the copies the
 /// entry point makes.
 struct Split<'m> {
@@ -171,7 +175,7 @@ struct Split<'m> {
     int: Option<Word>,
     new_globals: Vec<Instruction>,
     /// The varyings made private, and the leaves each copies from or to.
-    copies: Vec<(Word, StorageClass, Vec<(Word, Leaf)>)>,
+    copies: Vec<Copies>,
 }
 
 impl<'m> Split<'m> {

@@ -12,6 +12,7 @@ use crate::back::{Target as BackTarget, TranslateOptions, Translation};
 use crate::check::{self, Outcome, Unit};
 use crate::diag::{Diagnostic, FileId};
 use crate::manifest::{CameraDecl, Effect, ModelDecl, UniformValue};
+use crate::render::compute::{is_compute_only, ComputeScene};
 use crate::render::device::Gpu;
 use crate::render::frames::{self, Frame, FrameError, FrameTarget, GpuClock};
 use crate::render::pass_graph::{GraphOptions, PassGraph, PassProgram};
@@ -101,8 +102,13 @@ pub(crate) fn prepare(
 
 /// What draws the frames of one program.
 pub(crate) enum Drawer {
-    Single { scene: Box<Scene>, target: Box<FrameTarget> },
+    Single {
+        scene: Box<Scene>,
+        target: Box<FrameTarget>,
+    },
     Graph(Box<PassGraph>),
+    /// A compute-only program: dispatched over the frame, its stored image shown.
+    Compute(Box<ComputeScene>),
 }
 
 impl Drawer {
@@ -110,62 +116,72 @@ impl Drawer {
         match self {
             Drawer::Single { scene, .. } => &scene.name,
             Drawer::Graph(g) => &g.name,
+            Drawer::Compute(c) => &c.name,
         }
     }
     pub(crate) fn warnings(&mut self) -> &mut Vec<Diagnostic> {
         match self {
             Drawer::Single { scene, .. } => &mut scene.warnings,
             Drawer::Graph(g) => &mut g.warnings,
+            Drawer::Compute(c) => &mut c.warnings,
         }
     }
     pub(crate) fn camera(&self) -> &CameraDecl {
         match self {
             Drawer::Single { scene, .. } => &scene.camera,
             Drawer::Graph(g) => &g.camera,
+            Drawer::Compute(c) => &c.camera,
         }
     }
     pub(crate) fn model(&self) -> &ModelDecl {
         match self {
             Drawer::Single { scene, .. } => &scene.model,
             Drawer::Graph(g) => &g.model,
+            Drawer::Compute(c) => &c.model,
         }
     }
     pub(crate) fn clock(&self) -> GpuClock {
         match self {
             Drawer::Single { target, .. } => target.clock(),
             Drawer::Graph(g) => g.clock(),
+            Drawer::Compute(_) => frames::GpuClock::Wall,
         }
     }
     pub(crate) fn describe(&self) -> String {
         match self {
             Drawer::Single { scene, .. } => scene.describe.clone(),
             Drawer::Graph(g) => format!("{} passes run", g.plan.running().count()),
+            Drawer::Compute(c) => c.describe.clone(),
         }
     }
-    /// Every scene drawn, with its index into `Effect::passes` (0 for a single pass).
+    /// Every scene drawn, with its index into `Effect::passes` (0 for a single pass; none
+    /// for a compute program, which draws no scene).
     pub(crate) fn scenes(&self) -> Box<dyn Iterator<Item = (usize, &Scene)> + '_> {
         match self {
             Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &**scene))),
             Drawer::Graph(g) => Box::new(g.scenes()),
+            Drawer::Compute(_) => Box::new(std::iter::empty()),
         }
     }
     pub(crate) fn scenes_mut(&mut self) -> Box<dyn Iterator<Item = (usize, &mut Scene)> + '_> {
         match self {
             Drawer::Single { scene, .. } => Box::new(std::iter::once((0, &mut **scene))),
             Drawer::Graph(g) => Box::new(g.scenes_mut()),
+            Drawer::Compute(_) => Box::new(std::iter::empty()),
         }
     }
     /// Where used RGBA8 frame buffers go back for reuse (single-scene drawers).
     pub(crate) fn spare(&self) -> Option<frames::Spare> {
         match self {
             Drawer::Single { target, .. } => Some(target.spare.clone()),
-            Drawer::Graph(_) => None,
+            Drawer::Graph(_) | Drawer::Compute(_) => None,
         }
     }
     pub(crate) fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
         match self {
             Drawer::Single { scene, target } => frames::render(gpu, scene, target, state, timeout),
             Drawer::Graph(g) => g.render(gpu, state, timeout),
+            Drawer::Compute(c) => c.draw(gpu, state, timeout),
         }
     }
 }
@@ -236,6 +252,10 @@ pub(crate) fn build(
                 overrides,
                 gl_defaults: settings.gl_defaults,
             };
+            if is_compute_only(&translation.reflection) {
+                let scene = ComputeScene::new(gpu, &input, size)?;
+                return Ok((Drawer::Compute(Box::new(scene)), translation.file));
+            }
             let scene = Scene::new(gpu, &input)?;
             let target = FrameTarget::new(gpu, &scene, (size.0, size.1, mode), settings.timestamps);
             Ok((Drawer::Single { scene: Box::new(scene), target: Box::new(target) }, translation.file))

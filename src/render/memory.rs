@@ -93,6 +93,16 @@ impl<'c> MemoryDrawer<'c> {
         let prepared = prepare(c, outcome, &settings, instrument)?;
         let mode = if m.float { ColorMode::Float32 } else { ColorMode::Unorm8 };
         match build(gpu, &prepared, c, (m.size, mode), &settings, BuildVariant { overrides, degenerate: m.degenerate }) {
+            Ok((Drawer::Compute(_), file)) => {
+                // Knobs, stress cases and degenerate meshes change a drawn scene's uniforms
+                // and mesh; a compute program's dispatch takes neither yet.
+                outcome.diagnostics.push(
+                    Diagnostic::new(Code::Unrenderable, "`bench` and `stress` draw programs with a vertex stage; this one is compute only")
+                        .in_file(file)
+                        .with_help("`effectc render` dispatches a compute-only program and shows the image it stores"),
+                );
+                None
+            }
             Ok((drawer, file)) => Some(MemoryDrawer { c, m, drawer: Some(drawer), file }),
             Err(diags) => {
                 outcome.diagnostics.extend(diags);

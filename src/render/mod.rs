@@ -8,11 +8,13 @@
 //! - [`attributes`]: which mesh attribute feeds each vertex input; the vertex buffer.
 //! - [`semantics`], [`uniforms`]: per-frame values,
 //!   the bytes of every uniform buffer (manifest values, semantics, reported guesses).
-//! - [`scene`]: everything one effect needs on the GPU.
+//! - [`scene`]: everything one effect needs on the GPU; [`compute`]: a compute-only program
+//!   dispatched over the frame, the image it stores read back as the frame.
 //! - [`frames`]: drawing one frame into an offscreen target and reading it back, with a
 //!   timeout.
 //! - [`pass_graph`]: a multi-pass effect: one scene per pass that reaches the output, targets
 //!   shared when lifetimes allow, all passes in one submission per frame.
+//! - [`texels`]: read-back texels of any target or image format as RGBA floats.
 //! - [`encode`], [`compare`]: PNG, contact sheet, GIF, NaN/Inf masks; reference-image
 //!   comparison for pixel tests.
 //! - [`sink`]: where frames go (PNG files, or a PNG or raw stream on stdout), encoded on
@@ -26,6 +28,7 @@
 pub mod attributes;
 pub mod command;
 pub mod compare;
+pub mod compute;
 pub mod device;
 pub mod drawer;
 pub mod encode;
@@ -36,4 +39,5 @@ pub mod preview;
 pub mod scene;
 pub mod semantics;
 pub mod sink;
+pub mod texels;
 pub mod uniforms;

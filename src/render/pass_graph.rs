@@ -419,7 +419,7 @@ impl PassGraph {
     /// Maps one readback and decodes it to RGBA floats, top row first.
     fn read(&self, gpu: &Gpu, r: &Readback) -> Result<Vec<f32>, FrameError> {
         let bytes = frames::map_read(gpu, &r.buffer)?;
-        Ok(decode_rgba(&bytes, r.format, r.size, r.padded_row, self.flipped_y))
+        Ok(crate::render::texels::decode_rgba(&bytes, r.format, r.size, r.padded_row, self.flipped_y))
     }
 }
 
@@ -436,45 +436,6 @@ fn transient_depth(gpu: &Gpu, (w, h): (u32, u32)) -> wgpu::TextureView {
             view_formats: &[],
         })
         .create_view(&Default::default())
-}
-
-/// Texels of any target format as RGBA floats (missing channels 0, alpha 1; integers as
-/// their values), rows top first.
-fn decode_rgba(bytes: &[u8], format: wgpu::TextureFormat, (w, h): (u32, u32), padded_row: u32, bottom_up: bool) -> Vec<f32> {
-    use wgpu::TextureFormat as F;
-    let (channels, size): (usize, usize) = match format {
-        F::Rgba8Unorm => (4, 1),
-        F::Rgba16Float => (4, 2),
-        F::R16Float => (1, 2),
-        F::Rg16Float => (2, 2),
-        F::Rg32Float => (2, 4),
-        F::R32Float | F::R32Sint | F::R32Uint | F::Depth32Float => (1, 4),
-        _ => (4, 4),
-    };
-    let mut out = Vec::with_capacity((w * h * 4) as usize);
-    for y in 0..h as usize {
-        let row = if bottom_up { h as usize - 1 - y } else { y };
-        let start = row * padded_row as usize;
-        for x in 0..w as usize {
-            let mut px = [0.0f32, 0.0, 0.0, 1.0];
-            for (c, slot) in px.iter_mut().enumerate().take(channels) {
-                let at = start + (x * channels + c) * size;
-                let b = &bytes[at..at + size];
-                *slot = match format {
-                    F::Rgba8Unorm => f32::from(b[0]) / 255.0,
-                    F::Rgba16Float | F::R16Float | F::Rg16Float => half::f16::from_le_bytes([b[0], b[1]]).to_f32(),
-                    F::Rgba32Sint | F::R32Sint => i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f32,
-                    F::Rgba32Uint | F::R32Uint => u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f32,
-                    _ => f32::from_le_bytes([b[0], b[1], b[2], b[3]]),
-                };
-            }
-            if channels == 1 && format == F::Depth32Float {
-                px = [px[0], px[0], px[0], 1.0];
-            }
-            out.extend_from_slice(&px);
-        }
-    }
-    out
 }
 
 /// One texture per physical texture of the plan (targets with disjoint lifetimes share).

@@ -107,6 +107,14 @@ pub fn run(request: &VerifyRequest) -> RunResult {
             }
         };
         outcome.diagnostics.append(drawer.warnings());
+        if matches!(drawer, Drawer::Compute(_)) {
+            outcome.diagnostics.push(
+                Diagnostic::new(Code::Unrenderable, "`verify` compares drawn frames with GL's; this program is compute only")
+                    .in_file(file)
+                    .with_help("`effectc render` dispatches it and shows the image it stores"),
+            );
+            continue;
+        }
         let mut original = match GlDrawer::new(&gl.gl, &outcome.files, c, &drawer) {
             Ok(o) => o,
             Err(diags) => {
@@ -205,6 +213,7 @@ fn written_channels(drawer: &Drawer, output: &str) -> usize {
     };
     match drawer {
         Drawer::Single { scene, .. } => scene.colors.first().copied().flatten().map_or(4, |f| of(scene, 0, f)),
+        Drawer::Compute(_) => 4,
         Drawer::Graph(g) => g
             .pass_views()
             .iter()
@@ -265,6 +274,7 @@ impl GlDrawer {
             scenes.push(s);
         }
         let output = match drawer {
+            Drawer::Compute(_) => return Err(fail("a compute program draws nothing GL could compare".into(), FileId(0))),
             Drawer::Graph(g) => {
                 for v in g.pass_views() {
                     for (name, format) in v.colors.iter().flatten() {
@@ -314,6 +324,7 @@ impl GlDrawer {
                 };
                 self.frames.draw(gl, &mut self.scenes[0], scene, &at)?;
             }
+            Drawer::Compute(_) => return Err("a compute program draws nothing GL could compare".into()),
             Drawer::Graph(g) => {
                 for (v, s) in g.pass_views().iter().zip(&mut self.scenes) {
                     let at = PassTargets {

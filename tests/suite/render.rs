@@ -286,3 +286,27 @@ fn a_bad_value_writes_no_frame_and_leaves_existing_ones_untouched() {
         assert_eq!(std::fs::read(dir.join("sun_0000.png")).unwrap(), before, "{bad} rewrote the frame");
     }
 }
+
+/// A compute-only program is dispatched over the frame (a size that is no multiple of its
+/// workgroup still covers every pixel) and the image it stores to is the frame, its row 0
+/// at the bottom as GL shows an image; one that stores to buffers only has nothing to show
+/// and says so.
+#[test]
+fn a_compute_program_shows_the_image_it_stores() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "compute");
+    let out = effectc(&["render", "tests/render/compute_image", "--size", "20x12", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let frame = png(&dir.join("gradient_0000.png"));
+    let px = |x: usize, y: usize| -> [u8; 4] { frame[(y * 20 + x) * 4..][..4].try_into().unwrap() };
+    assert_eq!(px(0, 11), [0, 0, 0, 255], "bottom left: image texel (0, 0)");
+    assert_eq!(px(19, 11), [255, 0, 0, 255], "bottom right: red grows to the right");
+    assert_eq!(px(0, 0), [0, 255, 0, 255], "top left: green grows upward");
+    assert_eq!(px(19, 0), [255, 255, 0, 255], "the last workgroup column and row ran");
+    let out = effectc(&["render", "tests/render/compute_buffer", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(stdout(&out).contains(&Code::Unrenderable.to_string()), "{}", stdout(&out));
+    assert!(stdout(&out).contains("stores to no 2D image"), "{}", stdout(&out));
+}

@@ -10,16 +10,33 @@ use crate::render::uniforms::UniformBuffer;
 use super::textures::Textures;
 
 /// The storage buffers a scene made, by binding name.
-pub(super) type StorageBuffers = Vec<(String, wgpu::Buffer)>;
+pub(crate) type StorageBuffers = Vec<(String, wgpu::Buffer)>;
 
-pub(super) fn bind_groups(
+/// The images bound to storage textures: (group, binding), the texture and its format.
+pub(crate) type StorageImages = Vec<((u32, u32), wgpu::Texture, wgpu::TextureFormat)>;
+
+/// What the bind groups of a pipeline hold.
+pub(crate) struct Bound {
+    pub groups: Vec<(u32, wgpu::BindGroup)>,
+    pub storage: StorageBuffers,
+    pub images: StorageImages,
+}
+
+/// Side of the zeroed images bound to storage textures of a drawn scene (GL programs size
+/// them to their framebuffer; the scene's frame size is not known there).
+pub(super) const IMAGE_SIDE: u32 = 256;
+
+/// The bind groups of a pipeline (`layout_of` gives a group's layout) with the reflection's
+/// resources; storage-texture images are `image_size` (`IMAGE_SIDE` square for a drawn
+/// scene, the frame for a compute program).
+pub(crate) fn bind_groups(
     gpu: &Gpu,
-    pipeline: &wgpu::RenderPipeline,
+    layout_of: &dyn Fn(u32) -> wgpu::BindGroupLayout,
     r: &Reflection,
-    uniforms: &[(UniformBuffer, wgpu::Buffer)],
-    textures: &Textures,
+    (uniforms, textures): (&[(UniformBuffer, wgpu::Buffer)], &Textures),
     filled: &[(u32, &[u8])],
-) -> (Vec<(u32, wgpu::BindGroup)>, StorageBuffers) {
+    image_size: (u32, u32),
+) -> Bound {
     let mut by_group: BTreeMap<u32, Vec<&BindingInfo>> = BTreeMap::new();
     for b in r.bindings.iter().filter(|b| !b.visibility.is_empty()) {
         by_group.entry(b.group).or_default().push(b);
@@ -48,11 +65,14 @@ pub(super) fn bind_groups(
         at.push((b.group, b.binding));
     }
     // Storage textures (GL image units): zeroed images of each binding's format.
-    let images: Vec<((u32, u32), wgpu::TextureView)> = by_group
+    let images: Vec<((u32, u32), wgpu::Texture, wgpu::TextureFormat, wgpu::TextureView)> = by_group
         .values()
         .flatten()
         .filter(|b| b.kind == "storage_texture")
-        .filter_map(|b| Some(((b.group, b.binding), storage_texture(gpu, b)?)))
+        .filter_map(|b| {
+            let (texture, format, view) = storage_texture(gpu, b, image_size)?;
+            Some(((b.group, b.binding), texture, format, view))
+        })
         .collect();
     let mut groups = Vec::new();
     for (group, bindings) in by_group {
@@ -65,7 +85,7 @@ pub(super) fn bind_groups(
                 "storage_buffer" => at.iter().position(|a| *a == (b.group, b.binding)).map(|i| storage[i].1.as_entire_binding()),
                 "texture" => textures.views.get(&b.name).map(wgpu::BindingResource::TextureView),
                 "storage_texture" => {
-                    images.iter().find(|(at, _)| *at == (b.group, b.binding)).map(|(_, v)| wgpu::BindingResource::TextureView(v))
+                    images.iter().find(|(at, ..)| *at == (b.group, b.binding)).map(|(.., v)| wgpu::BindingResource::TextureView(v))
                 }
                 "sampler" | "comparison_sampler" => textures.samplers.get(&b.name).map(wgpu::BindingResource::Sampler),
                 _ => None,
@@ -74,20 +94,21 @@ pub(super) fn bind_groups(
                 entries.push(wgpu::BindGroupEntry { binding: b.binding, resource });
             }
         }
-        let layout = pipeline.get_bind_group_layout(group);
+        let layout = layout_of(group);
         let bg = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor { label: None, layout: &layout, entries: &entries });
         groups.push((group, bg));
     }
-    (groups, storage)
+    let images = images.into_iter().map(|(at, texture, format, _)| (at, texture, format)).collect();
+    Bound { groups, storage, images }
 }
 
-/// Side of the zeroed images bound to storage textures (GL programs size them to their
-/// framebuffer; the scene's frame size is not known here).
-const IMAGE_SIDE: u32 = 256;
-
 /// A zeroed image for a storage-texture binding, of its format and dimension (None for a
-/// format WebGPU cannot bind as storage).
-fn storage_texture(gpu: &Gpu, b: &BindingInfo) -> Option<wgpu::TextureView> {
+/// format WebGPU cannot bind as storage), `width` × `height` (a 1D image is one row).
+fn storage_texture(
+    gpu: &Gpu,
+    b: &BindingInfo,
+    (width, height): (u32, u32),
+) -> Option<(wgpu::Texture, wgpu::TextureFormat, wgpu::TextureView)> {
     use wgpu::TextureFormat as T;
     let format = match b.format? {
         "r32float" => T::R32Float,
@@ -116,18 +137,19 @@ fn storage_texture(gpu: &Gpu, b: &BindingInfo) -> Option<wgpu::TextureView> {
         wgpu::TextureViewDimension::D2Array => (wgpu::TextureDimension::D2, 4),
         _ => (wgpu::TextureDimension::D2, 1),
     };
-    let height = if dimension == wgpu::TextureDimension::D1 { 1 } else { IMAGE_SIDE };
+    let height = if dimension == wgpu::TextureDimension::D1 { 1 } else { height };
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some(&b.name),
-        size: wgpu::Extent3d { width: IMAGE_SIDE, height, depth_or_array_layers: depth },
+        size: wgpu::Extent3d { width, height, depth_or_array_layers: depth },
         mip_level_count: 1,
         sample_count: 1,
         dimension,
         format,
-        usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING,
+        usage: wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
         view_formats: &[],
     });
-    Some(texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(view_dimension), ..Default::default() }))
+    let view = texture.create_view(&wgpu::TextureViewDescriptor { dimension: Some(view_dimension), ..Default::default() });
+    Some((texture, format, view))
 }
 
 /// The scene's pipeline. wgpu derives the layout from the shader stage by stage, and refuses
@@ -189,7 +211,7 @@ fn explicit_layout(gpu: &Gpu, r: &Reflection) -> Option<wgpu::PipelineLayout> {
     Some(gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: None, bind_group_layouts: &refs, immediate_size: 0 }))
 }
 
-pub(super) fn buffer_init(gpu: &Gpu, label: &str, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
+pub(crate) fn buffer_init(gpu: &Gpu, label: &str, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
     use wgpu::util::DeviceExt;
     // Zero-sized buffers are invalid; a vertex stage without inputs still gets none.
     let padded;

@@ -5,12 +5,12 @@
 //! warning at the declaration in the user's GLSL (attributes by name, uniforms by name,
 //! samplers get a placeholder texture, the mesh follows what the vertex stage reads).
 
-mod bindings;
+pub(crate) mod bindings;
 mod mesh_choice;
 pub(crate) mod plan;
 pub(crate) mod pulled;
 pub mod replay;
-mod textures;
+pub(crate) mod textures;
 
 use bindings::{bind_groups, buffer_init};
 use mesh_choice::MeshNote;
@@ -250,7 +250,10 @@ impl Scene {
             .collect();
         let textures = Textures::create(gpu, input, &texture_plan)?;
         let filled = pulled.as_ref().map(|p| p.buffers()).unwrap_or_default();
-        let (bind_groups, storage) = bind_groups(gpu, &pipeline, r, &uniforms, &textures, &filled);
+        let layout_of = |group| pipeline.get_bind_group_layout(group);
+        let image_side = (bindings::IMAGE_SIDE, bindings::IMAGE_SIDE);
+        let bindings::Bound { groups: bind_groups, storage, .. } =
+            bind_groups(gpu, &layout_of, r, (&uniforms, &textures), &filled, image_side);
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(first_file, &e.to_string())]);
         }
@@ -401,7 +404,7 @@ fn blend_state(blend: Blend) -> Option<wgpu::BlendState> {
     }
 }
 
-fn pipeline_error(file: FileId, message: &str) -> Diagnostic {
+pub(crate) fn pipeline_error(file: FileId, message: &str) -> Diagnostic {
     Diagnostic::new(Code::PipelineRejected, "wgpu rejected the translated program")
         .in_file(file)
         .with_note(message.trim().to_string())

@@ -15,7 +15,7 @@ use super::replay::ReplayTexture;
 use super::SceneInput;
 
 /// Textures and samplers by binding name.
-pub(super) struct Textures {
+pub(crate) struct Textures {
     pub(super) views: BTreeMap<String, wgpu::TextureView>,
     pub(super) samplers: BTreeMap<String, wgpu::Sampler>,
     /// What each texture holds, on the CPU ([`super::replay`]).
@@ -25,7 +25,7 @@ pub(super) struct Textures {
 }
 
 impl Textures {
-    pub(super) fn create(
+    pub(crate) fn create(
         gpu: &Gpu,
         input: &SceneInput<'_>,
         plan: &BTreeMap<String, TextureChoice<'_>>,

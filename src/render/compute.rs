@@ -1,0 +1,194 @@
+//! A compute-only program made drawable: its `cs_main` dispatched over the frame, one
+//! invocation per pixel at least (`ceil(width / local_size_x)` × `ceil(height /
+//! local_size_y)` workgroups), and the first 2D image it stores to (by group and binding)
+//! read back as the frame, bottom row last as GL shows a texture. Uniforms, textures and
+//! samplers are guessed and reported as for a drawn scene; every image is the frame's size
+//! and starts zeroed, and keeps what the program wrote from one frame to the next, as a
+//! GL image unit does.
+
+use std::time::{Duration, Instant};
+
+use crate::back::reflect::BindingInfo;
+use crate::diag::{Code, Diagnostic};
+use crate::manifest::{CameraDecl, ModelDecl};
+use crate::render::device::Gpu;
+use crate::render::frames::{self, Frame, FrameError, Pixels};
+use crate::render::semantics::FrameState;
+use crate::render::uniforms::UniformBuffer;
+
+use crate::render::scene::bindings::{bind_groups, buffer_init, Bound};
+use crate::render::scene::textures::Textures;
+use crate::render::scene::{pipeline_error, plan, ColorMode, SceneInput};
+
+/// One compute program's GPU state.
+pub struct ComputeScene {
+    pub name: String,
+    pub module: naga::Module,
+    pipeline: wgpu::ComputePipeline,
+    bind_groups: Vec<(u32, wgpu::BindGroup)>,
+    uniforms: Vec<(UniformBuffer, wgpu::Buffer)>,
+    workgroups: [u32; 3],
+    /// The image shown: its texture, format and size.
+    image: (wgpu::Texture, wgpu::TextureFormat, (u32, u32)),
+    readback: wgpu::Buffer,
+    padded_row: u32,
+    mode: ColorMode,
+    pub camera: CameraDecl,
+    pub model: ModelDecl,
+    /// What was guessed, as warnings.
+    pub warnings: Vec<Diagnostic>,
+    /// A one-line description of the dispatch, for `--verbose`.
+    pub describe: String,
+}
+
+/// Whether a translation is a compute-only program.
+pub fn is_compute_only(r: &crate::back::reflect::Reflection) -> bool {
+    !r.entry_points.is_empty() && r.entry_points.iter().all(|e| e.stage == "compute")
+}
+
+/// The image a compute program's frame shows: the first 2D storage texture it writes.
+fn shown_image(r: &crate::back::reflect::Reflection) -> Option<&BindingInfo> {
+    let mut written: Vec<&BindingInfo> = r
+        .bindings
+        .iter()
+        .filter(|b| b.kind == "storage_texture" && b.dimension == Some("2d") && b.access.is_some_and(|a| a.contains("write")))
+        .collect();
+    written.sort_by_key(|b| (b.group, b.binding));
+    written.first().copied()
+}
+
+impl ComputeScene {
+    pub fn new(gpu: &Gpu, input: &SceneInput<'_>, size: (u32, u32)) -> Result<ComputeScene, Vec<Diagnostic>> {
+        let t = input.translation;
+        let r = &t.reflection;
+        let file = input.program.stages[0].syntax.file;
+        let Some(shown) = shown_image(r) else {
+            return Err(vec![Diagnostic::new(Code::Unrenderable, "the compute program stores to no 2D image: there is no frame to show")
+                .in_file(file)
+                .with_note(
+                    "`render` dispatches a compute-only program over the frame and shows the first 2D image it writes with `imageStore`",
+                )]);
+        };
+        let plan::Plan { uniforms: uniform_data, textures: texture_plan, warnings, .. } = plan::plan(&input.plan_input())?;
+        let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let shader = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(&t.name),
+            source: wgpu::ShaderSource::Wgsl(input.wgsl.into()),
+        });
+        // wgpu compiles with naga's SPIR-V writer, which can panic: contained as an error.
+        let made = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            gpu.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(&t.name),
+                layout: None,
+                module: &shader,
+                entry_point: Some("cs_main"),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+        }));
+        let pipeline = made.map_err(|payload| {
+            let message = format!(
+                "wgpu's shader compiler (naga's SPIR-V writer) crashed on the translated WGSL: {}",
+                crate::front::naga_run::panic_message(payload.as_ref())
+            );
+            vec![pipeline_error(file, &message)]
+        })?;
+        let uniforms: Vec<(UniformBuffer, wgpu::Buffer)> = uniform_data
+            .into_iter()
+            .map(|u| {
+                let b = buffer_init(gpu, "uniforms", &u.bytes, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
+                (u, b)
+            })
+            .collect();
+        let textures = Textures::create(gpu, input, &texture_plan)?;
+        let layout_of = |group| pipeline.get_bind_group_layout(group);
+        let Bound { groups, images, .. } = bind_groups(gpu, &layout_of, r, (&uniforms, &textures), &[], size);
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(vec![pipeline_error(file, &e.to_string())]);
+        }
+        let Some((_, texture, format)) = images.into_iter().find(|(at, ..)| *at == (shown.group, shown.binding)) else {
+            return Err(vec![Diagnostic::new(
+                Code::Unrenderable,
+                format!("image `{}` has a format WebGPU cannot store to, so there is no frame to show", shown.name),
+            )
+            .in_file(file)]);
+        };
+        let local = t.module.entry_points.iter().find(|e| e.stage == naga::ShaderStage::Compute).map_or([1, 1, 1], |e| e.workgroup_size);
+        let workgroups = [size.0.div_ceil(local[0].max(1)), size.1.div_ceil(local[1].max(1)), 1];
+        let padded_row = frames::padded_row_of(size.0, format);
+        let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("image readback"),
+            size: u64::from(padded_row) * u64::from(size.1),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let describe = format!(
+            "compute: {}×{}×1 workgroups of {}×{}×{}, showing image `{}` ({format:?})",
+            workgroups[0], workgroups[1], local[0], local[1], local[2], shown.name
+        );
+        Ok(ComputeScene {
+            name: t.name.clone(),
+            module: t.module.clone(),
+            pipeline,
+            bind_groups: groups,
+            uniforms,
+            workgroups,
+            image: (texture, format, size),
+            readback,
+            padded_row,
+            mode: input.mode,
+            camera: input.effect.and_then(|e| e.camera.clone()).unwrap_or_default(),
+            model: input.effect.map(|e| e.model.clone()).unwrap_or_default(),
+            warnings,
+            describe,
+        })
+    }
+
+    /// Dispatches the program once with `state`'s uniforms and reads the image back.
+    pub fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
+        let cpu_start = Instant::now();
+        for (data, buffer) in &mut self.uniforms {
+            data.update(&self.module, state).map_err(FrameError::Device)?;
+            gpu.queue.write_buffer(buffer, 0, &data.bytes);
+        }
+        let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dispatch") });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(&self.name), timestamp_writes: None });
+            pass.set_pipeline(&self.pipeline);
+            for (group, bg) in &self.bind_groups {
+                pass.set_bind_group(*group, bg, &[]);
+            }
+            let [x, y, z] = self.workgroups;
+            pass.dispatch_workgroups(x, y, z);
+        }
+        let (texture, format, (w, h)) = &self.image;
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo { texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect: wgpu::TextureAspect::All },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &self.readback,
+                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(self.padded_row), rows_per_image: Some(*h) },
+            },
+            wgpu::Extent3d { width: *w, height: *h, depth_or_array_layers: 1 },
+        );
+        let submitted = gpu.queue.submit([encoder.finish()]);
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(FrameError::Device(e.to_string()));
+        }
+        let cpu = cpu_start.elapsed();
+        let wall = frames::wait(gpu, submitted, timeout)?;
+        let unpack_start = Instant::now();
+        let bytes = frames::map_read(gpu, &self.readback)?;
+        // Row 0 of a GL image is the bottom of the picture it shows.
+        let rgba = crate::render::texels::decode_rgba(&bytes, *format, (*w, *h), self.padded_row, true);
+        let pixels = match self.mode {
+            ColorMode::Unorm8 => Pixels::Rgba8(crate::render::encode::float_to_rgba8(&rgba)),
+            ColorMode::Float32 => Pixels::Rgba32F(rgba),
+        };
+        if let Some(e) = gpu.take_error() {
+            return Err(FrameError::Device(e));
+        }
+        let cpu_ms = (cpu + unpack_start.elapsed()).as_secs_f64() * 1e3;
+        Ok(Frame { pixels, gpu_ms: wall.as_secs_f64() * 1e3, cpu_ms, dumps: Vec::new() })
+    }
+}
