@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Geometry programs of a real-world corpus through translate and render, side by side with
-# glslangValidator. For each program directory holding a .geom stage: does glslangValidator
-# link it (-l; `vulkan` as second argument: -V -l)? Does `effectc translate --to wgsl,spv`
+# glslangValidator. For each program directory holding a .geom stage (its tessellation
+# stages too): does glslangValidator link it (-l; `vulkan` as second argument: -V -l)? Does
+# `effectc check` accept it (no error)? Does `effectc translate --to wgsl,spv`
 # exit 0 with WGSL that naga-cli and tint accept and SPIR-V that spirv-val accepts? Does
 # `effectc render` (bare stage files: mesh, attributes, uniforms and textures guessed) write
 # a frame? Programs that fail print their first error (the construct effectc names).
@@ -15,10 +16,10 @@ bin=${EFFECTC:-$PWD/target/release/effectc}
 [ -x "$bin" ] || cargo build --release
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-total=0; legal=0; translated=0; rendered=0; both=0
+total=0; legal=0; checked=0; translated=0; rendered=0; both=0
 for d in "$corpus"/*/; do
     ls "$d" | grep -qE '\.geom$' || continue
-    files=$(ls "$d" | grep -E '\.(vert|geom|frag)$' | sed "s|^|$d|")
+    files=$(ls "$d" | grep -E '\.(vert|tesc|tese|geom|frag)$' | sed "s|^|$d|")
     total=$((total + 1))
     if [ "$env" = vulkan ]; then
         (cd "$work" && glslangValidator -V -l $(for f in $files; do realpath "$f"; done) > /dev/null 2>&1) && is_legal=1 || is_legal=0
@@ -28,6 +29,11 @@ for d in "$corpus"/*/; do
     [ $is_legal = 1 ] || continue
     legal=$((legal + 1))
     rm -rf "$work"/out "$work"/frames
+    if "$bin" check --color never $files > "$work"/clog 2>&1; then
+        checked=$((checked + 1))
+    else
+        echo "check fails: $d $(grep -m1 -E '^error' "$work"/clog)"
+    fi
     ok_t=0
     if "$bin" translate --color never --to wgsl,spv --out "$work"/out $files > "$work"/log 2>&1; then
         wgsl=$(ls "$work"/out/*.wgsl)
@@ -51,4 +57,5 @@ for d in "$corpus"/*/; do
 done
 pct() { echo $(( $2 ? 1000 * $1 / $2 : 0 )) | sed 's/\(.\)$/.\1/'; }
 echo "programs with a geometry stage: $total; glslangValidator links: $legal"
+echo "of those: check accepts: $checked ($(pct $checked $legal)%)"
 echo "of those: valid WGSL + SPIR-V: $translated ($(pct $translated $legal)%), a frame rendered: $rendered ($(pct $rendered $legal)%), both: $both ($(pct $both $legal)%)"

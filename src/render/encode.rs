@@ -181,6 +181,13 @@ pub fn float_to_rgba8(rgba32f: &[f32]) -> Vec<u8> {
     rgba32f.iter().map(|&c| unit_to_byte(c)).collect()
 }
 
+/// RGBA8 of an integer frame (an `ivec4`/`uvec4` colour output, as RGBA floats): each
+/// colour channel its value clamped to 0–255, opaque (an integer output's alpha is data, not
+/// coverage).
+pub fn integers_to_rgba8(rgba: &[f32]) -> Vec<u8> {
+    rgba.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]].map(|v| v.clamp(0.0, 255.0) as u8).into_iter().chain([255])).collect()
+}
+
 fn unit_to_byte(c: f32) -> u8 {
     if c.is_nan() {
         return 0;

@@ -142,6 +142,9 @@ pub struct FrameTarget {
     pub mode: ColorMode,
     colors: Vec<Option<wgpu::TextureView>>,
     color0: wgpu::Texture,
+    /// The frame's format: the mode's, or a 32-bit integer one for an integer output at
+    /// location 0 (shown as its values, [`crate::render::encode::integers_to_rgba8`]).
+    format: wgpu::TextureFormat,
     /// Rows arrive bottom-up (the scene was translated with clip y negated).
     bottom_up: bool,
     depth: Option<wgpu::TextureView>,
@@ -169,7 +172,11 @@ impl FrameTarget {
             })
         };
         let attach = wgpu::TextureUsages::RENDER_ATTACHMENT;
-        let color0 = texture(mode.format(), attach | wgpu::TextureUsages::COPY_SRC, "frame");
+        let format = match scene.colors.first().copied().flatten() {
+            Some(f) if is_integer(f) => f,
+            _ => mode.format(),
+        };
+        let color0 = texture(format, attach | wgpu::TextureUsages::COPY_SRC, "frame");
         let mut colors = Vec::new();
         for (i, f) in scene.colors.iter().enumerate() {
             colors.push(match f {
@@ -179,16 +186,29 @@ impl FrameTarget {
             });
         }
         let depth = scene.depth.then(|| texture(wgpu::TextureFormat::Depth32Float, attach, "depth").create_view(&Default::default()));
-        let padded_row = padded_row(width, mode);
+        let padded_row = padded_row_of(width, format);
         let readback = gpu.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
-            size: FrameTarget::readback_size(width, height, mode),
+            size: u64::from(padded_row) * u64::from(height),
             usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
             mapped_at_creation: false,
         });
         let timestamps = if timestamps { Timestamps::new(gpu) } else { None };
         let spare = Spare::default();
-        FrameTarget { width, height, mode, colors, color0, bottom_up: scene.flipped_y, depth, readback, padded_row, timestamps, spare }
+        FrameTarget {
+            width,
+            height,
+            mode,
+            colors,
+            color0,
+            format,
+            bottom_up: scene.flipped_y,
+            depth,
+            readback,
+            padded_row,
+            timestamps,
+            spare,
+        }
     }
 
     /// How [`Frame::gpu_ms`] is measured on this target.
@@ -379,6 +399,14 @@ fn map_with<T>(gpu: &Gpu, buffer: &wgpu::Buffer, read: impl FnOnce(&[u8]) -> T) 
 
 /// Drops the row padding of the readback and returns the rows top first.
 fn unpad(bytes: &[u8], target: &FrameTarget) -> Pixels {
+    if is_integer(target.format) {
+        let size = (target.width, target.height);
+        let values = crate::render::texels::decode_rgba(bytes, target.format, size, target.padded_row, target.bottom_up);
+        return match target.mode {
+            ColorMode::Unorm8 => Pixels::Rgba8(crate::render::encode::integers_to_rgba8(&values)),
+            ColorMode::Float32 => Pixels::Rgba32F(values),
+        };
+    }
     let bpp = target.mode.format().block_copy_size(None).unwrap_or(4) as usize;
     let row = target.width as usize * bpp;
     let height = target.height as usize;
@@ -395,4 +423,10 @@ fn unpad(bytes: &[u8], target: &FrameTarget) -> Pixels {
         ColorMode::Unorm8 => Pixels::Rgba8(out),
         ColorMode::Float32 => Pixels::Rgba32F(out.chunks_exact(4).map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()),
     }
+}
+
+/// Whether a colour target holds integers (an `ivec`/`uvec` output).
+pub fn is_integer(format: wgpu::TextureFormat) -> bool {
+    use wgpu::TextureFormat as F;
+    matches!(format, F::Rgba32Sint | F::Rgba32Uint | F::R32Sint | F::R32Uint)
 }

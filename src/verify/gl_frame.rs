@@ -96,7 +96,7 @@ impl GlFrames {
             if let Some(c) = at.clear {
                 for (i, name) in at.colors.iter().enumerate() {
                     let Some(t) = name.and_then(|n| self.targets.get(n)) else { continue };
-                    if is_integer(t.format) {
+                    if crate::render::frames::is_integer(t.format) {
                         gl.clear_buffer_i32_slice(glow::COLOR, i as u32, &c.map(|x| x as i32));
                     } else {
                         gl.clear_buffer_f32_slice(glow::COLOR, i as u32, &c);
@@ -136,6 +136,24 @@ impl GlFrames {
                 let mut bytes = vec![0u8; row * h as usize];
                 gl.read_pixels(0, 0, w as i32, h as i32, glow::RGBA, glow::UNSIGNED_BYTE, glow::PixelPackData::Slice(Some(&mut bytes)));
                 bytes
+            } else if crate::render::frames::is_integer(t.format) {
+                // Integer targets are read as integers (GL refuses a float read of them) and
+                // shown as `render` shows its integer frames.
+                let signed = matches!(t.format, wgpu::TextureFormat::Rgba32Sint | wgpu::TextureFormat::R32Sint);
+                let mut words = vec![0u8; row * 4 * h as usize];
+                let ty = if signed { glow::INT } else { glow::UNSIGNED_INT };
+                gl.read_pixels(0, 0, w as i32, h as i32, glow::RGBA_INTEGER, ty, glow::PixelPackData::Slice(Some(&mut words)));
+                let values: Vec<f32> = words
+                    .chunks_exact(4)
+                    .map(|b| {
+                        if signed {
+                            i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f32
+                        } else {
+                            u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f32
+                        }
+                    })
+                    .collect();
+                crate::render::encode::integers_to_rgba8(&values)
             } else {
                 let mut floats = vec![0u8; row * 4 * h as usize];
                 gl.read_pixels(0, 0, w as i32, h as i32, glow::RGBA, glow::FLOAT, glow::PixelPackData::Slice(Some(&mut floats)));
@@ -160,11 +178,6 @@ impl GlFrames {
             }
         }
     }
-}
-
-fn is_integer(f: wgpu::TextureFormat) -> bool {
-    use wgpu::TextureFormat as F;
-    matches!(f, F::Rgba32Sint | F::Rgba32Uint | F::R32Sint | F::R32Uint)
 }
 
 /// A GL texture for a target of `format`.

@@ -47,25 +47,21 @@ impl ColorMode {
     }
 }
 
-/// Refuses what cannot be drawn into frames: no vertex stage, or (outside a pass) an
-/// integer colour output.
+/// Refuses what cannot be drawn into frames: no vertex stage, or (outside a pass) a 16-bit
+/// float colour output (integer outputs are drawn into an integer frame and shown as their
+/// values).
 fn drawable(r: &crate::back::reflect::Reflection, in_pass: bool) -> Result<(), Diagnostic> {
     if !r.entry_points.iter().any(|e| e.name == "vs_main") {
         return Err(Diagnostic::new(Code::Unrenderable, "the program has no vertex stage to draw with")
             .with_help("add a vertex stage (a full-screen triangle is enough for a post effect)"));
     }
-    let Some(first) = r.fragment_outputs.first().filter(|o| !in_pass && o.location == 0 && !o.wgsl_type.contains("f32")) else {
+    let Some(first) = r.fragment_outputs.first().filter(|o| !in_pass && o.location == 0 && o.wgsl_type.contains("f16")) else {
         return Ok(());
     };
     let output =
         if first.name.is_empty() { "the fragment output at location 0".to_string() } else { format!("fragment output `{}`", first.name) };
     // wgpu matches a 16-bit float output with no colour target (WebGPU allows it).
-    let message = if first.wgsl_type.contains("f16") {
-        format!("{output} is a 16-bit float; wgpu draws frames only from 32-bit float colours")
-    } else {
-        format!("{output} is an integer; frames can only show float colours")
-    };
-    Err(Diagnostic::new(Code::Unrenderable, message))
+    Err(Diagnostic::new(Code::Unrenderable, format!("{output} is a 16-bit float; wgpu draws frames only from 32-bit float colours")))
 }
 
 /// How the mesh is drawn.
