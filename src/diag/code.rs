@@ -152,6 +152,7 @@ codes! {
     TexelBufferAsStorage => "N0107", "a buffer texture (`samplerBuffer`) read from a read-only storage buffer: WebGPU has no buffer textures",
     ClipDistancesDropped => "N0108", "`gl_ClipDistance`/`gl_CullDistance` computed, not passed: WebGPU clips and culls by neither",
     OptionalWebGpuFeature => "N0109", "the translation needs an optional WebGPU feature (`primitive-index`, `dual-source-blending`, `shader-f16`)",
+    InterpolationApproximated => "N0110", "a fragment built-in WebGPU has no per-call form of, written as GL evaluates it on a single-sampled target (`interpolateAt*`, `gl_HelperInvocation`)",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
     HazardAnalysisStopped => "N0701", "the static hazard analysis of a stage stopped at its work limit: its warnings are incomplete",
     // Warnings.

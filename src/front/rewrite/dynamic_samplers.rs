@@ -97,8 +97,9 @@ impl Ctx<'_> {
 }
 
 /// An assignment, increment or call in an index expression (`s[i++]`, `s[next()]`):
-/// evaluated once per element it would run more than once.
-fn has_side_effects(index: &str) -> bool {
+/// evaluated once per element it would run more than once. Constructors and conversions
+/// (`int(x)`, `vec2(a, b)`, `mat2(..)`) and `abs`/`min`/`max`/`clamp` are pure.
+pub(super) fn has_side_effects(index: &str) -> bool {
     let bytes = index.as_bytes();
     let assigns = bytes.iter().enumerate().any(|(i, b)| {
         *b == b'=' && {
@@ -107,16 +108,22 @@ fn has_side_effects(index: &str) -> bool {
             !matches!(prev, Some(b'=' | b'!' | b'<' | b'>')) && next != Some(b'=')
         }
     });
-    let calls = index.contains('(') && {
-        // Constructors and conversions (`int(x)`, `uint(y)`) are pure.
-        let pure = ["uint(", "int(", "float(", "abs(", "min(", "max(", "clamp("];
-        let mut rest = index.to_string();
-        for p in pure {
-            rest = rest.replace(p, "(");
-        }
-        rest.char_indices().any(|(i, c)| c == '(' && rest[..i].ends_with(|p: char| p.is_ascii_alphanumeric() || p == '_'))
-    };
+    let calls = index.char_indices().filter(|(_, c)| *c == '(').any(|(i, _)| {
+        let callee: String = index[..i].chars().rev().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
+        let callee: String = callee.chars().rev().collect();
+        !callee.is_empty() && !is_pure(&callee)
+    });
     assigns || index.contains("++") || index.contains("--") || calls
+}
+
+/// A constructor, a conversion or a pure built-in.
+fn is_pure(callee: &str) -> bool {
+    let vector = callee.trim_start_matches(['i', 'u', 'b', 'd']).strip_prefix("vec").is_some_and(|n| matches!(n, "2" | "3" | "4"));
+    let matrix = callee
+        .trim_start_matches('d')
+        .strip_prefix("mat")
+        .is_some_and(|n| matches!(n, "2" | "3" | "4" | "2x2" | "2x3" | "2x4" | "3x2" | "3x3" | "3x4" | "4x2" | "4x3" | "4x4"));
+    vector || matrix || matches!(callee, "int" | "uint" | "float" | "double" | "bool" | "abs" | "min" | "max" | "clamp")
 }
 
 #[cfg(test)]
@@ -133,5 +140,15 @@ mod tests {
         assert!(has_side_effects("i = 2"));
         assert!(has_side_effects("i += 2"));
         assert!(has_side_effects("pick(i)"));
+    }
+
+    #[test]
+    fn constructors_and_conversions_have_no_side_effects() {
+        for pure in ["i", "int(x) + 1", "vec2(-0.5, 0.5)", "ivec2(p) * 2", "mat2(1.0)", "clamp(i, 0, 3)", "a[j] == b"] {
+            assert!(!has_side_effects(pure), "{pure}");
+        }
+        for effect in ["i++", "--i", "i = 2", "next()", "vec2(f(x))", "i += 1"] {
+            assert!(has_side_effects(effect), "{effect}");
+        }
     }
 }

@@ -30,6 +30,7 @@ mod file_scope;
 mod fixed_function;
 mod header;
 mod initializers;
+mod interpolation;
 mod io_blocks;
 mod polyfills;
 mod std140_structs;
@@ -144,6 +145,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.scalar_swizzles(scalar_swizzles);
     c.polyfills();
     c.subpass_inputs();
+    c.interpolation_calls();
     c.dynamic_lookups();
     c.lazy_logic();
     c.do_while_continue();

@@ -285,6 +285,7 @@ impl Ctx<'_> {
                         .with_note("WebGPU has no point sprites (and no `gl_PointSize`); draw a quad per point to keep a sprite's texture coordinates"),
                 );
             }
+            ("gl_HelperInvocation", StageKind::Fragment) => self.helper_invocation(u.span.clone()),
             ("gl_ClipDistance", StageKind::Vertex | StageKind::Geometry) => self.edits.replace(u.span.clone(), "effectc_ClipDistance"),
             ("gl_CullDistance", StageKind::Vertex | StageKind::Geometry) => self.edits.replace(u.span.clone(), "effectc_CullDistance"),
             _ => {}
