@@ -405,9 +405,89 @@ pub fn quiet_pragmas(text: &str) -> std::borrow::Cow<'_, str> {
     })
 }
 
+/// Desktop GLSL below 1.30 as glslang 12's `glslangValidator -d` and Mesa read it: the `f`
+/// suffix of a float literal (`1.0f`, `2e3F`), which GLSL 1.30 added, is taken there; the
+/// glslang effectc builds refuses it ("'floating-point suffix' : not supported for this
+/// version"). Blanked in glslang's view only, same length. Other versions: as written.
+pub fn lenient_float_suffixes(text: &str) -> std::borrow::Cow<'_, str> {
+    let old_desktop = match crate::front::version::parse_version(text) {
+        Ok(v) => !v.is_es() && v.number < 130,
+        Err(_) => false,
+    };
+    if !old_desktop {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let clean = crate::front::version::blank_comments(text);
+    let mut out = text.as_bytes().to_vec();
+    let mut changed = false;
+    let mut i = 0;
+    while i < clean.len() {
+        let c = clean[i];
+        if c.is_ascii_alphabetic() || c == b'_' {
+            // An identifier (or a hex literal's tail): skip it whole.
+            while i < clean.len() && (clean[i].is_ascii_alphanumeric() || clean[i] == b'_') {
+                i += 1;
+            }
+            continue;
+        }
+        let starts_number = c.is_ascii_digit() || (c == b'.' && clean.get(i + 1).is_some_and(u8::is_ascii_digit));
+        if !starts_number {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        if c == b'0' && matches!(clean.get(i + 1), Some(b'x' | b'X')) {
+            i += 2;
+            while i < clean.len() && clean[i].is_ascii_hexdigit() {
+                i += 1;
+            }
+            continue;
+        }
+        let mut float = false;
+        while i < clean.len() {
+            match clean[i] {
+                b'0'..=b'9' => i += 1,
+                b'.' => {
+                    float = true;
+                    i += 1;
+                }
+                b'e' | b'E' if clean.get(i + 1).is_some_and(|n| n.is_ascii_digit() || *n == b'+' || *n == b'-') => {
+                    float = true;
+                    i += 2;
+                }
+                _ => break,
+            }
+        }
+        let suffix = matches!(clean.get(i), Some(b'f' | b'F'));
+        let ends = !clean.get(i + 1).is_some_and(|n| n.is_ascii_alphanumeric() || *n == b'_');
+        if float && suffix && ends && i > start {
+            out[i] = b' ';
+            changed = true;
+            i += 1;
+        }
+    }
+    if !changed {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    // Only an ASCII letter became a space: still UTF-8.
+    std::borrow::Cow::Owned(String::from_utf8(out).unwrap_or_else(|_| text.to_string()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn float_suffixes_below_glsl_130_are_blanked_in_place() {
+        let text = "#version 120\nfloat a = 1.0f + 2e3F + .5f; // 3.0f\nint b = 0x1f; float fx = 1.0; vec2 v2f;\n";
+        let lenient = lenient_float_suffixes(text);
+        assert_eq!(lenient.len(), text.len());
+        assert_eq!(lenient, "#version 120\nfloat a = 1.0  + 2e3  + .5 ; // 3.0f\nint b = 0x1f; float fx = 1.0; vec2 v2f;\n");
+        let modern = "#version 330\nfloat a = 1.0f;\n";
+        assert_eq!(lenient_float_suffixes(modern), modern);
+        let es = "#version 100\nfloat a = 1.0f;\n";
+        assert_eq!(lenient_float_suffixes(es), es);
+    }
 
     #[test]
     fn line_directives_are_blanked_in_place() {

@@ -73,7 +73,8 @@ pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> O
     let mut compiled = Vec::new();
     let mut verdicts = Vec::new();
     for &(file, kind) in stages {
-        let text = crate::front::lexical::quiet_pragmas(files.text(file));
+        let quiet = crate::front::lexical::quiet_pragmas(files.text(file));
+        let text = crate::front::lexical::lenient_float_suffixes(&quiet);
         let shader = compiler::compile(&text, kind, dialect)?;
         if std::env::var_os("EFFECTC_DUMP_REFERENCE").is_some() {
             // Debugging aid: glslang's own verdict and log for each stage, on stderr.

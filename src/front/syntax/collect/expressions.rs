@@ -16,6 +16,66 @@ impl Collector<'_> {
         self.macro_bodies.iter().flat_map(|body| word_occurrences(&self.s.text, body.clone(), name)).collect()
     }
 
+    /// Records a call of `n` (its name at `sp`) in the stage's calls: where it is written, or,
+    /// expanded from a macro, where its name is written in the macro's use or body.
+    fn record_call(&mut self, n: String, sp: Range<usize>, e: &ast::Expr, args: &[ast::Expr]) {
+        let in_function = self.current_function.as_ref().map(|(n, _)| n.clone());
+        let first_arg_name = args.first().and_then(|a| match &a.content {
+            ast::ExprData::Variable(id) => Some(id.0.to_string()),
+            _ => None,
+        });
+        if self.s.text.get(sp.clone()) != Some(n.as_str()) {
+            // Written in a function-like macro's argument (`round(modf(x, i))` with
+            // `#define round(X) ...`): the name is in the use's text, which the span
+            // covers; each occurrence there is taken once, in order. Arguments are
+            // not known.
+            let in_use = word_occurrences(&self.s.text, sp.clone(), &n)
+                .into_iter()
+                .find(|at| !self.macro_uses.contains(&(n.clone(), at.start)) && !self.in_macro_body(at.start));
+            if let Some(at) = in_use {
+                self.macro_uses.insert((n.clone(), at.start));
+                self.s.calls.push(Call {
+                    name: n.clone(),
+                    name_span: at.clone(),
+                    span: at,
+                    in_function: in_function.clone(),
+                    args: Vec::new(),
+                    first_arg_name: None,
+                    from_macro: true,
+                });
+            }
+            // Expanded from a macro: the name is written in `#define` bodies.
+            for at in self.macro_body_occurrences(&n) {
+                if self.macro_uses.insert((n.clone(), at.start)) {
+                    self.s.calls.push(Call {
+                        name: n.clone(),
+                        name_span: at.clone(),
+                        span: at,
+                        in_function: in_function.clone(),
+                        args: Vec::new(),
+                        first_arg_name: None,
+                        from_macro: true,
+                    });
+                }
+            }
+        } else {
+            self.s.calls.push(Call {
+                name: n,
+                name_span: sp,
+                span: span_of(e),
+                in_function,
+                args: args.iter().map(span_of).collect(),
+                first_arg_name,
+                from_macro: false,
+            });
+        }
+    }
+
+    /// Whether `at` lies in a `#define` body.
+    fn in_macro_body(&self, at: usize) -> bool {
+        self.macro_bodies.iter().any(|body| body.contains(&at))
+    }
+
     pub(super) fn initializer(&mut self, i: &ast::Initializer) {
         match &i.content {
             ast::InitializerData::Simple(e) => self.expr(e),
@@ -170,37 +230,7 @@ impl Collector<'_> {
                 };
                 let is_user = name.as_ref().is_some_and(|(n, _)| self.user_functions.contains(n));
                 if let Some((n, sp)) = name {
-                    let in_function = self.current_function.as_ref().map(|(n, _)| n.clone());
-                    let first_arg_name = args.first().and_then(|a| match &a.content {
-                        ast::ExprData::Variable(id) => Some(id.0.to_string()),
-                        _ => None,
-                    });
-                    if self.s.text.get(sp.clone()) != Some(n.as_str()) {
-                        // Expanded from a macro: the name is written in `#define` bodies.
-                        for at in self.macro_body_occurrences(&n) {
-                            if self.macro_uses.insert((n.clone(), at.start)) {
-                                self.s.calls.push(Call {
-                                    name: n.clone(),
-                                    name_span: at.clone(),
-                                    span: at,
-                                    in_function: in_function.clone(),
-                                    args: Vec::new(),
-                                    first_arg_name: None,
-                                    from_macro: true,
-                                });
-                            }
-                        }
-                    } else {
-                        self.s.calls.push(Call {
-                            name: n,
-                            name_span: sp,
-                            span: span_of(e),
-                            in_function,
-                            args: args.iter().map(span_of).collect(),
-                            first_arg_name,
-                            from_macro: false,
-                        });
-                    }
+                    self.record_call(n, sp, e, args);
                 }
                 for a in args {
                     self.arg_context = is_user;
