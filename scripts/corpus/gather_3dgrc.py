@@ -63,4 +63,5 @@ def main():
     print(written, "programs")
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -20,6 +20,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gather_3dgrc import read_shader  # noqa: E402  (readShaderFile, shared by both sides)
 from mirror import Mirror, strip_cpp_comments, write_program  # noqa: E402
 
 EXT = {".vert": "vertex", ".frag": "fragment", ".geom": "geometry", ".tesc": "tess-control",
@@ -27,22 +28,6 @@ EXT = {".vert": "vertex", ".frag": "fragment", ".geom": "geometry", ".tesc": "te
 ORDER = ["vertex", "tess-control", "tess-eval", "geometry", "fragment", "compute"]
 QUAD = "data/shaders/chapter08/VK02_Quad.vert"
 LITERAL = re.compile(r'"(data/shaders/[^"]*/VK[^"]*\.(?:vert|frag|geom|tesc|tese|comp))"')
-
-
-def read_shader(m, name, depth=0):
-    data = m.show(name)
-    if data is None or depth > 20:
-        raise FileNotFoundError(name)
-    if data[:3] == b"\xef\xbb\xbf":
-        data = b"   " + data[3:]
-    code = data.decode("utf-8", "replace")
-    while "#include " in code:
-        pos = code.find("#include ")
-        p1, p2 = code.find("<", pos), code.find(">", pos)
-        if p1 < 0 or p2 < 0 or p2 <= p1:
-            raise ValueError("bad include")
-        code = code[:pos] + read_shader(m, code[p1 + 1:p2], depth + 1) + code[p2 + 1:]
-    return code
 
 
 def pipelines(src):
@@ -108,4 +93,5 @@ def main():
     print(written, "programs")
 
 
-main()
+if __name__ == "__main__":
+    main()

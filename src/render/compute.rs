@@ -16,7 +16,7 @@ use crate::render::frames::{self, Frame, FrameError, Pixels};
 use crate::render::semantics::FrameState;
 use crate::render::uniforms::UniformBuffer;
 
-use crate::render::scene::bindings::{bind_groups, buffer_init, Bound};
+use crate::render::scene::bindings::{bind_groups, uniform_buffers, Bound};
 use crate::render::scene::textures::Textures;
 use crate::render::scene::{pipeline_error, plan, ColorMode, SceneInput};
 
@@ -93,13 +93,7 @@ impl ComputeScene {
             );
             vec![pipeline_error(file, &message)]
         })?;
-        let uniforms: Vec<(UniformBuffer, wgpu::Buffer)> = uniform_data
-            .into_iter()
-            .map(|u| {
-                let b = buffer_init(gpu, "uniforms", &u.bytes, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
-                (u, b)
-            })
-            .collect();
+        let uniforms = uniform_buffers(gpu, uniform_data);
         let textures = Textures::create(gpu, input, &texture_plan)?;
         let layout_of = |group| pipeline.get_bind_group_layout(group);
         let Bound { groups, images, .. } = bind_groups(gpu, &layout_of, r, (&uniforms, &textures), &[], size);

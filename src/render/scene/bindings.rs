@@ -211,6 +211,16 @@ fn explicit_layout(gpu: &Gpu, r: &Reflection) -> Option<wgpu::PipelineLayout> {
     Some(gpu.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: None, bind_group_layouts: &refs, immediate_size: 0 }))
 }
 
+/// One uniform buffer per block the plan packed, filled with its bytes (rewritten per frame).
+pub(crate) fn uniform_buffers(gpu: &Gpu, data: Vec<UniformBuffer>) -> Vec<(UniformBuffer, wgpu::Buffer)> {
+    data.into_iter()
+        .map(|u| {
+            let b = buffer_init(gpu, "uniforms", &u.bytes, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
+            (u, b)
+        })
+        .collect()
+}
+
 pub(crate) fn buffer_init(gpu: &Gpu, label: &str, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
     use wgpu::util::DeviceExt;
     // Zero-sized buffers are invalid; a vertex stage without inputs still gets none.

@@ -237,13 +237,7 @@ impl Scene {
             (!interleaved.attributes.is_empty()).then(|| buffer_init(gpu, "vertices", &interleaved.bytes, wgpu::BufferUsages::VERTEX));
         let instance_buffer = instanced.as_ref().map(|i| buffer_init(gpu, "instances", &i.bytes, wgpu::BufferUsages::VERTEX));
         let draw = draw_of(gpu, r, pulled.as_ref().map(|p| p.count), &mesh_note, &mesh);
-        let uniforms: Vec<(UniformBuffer, wgpu::Buffer)> = uniform_data
-            .into_iter()
-            .map(|u| {
-                let b = buffer_init(gpu, "uniforms", &u.bytes, wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST);
-                (u, b)
-            })
-            .collect();
+        let uniforms = bindings::uniform_buffers(gpu, uniform_data);
         let textures = Textures::create(gpu, input, &texture_plan)?;
         let filled = pulled.as_ref().map(|p| p.buffers()).unwrap_or_default();
         let layout_of = |group| pipeline.get_bind_group_layout(group);

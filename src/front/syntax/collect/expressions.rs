@@ -32,20 +32,8 @@ impl Collector<'_> {
             let in_use = word_occurrences(&self.s.text, sp.clone(), &n)
                 .into_iter()
                 .find(|at| !self.macro_uses.contains(&(n.clone(), at.start)) && !self.in_macro_body(at.start));
-            if let Some(at) = in_use {
-                self.macro_uses.insert((n.clone(), at.start));
-                self.s.calls.push(Call {
-                    name: n.clone(),
-                    name_span: at.clone(),
-                    span: at,
-                    in_function: in_function.clone(),
-                    args: Vec::new(),
-                    first_arg_name: None,
-                    from_macro: true,
-                });
-            }
-            // Expanded from a macro: the name is written in `#define` bodies.
-            for at in self.macro_body_occurrences(&n) {
+            // Expanded from a macro: the name is written in `#define` bodies too.
+            for at in in_use.into_iter().chain(self.macro_body_occurrences(&n)) {
                 if self.macro_uses.insert((n.clone(), at.start)) {
                     self.s.calls.push(Call {
                         name: n.clone(),
