@@ -180,7 +180,7 @@ fn shader_objects_of_one_stage_are_linked_by_the_reference_compiler() {
 
 #[test]
 fn legal_glsl_effectc_cannot_read_is_a_note_and_translate_says_why() {
-    // `textureQueryLod` (GLSL 4.00) is legal (glslang and Mesa accept it); naga's GLSL front
+    // `textureQueryLod` on a cube map (GLSL 4.00) is legal (glslang and Mesa accept it); naga's GLSL front
     // has no such function and its SPIR-V front no `OpImageQueryLod`: check notes it (exit
     // 0), translate stops with E0306 naming what naga said. `textureGather`, which naga's
     // GLSL front lacks too, translates through SPIR-V. A global initialised from a uniform (run-time initializer, which naga
@@ -196,7 +196,7 @@ fn legal_glsl_effectc_cannot_read_is_a_note_and_translate_says_why() {
     std::fs::write(&vert, "#version 400\nin vec3 position;\nvoid main() { gl_Position = vec4(position, 1.0); }\n").unwrap();
     std::fs::write(
         &lod,
-        "#version 400\nuniform sampler2D tex;\nout vec4 color;\nvoid main() { color = vec4(textureQueryLod(tex, vec2(0.5)), 0.0, 1.0); }\n",
+        "#version 400\nuniform samplerCube tex;\nout vec4 color;\nvoid main() { color = vec4(textureQueryLod(tex, vec3(0.5)), 0.0, 1.0); }\n",
     )
     .unwrap();
     std::fs::write(

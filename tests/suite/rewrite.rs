@@ -15,7 +15,7 @@ use crate::common;
 
 #[test]
 fn rewrite_corpus() {
-    let dirs = common::fixtures("tests/rewrite", 55);
+    let dirs = common::fixtures("tests/rewrite", 56);
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("../../snapshots/rewrite");
     settings.set_prepend_module_to_snapshot(false);
@@ -53,7 +53,7 @@ fn rewrite_corpus() {
 #[test]
 fn rewrite_known_failures_still_fail() {
     let mut now_passing = Vec::new();
-    for dir in common::fixtures("tests/rewrite_known_failures", 5) {
+    for dir in common::fixtures("tests/rewrite_known_failures", 4) {
         let name = common::name_of(&dir);
         let why = std::fs::read_to_string(dir.join("why")).unwrap_or_default();
         assert!(!why.trim().is_empty(), "{name}: no `why` file");

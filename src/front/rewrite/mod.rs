@@ -33,6 +33,7 @@ mod initializers;
 mod interpolation;
 mod io_blocks;
 mod polyfills;
+mod query_lod;
 mod std140_structs;
 mod subpass;
 mod uses;
@@ -146,6 +147,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.polyfills();
     c.subpass_inputs();
     c.interpolation_calls();
+    c.query_lods();
     c.dynamic_lookups();
     c.lazy_logic();
     c.do_while_continue();
