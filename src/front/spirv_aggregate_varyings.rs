@@ -19,6 +19,8 @@ use rspirv::binary::Assemble;
 use rspirv::dr::{self, Instruction, Operand};
 use rspirv::spirv::{Decoration, ExecutionModel, Op, StorageClass, Word};
 
+use crate::front::spirv_interface_blocks::{constant, interpolation, locations, name_of, targets};
+
 /// `words` with every aggregate input and output of a vertex or fragment stage split into
 /// scalar and vector variables; the words as they were when there is none, or when one is
 /// used in a way the split does not follow (a pointer to it passed to a function).
@@ -136,25 +138,12 @@ impl Types {
         out
     }
 
-    /// The locations a value of type `ty` takes (GLSL 4.60 §4.4.1).
     fn locations(&self, ty: Word) -> Option<u32> {
-        match self.op(ty)? {
-            Op::TypeFloat | Op::TypeInt | Op::TypeBool => Some(1),
-            Op::TypeVector => {
-                let wide = self.literal(self.id_operand(ty, 0)?, 0) == Some(64);
-                Some(if wide && self.literal(ty, 1)? > 2 { 2 } else { 1 })
-            }
-            Op::TypeMatrix => Some(self.literal(ty, 1)? * self.locations(self.id_operand(ty, 0)?)?),
-            Op::TypeArray => Some(self.array_length(ty)? * self.locations(self.id_operand(ty, 0)?)?),
-            Op::TypeStruct => self.defs.get(&ty)?.operands.iter().map(|o| self.locations(o.id_ref_any()?)).sum(),
-            _ => None,
-        }
+        locations(&self.defs, ty)
     }
 
     fn array_length(&self, ty: Word) -> Option<u32> {
-        let length = self.id_operand(ty, 1)?;
-        (self.op(length)? == Op::Constant).then_some(())?;
-        self.literal(length, 0)
+        constant(&self.defs, self.id_operand(ty, 1)?)
     }
 }
 
@@ -293,7 +282,7 @@ impl<'m> Split<'m> {
                     next = location + t.locations(m)?;
                     let mut inherited = at.decorations.clone();
                     inherited.extend(decorations.into_iter().filter(|d| d.first().is_some_and(interpolation)));
-                    let member = member_name(self.module, ty, i).unwrap_or_else(|| i.to_string());
+                    let member = name_of(self.module, ty, Some(i)).unwrap_or_else(|| i.to_string());
                     let leaf = Leaf {
                         path: [&at.path[..], &[i as u32]].concat(),
                         ty: m,
@@ -313,7 +302,7 @@ impl<'m> Split<'m> {
     fn variable(&mut self, v: &Varying) -> Option<()> {
         let own: Vec<Vec<Operand>> =
             self.module.annotations.iter().filter(|a| targets(a, v.id)).map(|a| a.operands[1..].to_vec()).collect();
-        let name = name_of(self.module, v.id).unwrap_or_else(|| format!("varying{}", v.location));
+        let name = name_of(self.module, v.id, None).unwrap_or_else(|| format!("varying{}", v.location));
         let root = Leaf {
             path: Vec::new(),
             ty: v.ty,
@@ -474,34 +463,4 @@ impl<'m> Split<'m> {
         }
         Some(())
     }
-}
-
-/// Whether `a` is an `OpDecorate` of `id`.
-fn targets(a: &Instruction, id: Word) -> bool {
-    a.class.opcode == Op::Decorate && a.operands.first() == Some(&Operand::IdRef(id))
-}
-
-/// Whether a decoration says how a varying is interpolated or kept (what each leaf takes
-/// from its variable and its members).
-fn interpolation(d: &Operand) -> bool {
-    use Decoration as D;
-    matches!(d, Operand::Decoration(D::Flat | D::NoPerspective | D::Centroid | D::Sample | D::Invariant | D::RelaxedPrecision))
-}
-
-fn name_of(module: &dr::Module, id: Word) -> Option<String> {
-    module.debug_names.iter().find_map(|n| match &n.operands[..] {
-        [Operand::IdRef(t), Operand::LiteralString(s)] if n.class.opcode == Op::Name && *t == id && !s.is_empty() => Some(s.clone()),
-        _ => None,
-    })
-}
-
-fn member_name(module: &dr::Module, ty: Word, i: usize) -> Option<String> {
-    module.debug_names.iter().find_map(|n| match &n.operands[..] {
-        [Operand::IdRef(t), Operand::LiteralBit32(m), Operand::LiteralString(s)]
-            if n.class.opcode == Op::MemberName && *t == ty && *m as usize == i && !s.is_empty() =>
-        {
-            Some(s.clone())
-        }
-        _ => None,
-    })
 }

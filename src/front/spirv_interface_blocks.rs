@@ -109,35 +109,43 @@ impl Blocks {
         out
     }
 
-    /// The 32-bit value of an integer constant.
     fn constant(&self, id: Word) -> Option<u32> {
-        let c = self.defs.get(&id).filter(|c| c.class.opcode == Op::Constant)?;
-        match c.operands.first()? {
-            Operand::LiteralBit32(v) => Some(*v),
-            _ => None,
-        }
+        constant(&self.defs, id)
     }
 
-    /// The locations a value of type `ty` takes (GLSL 4.60 §4.4.1: a 64-bit `dvec3`/`dvec4`
-    /// takes two, a matrix one per column, an array or struct the sum of its elements').
     fn locations(&self, ty: Word) -> Option<u32> {
-        let t = self.defs.get(&ty)?;
-        let id = |i: usize| t.operands.get(i).and_then(Operand::id_ref_any);
-        let literal = |i: usize| match t.operands.get(i) {
-            Some(Operand::LiteralBit32(v)) => Some(*v),
-            _ => None,
-        };
-        match t.class.opcode {
-            Op::TypeFloat | Op::TypeInt | Op::TypeBool => Some(1),
-            Op::TypeVector => {
-                let wide = self.defs.get(&id(0)?).and_then(|c| c.operands.first()) == Some(&Operand::LiteralBit32(64));
-                Some(if wide && literal(1)? > 2 { 2 } else { 1 })
-            }
-            Op::TypeMatrix => Some(literal(1)? * self.locations(id(0)?)?),
-            Op::TypeArray => Some(self.constant(id(1)?)? * self.locations(id(0)?)?),
-            Op::TypeStruct => t.operands.iter().map(|o| self.locations(o.id_ref_any()?)).sum(),
-            _ => None,
+        locations(&self.defs, ty)
+    }
+}
+
+/// The 32-bit value of integer constant `id` (`defs`: types and constants by result id).
+pub(crate) fn constant(defs: &HashMap<Word, Instruction>, id: Word) -> Option<u32> {
+    let c = defs.get(&id).filter(|c| c.class.opcode == Op::Constant)?;
+    match c.operands.first()? {
+        Operand::LiteralBit32(v) => Some(*v),
+        _ => None,
+    }
+}
+
+/// The locations a value of type `ty` takes (GLSL 4.60 §4.4.1: a 64-bit `dvec3`/`dvec4`
+/// takes two, a matrix one per column, an array or struct the sum of its elements').
+pub(crate) fn locations(defs: &HashMap<Word, Instruction>, ty: Word) -> Option<u32> {
+    let t = defs.get(&ty)?;
+    let id = |i: usize| t.operands.get(i).and_then(Operand::id_ref_any);
+    let literal = |i: usize| match t.operands.get(i) {
+        Some(Operand::LiteralBit32(v)) => Some(*v),
+        _ => None,
+    };
+    match t.class.opcode {
+        Op::TypeFloat | Op::TypeInt | Op::TypeBool => Some(1),
+        Op::TypeVector => {
+            let wide = defs.get(&id(0)?).and_then(|c| c.operands.first()) == Some(&Operand::LiteralBit32(64));
+            Some(if wide && literal(1)? > 2 { 2 } else { 1 })
         }
+        Op::TypeMatrix => Some(literal(1)? * locations(defs, id(0)?)?),
+        Op::TypeArray => Some(constant(defs, id(1)?)? * locations(defs, id(0)?)?),
+        Op::TypeStruct => t.operands.iter().map(|o| locations(defs, o.id_ref_any()?)).sum(),
+        _ => None,
     }
 }
 
@@ -281,7 +289,7 @@ fn redirect_access_chains(functions: &mut [dr::Function], blocks: &Blocks, var: 
 }
 
 /// Whether `a` is an `OpDecorate` of `id`.
-fn targets(a: &Instruction, id: Word) -> bool {
+pub(crate) fn targets(a: &Instruction, id: Word) -> bool {
     a.class.opcode == Op::Decorate && a.operands.first() == Some(&Operand::IdRef(id))
 }
 
@@ -294,14 +302,15 @@ fn decoration_value(operands: &[Operand], d: Decoration) -> Option<u32> {
 }
 
 /// Whether a decoration says how a varying is interpolated or kept (what each member's
-/// variable takes from the block and from its member).
-fn interpolation(d: &Operand) -> bool {
+/// variable takes from the block and from its member; each leaf of an aggregate varying,
+/// [`crate::front::spirv_aggregate_varyings`], from its variable and members).
+pub(crate) fn interpolation(d: &Operand) -> bool {
     use Decoration as D;
     matches!(d, Operand::Decoration(D::Flat | D::NoPerspective | D::Centroid | D::Sample | D::Invariant | D::Patch | D::RelaxedPrecision))
 }
 
 /// The name `OpName` (or, for a member, `OpMemberName`) gives.
-fn name_of(module: &dr::Module, id: Word, member: Option<usize>) -> Option<String> {
+pub(crate) fn name_of(module: &dr::Module, id: Word, member: Option<usize>) -> Option<String> {
     module.debug_names.iter().find_map(|n| {
         let named = match member {
             None => n.class.opcode == Op::Name && n.operands.first() == Some(&Operand::IdRef(id)),

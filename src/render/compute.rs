@@ -70,29 +70,8 @@ impl ComputeScene {
                 )]);
         };
         let plan::Plan { uniforms: uniform_data, textures: texture_plan, warnings, .. } = plan::plan(&input.plan_input())?;
+        let pipeline = gpu.compute_pipeline(&t.name, input.wgsl).map_err(|e| vec![pipeline_error(file, &e)])?;
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let shader = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(&t.name),
-            source: wgpu::ShaderSource::Wgsl(input.wgsl.into()),
-        });
-        // wgpu compiles with naga's SPIR-V writer, which can panic: contained as an error.
-        let made = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            gpu.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(&t.name),
-                layout: None,
-                module: &shader,
-                entry_point: Some("cs_main"),
-                compilation_options: Default::default(),
-                cache: None,
-            })
-        }));
-        let pipeline = made.map_err(|payload| {
-            let message = format!(
-                "wgpu's shader compiler (naga's SPIR-V writer) crashed on the translated WGSL: {}",
-                crate::front::naga_run::panic_message(payload.as_ref())
-            );
-            vec![pipeline_error(file, &message)]
-        })?;
         let uniforms = uniform_buffers(gpu, uniform_data);
         let textures = Textures::create(gpu, input, &texture_plan)?;
         let layout_of = |group| pipeline.get_bind_group_layout(group);
@@ -141,10 +120,7 @@ impl ComputeScene {
     /// Dispatches the program once with `state`'s uniforms and reads the image back.
     pub fn draw(&mut self, gpu: &Gpu, state: &FrameState, timeout: Duration) -> Result<Frame, FrameError> {
         let cpu_start = Instant::now();
-        for (data, buffer) in &mut self.uniforms {
-            data.update(&self.module, state).map_err(FrameError::Device)?;
-            gpu.queue.write_buffer(buffer, 0, &data.bytes);
-        }
+        frames::write_uniform_buffers(gpu, &mut self.uniforms, &self.module, state)?;
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let mut encoder = gpu.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("dispatch") });
         {

@@ -235,17 +235,42 @@ impl Gpu {
                 cache: None,
             })
         }));
-        let popped = pollster::block_on(scope.pop());
-        let pipeline = made.map_err(|payload| {
-            format!(
-                "wgpu's shader compiler (naga's SPIR-V writer) crashed on the translated WGSL: {}",
-                crate::front::naga_run::panic_message(payload.as_ref())
-            )
-        })?;
-        match popped {
-            Some(e) => Err(e.to_string()),
-            None => Ok(pipeline),
-        }
+        contained(made, pollster::block_on(scope.pop()))
+    }
+
+    /// Builds the compute pipeline of `wgsl`'s `cs_main`; wgpu's validation errors come
+    /// back as text.
+    pub fn compute_pipeline(&self, label: &str, wgsl: &str) -> Result<wgpu::ComputePipeline, String> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = self
+            .device
+            .create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(label), source: wgpu::ShaderSource::Wgsl(wgsl.into()) });
+        let made = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(label),
+                layout: None,
+                module: &module,
+                entry_point: Some("cs_main"),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+        }));
+        contained(made, pollster::block_on(scope.pop()))
+    }
+}
+
+/// A pipeline wgpu made, or why not: its shader compiler (naga's SPIR-V writer) panicked,
+/// contained as an error, or its validation failed.
+fn contained<T>(made: std::thread::Result<T>, validation: Option<wgpu::Error>) -> Result<T, String> {
+    let pipeline = made.map_err(|payload| {
+        format!(
+            "wgpu's shader compiler (naga's SPIR-V writer) crashed on the translated WGSL: {}",
+            crate::front::naga_run::panic_message(payload.as_ref())
+        )
+    })?;
+    match validation {
+        Some(e) => Err(e.to_string()),
+        None => Ok(pipeline),
     }
 }
 

@@ -13,6 +13,7 @@ use std::time::{Duration, Instant};
 use crate::render::device::Gpu;
 use crate::render::scene::{ColorMode, Draw, Scene};
 use crate::render::semantics::FrameState;
+use crate::render::uniforms::UniformBuffer;
 
 /// The pixels of a frame, top row first, without row padding.
 pub enum Pixels {
@@ -324,8 +325,18 @@ pub fn render(gpu: &Gpu, scene: &mut Scene, target: &FrameTarget, state: &FrameS
 
 /// Writes the scene's uniforms for `state` (semantics re-evaluated).
 pub fn write_uniforms(gpu: &Gpu, scene: &mut Scene, state: &FrameState) -> Result<(), FrameError> {
-    for (data, buffer) in &mut scene.uniforms {
-        data.update(&scene.module, state).map_err(FrameError::Device)?;
+    write_uniform_buffers(gpu, &mut scene.uniforms, &scene.module, state)
+}
+
+/// Writes `uniforms` (of `module`) for `state`: a drawn scene's or a compute program's.
+pub fn write_uniform_buffers(
+    gpu: &Gpu,
+    uniforms: &mut [(UniformBuffer, wgpu::Buffer)],
+    module: &naga::Module,
+    state: &FrameState,
+) -> Result<(), FrameError> {
+    for (data, buffer) in uniforms {
+        data.update(module, state).map_err(FrameError::Device)?;
         gpu.queue.write_buffer(buffer, 0, &data.bytes);
     }
     Ok(())
