@@ -170,6 +170,7 @@ pub fn compile(
         }
         for stage in &p.stages {
             diags.extend(stage.naga.as_ref().and_then(|v| webgpu_features::float16_needed(&stage.syntax, v)));
+            diags.extend(webgpu_features::image_formats_chosen(&stage.syntax));
         }
     }
     program

@@ -7,7 +7,7 @@ use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use naga::Span;
-use rspirv::spirv::Op;
+use rspirv::spirv::{ImageFormat, Op};
 
 use crate::front::reference::log::{self, LineTable};
 
@@ -29,6 +29,10 @@ pub(crate) const OP_TYPE_POINTER: u16 = Op::TypePointer as u16;
 pub(crate) const OP_UNDEF: u16 = Op::Undef as u16;
 pub(crate) const OP_VARIABLE: u16 = Op::Variable as u16;
 pub(crate) const OP_TYPE_ARRAY: u16 = Op::TypeArray as u16;
+pub(crate) const OP_TYPE_INT: u16 = Op::TypeInt as u16;
+pub(crate) const OP_TYPE_IMAGE: u16 = Op::TypeImage as u16;
+/// `ImageFormat Unknown`: a storage image whose format the API's bound image gives.
+const IMAGE_FORMAT_UNKNOWN: u32 = ImageFormat::Unknown as u32;
 /// An opcode SPIR-V does not define, under which `OpUndef` waits out the sampler splitter.
 pub(crate) const PARKED_UNDEF: u16 = 0xfffe;
 /// Words in the SPIR-V header before the first instruction.
@@ -232,12 +236,30 @@ fn with_opcode(mut words: Vec<u32>, from: u16, to: u16) -> Vec<u32> {
 /// `words` without the debug instructions naga's SPIR-V front does not read: `OpLine` and
 /// `OpNoLine` among the global declarations and in a function's header (before its first
 /// `OpLabel`), where glslang also puts them, and the stage's source text (`OpSource`'s
-/// text operand and `OpSourceContinued`).
+/// text operand and `OpSourceContinued`); and a storage image without a format (naga reads
+/// it as a sampled one) given the widest of its sampled type, as the GLSL route does
+/// ([`chosen_image_format`](crate::front::syntax::chosen_image_format)).
 pub(crate) fn readable_by_naga(words: Vec<u32>) -> Vec<u32> {
     let mut out = words[..HEADER_WORDS.min(words.len())].to_vec();
     let mut in_body = false;
+    let mut integer_types: Vec<(u32, bool)> = Vec::new();
     for (at, op, count) in instructions(&words) {
         match op {
+            // OpTypeInt result width signedness
+            OP_TYPE_INT if count >= 4 => integer_types.push((words[at + 1], words[at + 3] == 1)),
+            // OpTypeImage result sampled-type dim depth arrayed ms sampled format: a storage
+            // image without a format (GL: the bound image's) gets the one naga needs (N0111).
+            OP_TYPE_IMAGE if count >= 9 && words[at + 7] == 2 && words[at + 8] == IMAGE_FORMAT_UNKNOWN => {
+                let format = match integer_types.iter().find(|(id, _)| *id == words[at + 2]) {
+                    Some((_, true)) => ImageFormat::Rgba32i,
+                    Some((_, false)) => ImageFormat::Rgba32ui,
+                    None => ImageFormat::Rgba32f,
+                };
+                out.extend_from_slice(&words[at..at + 8]);
+                out.push(format as u32);
+                out.extend_from_slice(&words[at + 9..at + count]);
+                continue;
+            }
             OP_FUNCTION | OP_FUNCTION_END => in_body = false,
             OP_LABEL => in_body = true,
             OP_LINE | OP_NO_LINE if !in_body => continue,

@@ -4,6 +4,8 @@
 //! The reference compiler still compiles and links the files one by one, as GL does; the
 //! joined text is registered like an `#include` expansion ([`Files::add_joined`]), so every
 //! span effectc reports in it is shown in the file and line it came from. The join:
+//! - each file's conditionals are resolved on their own (GL preprocesses every shader
+//!   object apart): inactive groups and the directives are blanked, byte for byte;
 //! - the file with `main` goes last (the others define what it calls; its prototypes of
 //!   them are legal after the definitions);
 //! - one `#version` directive, the first file's (or the first one any file has), at the
@@ -14,6 +16,7 @@
 use std::collections::HashSet;
 
 use crate::diag::{FileId, Files, Segment};
+use crate::front::conditionals::resolve;
 use crate::front::version::{blank_comments, parse_version};
 
 /// Joins `units` (the files of one stage) into one text; returns its id.
@@ -39,11 +42,19 @@ pub fn join(files: &mut Files, units: &[FileId]) -> FileId {
     let mut defined: HashSet<String> = HashSet::new();
     let mut variables: HashSet<String> = HashSet::new();
     for (i, (file, directive)) in ordered.iter().zip(&directives).enumerate() {
-        let mut text = files.text(*file).as_bytes().to_vec();
+        // Each file is preprocessed on its own in GL: its conditionals are resolved here
+        // (blanked byte for byte), so neither a guard macro another file defines nor a
+        // declaration in an inactive group reaches the joined text.
+        let own = files.text(*file);
+        let resolved = match parse_version(own) {
+            Ok(version) => resolve(own, &blank_comments(own), &version),
+            Err(_) => own.to_string(),
+        };
+        let mut text = resolved.as_bytes().to_vec();
         if let Some(d) = directive.clone().filter(|_| i > 0 || lifted.is_some()) {
             blank(&mut text, d);
         }
-        let clean = blank_comments(files.text(*file));
+        let clean = blank_comments(&resolved);
         for statement in file_scope_statements(&clean) {
             let key = normalised(&clean[statement.clone()]);
             // A prototype of a function an earlier file defines (naga's parser refuses a
@@ -60,7 +71,7 @@ pub fn join(files: &mut Files, units: &[FileId]) -> FileId {
         }
         defined.extend(defined_functions(&clean));
         let start = out.len();
-        out.push_str(&String::from_utf8(text).unwrap_or_else(|_| files.text(*file).to_string()));
+        out.push_str(&String::from_utf8(text).unwrap_or(resolved));
         segments.push(Segment { at: start..out.len(), file: *file, start: 0 });
         out.push('\n');
     }

@@ -6,6 +6,24 @@ use crate::front::naga_run::Validated;
 use crate::front::rewrite;
 use crate::front::syntax::StageSyntax;
 
+/// N0111 at each image of `s` declared without a format qualifier (legal where the stage
+/// only stores to it, or reads with `EXT_shader_image_load_formatted`: GL converts to the
+/// format of the image bound): WebGPU storage textures have a format, and the translation
+/// gives the widest of the image's type, which holds every value the stage stores; `render`
+/// creates the image in it.
+pub fn image_formats_chosen(s: &StageSyntax) -> Vec<Diagnostic> {
+    let images = s.globals.iter().filter(|g| g.storage == crate::front::syntax::Storage::Uniform);
+    images
+        .filter_map(|g| Some((g, crate::front::syntax::chosen_image_format(&g.ty.base, &g.layout)?)))
+        .map(|(g, format)| {
+            Diagnostic::new(Code::ImageFormatChosen, format!("image `{}` has no format: the translation declares it `{format}`", s.original_name(&g.name)))
+                .at(s.file, g.name_span.clone(), format!("stored as `{format}`"))
+                .with_note("GL converts to the format of the image bound; WebGPU storage textures are declared with a format, and this one holds every value the stage can store")
+                .with_help("write the format the image is created in (`layout(rgba8) writeonly uniform image2D …`) to translate to it")
+        })
+        .collect()
+}
+
 /// N0108 at the first use of `gl_ClipDistance` or `gl_CullDistance` in `s`, the stage that
 /// feeds the rasterizer (a geometry stage, else the vertex stage): WebGPU has no user clip or
 /// cull distances without a feature, so both routes compute them and pass neither, and a

@@ -111,6 +111,10 @@ impl Ctx<'_> {
 
     /// An image, atomic counter or separate texture/sampler: the same, for opaque uniforms.
     fn opaque_binding(&mut self, first: &crate::front::syntax::Global) {
+        if let Some(format) = crate::front::syntax::chosen_image_format(&first.ty.base, &first.layout) {
+            // WebGPU storage textures have a format (N0111).
+            self.add_layout(first, format, format);
+        }
         // Images and atomic counters stay declarations of their own.
         if first.layout.iter().any(|(k, _)| k == "binding") {
             let base = first.ty.base.as_str();

@@ -19,7 +19,9 @@ impl Ctx<'_> {
             let Some((matrix, forms)) = compat::matrix_form(&u.name) else { continue };
             let open: String = forms.iter().rev().map(|f| format!("{f}(")).collect();
             let close = ")".repeat(forms.len());
-            match &u.index {
+            // `gl_TextureMatrixInverse[i]` picks a matrix of the array before the form is taken;
+            // `gl_ModelViewMatrixInverse[3]` indexes a column of the form.
+            match u.index.as_ref().filter(|_| matrix == "gl_TextureMatrix") {
                 Some((bracket, _, _)) => {
                     self.edits.replace(u.span.clone(), format!("{open}{matrix}"));
                     self.edits.insert(bracket.end, close);

@@ -38,7 +38,10 @@ impl Ctx<'_> {
             && !first.ty.is_array()
             && matrix_shape(&first.ty.base).is_some()
             && self.s.stage != StageKind::Geometry;
-        if idxs.len() == 1 && !split {
+        // A declaration a macro writes (`IN(vec4 vertex, POSITION)` with `#define IN(d, l) in
+        // d;`) has its keyword, name and layout inside the macro: the use is written out again.
+        let written_out = idxs.len() > 1 || declared_by_macro(s, first);
+        if !written_out && !split {
             self.drop_invariant(first);
             // (A matrix split into columns and several names in one declaration are written
             // out again below, keyword too.)
@@ -61,7 +64,7 @@ impl Ctx<'_> {
             self.split_matrix(first, loc);
             return;
         }
-        if idxs.len() == 1 {
+        if !written_out {
             if first.location.is_some() {
                 self.unpack_component(first);
                 return;
@@ -72,7 +75,8 @@ impl Ctx<'_> {
             };
             self.add_layout(first, &format!("location = {loc}"), "location");
         } else {
-            // Split `out vec3 a, b;` so each name gets its own location.
+            // Split `out vec3 a, b;` so each name gets its own location (and write out a
+            // macro's declaration).
             let mut text = String::new();
             let mut alloc = kind;
             for &i in &idxs {
@@ -238,4 +242,10 @@ impl LocationAllocator {
         self.next += slots;
         loc
     }
+}
+
+/// Whether `g`'s declaration comes from a macro's expansion: its name is not written at its
+/// span (which is the macro use's).
+fn declared_by_macro(s: &StageSyntax, g: &crate::front::syntax::Global) -> bool {
+    s.text.get(g.name_span.clone()) != Some(s.original_name(&g.name))
 }

@@ -24,4 +24,6 @@ pub use model::{
 pub use nodes::{expr_text, word_occurrences};
 pub use parse::analyse;
 pub(crate) use parse::vulkan_source;
-pub use types::{dims_text, is_rect_sampler, matrix_shape, sampler_parts, texel_buffer_element, GlslType, Interp, Storage};
+pub use types::{
+    chosen_image_format, dims_text, is_rect_sampler, matrix_shape, sampler_parts, texel_buffer_element, GlslType, Interp, Storage,
+};
