@@ -52,7 +52,6 @@ impl GlScene {
             let vao = gl.create_vertex_array()?;
             gl.bind_vertex_array(Some(vao));
             let mut buffers = Vec::new();
-            let mut unfed_inputs = Vec::new();
             let vbo = gl.create_buffer()?;
             buffers.push(vbo);
             gl.bind_buffer(glow::ARRAY_BUFFER, Some(vbo));
@@ -67,55 +66,7 @@ impl GlScene {
                 }
                 None => None,
             };
-            let reflection_inputs = &replay.inputs;
-            let mut read: Vec<String> = (0..gl.get_active_attributes(program.program))
-                .filter_map(|a| gl.get_active_attribute(program.program, a))
-                .map(|a| a.name)
-                .collect();
-            // Without a vertex stage GL's fixed-function one reads the legacy arrays the
-            // translation's stand-in reads.
-            let legacy: Vec<String> = reflection_inputs
-                .iter()
-                .map(|(n, _)| n.clone())
-                .filter(|n| crate::front::compat::attribute(n).is_some() && !read.contains(n))
-                .collect();
-            read.extend(legacy);
-            for name in read {
-                let fixed_function = crate::front::compat::attribute(&name).is_some();
-                if name.starts_with("gl_") && !fixed_function {
-                    continue;
-                }
-                let location = gl.get_attrib_location(program.program, &name);
-                if location.is_none() && !fixed_function {
-                    continue;
-                }
-                let wgsl_location = reflection_inputs.iter().find(|(n, _)| *n == name).map(|(_, l)| *l);
-                let per_vertex = wgsl_location.and_then(|l| replay.vertices.attributes.iter().find(|x| x.shader_location == l));
-                let per_instance = wgsl_location
-                    .and_then(|l| replay.instances.as_ref().and_then(|i| i.attributes.iter().find(|x| x.shader_location == l)));
-                let (buffer, stride, attribute, divisor) = match (per_vertex, per_instance, ibo) {
-                    (_, Some(x), Some(b)) => (b, replay.instances.as_ref().map_or(0, |i| i.stride), x, 1),
-                    (Some(x), _, _) => (vbo, replay.vertices.stride, x, 0),
-                    _ => {
-                        unfed_inputs.push(name.clone());
-                        continue;
-                    }
-                };
-                gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer));
-                let (size, ty, integer) = vertex_format(attribute.format);
-                let Some(location) = location else {
-                    // `gl_Vertex`, `gl_Normal`, …: the legacy arrays.
-                    super::fixed_function::bind_attribute(&name, size, ty, stride as i32, attribute.offset as i32)?;
-                    continue;
-                };
-                gl.enable_vertex_attrib_array(location);
-                if integer {
-                    gl.vertex_attrib_pointer_i32(location, size, ty, stride as i32, attribute.offset as i32);
-                } else {
-                    gl.vertex_attrib_pointer_f32(location, size, ty, false, stride as i32, attribute.offset as i32);
-                }
-                gl.vertex_attrib_divisor(location, divisor);
-            }
+            let unfed_inputs = feed_attributes(gl, program.program, replay, vbo, ibo)?;
             let indexed = match &replay.draw.indices {
                 Some(indices) => {
                     let b = gl.create_buffer()?;
@@ -238,6 +189,98 @@ fn primitive_mode(primitive: &str) -> u32 {
         "lines_adjacency" => glow::LINES_ADJACENCY,
         "triangles_adjacency" => glow::TRIANGLES_ADJACENCY,
         _ => glow::TRIANGLES,
+    }
+}
+
+/// Points every vertex input GL reads at the scene's bytes for the translation's input of the
+/// same name (a matrix input: each column, at GL's consecutive locations, from the column
+/// input the translation split it into: `m_effectc_col0` on the GLSL route, `m_0` through
+/// SPIR-V), and the legacy arrays of a program without a vertex stage. Returns the inputs
+/// the scene has no data for (GL reads them as 0).
+///
+/// # Safety
+/// A current GL context whose vertex array object is bound; `vbo` and `ibo` are its buffers.
+unsafe fn feed_attributes(
+    gl: &glow::Context,
+    program: glow::Program,
+    replay: &crate::render::scene::replay::Replay,
+    vbo: glow::Buffer,
+    ibo: Option<glow::Buffer>,
+) -> Result<Vec<String>, String> {
+    let mut unfed_inputs = Vec::new();
+    let reflection_inputs = &replay.inputs;
+    let mut read: Vec<(String, u32)> = (0..gl.get_active_attributes(program))
+        .filter_map(|a| gl.get_active_attribute(program, a))
+        .map(|a| (a.name, matrix_columns(a.atype)))
+        .collect();
+    // Without a vertex stage GL's fixed-function one reads the legacy arrays the
+    // translation's stand-in reads.
+    let legacy: Vec<(String, u32)> = reflection_inputs
+        .iter()
+        .map(|(n, _)| n.clone())
+        .filter(|n| crate::front::compat::attribute(n).is_some() && !read.iter().any(|(r, _)| r == n))
+        .map(|n| (n, 1))
+        .collect();
+    read.extend(legacy);
+    for (name, columns) in read {
+        let fixed_function = crate::front::compat::attribute(&name).is_some();
+        if name.starts_with("gl_") && !fixed_function {
+            continue;
+        }
+        let location = gl.get_attrib_location(program, &name);
+        if location.is_none() && !fixed_function {
+            continue;
+        }
+        let wgsl_location = |n: &str| reflection_inputs.iter().find(|(r, _)| r == n).map(|(_, l)| *l);
+        // (GL location offset, the translation's input feeding it)
+        let parts: Vec<(u32, Option<u32>)> = match wgsl_location(&name) {
+            Some(l) => vec![(0, Some(l))],
+            None if columns > 1 => (0..columns)
+                .map(|c| (c, wgsl_location(&format!("{name}_effectc_col{c}")).or_else(|| wgsl_location(&format!("{name}_{c}")))))
+                .collect(),
+            None => vec![(0, None)],
+        };
+        for (offset, wgsl_location) in parts {
+            let per_vertex = wgsl_location.and_then(|l| replay.vertices.attributes.iter().find(|x| x.shader_location == l));
+            let per_instance =
+                wgsl_location.and_then(|l| replay.instances.as_ref().and_then(|i| i.attributes.iter().find(|x| x.shader_location == l)));
+            let (buffer, stride, attribute, divisor) = match (per_vertex, per_instance, ibo) {
+                (_, Some(x), Some(b)) => (b, replay.instances.as_ref().map_or(0, |i| i.stride), x, 1),
+                (Some(x), _, _) => (vbo, replay.vertices.stride, x, 0),
+                _ => {
+                    if !unfed_inputs.contains(&name) {
+                        unfed_inputs.push(name.clone());
+                    }
+                    continue;
+                }
+            };
+            gl.bind_buffer(glow::ARRAY_BUFFER, Some(buffer));
+            let (size, ty, integer) = vertex_format(attribute.format);
+            let Some(location) = location else {
+                // `gl_Vertex`, `gl_Normal`, …: the legacy arrays.
+                super::fixed_function::bind_attribute(&name, size, ty, stride as i32, attribute.offset as i32)?;
+                continue;
+            };
+            let location = location + offset;
+            gl.enable_vertex_attrib_array(location);
+            if integer {
+                gl.vertex_attrib_pointer_i32(location, size, ty, stride as i32, attribute.offset as i32);
+            } else {
+                gl.vertex_attrib_pointer_f32(location, size, ty, false, stride as i32, attribute.offset as i32);
+            }
+            gl.vertex_attrib_divisor(location, divisor);
+        }
+    }
+    Ok(unfed_inputs)
+}
+
+/// The columns of a GL attribute type: 2–4 for a matrix (`FLOAT_MAT3x4`: 3), else 1.
+fn matrix_columns(atype: u32) -> u32 {
+    match atype {
+        glow::FLOAT_MAT2 | glow::FLOAT_MAT2x3 | glow::FLOAT_MAT2x4 | glow::DOUBLE_MAT2 | glow::DOUBLE_MAT2x3 | glow::DOUBLE_MAT2x4 => 2,
+        glow::FLOAT_MAT3 | glow::FLOAT_MAT3x2 | glow::FLOAT_MAT3x4 | glow::DOUBLE_MAT3 | glow::DOUBLE_MAT3x2 | glow::DOUBLE_MAT3x4 => 3,
+        glow::FLOAT_MAT4 | glow::FLOAT_MAT4x2 | glow::FLOAT_MAT4x3 | glow::DOUBLE_MAT4 | glow::DOUBLE_MAT4x2 | glow::DOUBLE_MAT4x3 => 4,
+        _ => 1,
     }
 }
 

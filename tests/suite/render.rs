@@ -185,7 +185,7 @@ fn every_rewrite_program_renders_as_bare_stage_files_with_reported_guesses() {
     }
     let mut failures = Vec::new();
     let mut guessed = 0;
-    for program in crate::common::fixtures("tests/rewrite", 56) {
+    for program in crate::common::fixtures("tests/rewrite", 58) {
         let name = crate::common::name_of(&program);
         let dir = scratch("render-bare", &name);
         let out = effectc(&["render", program.to_str().unwrap(), "--size", "32x32", "--out", dir.to_str().unwrap()]);
@@ -291,6 +291,23 @@ fn a_bad_value_writes_no_frame_and_leaves_existing_ones_untouched() {
 /// workgroup still covers every pixel) and the image it stores to is the frame, its row 0
 /// at the bottom as GL shows an image; one that stores to buffers only has nothing to show
 /// and says so.
+/// A fragment stage that writes `gl_FragDepth`, drawn on the full-screen quad (no depth
+/// test): WebGPU refuses such a pipeline without a depth attachment, so the scene has one,
+/// and the colour reaches every pixel (the depths, 0.25–0.75, pass the cleared 1.0).
+#[test]
+fn a_fragment_stage_that_writes_depth_draws() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "frag-depth");
+    let out = effectc(&["render", "tests/render/frag_depth", "--size", "20x12", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let frame = png(&dir.join("depth_0000.png"));
+    let px = |x: usize, y: usize| -> [u8; 4] { frame[(y * 20 + x) * 4..][..4].try_into().unwrap() };
+    assert!(px(0, 11)[0] < 16 && px(0, 11)[1] < 16 && (126..=129).contains(&px(0, 11)[2]), "bottom left: uv (0, 0), {:?}", px(0, 11));
+    assert!(px(19, 0)[0] > 240 && px(19, 0)[1] > 240, "top right: uv (1, 1), {:?}", px(19, 0));
+}
+
 #[test]
 fn a_compute_program_shows_the_image_it_stores() {
     if !have_gpu() {

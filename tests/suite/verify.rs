@@ -12,7 +12,7 @@ use crate::render::have_gpu;
 /// Frame size of the semantics programs (they are written for 64×64).
 const SEMANTICS_SIZE: &str = "64x64";
 /// Programs in the semantics suite.
-const SEMANTICS: usize = 98;
+const SEMANTICS: usize = 100;
 
 /// Programs in the compatibility-profile suite (`tests/verify/compat/`: one directory per
 /// program, GLSL 1.10–1.50 reading fixed-function state).
@@ -295,7 +295,7 @@ fn every_rewrite_program_matches_the_gl_driver() {
         return;
     }
     let mut wrong = Vec::new();
-    for dir in crate::common::fixtures("tests/rewrite", 56) {
+    for dir in crate::common::fixtures("tests/rewrite", 58) {
         let name = name_of(&dir);
         let out = effectc(&[
             "verify",

@@ -202,7 +202,10 @@ impl Scene {
                 // A pipeline needs an attachment: a program that writes no colour (it only
                 // discards, or stores to images) draws into a depth buffer of its own.
                 let no_color = colors.iter().all(Option::is_none);
-                let depth = no_color || (render.depth_test && !matches!(mesh_note, MeshNote::Fullscreen));
+                // WebGPU refuses a pipeline whose fragment stage writes depth without a
+                // depth attachment (GL writes into the default framebuffer's).
+                let writes_depth = writes_frag_depth(&t.module);
+                let depth = no_color || writes_depth || (render.depth_test && !matches!(mesh_note, MeshNote::Fullscreen));
                 (depth.then_some(wgpu::TextureFormat::Depth32Float), colors)
             }
         };
@@ -399,4 +402,13 @@ pub(crate) fn pipeline_error(file: FileId, message: &str) -> Diagnostic {
         .in_file(file)
         .with_note(message.trim().to_string())
         .with_note("the WGSL effectc renders is what `effectc translate --to wgsl` writes")
+}
+
+/// Whether the fragment entry point of `module` writes `frag_depth` (`gl_FragDepth`).
+fn writes_frag_depth(module: &naga::Module) -> bool {
+    let depth = |b: &Option<naga::Binding>| matches!(b, Some(naga::Binding::BuiltIn(naga::BuiltIn::FragDepth)));
+    module.entry_points.iter().filter(|e| e.stage == naga::ShaderStage::Fragment).filter_map(|e| e.function.result.as_ref()).any(|r| {
+        depth(&r.binding)
+            || matches!(&module.types[r.ty].inner, naga::TypeInner::Struct { members, .. } if members.iter().any(|m| depth(&m.binding)))
+    })
 }
