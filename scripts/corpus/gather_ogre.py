@@ -16,7 +16,8 @@ version 330): `OGRE_NATIVE_GLSL_VERSION_DIRECTIVE` replaced by `#version 330`, `
 resolved from the media by file name (HighLevelGpuProgram::_resolveIncludes, `#line 1 0` /
 `#line N 0` around the text), the builtin defines (OGRE_GLSL=330, OGRE_<TYPE>_SHADER) and the
 program's preprocessor_defines as `#define` lines after #version (OGRE runs its own
-preprocessor with them; the GLSL preprocessor gives the same text), backslash-continued lines
+preprocessor with them; the GLSL preprocessor gives the same text, except `__VERSION__`, which
+OGRE's is 100 without #version: substituted as 100 then), backslash-continued lines
 joined as that preprocessor does. `attach` child programs go
 in as further units of the same stage.
 Usage: gather_ogre.py MIRROR_GIT_DIR OUT_DIR
@@ -123,6 +124,10 @@ def main():
             return None
         text = m.text(src).replace("OGRE_NATIVE_GLSL_VERSION_DIRECTIVE", f"#version {NATIVE}", 1)
         text = re.sub(r"\\[ \t]*\r?\n", "", include(text))  # CPreprocessor joins continued lines
+        # `#ifdef OGRE_GLSL` / `#version N` / `#endif` (Isosurf): OGRE_GLSL is defined for CPreprocessor,
+        # which keeps the #version line and blanks the directives
+        text = re.sub(r"\A([ \t]*\n)*[ \t]*#[ \t]*ifdef[ \t]+OGRE_GLSL[ \t]*\n([ \t]*#[ \t]*version[^\n]*\n)[ \t]*#[ \t]*endif[^\n]*\n",
+                      lambda mm: "\n" * mm.group(0)[:mm.start(2) - mm.start(0)].count("\n") + mm.group(2) + "\n", text)
         defs = [f"OGRE_GLSL {NATIVE}", f"OGRE_{TYPE_NAME[kind]}_SHADER"]
         for d in props.get("preprocessor_defines", []):
             for item in " ".join(d).replace(";", ",").split(","):
@@ -135,7 +140,9 @@ def main():
         if v:
             text = text[:v.end()] + block + f"#line {text.count(chr(10), 0, v.end()) + 1}\n" + text[v.end():]
         else:
-            text = block + "#line 1\n" + text
+            # OGRE's CPreprocessor runs with __VERSION__ = mShaderVersion, 100 when the source has
+            # no #version (GLSLShaderCommon::prepareImpl); the GL compiler would see 110, so bake it in
+            text = block + "#line 1\n" + re.sub(r"\b__VERSION__\b", "100", text)
         return text
 
     def techniques(name, depth=0):

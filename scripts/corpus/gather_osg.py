@@ -19,7 +19,11 @@ Pairing, in source order per file:
 - Every addShader of P between two `new osg::Program` is kept, whichever if/else branch it is in
   (osg attaches them all when the branches are not exclusive; exclusive branches may merge).
 osg compiles each shader's text as given (no define/#version injection without
-`#pragma import_defines` defines or vertex-attribute aliasing, both off by default on GL2).
+`#pragma import_defines` defines or vertex-attribute aliasing, both off by default on GL2),
+except that State::convertVertexShaderSourceToOsgBuiltIns (run on every stage) replaces `$VAR`
+outside quotes by DisplaySettings' value, here the desktop GL2 build's SHADER_NONE hint
+(OSG_GLSL_VERSION and OSG_PRECISION_FLOAT empty, OSG_VARYING_IN/OUT `varying`), an unknown
+`$VAR` by nothing (State_Utils::substitudeEnvVars).
 Identical programs are written once. Usage: gather_osg.py MIRROR_GIT_DIR OUT_DIR
 """
 import os
@@ -51,6 +55,29 @@ def expand(m, path, src, depth=0):
         t = m.text(inc)
         return expand(m, inc, t, depth + 1) if t is not None and depth < 3 else mm.group(0)
     return re.sub(r'^[ \t]*#\s*include\s+"([^"]+\.cpp)"', rep, src, flags=re.M)
+
+
+OSG_VALUES = {"OSG_GLSL_VERSION": "", "OSG_PRECISION_FLOAT": "",
+              "OSG_VARYING_IN": "varying", "OSG_VARYING_OUT": "varying"}
+
+
+def osg_env_vars(s):
+    """State_Utils::substitudeEnvVars with the SHADER_NONE values (no environment variables)."""
+    pos = 0
+    while pos < len(s):
+        found = [i for i in (s.find(c, pos) for c in "$'\"") if i >= 0]
+        if not found:
+            break
+        pos = min(found)
+        if s[pos] in "'\"":
+            end = s.find(s[pos], pos + 1)
+            if end < 0:
+                break
+            pos = end + 1
+        else:
+            end = re.match(r"\$[A-Za-z0-9_]*", s[pos:]).end() + pos
+            s = s[:pos] + OSG_VALUES.get(s[pos + 1:end], "") + s[end:]
+    return s
 
 
 def main():
@@ -129,7 +156,7 @@ def main():
             files, count = [], {}
             for s, t in sorted(stages, key=lambda st: order.index(st[0])):
                 count[s] = count.get(s, 0) + 1
-                files.append((s, STEM[s] + ("" if count[s] == 1 else str(count[s])), t))
+                files.append((s, STEM[s] + ("" if count[s] == 1 else str(count[s])), osg_env_vars(t)))
             w.add(f"{base}.{re.sub(r'[^A-Za-z0-9_]+', '_', p)}", files)
     w.report()
 
