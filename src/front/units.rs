@@ -249,4 +249,20 @@ mod tests {
         assert!(text.contains("buffer B { S s[]; };"), "{text}");
         assert_eq!(text.matches("struct S").count(), 1, "{text}");
     }
+
+    /// GL preprocesses each shader object on its own: a guard one file defines does not hide
+    /// another file's declarations, and a struct in an inactive group is no earlier definition
+    /// of the active one.
+    #[test]
+    fn each_file_is_preprocessed_on_its_own() {
+        let mut files = Files::new();
+        let lib = "#ifndef LIGHT\n#define LIGHT\n#if 0\nstruct L { vec2 p; };\n#else\nstruct L { vec4 p; };\n#endif\n#endif\n";
+        let main = files.add("a.vert", format!("#version 120\n{lib}vec4 f(L l);\nvoid main() {{ gl_Position = f(L(gl_Vertex)); }}\n"));
+        let helper = files.add("b.vert", format!("#version 120\n{lib}vec4 f(L l) {{ return l.p; }}\n"));
+        let joined = join(&mut files, &[main, helper]);
+        let text = files.text(joined);
+        assert_eq!(text.matches("struct L { vec4 p; };").count(), 1, "{text}");
+        assert!(!text.contains("vec2 p") && !text.contains("#if"), "inactive groups and directives blanked: {text}");
+        assert!(text.contains("vec4 f(L l) { return l.p; }") && text.contains("gl_Position = f(L(gl_Vertex))"), "{text}");
+    }
 }
