@@ -25,7 +25,8 @@
 //!   GLSL front drops from struct and array varyings; [`through_spirv`]: glslang → SPIR-V →
 //!   naga, where naga's GLSL front cannot take a stage glslang accepts (as written, or from
 //!   the rewrite), on the SPIR-V words as [`spirv_binary`] reads and edits them
-//!   ([`spirv_interface_blocks`]: blocks between stages as one variable per member);
+//!   ([`spirv_interface_blocks`]: blocks between stages as one variable per member;
+//!   [`spirv_signedness`]: integer signedness as naga reads it);
 //!   [`program`]: all of it per program.
 
 pub mod aggregate_varyings;
@@ -54,6 +55,7 @@ pub mod source_text;
 pub mod spirv_aggregate_varyings;
 pub mod spirv_binary;
 pub mod spirv_interface_blocks;
+pub mod spirv_signedness;
 pub mod statements;
 pub mod syntax;
 pub mod through_spirv;

@@ -25,6 +25,7 @@ use crate::front::reference::log::{self, LineTable};
 use crate::front::spirv_aggregate_varyings::split_aggregate_varyings;
 use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, split_combined_samplers, Lines};
 use crate::front::spirv_interface_blocks::split_interface_blocks;
+use crate::front::spirv_signedness::signedness_naga_reads;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
 
@@ -111,7 +112,7 @@ fn no_spirv(log: String) -> String {
 /// names as the user wrote them.
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
     dump_spirv(&words, &format!("{kind}.glslang"));
-    let words = split_aggregate_varyings(split_interface_blocks(readable_by_naga(split_combined_samplers(words)?)));
+    let words = split_aggregate_varyings(split_interface_blocks(signedness_naga_reads(readable_by_naga(split_combined_samplers(words)?))));
     dump_spirv(&words, &kind.to_string());
     let lines = Lines::of(&words);
     let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
