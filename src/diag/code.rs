@@ -154,6 +154,7 @@ codes! {
     OptionalWebGpuFeature => "N0109", "the translation needs an optional WebGPU feature (`primitive-index`, `dual-source-blending`, `shader-f16`)",
     InterpolationApproximated => "N0110", "a fragment built-in WebGPU has no per-call form of, written as GL evaluates it on a single-sampled target (`interpolateAt*`, `gl_HelperInvocation`)",
     ImageFormatChosen => "N0111", "an image declared without a format gets the widest of its type (`rgba32f`, `rgba32i`, `rgba32ui`): WebGPU storage textures have one",
+    IntegerTextureFetched => "N0112", "`texture`/`textureLod` of an integer sampler is written as `texelFetch` of the nearest texel, wrapping as GL_REPEAT (WebGPU samples float textures only)",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
     HazardAnalysisStopped => "N0701", "the static hazard analysis of a stage stopped at its work limit: its warnings are incomplete",
     // Warnings.

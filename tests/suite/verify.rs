@@ -12,7 +12,7 @@ use crate::render::have_gpu;
 /// Frame size of the semantics programs (they are written for 64×64).
 const SEMANTICS_SIZE: &str = "64x64";
 /// Programs in the semantics suite.
-const SEMANTICS: usize = 100;
+const SEMANTICS: usize = 101;
 
 /// Programs in the compatibility-profile suite (`tests/verify/compat/`: one directory per
 /// program, GLSL 1.10–1.50 reading fixed-function state).

@@ -131,16 +131,6 @@ impl Ctx<'_> {
                 continue;
             }
             self.shadow_bias(c);
-            if c.name == "texture" && c.args.len() == 2 {
-                if let Some(sampler) = self.integer_sampler_text(c) {
-                    // GL samples integer textures with NEAREST filtering (they are incomplete
-                    // otherwise); naga and WebGPU only fetch them: fetch the texel under `P`.
-                    self.edits.replace(c.name_span.clone(), "texelFetch");
-                    self.edits.insert(c.args[1].start, format!("ivec2(vec2(textureSize({sampler}, 0)) * ("));
-                    self.edits.insert(c.args[1].end, ")), 0");
-                    continue;
-                }
-            }
             if let Some((old, new, widen)) = LEGACY_FUNCTIONS.iter().find(|(o, _, _)| *o == c.name) {
                 self.legacy(c.name_span.clone(), old, new);
                 if *widen {
@@ -156,14 +146,9 @@ impl Ctx<'_> {
 
     /// For `texture(s, P)` on a 2D integer sampler `s` (a global or a parameter), the
     /// rewritten sampler expression.
-    fn integer_sampler_text(&self, c: &crate::front::syntax::Call) -> Option<String> {
-        let (ty, text) = self.first_arg_text(c)?;
-        matches!(ty.as_str(), "isampler2D" | "usampler2D").then_some(text)
-    }
-
     /// The user's type of the call's first argument (a sampler parameter, or a uniform
     /// sampler that is no array) and the rewritten combined-sampler expression for it.
-    fn first_arg_text(&self, c: &crate::front::syntax::Call) -> Option<(String, String)> {
+    pub(super) fn first_arg_text(&self, c: &crate::front::syntax::Call) -> Option<(String, String)> {
         let name = c.first_arg_name.as_deref()?;
         match self.first_arg_sampler(c)? {
             FirstArg::Param(ty) => {

@@ -30,6 +30,7 @@ mod file_scope;
 mod fixed_function;
 mod header;
 mod initializers;
+mod integer_lookups;
 mod interpolation;
 mod io_blocks;
 mod polyfills;
@@ -148,6 +149,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.subpass_inputs();
     c.interpolation_calls();
     c.query_lods();
+    c.integer_lookups();
     c.dynamic_lookups();
     c.lazy_logic();
     c.do_while_continue();

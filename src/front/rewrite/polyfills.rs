@@ -95,6 +95,7 @@ pub(super) fn definitions(used: &[&str]) -> String {
                 h.push_str("vec4 effectc_rect(vec4 p, vec2 size) { return vec4(p.xy / size, p.zw); }\n");
             }
             "textureQueryLod" => h.push_str(&super::query_lod::definitions()),
+            "integer_lookups" => h.push_str(&super::integer_lookups::definitions()),
             "noise1" | "noise2" | "noise3" | "noise4" => {
                 let result = if *b == "noise1" { "float".to_string() } else { format!("vec{}", &b[5..]) };
                 for arg in ["float", "vec2", "vec3", "vec4"] {
