@@ -7,6 +7,8 @@
 #   render     `effectc render --frames 1` writes a frame (bare stage files: mesh, uniforms
 #              and textures guessed).
 # Prints each failure with effectc's first error (the construct it names), then a table.
+# A Vulkan program's FLAGS file (`-V --target-env vulkan1.2 -l`, from the gatherer) gives the
+# Vulkan version effectc is told, as glslang's verdict used it.
 #
 # Usage: scripts/corpus_reference_translate.sh CORPUS_DIR [opengl|vulkan] [STEP]
 set -uo pipefail
@@ -30,8 +32,15 @@ for d in "$corpus"/*/; do
     src=$(basename "$d"); src=${src%%__*}
     legal[$src]=$(( ${legal[$src]:-0} + 1 ))
     rm -rf "$work/out" "$work/frames"
+    # The Vulkan version the project compiles for (a FLAGS file's `--target-env vulkan1.2`),
+    # as glslang's verdict was taken.
+    penv=$env
+    if [ "$env" = vulkan ] && [ -f "$d/FLAGS" ]; then
+        v=$(grep -oE -- '--target-env[ =]vulkan1\.[0-9]' "$d/FLAGS" | grep -oE 'vulkan1\.[0-9]' | head -1)
+        [ -n "$v" ] && penv=$v
+    fi
     # shellcheck disable=SC2086
-    if "$bin" translate --color never --target-env "$env" --to wgsl,spv --out "$work/out" $files > "$work/log" 2>&1; then
+    if "$bin" translate --color never --target-env "$penv" --to wgsl,spv --out "$work/out" $files > "$work/log" 2>&1; then
         ok=1
         for w in "$work"/out/*.wgsl; do
             naga "$w" > "$work/val" 2>&1 && tint "$w" --format wgsl -o "$work/tint.wgsl" > "$work/val" 2>&1 || ok=0
@@ -43,7 +52,7 @@ for d in "$corpus"/*/; do
         echo "translate fails: $d $(grep -m1 -E '^error' "$work/log")"
     fi
     # shellcheck disable=SC2086
-    if "$bin" render --color never --target-env "$env" --frames 1 --size 64x64 --timeout 10 --out "$work/frames" $files > "$work/rlog" 2>&1 \
+    if "$bin" render --color never --target-env "$penv" --frames 1 --size 64x64 --timeout 10 --out "$work/frames" $files > "$work/rlog" 2>&1 \
         && ls "$work"/frames/*.png > /dev/null 2>&1; then
         rendered[$src]=$(( ${rendered[$src]:-0} + 1 ))
     else

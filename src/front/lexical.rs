@@ -21,6 +21,8 @@
 //! - `precise` (GLSL 4.00), `coherent` and `restrict` (4.20; older versions have them
 //!   renamed as identifiers), which naga does not take: blanked (WGSL makes storage
 //!   accesses visible through barriers alone, and `restrict` only promises no aliasing);
+//! - control-flow attributes (`[[unroll]]`, `[[branch]]`; GL_EXT_control_flow_attributes),
+//!   compiler hints: blanked for both parsers;
 //! - precision qualifiers outside `precision` statements (`highp vec2 w` as a parameter or
 //!   block member, which naga's parser rejects): blanked; desktop GL and WGSL ignore them.
 
@@ -136,6 +138,15 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
             }
             continue;
         }
+        if c == b'[' && clean.get(i + 1) == Some(&b'[') {
+            // `[[unroll]]`, `[[branch]]`, `[[dependency_length(4)]]` (GL_EXT_control_flow_attributes):
+            // hints to the compiler, which neither parser takes; `[[` starts nothing else in GLSL.
+            if let Some(end) = attribute_end(clean, i) {
+                blank(&mut parser, i..end);
+                i = end;
+                continue;
+            }
+        }
         i += 1;
     }
     let for_parser = String::from_utf8(parser).unwrap_or_else(|_| text.to_string());
@@ -162,6 +173,18 @@ fn extension_word(word: &str) -> Option<(&'static str, &'static str)> {
         "pervertexEXT" => ("", "per-vertex fragment inputs (`pervertexEXT`, GL_EXT_fragment_shader_barycentric)"),
         _ => return None,
     })
+}
+
+/// The end (past `]]`) of the attribute list opening with `[[` at `at`, on its line.
+fn attribute_end(clean: &[u8], at: usize) -> Option<usize> {
+    let mut i = at + 2;
+    while i + 1 < clean.len() && clean[i] != b'\n' {
+        if clean[i] == b']' && clean[i + 1] == b']' {
+            return Some(i + 2);
+        }
+        i += 1;
+    }
+    None
 }
 
 fn line_start(clean: &[u8], at: usize) -> bool {
@@ -554,6 +577,15 @@ mod tests {
         let m = masked("void main() { debugPrintfEXT(\"p = %f (%d)\", x, f(y)); z = 1; }");
         assert_eq!(m.for_parser, "void main() {                                       ; z = 1; }");
         assert!(m.restore.is_empty());
+    }
+
+    #[test]
+    fn control_flow_attributes_are_blanked() {
+        let text = "void main() { [[unroll, dependency_length(4)]] for (int i = 0; i < 4; i++) { x[i] = y[z[i]]; } [[branch]] if (b) {} }";
+        let m = masked(text);
+        assert!(!m.for_parser.contains("[["), "{}", m.for_parser);
+        assert!(m.for_parser.contains("x[i] = y[z[i]]") && m.for_parser.len() == text.len(), "{}", m.for_parser);
+        assert!(m.unsupported.is_none());
     }
 
     #[test]

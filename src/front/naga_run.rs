@@ -291,6 +291,7 @@ fn parse_and_validate_inner(
         Err(payload) => return Err(Err(vec![crash(file, "GLSL front", &*payload)])),
     };
     crate::front::function_order::callees_first(&mut module);
+    write_only_storage_as_read_write(&mut module);
     let validated = catch_unwind(AssertUnwindSafe(|| validate_for_gl(&module)));
     match validated {
         Ok(Ok((info, needs))) => Ok(Validated { module, info, needs }),
@@ -299,6 +300,19 @@ fn parse_and_validate_inner(
             None => Err(Err(vec![validation_diagnostic(file, &err, &map_span)])),
         },
         Err(payload) => Err(Err(vec![crash(file, "validator", &*payload)])),
+    }
+}
+
+/// A `writeonly` storage buffer (SPIR-V `NonReadable`) declared `read_write`: WGSL's storage
+/// buffers are `read` or `read_write`, and naga refuses one that is store-only; the stores are
+/// the same.
+pub fn write_only_storage_as_read_write(module: &mut naga::Module) {
+    for (_, g) in module.global_variables.iter_mut() {
+        if let naga::AddressSpace::Storage { access } = &mut g.space {
+            if access.contains(naga::StorageAccess::STORE) && !access.contains(naga::StorageAccess::LOAD) {
+                *access |= naga::StorageAccess::LOAD;
+            }
+        }
     }
 }
 

@@ -137,6 +137,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     unreachable_ends_return_a_value(&mut module);
     comparison_parameters(&mut module);
     emit_only_what_needs_it(&mut module);
+    naga_run::write_only_storage_as_read_write(&mut module);
     Ok(module)
 }
 

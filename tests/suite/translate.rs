@@ -294,3 +294,35 @@ fn a_sampler_array_indexed_at_run_time_translates_with_gpu_shader5() {
     assert_eq!(out.status.code(), Some(1), "{stdout}");
     assert!(stdout.contains(Code::NonConstantSamplerIndex.as_str()), "{stdout}");
 }
+
+/// Vulkan GLSL compute: a workgroup size given by specialization constants
+/// (`local_size_x_id`) is their unspecialized defaults (1 where no constant has the id), and a
+/// `writeonly` storage buffer is `read_write` in WGSL (which has no write-only storage);
+/// naga's GLSL front refused the first ("Unexpected qualifier"), its validator the second.
+#[test]
+fn spec_constant_workgroup_sizes_and_write_only_buffers_translate() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-spec-workgroup");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let comp = dir.join("fill.comp");
+    std::fs::write(
+        &comp,
+        "#version 450\nlayout(local_size_x_id = 0, local_size_y = 2, local_size_z_id = 7) in;\n\
+         layout(constant_id = 0) const uint WIDTH = 16u;\n\
+         layout(std430, set = 0, binding = 0) writeonly buffer Out { uint values[]; };\n\
+         void main() { values[gl_GlobalInvocationID.x] = gl_GlobalInvocationID.y * WIDTH; }\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(["translate", "--target-env", "vulkan", "--to", "wgsl,spv", "--out"])
+        .arg(dir.join("out"))
+        .arg(&comp)
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    let wgsl = std::fs::read_to_string(dir.join("out/fill.wgsl")).unwrap();
+    assert!(wgsl.contains("@workgroup_size(16, 2, 1)"), "{wgsl}");
+    assert!(wgsl.contains("var<storage, read_write>"), "{wgsl}");
+}

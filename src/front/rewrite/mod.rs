@@ -39,6 +39,7 @@ mod std140_structs;
 mod subpass;
 mod uses;
 mod varyings;
+mod workgroup_size;
 
 use std::ops::Range;
 
@@ -139,6 +140,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.calls();
     c.struct_samplers();
     c.defaults_and_layouts();
+    c.spec_constant_workgroup_size();
     c.user_block_member_types();
     c.std140_struct_fillers();
     c.row_major_uses();
