@@ -33,34 +33,11 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mirror import write_program, strip_cpp_comments, c_string, cap_sample  # noqa: E402
+from mirror import write_program, strip_cpp_comments, c_string, cap_sample, call_args  # noqa: E402
 from granite_common import GitTree, GraniteCompiler, EXT_STAGE  # noqa: E402
 
 CALL = re.compile(r"\b(set_program|draw_fullscreen_quad|register_graphics|register_compute|request_program)\s*(?=\()")
 DEF = re.compile(r'\{\s*"(\w+)"\s*,\s*([^{}]+?)\s*\}')
-
-
-def call_args(text, start):
-    depth, i, cur, args = 0, start, "", []
-    while i < len(text):
-        ch = text[i]
-        if ch in "({":
-            depth += 1
-            if depth == 1:
-                i += 1
-                continue
-        elif ch in ")}":
-            depth -= 1
-            if depth == 0:
-                args.append(cur.strip())
-                return args
-        if ch == "," and depth == 1:
-            args.append(cur.strip())
-            cur = ""
-        else:
-            cur += ch
-        i += 1
-    return args
 
 
 def values(expr, src, members):

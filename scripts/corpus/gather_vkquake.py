@@ -32,7 +32,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mirror import Mirror, write_program, strip_cpp_comments, cpp_ifdefs, c_string  # noqa: E402
+from mirror import Mirror, write_program, strip_cpp_comments, cpp_ifdefs, c_string, call_args  # noqa: E402
 
 EXT_STAGE = {"vert": "vertex", "frag": "fragment", "comp": "compute", "geom": "geometry"}
 INC = re.compile(r'^[ \t]*#\s*include\s+"([^"]+)"[^\n]*', re.M)
@@ -91,29 +91,6 @@ def functions(src):
             i += 1
         out[m.group(1)] = (m.group(2), src[m.end():i - 1])
     return out
-
-
-def call_args(text, start):
-    """The top-level comma-separated arguments of the call whose '(' is at text[start]."""
-    depth, i, cur, args = 0, start, "", []
-    while True:
-        ch = text[i]
-        if ch == "(":
-            depth += 1
-            if depth == 1:
-                i += 1
-                continue
-        elif ch == ")":
-            depth -= 1
-            if depth == 0:
-                args.append(cur.strip())
-                return args
-        if ch == "," and depth == 1:
-            args.append(cur.strip())
-            cur = ""
-        else:
-            cur += ch
-        i += 1
 
 
 def modules(expr, params):

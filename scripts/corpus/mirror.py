@@ -297,3 +297,36 @@ def version_position(src):
             state = "normal" if c == "/" else "ce" if c == "*" else "ml"
         i += 1
     return 0, 1
+
+
+def call_args(text, start):
+    """The top-level comma-separated arguments of the bracketed list opening at text[start]
+    (`(` or `{`; nested `()`, `[]`, `{}` and string literals kept whole)."""
+    depth, i, cur, args = 0, start, "", []
+    while i < len(text):
+        ch = text[i]
+        if ch == '"' and depth >= 1:
+            j = text.find('"', i + 1)
+            while j > 0 and text[j - 1] == "\\":
+                j = text.find('"', j + 1)
+            j = len(text) - 1 if j < 0 else j
+            cur += text[i:j + 1]
+            i = j + 1
+            continue
+        if ch in "([{":
+            depth += 1
+            if depth == 1:
+                i += 1
+                continue
+        elif ch in ")]}":
+            depth -= 1
+            if depth == 0:
+                args.append(cur.strip())
+                return args
+        if ch == "," and depth == 1:
+            args.append(cur.strip())
+            cur = ""
+        else:
+            cur += ch
+        i += 1
+    return args

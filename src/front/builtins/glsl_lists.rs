@@ -563,6 +563,16 @@ pub(super) const LAYOUT_QUALIFIERS: &[&str] = &[
     "buffer_reference_align",
     "post_depth_coverage",
     "blend_support_all_equations",
+    "bindless_sampler",
+    "bindless_image",
+    "viewport_relative",
+    "num_views",
+    "primitive_culling",
+];
+
+/// The image format qualifiers (GLSL 4.60 §4.4.7, and `EXT_shader_image_int64`'s 64-bit ones):
+/// layout qualifiers too.
+pub const IMAGE_FORMATS: &[&str] = &[
     "r32f",
     "rgba32f",
     "rgba16f",
@@ -602,9 +612,6 @@ pub(super) const LAYOUT_QUALIFIERS: &[&str] = &[
     "r32ui",
     "r16ui",
     "r8ui",
-    "bindless_sampler",
-    "bindless_image",
-    "viewport_relative",
-    "num_views",
-    "primitive_culling",
+    "r64ui",
+    "r64i",
 ];

@@ -12,6 +12,7 @@ mod glsl_lists;
 mod naga_lists;
 
 use crate::front::version::{Profile, Version};
+pub use glsl_lists::IMAGE_FORMATS;
 use glsl_lists::{COMPAT_VARIABLES, CORE_VARIABLES, EXTENSION_VARIABLES, FUNCTIONS, LAYOUT_QUALIFIERS, TYPES};
 use naga_lists::{NAGA_FUNCTIONS, NAGA_VARIABLES};
 
@@ -74,5 +75,5 @@ pub fn is_type(name: &str) -> bool {
 
 /// Layout qualifier identifiers of GLSL (and GL_EXT_/GL_ARB_ ones seen in practice).
 pub fn is_layout_qualifier(name: &str) -> bool {
-    LAYOUT_QUALIFIERS.contains(&name)
+    LAYOUT_QUALIFIERS.contains(&name) || IMAGE_FORMATS.contains(&name)
 }

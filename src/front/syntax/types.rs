@@ -169,51 +169,6 @@ pub fn sampler_parts(base: &str) -> Option<(&'static str, &'static str)> {
     })
 }
 
-/// The image format qualifiers of GLSL 4.60 §4.4.7 and `EXT_shader_image_int64`.
-const IMAGE_FORMATS: [&str; 41] = [
-    "rgba32f",
-    "rgba16f",
-    "rg32f",
-    "rg16f",
-    "r11f_g11f_b10f",
-    "r32f",
-    "r16f",
-    "rgba16",
-    "rgb10_a2",
-    "rgba8",
-    "rg16",
-    "rg8",
-    "r16",
-    "r8",
-    "rgba16_snorm",
-    "rgba8_snorm",
-    "rg16_snorm",
-    "rg8_snorm",
-    "r16_snorm",
-    "r8_snorm",
-    "rgba32i",
-    "rgba16i",
-    "rgba8i",
-    "rg32i",
-    "rg16i",
-    "rg8i",
-    "r32i",
-    "r16i",
-    "r8i",
-    "rgba32ui",
-    "rgba16ui",
-    "rgb10_a2ui",
-    "rgba8ui",
-    "rg32ui",
-    "rg16ui",
-    "rg8ui",
-    "r32ui",
-    "r16ui",
-    "r8ui",
-    "r64ui",
-    "r64i",
-];
-
 /// For an image declared without a format qualifier (`writeonly uniform image2D img;`,
 /// legal: GL takes the format of the image bound), the format effectc gives it, as WebGPU
 /// needs one: the widest of its sampled type (`rgba32f`, `rgba32i`, `rgba32ui`), which holds
@@ -228,5 +183,5 @@ pub fn chosen_image_format(base: &str, layout: &[(String, Option<i64>)]) -> Opti
     } else {
         return None;
     };
-    (!layout.iter().any(|(k, _)| IMAGE_FORMATS.contains(&k.as_str()))).then_some(format)
+    (!layout.iter().any(|(k, _)| crate::front::builtins::IMAGE_FORMATS.contains(&k.as_str()))).then_some(format)
 }
