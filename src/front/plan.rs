@@ -95,6 +95,9 @@ pub struct Plan {
     /// aligns them to 16 bytes in the uniform block, as std140 does (naga aligns a struct to
     /// its largest member only, and WGSL's uniform rules then reject it).
     pub padded_structs: Vec<String>,
+    /// Struct members stored as arrays of 4-vectors (struct → members;
+    /// [`uniform_struct_arrays`](crate::front::uniform_struct_arrays)).
+    pub widened_struct_members: BTreeMap<String, Vec<String>>,
     /// Images and atomic counters without a binding of their own → binding (set 0).
     pub opaque: BTreeMap<String, u32>,
     /// The compatibility profile's built-ins the program uses ([`compat`]): their state is
@@ -311,7 +314,8 @@ pub fn is_unblocked_opaque(base: &str) -> bool {
 /// Builds the plan for a program (stages in pipeline order); `doubles_as_floats` as in
 /// [`repr_for`].
 pub fn plan(stages: &[StageSyntax], doubles_as_floats: bool) -> Plan {
-    let mut plan = Plan { doubles_as_floats, ..Plan::default() };
+    let widened_struct_members = crate::front::uniform_struct_arrays::widened_members(stages);
+    let mut plan = Plan { doubles_as_floats, widened_struct_members, ..Plan::default() };
     let mut taken: Vec<String> = Vec::new();
     // Uniforms, in stage order then declaration order.
     for s in stages {
@@ -501,7 +505,7 @@ fn describe_block_structs(plan: &mut Plan, stages: &[StageSyntax]) {
             }
         }
         let padded = plan.padded_structs.contains(&name);
-        plan.struct_texts.insert(name.clone(), struct_text(def, padded));
+        plan.struct_texts.insert(name.clone(), struct_text(def, padded, plan.widened_struct_members.get(&name)));
     }
 }
 
@@ -544,13 +548,15 @@ pub fn block_size_align(ty: &GlslType, plan: &Plan) -> (u32, u32) {
     }
 }
 
-/// A struct definition as the rewritten code declares it: sampler members removed.
-pub fn struct_text(def: &crate::front::syntax::StructDef, padded: bool) -> String {
+/// A struct definition as the rewritten code declares it: sampler members removed, the
+/// `widened` members as arrays of 4-vectors.
+pub fn struct_text(def: &crate::front::syntax::StructDef, padded: bool, widened: Option<&Vec<String>>) -> String {
     let mut text = format!("struct {} {{", def.name);
     let mut any = false;
     for m in def.members.iter().filter(|m| !m.ty.is_sampler()) {
         any = true;
-        text.push_str(&format!(" {} {}{};", m.ty.base, m.name, dims_text(&m.ty)));
+        let stored = crate::front::uniform_struct_arrays::widened(&m.ty).filter(|_| widened.is_some_and(|w| w.contains(&m.name)));
+        text.push_str(&format!(" {} {}{};", stored.map_or(m.ty.base.as_str(), |(ty, _)| ty), m.name, dims_text(&m.ty)));
     }
     if !any {
         text.push_str(" int effectc_unused;");

@@ -15,7 +15,7 @@ use crate::common;
 
 #[test]
 fn rewrite_corpus() {
-    let dirs = common::fixtures("tests/rewrite", 58);
+    let dirs = common::fixtures("tests/rewrite", 59);
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("../../snapshots/rewrite");
     settings.set_prepend_module_to_snapshot(false);

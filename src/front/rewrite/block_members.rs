@@ -7,7 +7,7 @@
 
 use super::Ctx;
 use crate::front::plan::{repr_for, Repr};
-use crate::front::syntax::{word_occurrences, Global, GlslType, Member, Storage, Use};
+use crate::front::syntax::{bracket_after, word_occurrences, Global, GlslType, Member, Storage, Use};
 use std::collections::BTreeMap;
 
 /// How member type `ty` of a uniform block is stored (a representation with std140's own
@@ -73,29 +73,6 @@ impl Ctx<'_> {
         let (_, repr) = stored(&m.ty, self.plan.doubles_as_floats);
         self.read_repr(&repr, &m.ty, span, bracket);
     }
-}
-
-/// The end of the `[…]` that follows `at` (spaces between allowed), if one does.
-fn bracket_after(text: &str, at: usize) -> Option<usize> {
-    let rest = &text[at..];
-    let open = at + rest.len() - rest.trim_start().len();
-    if !text[open..].starts_with('[') {
-        return None;
-    }
-    let mut depth = 0usize;
-    for (i, c) in text[open..].char_indices() {
-        match c {
-            '[' => depth += 1,
-            ']' => {
-                depth -= 1;
-                if depth == 0 {
-                    return Some(open + i + 1);
-                }
-            }
-            _ => {}
-        }
-    }
-    None
 }
 
 #[cfg(test)]

@@ -141,7 +141,7 @@ impl Ctx<'_> {
         let mut text = String::new();
         // `uniform struct S { … } s;` keeps the struct type declared.
         for def in s.structs.iter().filter(|d| decl.start <= d.span.start && d.span.end <= decl.end) {
-            text.push_str(&struct_text(def, self.plan.padded_structs.contains(&def.name)));
+            text.push_str(&struct_text(def, self.plan.padded_structs.contains(&def.name), self.plan.widened_struct_members.get(&def.name)));
             text.push(' ');
         }
         for &i in &idxs {

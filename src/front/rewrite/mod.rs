@@ -37,6 +37,7 @@ mod polyfills;
 mod query_lod;
 mod std140_structs;
 mod subpass;
+mod uniform_struct_arrays;
 mod uses;
 mod varyings;
 mod workgroup_size;
@@ -142,6 +143,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.defaults_and_layouts();
     c.spec_constant_workgroup_size();
     c.user_block_member_types();
+    c.uniform_struct_arrays();
     c.std140_struct_fillers();
     c.row_major_uses();
     c.unsized_arrays();

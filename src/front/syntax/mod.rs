@@ -21,7 +21,7 @@ pub use model::{
     layout_number, BlockInfo, Call, DefaultDecl, DoWhileContinue, Function, Global, LazyLogic, Member, Param, Referent, StageSyntax,
     StructDef, Swizzle, Use,
 };
-pub use nodes::{expr_text, word_occurrences};
+pub use nodes::{bracket_after, expr_text, word_occurrences};
 pub use parse::analyse;
 pub(crate) use parse::vulkan_source;
 pub use types::{

@@ -27,3 +27,26 @@ pub fn word_occurrences(text: &str, within: Range<usize>, name: &str) -> Vec<Ran
         .filter(|r| (r.start == 0 || !is_ident(bytes[r.start - 1])) && (r.end >= bytes.len() || !is_ident(bytes[r.end])))
         .collect()
 }
+
+/// The end of the `[…]` that follows `at` in `text` (after blanks), if one does.
+pub fn bracket_after(text: &str, at: usize) -> Option<usize> {
+    let rest = text.get(at..)?;
+    let open = at + rest.len() - rest.trim_start().len();
+    if !text[open..].starts_with('[') {
+        return None;
+    }
+    let mut depth = 0usize;
+    for (i, c) in text[open..].char_indices() {
+        match c {
+            '[' => depth += 1,
+            ']' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(open + i + 1);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
