@@ -245,7 +245,7 @@ impl LocationAllocator {
 }
 
 /// Whether `g`'s declaration comes from a macro's expansion: its name is not written at its
-/// span (which is the macro use's).
+/// span (which is the macro use's). The text holds the names as renamed (keywords of 4.50).
 fn declared_by_macro(s: &StageSyntax, g: &crate::front::syntax::Global) -> bool {
-    s.text.get(g.name_span.clone()) != Some(s.original_name(&g.name))
+    s.text.get(g.name_span.clone()) != Some(g.name.as_str())
 }
