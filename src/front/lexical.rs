@@ -56,10 +56,15 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
     while i < clean.len() {
         let c = clean[i];
         if c == b'#' && line_start(clean, i) {
-            // Preprocessor lines keep their text (`#if X > 0xFFFF`, `#define` bodies are
-            // masked where the macro is used, not here).
+            // Preprocessor lines keep their text (`#if X > 0xFFFF`), but for the explicit
+            // arithmetic types of a `#define`'s body (`#define mem_i16 int16_t`), which the
+            // parsers meet wherever the macro is used.
+            let start = i;
             while i < clean.len() && clean[i] != b'\n' {
                 i += 1;
+            }
+            if let Some((what, span)) = define_body_types(clean, start..i, &mut parser) {
+                limit(what, span);
             }
             continue;
         }
@@ -185,6 +190,42 @@ fn attribute_end(clean: &[u8], at: usize) -> Option<usize> {
         i += 1;
     }
     None
+}
+
+/// The explicit arithmetic types in the body of the `#define` at `line` of `clean`, masked in
+/// `parser` as elsewhere; the first one naga has no form of, with its span.
+fn define_body_types(clean: &[u8], line: Range<usize>, parser: &mut [u8]) -> Option<(String, Range<usize>)> {
+    let text = std::str::from_utf8(&clean[line.clone()]).ok()?;
+    if !text.get(1..)?.trim_start().starts_with("define") {
+        return None;
+    }
+    let mut first = None;
+    for (at, word) in words(text) {
+        if let Some((core, exact)) = explicit_arithmetic_type(word) {
+            let span = line.start + at..line.start + at + word.len();
+            parser[span.clone()].copy_from_slice(pad(&core, word.len()).as_bytes());
+            if !exact && first.is_none() {
+                first = Some((format!("the type `{word}` (GL_EXT_shader_explicit_arithmetic_types)"), span));
+            }
+        }
+    }
+    first
+}
+
+/// Each identifier-like word of `line` with its offset.
+fn words(line: &str) -> impl Iterator<Item = (usize, &str)> {
+    let bytes = line.as_bytes();
+    let mut i = 0;
+    std::iter::from_fn(move || {
+        while i < bytes.len() && !(bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+            i += 1;
+        }
+        let start = i;
+        while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+            i += 1;
+        }
+        (start < i).then(|| (start, &line[start..i]))
+    })
 }
 
 fn line_start(clean: &[u8], at: usize) -> bool {
@@ -586,6 +627,16 @@ mod tests {
         assert!(!m.for_parser.contains("[["), "{}", m.for_parser);
         assert!(m.for_parser.contains("x[i] = y[z[i]]") && m.for_parser.len() == text.len(), "{}", m.for_parser);
         assert!(m.unsupported.is_none());
+    }
+
+    #[test]
+    fn explicit_arithmetic_types_in_a_define_body() {
+        let m = masked("#define mem_i16 int16_t\n#define W uint32_t\nmem_i16 a; W b;");
+        assert!(m.for_parser.starts_with("#define mem_i16 int    \n#define W uint    \n"), "{}", m.for_parser);
+        assert_eq!(
+            m.unsupported.as_ref().map(|(what, _)| what.as_str()),
+            Some("the type `int16_t` (GL_EXT_shader_explicit_arithmetic_types)")
+        );
     }
 
     #[test]
