@@ -59,6 +59,7 @@ pub mod spirv_signedness;
 pub mod statements;
 pub mod syntax;
 pub mod through_spirv;
+pub mod uniform_repr;
 pub mod uniform_struct_arrays;
 pub mod uniform_struct_padding;
 pub mod units;

@@ -16,21 +16,15 @@ use std::collections::BTreeMap;
 use std::ops::Range;
 
 use crate::front::syntax::{bracket_after, word_occurrences, Global, GlslType, Referent, StageSyntax, Storage, Use};
+use crate::front::uniform_repr::{repr_for, Repr};
 
-/// How a member is stored as 4-vectors: the stored type and the swizzle that reads it back.
-pub fn widened(ty: &GlslType) -> Option<(&'static str, &'static str)> {
-    if ty.dims.len() != 1 {
-        return None;
+/// How a member is stored as 4-vectors ([`repr_for`]'s padded arrays of `float`, `int`,
+/// `uint` and their 2-vectors): the stored type and the components that read it back.
+pub fn widened(ty: &GlslType) -> Option<(String, &'static str)> {
+    match repr_for(ty, false) {
+        (stored, Repr::Padded { swizzle, bool_elems: false }) if !stored.base.starts_with('d') => Some((stored.base, swizzle)),
+        _ => None,
     }
-    Some(match ty.base.as_str() {
-        "float" => ("vec4", ".x"),
-        "int" => ("ivec4", ".x"),
-        "uint" => ("uvec4", ".x"),
-        "vec2" => ("vec4", ".xy"),
-        "ivec2" => ("ivec4", ".xy"),
-        "uvec2" => ("uvec4", ".xy"),
-        _ => return None,
-    })
 }
 
 /// The type the name a use reads has as a uniform: a loose uniform's type, or the type of

@@ -32,7 +32,7 @@ impl Ctx<'_> {
                     continue;
                 };
                 if let (Some(end), Some((_, swizzle))) = (index_end(s, u), widened(&member.ty)) {
-                    self.edits.insert(end, swizzle);
+                    self.edits.insert(end, format!(".{swizzle}"));
                 }
             }
         }
