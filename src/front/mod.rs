@@ -56,6 +56,7 @@ pub mod spirv_aggregate_varyings;
 pub mod spirv_binary;
 pub mod spirv_interface_blocks;
 pub mod spirv_signedness;
+pub mod spirv_spec_constants;
 pub mod statements;
 pub mod syntax;
 pub mod through_spirv;

@@ -219,7 +219,8 @@ fn through_spirv_where_naga_refuses(
         else {
             return;
         };
-        let validated = match through_spirv::compile_rewritten(&texts, &program.plan) {
+        let originals: Vec<&str> = program.stages.iter().map(|s| files.text(s.syntax.file)).collect();
+        let validated = match through_spirv::compile_rewritten(&texts, &program.plan, dialect, &originals) {
             Ok(v) => v,
             Err(why) => return debug(&format!("from the rewrite: {why}")),
         };
@@ -671,7 +672,7 @@ fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> 
         };
         // What naga's GLSL front refuses in the fold, glslang may compile to SPIR-V that
         // naga's SPIR-V front reads (spans on the fold's lines, as on the GLSL route).
-        match through_spirv::compile_rewritten(&[(&lowered.text, StageKind::Vertex)], &program.plan) {
+        match through_spirv::compile_rewritten(&[(&lowered.text, StageKind::Vertex)], &program.plan, reference::Dialect::OpenGl, &[]) {
             Ok(mut v) if v[0].needs.is_empty() => Ok((lowered, v.remove(0))),
             _ => Err(refused),
         }

@@ -26,6 +26,7 @@ use crate::front::spirv_aggregate_varyings::split_aggregate_varyings;
 use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, split_combined_samplers, Lines};
 use crate::front::spirv_interface_blocks::split_interface_blocks;
 use crate::front::spirv_signedness::signedness_naga_reads;
+use crate::front::spirv_spec_constants::spec_constants_naga_reads;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
 
@@ -68,11 +69,27 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
 /// rewrite has lowered what Vulkan GLSL lacks (fixed-function state, loose uniforms,
 /// combined legacy lookups) and holds the plan's bindings and locations, so glslang compiles
 /// it as Vulkan GLSL. The modules' spans index the rewritten texts, as on the GLSL route.
-pub fn compile_rewritten(stages: &[(&str, StageKind)], plan: &Plan) -> Result<Vec<Validated>, String> {
-    let texts: Vec<String> = stages.iter().map(|(t, _)| as_vulkan_glsl(t)).collect();
+/// A Vulkan GLSL program (`dialect`) is compiled for its Vulkan version with the extensions
+/// its stages as written (`originals`, in the order of `stages`) enable, which the rewrite
+/// blanks for the parsers that stop at them (subgroup operations, samplerless lookups).
+pub fn compile_rewritten(
+    stages: &[(&str, StageKind)],
+    plan: &Plan,
+    dialect: Dialect,
+    originals: &[&str],
+) -> Result<Vec<Validated>, String> {
+    let (version, originals) = match dialect {
+        Dialect::Vulkan(v) => (v, originals),
+        Dialect::OpenGl => (VulkanVersion::V1_0, &[][..]),
+    };
+    let texts: Vec<String> = stages
+        .iter()
+        .enumerate()
+        .map(|(i, (t, _))| as_vulkan_glsl(t, &extensions_enabled(originals.get(i).copied().unwrap_or(""))))
+        .collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(stages).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let mut binaries = compiler::spirv(&sources, Dialect::Vulkan(VulkanVersion::V1_0), &setup).map_err(no_spirv)?;
+    let mut binaries = compiler::spirv(&sources, Dialect::Vulkan(version), &setup).map_err(no_spirv)?;
     space_bindings_for_split(&mut binaries);
     let mut modules = Vec::new();
     for (words, (text, kind)) in binaries.into_iter().zip(stages) {
@@ -87,8 +104,8 @@ pub fn compile_rewritten(stages: &[(&str, StageKind)], plan: &Plan) -> Result<Ve
 /// `#line` directives blanked (offsets and lines kept), and `GL_EXT_spirv_intrinsics`
 /// enabled after `#version`, the one way glslang takes declarations named `gl_…` (the
 /// rewrite declares GL's fixed-function attributes and varyings, `gl_Vertex`, under their
-/// own names); a `#line` after it keeps every line's number.
-fn as_vulkan_glsl(text: &str) -> String {
+/// own names), then `extensions` (directives); a `#line` after them keeps every line's number.
+fn as_vulkan_glsl(text: &str, extensions: &str) -> String {
     let quiet = crate::front::lexical::quiet_pragmas(text);
     let text = crate::front::lexical::blank_line_directives(&quiet);
     let Some(version) = text.lines().position(|l| l.trim_start().starts_with("#version")) else { return text.into_owned() };
@@ -96,7 +113,27 @@ fn as_vulkan_glsl(text: &str) -> String {
     for (i, line) in text.split_inclusive('\n').enumerate() {
         out.push_str(line);
         if i == version {
-            out.push_str(&format!("#extension GL_EXT_spirv_intrinsics : enable\n#line {}\n", version + 2));
+            out.push_str(&format!("#extension GL_EXT_spirv_intrinsics : enable\n{extensions}#line {}\n", version + 2));
+        }
+    }
+    out
+}
+
+/// An `#extension NAME : enable` line for every extension `text` names in a directive
+/// (outside comments) other than to disable it, in any conditional group: enabling one the
+/// active text does not use changes nothing.
+fn extensions_enabled(text: &str) -> String {
+    let code = crate::front::version::blank_comments(text);
+    let mut out = String::new();
+    for line in String::from_utf8_lossy(&code).lines() {
+        let Some(rest) = line.trim_start().strip_prefix('#').map(str::trim_start).and_then(|r| r.strip_prefix("extension")) else {
+            continue;
+        };
+        let mut parts = rest.split(':');
+        let (name, behaviour) = (parts.next().unwrap_or("").trim(), parts.next().unwrap_or("").trim());
+        let directive = format!("#extension {name} : enable\n");
+        if !name.is_empty() && name != "all" && behaviour != "disable" && !out.contains(&directive) {
+            out.push_str(&directive);
         }
     }
     out
@@ -112,7 +149,9 @@ fn no_spirv(log: String) -> String {
 /// names as the user wrote them.
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
     dump_spirv(&words, &format!("{kind}.glslang"));
-    let words = split_aggregate_varyings(split_interface_blocks(signedness_naga_reads(readable_by_naga(split_combined_samplers(words)?))));
+    let words = split_aggregate_varyings(split_interface_blocks(signedness_naga_reads(spec_constants_naga_reads(readable_by_naga(
+        split_combined_samplers(words)?,
+    )))));
     dump_spirv(&words, &kind.to_string());
     let lines = Lines::of(&words);
     let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();

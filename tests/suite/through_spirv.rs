@@ -76,6 +76,8 @@ fn a_struct_after_a_vec3_in_a_uniform_block_is_padded_to_std140() {
     let validated = effectc::front::through_spirv::compile_rewritten(
         &[(text, effectc::stage::StageKind::Fragment)],
         &effectc::front::plan::Plan::default(),
+        effectc::front::reference::compiler::Dialect::OpenGl,
+        &[],
     )
     .expect("through SPIR-V");
     let v = &validated[0];

@@ -145,8 +145,17 @@ fn create(text: &str, kind: StageKind, dialect: Dialect, spirv: Option<&SpirvSet
             let (c, l) = vulkan_target(VulkanVersion::V1_0);
             (sys::glslang_client_t::Vulkan, c, sys::glslang_target_language_t::SPIRV, l, 110)
         }
-        (Dialect::Vulkan(v), _) => {
+        (Dialect::Vulkan(v), None) => {
             let (c, l) = vulkan_target(v);
+            (sys::glslang_client_t::Vulkan, c, sys::glslang_target_language_t::SPIRV, l, 100)
+        }
+        // SPIR-V for naga: the Vulkan version's GLSL rules, SPIR-V 1.3 at most (Vulkan 1.1's,
+        // subgroup operations included). From 1.4 on glslang writes what naga's SPIR-V front
+        // does not read (`OpCopyLogical` for a struct copied between layouts, `OpExecutionModeId`)
+        // where 1.3 has plain equivalents.
+        (Dialect::Vulkan(v), Some(_)) => {
+            let (c, _) = vulkan_target(v);
+            let (_, l) = vulkan_target(v.min(VulkanVersion::V1_1));
             (sys::glslang_client_t::Vulkan, c, sys::glslang_target_language_t::SPIRV, l, 100)
         }
     };

@@ -5,11 +5,37 @@ use super::*;
 #[test]
 fn the_rewrite_is_read_as_vulkan_glsl_with_its_lines_kept() {
     let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\n#line 40\nvoid main() {}\n";
-    let vulkan = as_vulkan_glsl(text);
+    let vulkan = as_vulkan_glsl(text, "#extension GL_EXT_samplerless_texture_functions : enable\n");
     assert_eq!(
         vulkan,
-        "#version 450\n#extension GL_EXT_spirv_intrinsics : enable\n#line 2\nlayout(location = 0) in vec4 gl_Vertex;\n        \nvoid main() {}\n"
+        "#version 450\n#extension GL_EXT_spirv_intrinsics : enable\n#extension GL_EXT_samplerless_texture_functions : enable\n#line 2\nlayout(location = 0) in vec4 gl_Vertex;\n        \nvoid main() {}\n"
     );
+}
+
+/// The rewrite blanks `#extension` lines; a Vulkan program's are enabled again (in any
+/// conditional group, not in comments, not where disabled) and it compiles for its own
+/// Vulkan version: subgroup operations need SPIR-V 1.3.
+#[test]
+fn a_vulkan_rewrite_keeps_its_extensions_and_vulkan_version() {
+    let original =
+        "#version 450\n#extension GL_KHR_shader_subgroup_basic : require\n#ifdef RQ\n#extension GL_EXT_ray_query : enable\n#endif\n\
+                    // #extension GL_EXT_commented_out : enable\n#extension GL_EXT_gone : disable\n";
+    assert_eq!(extensions_enabled(original), "#extension GL_KHR_shader_subgroup_basic : enable\n#extension GL_EXT_ray_query : enable\n");
+    let subgroups = "#version 450\n                                              \nlayout(local_size_x = 64) in;\n\
+                     layout(std430, binding = 0) buffer B { uint n[]; } b;\n\
+                     void main() { b.n[gl_LocalInvocationIndex] = gl_SubgroupSize; }\n";
+    let stages = [(subgroups, StageKind::Compute)];
+    let without = compile_rewritten(&stages, &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_1), &[]).unwrap_err();
+    assert!(without.contains("glslang makes no SPIR-V"), "the rewrite alone lacks the extension: {without}");
+    // glslang compiles it with the extension; naga reads it and refuses WebGPU's optional subgroups.
+    let at_1_1 = compile_rewritten(&stages, &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_1), &[original]).unwrap_err();
+    assert!(at_1_1.contains("SUBGROUP"), "{at_1_1}");
+    let samplerless = "#version 450\n\nlayout(binding = 0) uniform texture2D t;\nlayout(location = 0) out vec4 o;\n\
+                       void main() { o = texelFetch(t, ivec2(gl_FragCoord.xy), 0); }\n";
+    let original = "#version 450\n#extension GL_EXT_samplerless_texture_functions : require\n";
+    let stages = [(samplerless, StageKind::Fragment)];
+    assert!(compile_rewritten(&stages, &Plan::default(), Dialect::OpenGl, &[original]).is_err(), "a GL program's extensions are not added");
+    compile_rewritten(&stages, &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_0), &[original]).expect("through SPIR-V");
 }
 
 /// A function that can fall off its end (legal GLSL) and a declaration named `gl_…`
@@ -18,7 +44,7 @@ fn the_rewrite_is_read_as_vulkan_glsl_with_its_lines_kept() {
 #[test]
 fn a_rewritten_stage_goes_through_spirv() {
     let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\nfloat f(float x) {\n    for (int i = 0; i < 2; i++) {\n        if (x < float(i)) return 1.0;\n    }\n}\nvoid main() {\n    gl_Position = gl_Vertex * f(gl_Vertex.x);\n}\n";
-    let validated = compile_rewritten(&[(text, StageKind::Vertex)], &Plan::default()).expect("through SPIR-V");
+    let validated = compile_rewritten(&[(text, StageKind::Vertex)], &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
     let module = &validated[0].module;
     assert!(module.entry_points[0].function.arguments.iter().any(|a| a.name.as_deref() == Some("gl_Vertex")));
     let f = module.functions.iter().find(|(_, f)| f.name.as_deref() == Some("f")).expect("f").1;
@@ -34,7 +60,7 @@ fn a_function_that_can_fall_off_its_end_keeps_its_undefined_value_beside_a_sampl
     let text = "#version 450\nlayout(binding = 0) uniform sampler2D tex;\nlayout(location = 0) in vec2 uv;\n\
                 layout(location = 0) out vec4 c;\nvec4 pick(float x) {\n    if (x < 0.5) return vec4(1.0);\n    \
                 else if (x < 2.0) return texture(tex, uv);\n}\nvoid main() { c = pick(uv.x); }\n";
-    compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
 }
 
 /// A shadow sampler passed to a function that compares with it (`texture`, `textureGather`
@@ -44,7 +70,7 @@ fn a_shadow_sampler_passed_to_a_function_compares_there() {
     let text = "#version 450\nlayout(binding = 0) uniform sampler2DShadow s;\nlayout(location = 0) in vec3 p;\n\
                 layout(location = 0) out vec4 c;\nfloat pcf(sampler2DShadow t, vec3 q) { return texture(t, q) + textureGather(t, q.xy, q.z).x; }\n\
                 void main() { c = vec4(pcf(s, p)); }\n";
-    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
     let module = &validated[0].module;
     let pcf = module.functions.iter().find(|(_, f)| f.name.as_deref() == Some("pcf")).expect("pcf").1;
     let kinds: Vec<&TypeInner> = pcf.arguments.iter().map(|a| &module.types[a.ty].inner).collect();
@@ -62,7 +88,7 @@ fn split_samplers_take_bindings_no_other_resource_holds() {
                 layout(binding = 2) uniform U { vec4 k; } u;\nlayout(location = 0) out vec4 c;\n\
                 void main() { c = texture(a, vec2(0.5)) + texture(b, vec2(0.5)) + u.k; }\n";
     let bindings = || {
-        let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+        let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
         validated[0].module.global_variables.iter().filter_map(|(_, g)| g.binding.map(|b| (b.binding, g.name.clone()))).collect::<Vec<_>>()
     };
     let first = bindings();
@@ -121,7 +147,7 @@ fn interface_blocks_become_one_varying_per_member() {
         block.replace("BLOCK", "in Block")
     );
     let stages = [(vertex.as_str(), StageKind::Vertex), (fragment.as_str(), StageKind::Fragment)];
-    let validated = compile_rewritten(&stages, &Plan::default()).expect("through SPIR-V");
+    let validated = compile_rewritten(&stages, &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
     let location = |b: &Option<naga::Binding>| match b {
         Some(naga::Binding::Location { location, interpolation, .. }) => Some((*location, *interpolation)),
         _ => None,
@@ -152,10 +178,10 @@ fn an_array_of_two_row_matrices_in_a_uniform_block_is_refused() {
         )
     };
     let refused = block("vec4 x; mat2 m[2];");
-    let error = compile_rewritten(&[(&refused, StageKind::Fragment)], &Plan::default()).unwrap_err();
+    let error = compile_rewritten(&[(&refused, StageKind::Fragment)], &Plan::default(), Dialect::OpenGl, &[]).unwrap_err();
     assert!(error.contains("`mat2x2` in `Block`, a std140 uniform block"), "{error}");
     let mat4 = block("vec4 x; mat4 m[2];");
-    compile_rewritten(&[(&mat4, StageKind::Fragment)], &Plan::default()).expect("mat4 arrays are read");
+    compile_rewritten(&[(&mat4, StageKind::Fragment)], &Plan::default(), Dialect::OpenGl, &[]).expect("mat4 arrays are read");
 }
 
 /// `index = 0` on the only colour output is an ordinary output in GL; naga takes a blend
@@ -163,7 +189,7 @@ fn an_array_of_two_row_matrices_in_a_uniform_block_is_refused() {
 #[test]
 fn a_lone_index_zero_output_is_an_ordinary_colour() {
     let text = "#version 450\nlayout(location = 0, index = 0) out vec4 c;\nvoid main() { c = vec4(1.0); }\n";
-    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
     let result = validated[0].module.entry_points[0].function.result.as_ref().expect("a result");
     assert!(matches!(result.binding, Some(naga::Binding::Location { location: 0, blend_src: None, .. })), "{:?}", result.binding);
 }
@@ -178,7 +204,7 @@ fn aggregate_varyings_become_one_input_per_element() {
                 layout(location = 5) flat in ivec2 cells[2];\nlayout(location = 7) in Surface { vec2 uv[2]; float w; } s;\n\
                 layout(location = 0) out vec4 c;\n\
                 void main() { c = offsets[cells[0].x] + vec4(spin * s.uv[1], s.w, float(cells[1].y)); }\n";
-    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default()).expect("through SPIR-V");
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
     let module = &validated[0].module;
     let inputs: Vec<(String, u32, bool)> = module.entry_points[0]
         .function
