@@ -156,6 +156,7 @@ codes! {
     ImageFormatChosen => "N0111", "an image declared without a format gets the widest of its type (`rgba32f`, `rgba32i`, `rgba32ui`): WebGPU storage textures have one",
     IntegerTextureFetched => "N0112", "`texture`/`textureLod` of an integer sampler is written as `texelFetch` of the nearest texel, wrapping as GL_REPEAT (WebGPU samples float textures only)",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
+    BufferShown => "N0401", "a compute program that stores to no image is shown as the words of the storage buffer it stores to",
     HazardAnalysisStopped => "N0701", "the static hazard analysis of a stage stopped at its work limit: its warnings are incomplete",
     // Warnings.
     StageExtension => "W0001", "stage file extension names another stage",

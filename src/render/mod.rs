@@ -9,7 +9,8 @@
 //! - [`semantics`], [`uniforms`]: per-frame values,
 //!   the bytes of every uniform buffer (manifest values, semantics, reported guesses).
 //! - [`scene`]: everything one effect needs on the GPU; [`compute`]: a compute-only program
-//!   dispatched over the frame, the image it stores read back as the frame.
+//!   dispatched over the frame, the image it stores read back as the frame, or the words
+//!   of the buffer it stores to shown by [`buffer_words`].
 //! - [`frames`]: drawing one frame into an offscreen target and reading it back, with a
 //!   timeout.
 //! - [`pass_graph`]: a multi-pass effect: one scene per pass that reaches the output, targets
@@ -26,6 +27,7 @@
 //!   (`effectc bench`, `effectc stress`).
 
 pub mod attributes;
+pub mod buffer_words;
 pub mod command;
 pub mod compare;
 pub mod compute;

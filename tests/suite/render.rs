@@ -322,8 +322,26 @@ fn a_compute_program_shows_the_image_it_stores() {
     assert_eq!(px(19, 11), [255, 0, 0, 255], "bottom right: red grows to the right");
     assert_eq!(px(0, 0), [0, 255, 0, 255], "top left: green grows upward");
     assert_eq!(px(19, 0), [255, 255, 0, 255], "the last workgroup column and row ran");
-    let out = effectc(&["render", "tests/render/compute_buffer", "--out", dir.to_str().unwrap()]);
-    assert_eq!(code(&out), 1, "{}", stdout(&out));
-    assert!(stdout(&out).contains(&Code::Unrenderable.to_string()), "{}", stdout(&out));
-    assert!(stdout(&out).contains("stores to no 2D image"), "{}", stdout(&out));
+}
+
+/// A compute program that stores to no image shows the words of the buffer it stores to,
+/// each as the type its place holds, shaded over its kind's range (N0401).
+#[test]
+fn a_compute_program_storing_to_a_buffer_shows_its_words() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "compute-buffer");
+    let out = effectc(&["render", "tests/render/compute_buffer", "--size", "20x12", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(stdout(&out).contains(&Code::BufferShown.to_string()) && stdout(&out).contains("buffer `Items`"), "{}", stdout(&out));
+    let frame = png(&dir.join("sum_0000.png"));
+    // Word n is pixel (n % 20, n / 20); item i is words 2i (float i/2 - 1) and 2i + 1 (int -i).
+    let px = |n: usize| -> [u8; 4] { frame[n * 4..][..4].try_into().unwrap() };
+    assert_eq!(px(0), [0, 0, 0, 255], "item 0's position, -1.0: the smallest float");
+    assert_eq!(px(126), [255, 255, 255, 255], "item 63's position, 30.5: the largest float");
+    assert_eq!(px(1), [255, 255, 255, 255], "item 0's index, 0: the largest int");
+    assert_eq!(px(127), [0, 0, 0, 255], "item 63's index, -63: the smallest int");
+    assert!(px(64)[0].abs_diff(130) <= 1, "item 32's position, 15.0: 16/31.5 of the float range, {:?}", px(64));
+    assert!(px(200)[0].abs_diff(8) <= 1, "an item never written, 0.0: 1/31.5 of the range, {:?}", px(200));
 }

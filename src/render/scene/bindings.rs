@@ -19,6 +19,8 @@ pub(crate) type StorageImages = Vec<((u32, u32), wgpu::Texture, wgpu::TextureFor
 pub(crate) struct Bound {
     pub groups: Vec<(u32, wgpu::BindGroup)>,
     pub storage: StorageBuffers,
+    /// (group, binding) of each of `storage`, in its order.
+    pub storage_at: Vec<(u32, u32)>,
     pub images: StorageImages,
 }
 
@@ -99,7 +101,7 @@ pub(crate) fn bind_groups(
         groups.push((group, bg));
     }
     let images = images.into_iter().map(|(at, texture, format, _)| (at, texture, format)).collect();
-    Bound { groups, storage, images }
+    Bound { groups, storage, storage_at: at, images }
 }
 
 /// A zeroed image for a storage-texture binding, of its format and dimension (None for a

@@ -1,9 +1,16 @@
 #version 430
-// A compute-only program that stores to a buffer only: `render` has no image to show.
+// A compute-only program that stores to a buffer only: `render` shows the buffer's words,
+// each read as the type its place holds (a float, then an int, per item).
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) buffer Values {
-    float values[];
+struct Item {
+    float position;
+    int index;
+};
+layout(std430, binding = 0) buffer Items {
+    Item items[];
 };
 void main() {
-    values[gl_GlobalInvocationID.x] *= 2.0;
+    uint i = gl_GlobalInvocationID.x;
+    items[i].position = float(i) * 0.5 - 1.0;
+    items[i].index = -int(i);
 }
