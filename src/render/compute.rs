@@ -1,7 +1,8 @@
 //! A compute-only program made drawable: its `cs_main` dispatched over the frame, one
 //! invocation per pixel at least (`ceil(width / local_size_x)` × `ceil(height /
-//! local_size_y)` workgroups), and the first 2D image it stores to (by group and binding)
-//! read back as the frame, bottom row last as GL shows a texture; a program that stores to
+//! local_size_y)` workgroups), and the first 2D image it stores to (by group and binding;
+//! else layer or slice 0 of a 2D array or 3D one) read back as the frame, bottom row last
+//! as GL shows a texture; a program that stores to
 //! no 2D image shows the words of the first storage buffer it stores to instead
 //! ([`buffer_words`](crate::render::buffer_words), note N0401). Uniforms, textures and
 //! samplers are guessed and reported as for a drawn scene; every image is the frame's size
@@ -57,14 +58,16 @@ pub fn is_compute_only(r: &crate::back::reflect::Reflection) -> bool {
     !r.entry_points.is_empty() && r.entry_points.iter().all(|e| e.stage == "compute")
 }
 
-/// The image a compute program's frame shows: the first 2D storage texture it writes.
+/// The image a compute program's frame shows: the first 2D storage texture it writes, else
+/// the first layer of a 2D array or the first slice of a 3D one.
 fn shown_image(r: &crate::back::reflect::Reflection) -> Option<&BindingInfo> {
     let mut written: Vec<&BindingInfo> = r
         .bindings
         .iter()
-        .filter(|b| b.kind == "storage_texture" && b.dimension == Some("2d") && b.access.is_some_and(|a| a.contains("write")))
+        .filter(|b| b.kind == "storage_texture" && matches!(b.dimension, Some("2d" | "2d_array" | "3d")))
+        .filter(|b| b.access.is_some_and(|a| a.contains("write")))
         .collect();
-    written.sort_by_key(|b| (b.group, b.binding));
+    written.sort_by_key(|b| (b.dimension != Some("2d"), b.group, b.binding));
     written.first().copied()
 }
 

@@ -78,7 +78,11 @@ impl Gpu {
         // PRIMITIVE_INDEX, DUAL_SOURCE_BLENDING, SHADER_F16: a fragment stage reading
         // `gl_PrimitiveID`, writing a second-source output (`layout(index = 1)`), or a stage
         // computing with 16-bit floats (N0109).
+        // TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES: an image of a format WebGPU's core lists
+        // no storage for (`r16f`, `rgb10_a2`; GL and Vulkan store to them) where the
+        // adapter can.
         let wanted = wgpu::Features::TIMESTAMP_QUERY
+            | wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES
             | wgpu::Features::PRIMITIVE_INDEX
             | wgpu::Features::DUAL_SOURCE_BLENDING
             | wgpu::Features::SHADER_F16

@@ -324,6 +324,26 @@ fn a_compute_program_shows_the_image_it_stores() {
     assert_eq!(px(19, 0), [255, 255, 0, 255], "the last workgroup column and row ran");
 }
 
+/// A compute program that stores to a 3D image only shows its slice 0; one storing to an
+/// image of a packed format shows it.
+#[test]
+fn a_compute_program_storing_to_a_3d_or_packed_image_shows_it() {
+    if !have_gpu() {
+        return;
+    }
+    let dir = scratch("render", "compute-3d");
+    let out = effectc(&["render", "tests/render/compute_image3d", "--size", "16x8", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let frame = png(&dir.join("volume_0000.png"));
+    assert!(frame.chunks(4).all(|px| px == [255, 0, 255, 255]), "every texel of slice 0 is magenta");
+    // An image of a format beyond WebGPU's core storage list, stored to where the adapter can
+    // (lavapipe can) and read back from its packed bits.
+    let out = effectc(&["render", "tests/render/compute_packed", "--size", "16x8", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    let frame = png(&dir.join("packed_0000.png"));
+    assert!(frame.chunks(4).all(|px| px == [255, 0, 128, 255]), "rgb10_a2 (1, 0, 0.5, 1): {:?}", &frame[..4]);
+}
+
 /// A compute program that stores to no image shows the words of the buffer it stores to,
 /// each as the type its place holds, shaded over its kind's range (N0401).
 #[test]

@@ -43,27 +43,10 @@ pub(super) fn describe_image(info: &mut BindingInfo, dim: ImageDimension, arraye
     }
 }
 
-/// WGSL's name of a storage texel format WebGPU can bind (None for the others).
+/// WGSL's name of a storage texel format (naga's spelling, as the WGSL declares it). Formats
+/// beyond WebGPU's core storage list (`r16float`, `rgb10a2unorm`) are stored to where the
+/// adapter can (`texture-formats-tier1`).
 fn storage_format_name(f: naga::StorageFormat) -> Option<&'static str> {
-    use naga::StorageFormat as F;
-    Some(match f {
-        F::R32Float => "r32float",
-        F::R32Uint => "r32uint",
-        F::R32Sint => "r32sint",
-        F::Rg32Float => "rg32float",
-        F::Rg32Uint => "rg32uint",
-        F::Rg32Sint => "rg32sint",
-        F::Rgba8Unorm => "rgba8unorm",
-        F::Rgba8Snorm => "rgba8snorm",
-        F::Rgba8Uint => "rgba8uint",
-        F::Rgba8Sint => "rgba8sint",
-        F::Bgra8Unorm => "bgra8unorm",
-        F::Rgba16Float => "rgba16float",
-        F::Rgba16Uint => "rgba16uint",
-        F::Rgba16Sint => "rgba16sint",
-        F::Rgba32Float => "rgba32float",
-        F::Rgba32Uint => "rgba32uint",
-        F::Rgba32Sint => "rgba32sint",
-        _ => return None,
-    })
+    use naga::common::wgsl::ToWgsl;
+    Some(f.to_wgsl())
 }
