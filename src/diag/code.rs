@@ -149,7 +149,7 @@ codes! {
     PointCoordConstant => "N0104", "`gl_PointCoord` is (0.5, 0.5): WebGPU points are one pixel wide",
     LayerSelected => "N0105", "`gl_Layer`/`gl_ViewportIndex` select which primitives a draw keeps (WebGPU cannot route them)",
     ReferenceOnly => "N0106", "a stage the reference compiler accepts and effectc's own analysis cannot read: checked by glslang only",
-    TexelBufferAsStorage => "N0107", "a buffer texture (`samplerBuffer`) read from a read-only storage buffer: WebGPU has no buffer textures",
+    TexelBufferAsStorage => "N0107", "a buffer texture (`samplerBuffer`) or buffer image (`imageBuffer`) read from a storage buffer: WebGPU has no texel buffers",
     ClipDistancesDropped => "N0108", "`gl_ClipDistance`/`gl_CullDistance` computed, not passed: WebGPU clips and culls by neither",
     OptionalWebGpuFeature => "N0109", "the translation needs an optional WebGPU feature (`primitive-index`, `dual-source-blending`, `shader-f16`)",
     InterpolationApproximated => "N0110", "a fragment built-in WebGPU has no per-call form of, written as GL evaluates it on a single-sampled target (`interpolateAt*`, `gl_HelperInvocation`)",

@@ -57,6 +57,7 @@ pub mod spirv_binary;
 pub mod spirv_interface_blocks;
 pub mod spirv_signedness;
 pub mod spirv_spec_constants;
+pub mod spirv_texel_buffers;
 pub mod statements;
 pub mod syntax;
 pub mod through_spirv;

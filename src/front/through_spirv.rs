@@ -27,6 +27,7 @@ use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, spl
 use crate::front::spirv_interface_blocks::split_interface_blocks;
 use crate::front::spirv_signedness::signedness_naga_reads;
 use crate::front::spirv_spec_constants::spec_constants_naga_reads;
+use crate::front::spirv_texel_buffers::texel_buffers_as_storage;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
 
@@ -45,7 +46,9 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
     let texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let mut binaries = compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?;
+    let binaries = compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?;
+    // Texel buffers first: the split spaces bindings for the samplers of combined images.
+    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(texel_buffers_as_storage).collect();
     space_bindings_for_split(&mut binaries);
     let mut modules = Vec::new();
     for (words, (file, kind)) in binaries.into_iter().zip(ordered) {
@@ -89,7 +92,9 @@ pub fn compile_rewritten(
         .collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(stages).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let mut binaries = compiler::spirv(&sources, Dialect::Vulkan(version), &setup).map_err(no_spirv)?;
+    let binaries = compiler::spirv(&sources, Dialect::Vulkan(version), &setup).map_err(no_spirv)?;
+    // Texel buffers first: the split spaces bindings for the samplers of combined images.
+    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(texel_buffers_as_storage).collect();
     space_bindings_for_split(&mut binaries);
     let mut modules = Vec::new();
     for (words, (text, kind)) in binaries.into_iter().zip(stages) {
@@ -104,7 +109,9 @@ pub fn compile_rewritten(
 /// `#line` directives blanked (offsets and lines kept), and `GL_EXT_spirv_intrinsics`
 /// enabled after `#version`, the one way glslang takes declarations named `gl_…` (the
 /// rewrite declares GL's fixed-function attributes and varyings, `gl_Vertex`, under their
-/// own names), then `extensions` (directives); a `#line` after them keeps every line's number.
+/// own names), and `GL_EXT_samplerless_texture_functions` (the rewrite reads a subpass input
+/// as `texelFetch` of a texture), then `extensions` (directives); a `#line` after them keeps
+/// every line's number.
 fn as_vulkan_glsl(text: &str, extensions: &str) -> String {
     let quiet = crate::front::lexical::quiet_pragmas(text);
     let text = crate::front::lexical::blank_line_directives(&quiet);
@@ -113,7 +120,10 @@ fn as_vulkan_glsl(text: &str, extensions: &str) -> String {
     for (i, line) in text.split_inclusive('\n').enumerate() {
         out.push_str(line);
         if i == version {
-            out.push_str(&format!("#extension GL_EXT_spirv_intrinsics : enable\n{extensions}#line {}\n", version + 2));
+            out.push_str(&format!(
+                "#extension GL_EXT_spirv_intrinsics : enable\n#extension GL_EXT_samplerless_texture_functions : enable\n{extensions}#line {}\n",
+                version + 2
+            ));
         }
     }
     out

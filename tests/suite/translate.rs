@@ -326,3 +326,49 @@ fn spec_constant_workgroup_sizes_and_write_only_buffers_translate() {
     assert!(wgsl.contains("@workgroup_size(16, 2, 1)"), "{wgsl}");
     assert!(wgsl.contains("var<storage, read_write>"), "{wgsl}");
 }
+
+/// Vulkan 1.3 GLSL with what naga's SPIR-V front does not read as glslang writes it: an
+/// array sized by `gl_WorkGroupSize` and a specialization-constant expression (folded to its
+/// default), and texel buffers (storage buffers of texels at the bindings written, N0107).
+#[test]
+fn spec_constant_arrays_and_texel_buffers_translate_through_spirv() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-spec-arrays");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let comp = dir.join("blur.comp");
+    std::fs::write(
+        &comp,
+        "#version 450\nlayout(local_size_x = 32) in;\n\
+         layout(constant_id = 0) const uint GROUP = 32u;\n\
+         layout(constant_id = 1) const int TAPS = 3;\n\
+         layout(constant_id = 2) const float GAIN = 0.5;\n\
+         shared vec4 row[gl_WorkGroupSize.x + uint(2 * TAPS)];\n\
+         layout(set = 0, binding = 0) uniform samplerBuffer source;\n\
+         layout(set = 0, binding = 1, rgba32f) uniform writeonly imageBuffer target;\n\
+         void main() {\n\
+             int i = int(gl_GlobalInvocationID.x);\n\
+             row[gl_LocalInvocationID.x] = texelFetch(source, i);\n\
+             barrier();\n\
+             vec4 sum = vec4(0.0);\n\
+             for (int t = 0; t < 2 * TAPS; t++) sum += row[(gl_LocalInvocationID.x + uint(t)) % GROUP];\n\
+             imageStore(target, i % imageSize(target), sum * GAIN);\n\
+         }\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(["translate", "--target-env", "vulkan1.3", "--to", "wgsl,spv", "--out"])
+        .arg(dir.join("out"))
+        .arg(&comp)
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains("N0107") && stdout.contains("buffer image `target`"), "{stdout}");
+    let wgsl = std::fs::read_to_string(dir.join("out/blur.wgsl")).unwrap();
+    assert!(wgsl.contains("@workgroup_size(32, 1, 1)"), "{wgsl}");
+    assert!(wgsl.contains("array<vec4<f32>, 38>"), "32 + 2 * 3 texels of shared row: {wgsl}");
+    assert!(wgsl.contains("override GAIN"), "a lone specialization constant stays overridable: {wgsl}");
+    assert!(!wgsl.contains("texture"), "texel buffers are storage buffers: {wgsl}");
+    assert!(wgsl.contains("@group(0) @binding(1) \nvar<storage, read_write> target"), "the binding written: {wgsl}");
+}

@@ -115,6 +115,14 @@ impl Ctx<'_> {
             // WebGPU storage textures have a format (N0111).
             self.add_layout(first, format, format);
         }
+        if matches!(first.ty.base.as_str(), "imageBuffer" | "iimageBuffer" | "uimageBuffer") {
+            let s = self.s;
+            self.diags.push(
+                Diagnostic::new(Code::TexelBufferAsStorage, format!("buffer image `{}` is read and written as a storage buffer", s.original_name(&first.name)))
+                    .at(s.file, first.name_span.clone(), "a buffer image")
+                    .with_note("WebGPU has no buffer images: `imageLoad`/`imageStore` read and write a storage buffer of texels (one 4-vector each) and `imageSize` is its length; `render` binds it zeroed"),
+            );
+        }
         // Images and atomic counters stay declarations of their own.
         if first.layout.iter().any(|(k, _)| k == "binding") {
             let base = first.ty.base.as_str();

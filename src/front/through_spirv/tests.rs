@@ -5,10 +5,11 @@ use super::*;
 #[test]
 fn the_rewrite_is_read_as_vulkan_glsl_with_its_lines_kept() {
     let text = "#version 450\nlayout(location = 0) in vec4 gl_Vertex;\n#line 40\nvoid main() {}\n";
-    let vulkan = as_vulkan_glsl(text, "#extension GL_EXT_samplerless_texture_functions : enable\n");
+    let vulkan = as_vulkan_glsl(text, "#extension GL_EXT_nonuniform_qualifier : enable\n");
     assert_eq!(
         vulkan,
-        "#version 450\n#extension GL_EXT_spirv_intrinsics : enable\n#extension GL_EXT_samplerless_texture_functions : enable\n#line 2\nlayout(location = 0) in vec4 gl_Vertex;\n        \nvoid main() {}\n"
+        "#version 450\n#extension GL_EXT_spirv_intrinsics : enable\n#extension GL_EXT_samplerless_texture_functions : enable\n\
+         #extension GL_EXT_nonuniform_qualifier : enable\n#line 2\nlayout(location = 0) in vec4 gl_Vertex;\n        \nvoid main() {}\n"
     );
 }
 
@@ -32,10 +33,9 @@ fn a_vulkan_rewrite_keeps_its_extensions_and_vulkan_version() {
     assert!(at_1_1.contains("SUBGROUP"), "{at_1_1}");
     let samplerless = "#version 450\n\nlayout(binding = 0) uniform texture2D t;\nlayout(location = 0) out vec4 o;\n\
                        void main() { o = texelFetch(t, ivec2(gl_FragCoord.xy), 0); }\n";
-    let original = "#version 450\n#extension GL_EXT_samplerless_texture_functions : require\n";
     let stages = [(samplerless, StageKind::Fragment)];
-    assert!(compile_rewritten(&stages, &Plan::default(), Dialect::OpenGl, &[original]).is_err(), "a GL program's extensions are not added");
-    compile_rewritten(&stages, &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_0), &[original]).expect("through SPIR-V");
+    // Enabled for every rewrite: it reads subpass inputs so.
+    compile_rewritten(&stages, &Plan::default(), Dialect::OpenGl, &[]).expect("through SPIR-V");
 }
 
 /// A function that can fall off its end (legal GLSL) and a declaration named `gl_…`
@@ -239,4 +239,39 @@ fn aggregate_varyings_become_one_input_per_element() {
         module.global_variables.iter().any(|(_, g)| g.space == naga::AddressSpace::Private && g.name.as_deref() == Some("offsets")),
         "the array stays as a private copy"
     );
+}
+
+/// Buffer textures and buffer images become storage buffers of 4-vectors: `texelFetch` and
+/// `imageLoad` read an element, `imageStore` writes one, `imageSize` is the array's length.
+#[test]
+fn texel_buffers_are_read_and_written_as_storage_buffers() {
+    let text = "#version 450\n\
+                layout(local_size_x = 64) in;\n\
+                layout(set = 0, binding = 0) uniform usamplerBuffer indices;\n\
+                layout(set = 0, binding = 1, rgba32f) uniform imageBuffer points;\n\
+                layout(set = 0, binding = 2, r32i) uniform readonly iimageBuffer weights;\n\
+                void main() {\n\
+                    int i = int(gl_GlobalInvocationID.x) % imageSize(points);\n\
+                    uvec4 n = texelFetch(indices, i);\n\
+                    imageStore(points, i, imageLoad(points, int(n.x)) * float(imageLoad(weights, i).x));\n\
+                }\n";
+    let validated = compile_rewritten(&[(text, StageKind::Compute)], &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_0), &[])
+        .expect("through SPIR-V");
+    let m = &validated[0].module;
+    let storage: Vec<(String, naga::StorageAccess)> = m
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| match g.space {
+            AddressSpace::Storage { access } => Some((g.name.clone().unwrap_or_default(), access)),
+            _ => None,
+        })
+        .collect();
+    let access = |name: &str| storage.iter().find(|(n, _)| n == name).map(|(_, a)| *a);
+    assert_eq!(access("indices"), Some(naga::StorageAccess::LOAD), "a buffer texture is read-only: {storage:?}");
+    assert_eq!(access("points"), Some(naga::StorageAccess::LOAD | naga::StorageAccess::STORE));
+    assert_eq!(access("weights"), Some(naga::StorageAccess::LOAD));
+    assert!(!m.types.iter().any(|(_, t)| matches!(t.inner, TypeInner::Image { .. })), "no image is left");
+    let functions = m.functions.iter().map(|(_, f)| f).chain(m.entry_points.iter().map(|e| &e.function));
+    let lengths = functions.flat_map(|f| f.expressions.iter()).filter(|(_, e)| matches!(e, naga::Expression::ArrayLength(_))).count();
+    assert_eq!(lengths, 1, "imageSize is the array's length");
 }
