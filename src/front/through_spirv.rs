@@ -24,9 +24,12 @@ use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
 use crate::front::reference::log::{self, LineTable};
 use crate::front::spirv_aggregate_varyings::split_aggregate_varyings;
 use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, split_combined_samplers, Lines};
+use crate::front::spirv_float_tests::float_tests_from_bits;
 use crate::front::spirv_interface_blocks::split_interface_blocks;
+use crate::front::spirv_point_coord::point_coord_at_the_centre;
 use crate::front::spirv_signedness::signedness_naga_reads;
 use crate::front::spirv_spec_constants::spec_constants_naga_reads;
+use crate::front::spirv_subpass_inputs::subpass_inputs_as_textures;
 use crate::front::spirv_texel_buffers::texel_buffers_as_storage;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
@@ -47,8 +50,9 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
     let binaries = compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?;
-    // Texel buffers first: the split spaces bindings for the samplers of combined images.
-    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(texel_buffers_as_storage).collect();
+    // Texel buffers and subpass inputs first: the split spaces bindings for the samplers of
+    // combined images.
+    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(|b| subpass_inputs_as_textures(texel_buffers_as_storage(b))).collect();
     space_bindings_for_split(&mut binaries);
     let mut modules = Vec::new();
     for (words, (file, kind)) in binaries.into_iter().zip(ordered) {
@@ -93,8 +97,9 @@ pub fn compile_rewritten(
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(stages).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
     let binaries = compiler::spirv(&sources, Dialect::Vulkan(version), &setup).map_err(no_spirv)?;
-    // Texel buffers first: the split spaces bindings for the samplers of combined images.
-    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(texel_buffers_as_storage).collect();
+    // Texel buffers and subpass inputs first: the split spaces bindings for the samplers of
+    // combined images.
+    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(|b| subpass_inputs_as_textures(texel_buffers_as_storage(b))).collect();
     space_bindings_for_split(&mut binaries);
     let mut modules = Vec::new();
     for (words, (text, kind)) in binaries.into_iter().zip(stages) {
@@ -159,9 +164,17 @@ fn no_spirv(log: String) -> String {
 /// names as the user wrote them.
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
     dump_spirv(&words, &format!("{kind}.glslang"));
-    let words = split_aggregate_varyings(split_interface_blocks(signedness_naga_reads(spec_constants_naga_reads(readable_by_naga(
-        split_combined_samplers(words)?,
-    )))));
+    // The passes over the words that make glslang's SPIR-V what naga reads, in order.
+    let passes: [fn(Vec<u32>) -> Vec<u32>; 7] = [
+        readable_by_naga,
+        spec_constants_naga_reads,
+        point_coord_at_the_centre,
+        float_tests_from_bits,
+        signedness_naga_reads,
+        split_interface_blocks,
+        split_aggregate_varyings,
+    ];
+    let words = passes.iter().fold(split_combined_samplers(words)?, |words, pass| pass(words));
     dump_spirv(&words, &kind.to_string());
     let lines = Lines::of(&words);
     let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();

@@ -275,3 +275,104 @@ fn texel_buffers_are_read_and_written_as_storage_buffers() {
     let lengths = functions.flat_map(|f| f.expressions.iter()).filter(|(_, e)| matches!(e, naga::Expression::ArrayLength(_))).count();
     assert_eq!(lengths, 1, "imageSize is the array's length");
 }
+
+/// Subpass inputs, plain and multisampled, declared through a macro (the GLSL route's rewrite
+/// does not see those) become 2D textures read at the fragment's pixel.
+#[test]
+fn subpass_inputs_are_textures_read_at_the_fragments_pixel() {
+    let text = "#version 450\n#define INPUT subpassInput\n\
+                layout(input_attachment_index = 0, set = 0, binding = 0) uniform INPUT color;\n\
+                layout(input_attachment_index = 1, set = 0, binding = 1) uniform subpassInputMS moments;\n\
+                layout(location = 0) out vec4 o;\n\
+                void main() { o = subpassLoad(color) + subpassLoad(moments, 2); }\n";
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_0), &[])
+        .expect("through SPIR-V");
+    let m = &validated[0].module;
+    let images: Vec<(String, bool)> = m
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| match m.types[g.ty].inner {
+            TypeInner::Image { dim: naga::ImageDimension::D2, class: naga::ImageClass::Sampled { multi, .. }, .. } => {
+                Some((g.name.clone().unwrap_or_default(), multi))
+            }
+            _ => None,
+        })
+        .collect();
+    assert_eq!(images, [("color".to_string(), false), ("moments".to_string(), true)]);
+    let frag_coord = m.entry_points[0]
+        .function
+        .arguments
+        .iter()
+        .any(|a| matches!(a.binding, Some(naga::Binding::BuiltIn(naga::BuiltIn::Position { .. }))));
+    assert!(frag_coord, "the stage reads gl_FragCoord");
+    let functions = m.functions.iter().map(|(_, f)| f).chain(m.entry_points.iter().map(|e| &e.function));
+    let loads: Vec<bool> = functions
+        .flat_map(|f| f.expressions.iter())
+        .filter_map(|(_, e)| match e {
+            naga::Expression::ImageLoad { sample, level, .. } => Some(sample.is_some() && level.is_none()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(loads.iter().filter(|s| **s).count(), 1, "one load of a sample: {loads:?}");
+    assert_eq!(loads.len(), 2);
+}
+
+/// `isnan`/`isinf`, which WGSL lacks, are computed from the float's bits, scalar and vector.
+#[test]
+fn float_tests_are_computed_from_bits() {
+    let text = "#version 450\nlayout(location = 0) in vec3 v;\nlayout(location = 0) out vec4 o;\n\
+                void main() { o = vec4(isnan(v.x) ? 1.0 : 0.0, any(isinf(v)) ? 1.0 : 0.0, 0.0, 1.0); }\n";
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_0), &[])
+        .expect("through SPIR-V");
+    let m = &validated[0].module;
+    let expressions =
+        || m.functions.iter().map(|(_, f)| f).chain(m.entry_points.iter().map(|e| &e.function)).flat_map(|f| f.expressions.iter());
+    assert!(!expressions().any(|(_, e)| matches!(
+        e,
+        naga::Expression::Relational { fun: naga::RelationalFunction::IsNan | naga::RelationalFunction::IsInf, .. }
+    )));
+    let literal = |bits: u32| {
+        m.global_expressions.iter().any(|(_, e)| matches!(e, naga::Expression::Literal(naga::Literal::U32(b)) if *b == bits))
+            || expressions().any(|(_, e)| matches!(e, naga::Expression::Literal(naga::Literal::U32(b)) if *b == bits))
+    };
+    assert!(literal(0x7fff_ffff) && literal(0x7f80_0000), "the magnitude mask and infinity's bits");
+    let comparisons: Vec<naga::BinaryOperator> = expressions()
+        .filter_map(|(_, e)| match e {
+            naga::Expression::Binary { op: op @ (naga::BinaryOperator::Greater | naga::BinaryOperator::Equal), .. } => Some(*op),
+            _ => None,
+        })
+        .collect();
+    assert!(comparisons.contains(&naga::BinaryOperator::Greater) && comparisons.contains(&naga::BinaryOperator::Equal), "{comparisons:?}");
+}
+
+/// `gl_PointCoord` is the centre of a one-pixel point, as on the GLSL route (N0104).
+#[test]
+fn the_point_coordinate_is_the_centre() {
+    let text = "#version 450\nlayout(binding = 0) uniform sampler2D sprite;\nlayout(location = 0) out vec4 o;\n\
+                void main() { o = texture(sprite, gl_PointCoord) * vec4(gl_PointCoord, 0.0, 1.0); }\n";
+    let validated = compile_rewritten(&[(text, StageKind::Fragment)], &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_0), &[])
+        .expect("through SPIR-V");
+    let m = &validated[0].module;
+    let arguments = &m.entry_points[0].function.arguments;
+    assert!(!arguments.iter().any(|a| matches!(a.binding, Some(naga::Binding::BuiltIn(naga::BuiltIn::PointCoord)))), "{arguments:?}");
+    let g = m
+        .global_variables
+        .iter()
+        .find(|(_, g)| g.name.as_deref() == Some("gl_PointCoord"))
+        .map(|(_, g)| g)
+        .expect("a private gl_PointCoord");
+    assert_eq!(g.space, AddressSpace::Private);
+    // naga reads the initialiser as a constant: its value is the composite of two halves.
+    let mut init = g.init.expect("initialised");
+    while let naga::Expression::Constant(c) = m.global_expressions[init] {
+        init = m.constants[c].init;
+    }
+    let naga::Expression::Compose { components, .. } = &m.global_expressions[init] else { panic!("{:?}", m.global_expressions[init]) };
+    for c in components {
+        let mut c = *c;
+        while let naga::Expression::Constant(k) = m.global_expressions[c] {
+            c = m.constants[k].init;
+        }
+        assert!(matches!(m.global_expressions[c], naga::Expression::Literal(naga::Literal::F32(h)) if h == 0.5));
+    }
+}
