@@ -38,6 +38,13 @@ pub(crate) const PARKED_UNDEF: u16 = 0xfffe;
 /// Words in the SPIR-V header before the first instruction.
 pub(crate) const HEADER_WORDS: usize = 5;
 
+/// The words of instruction `op` with `operands` (its word count in the first word).
+pub(crate) fn instruction(op: u16, operands: &[u32]) -> Vec<u32> {
+    let mut out = vec![((operands.len() as u32 + 1) << 16) | u32::from(op)];
+    out.extend_from_slice(operands);
+    out
+}
+
 /// Each instruction of a SPIR-V binary: its first word's index, opcode and word count.
 pub(crate) fn instructions(words: &[u32]) -> impl Iterator<Item = (usize, u16, usize)> + '_ {
     let mut i = HEADER_WORDS;

@@ -13,23 +13,15 @@ use std::collections::HashMap;
 use rspirv::grammar::{CoreInstructionTable, OperandKind};
 use rspirv::spirv::Op;
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{instruction, instructions, HEADER_WORDS, OP_FUNCTION, OP_TYPE_INT};
 
 const OP_IS_NAN: u16 = Op::IsNan as u16;
 const OP_IS_INF: u16 = Op::IsInf as u16;
-const OP_TYPE_INT: u16 = Op::TypeInt as u16;
 const OP_TYPE_FLOAT: u16 = Op::TypeFloat as u16;
 const OP_TYPE_VECTOR: u16 = Op::TypeVector as u16;
-const OP_FUNCTION: u16 = Op::Function as u16;
 /// All bits of a 32-bit float but its sign; its exponent all ones, mantissa zero (infinity).
 const MAGNITUDE: u32 = 0x7fff_ffff;
 const INFINITY: u32 = 0x7f80_0000;
-
-fn instruction(op: u16, operands: &[u32]) -> Vec<u32> {
-    let mut out = vec![((operands.len() as u32 + 1) << 16) | u32::from(op)];
-    out.extend_from_slice(operands);
-    out
-}
 
 /// `words` with each 32-bit `OpIsNan`/`OpIsInf` computed from bits.
 pub(crate) fn float_tests_from_bits(words: Vec<u32>) -> Vec<u32> {

@@ -9,19 +9,9 @@
 
 use rspirv::spirv::{BuiltIn, Decoration, Op, StorageClass};
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{instruction, instructions, HEADER_WORDS, OP_DECORATE, OP_ENTRY_POINT, OP_TYPE_POINTER, OP_VARIABLE};
 
-const OP_ENTRY_POINT: u16 = Op::EntryPoint as u16;
-const OP_DECORATE: u16 = Op::Decorate as u16;
-const OP_TYPE_POINTER: u16 = Op::TypePointer as u16;
-const OP_VARIABLE: u16 = Op::Variable as u16;
 const OP_CONSTANT: u16 = Op::Constant as u16;
-
-fn instruction(op: u16, operands: &[u32]) -> Vec<u32> {
-    let mut out = vec![((operands.len() as u32 + 1) << 16) | u32::from(op)];
-    out.extend_from_slice(operands);
-    out
-}
 
 /// `words` with `gl_PointCoord` read as (0.5, 0.5).
 pub(crate) fn point_coord_at_the_centre(words: Vec<u32>) -> Vec<u32> {

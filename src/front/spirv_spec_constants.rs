@@ -30,11 +30,9 @@ use std::collections::{HashMap, HashSet};
 
 use rspirv::spirv::{BuiltIn, Decoration, ExecutionMode, Op};
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{instructions, HEADER_WORDS, OP_DECORATE, OP_EXECUTION_MODE, OP_TYPE_ARRAY, OP_TYPE_INT};
 
 const OP_TYPE_BOOL: u16 = Op::TypeBool as u16;
-const OP_TYPE_INT: u16 = Op::TypeInt as u16;
-const OP_TYPE_ARRAY: u16 = Op::TypeArray as u16;
 const OP_CONSTANT: u16 = Op::Constant as u16;
 const OP_CONSTANT_TRUE: u16 = Op::ConstantTrue as u16;
 const OP_CONSTANT_FALSE: u16 = Op::ConstantFalse as u16;
@@ -45,8 +43,6 @@ const OP_SPEC_CONSTANT_FALSE: u16 = Op::SpecConstantFalse as u16;
 const OP_SPEC_CONSTANT_OP: u16 = Op::SpecConstantOp as u16;
 const OP_CONSTANT_COMPOSITE: u16 = Op::ConstantComposite as u16;
 const OP_SPEC_CONSTANT_COMPOSITE: u16 = Op::SpecConstantComposite as u16;
-const OP_DECORATE: u16 = Op::Decorate as u16;
-const OP_EXECUTION_MODE: u16 = Op::ExecutionMode as u16;
 const OP_EXECUTION_MODE_ID: u16 = Op::ExecutionModeId as u16;
 
 /// A scalar type the evaluator computes in (32-bit integers of either signedness).

@@ -15,25 +15,15 @@ use std::collections::HashSet;
 
 use rspirv::spirv::{BuiltIn, Decoration, Dim, ImageOperands, Op, StorageClass};
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{
+    instruction, instructions, HEADER_WORDS, OP_DECORATE, OP_ENTRY_POINT, OP_FUNCTION, OP_TYPE_IMAGE, OP_TYPE_INT, OP_TYPE_POINTER,
+    OP_VARIABLE,
+};
 
-const OP_ENTRY_POINT: u16 = Op::EntryPoint as u16;
-const OP_DECORATE: u16 = Op::Decorate as u16;
-const OP_TYPE_INT: u16 = Op::TypeInt as u16;
 const OP_TYPE_FLOAT: u16 = Op::TypeFloat as u16;
 const OP_TYPE_VECTOR: u16 = Op::TypeVector as u16;
-const OP_TYPE_IMAGE: u16 = Op::TypeImage as u16;
-const OP_TYPE_POINTER: u16 = Op::TypePointer as u16;
-const OP_VARIABLE: u16 = Op::Variable as u16;
-const OP_FUNCTION: u16 = Op::Function as u16;
 const OP_LOAD: u16 = Op::Load as u16;
 const OP_IMAGE_READ: u16 = Op::ImageRead as u16;
-
-fn instruction(op: u16, operands: &[u32]) -> Vec<u32> {
-    let mut out = vec![((operands.len() as u32 + 1) << 16) | u32::from(op)];
-    out.extend_from_slice(operands);
-    out
-}
 
 /// Ids of the types and values the lowering reads or declares.
 struct Ids {

@@ -18,15 +18,11 @@ use std::collections::{BTreeMap, HashMap};
 
 use rspirv::spirv::{Decoration, Dim, Op, StorageClass};
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{
+    instruction, instructions, HEADER_WORDS, OP_FUNCTION, OP_TYPE_IMAGE, OP_TYPE_INT, OP_TYPE_POINTER, OP_TYPE_SAMPLED_IMAGE, OP_VARIABLE,
+};
 
-const OP_TYPE_INT: u16 = Op::TypeInt as u16;
 const OP_TYPE_VECTOR: u16 = Op::TypeVector as u16;
-const OP_TYPE_IMAGE: u16 = Op::TypeImage as u16;
-const OP_TYPE_SAMPLED_IMAGE: u16 = Op::TypeSampledImage as u16;
-const OP_TYPE_POINTER: u16 = Op::TypePointer as u16;
-const OP_VARIABLE: u16 = Op::Variable as u16;
-const OP_FUNCTION: u16 = Op::Function as u16;
 const OP_FUNCTION_PARAMETER: u16 = Op::FunctionParameter as u16;
 const OP_LOAD: u16 = Op::Load as u16;
 const OP_IMAGE: u16 = Op::Image as u16;
@@ -61,12 +57,6 @@ struct ElementTypes {
     block: u32,
     block_pointer: u32,
     element_pointer: u32,
-}
-
-fn instruction(op: u16, operands: &[u32]) -> Vec<u32> {
-    let mut out = vec![((operands.len() as u32 + 1) << 16) | u32::from(op)];
-    out.extend_from_slice(operands);
-    out
 }
 
 /// `words` with the module doc's texel buffers read from storage buffers.

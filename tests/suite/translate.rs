@@ -295,34 +295,43 @@ fn a_sampler_array_indexed_at_run_time_translates_with_gpu_shader5() {
     assert!(stdout.contains(Code::NonConstantSamplerIndex.as_str()), "{stdout}");
 }
 
+/// Writes `text` to `name` in a fresh scratch folder `folder`, translates it for Vulkan
+/// (`env`) to WGSL and SPIR-V, and returns effectc's stdout and the WGSL, asserting exit 0.
+fn translate_vulkan_stage(folder: &str, name: &str, env: &str, text: &str) -> (String, String) {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(folder);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let stage = dir.join(name);
+    std::fs::write(&stage, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(["translate", "--target-env", env, "--to", "wgsl,spv", "--out"])
+        .arg(dir.join("out"))
+        .arg(&stage)
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    let stem = name.split('.').next().unwrap_or(name);
+    let wgsl = std::fs::read_to_string(dir.join(format!("out/{stem}.wgsl"))).unwrap();
+    (stdout, wgsl)
+}
+
 /// Vulkan GLSL compute: a workgroup size given by specialization constants
 /// (`local_size_x_id`) is their unspecialized defaults (1 where no constant has the id), and a
 /// `writeonly` storage buffer is `read_write` in WGSL (which has no write-only storage);
 /// naga's GLSL front refused the first ("Unexpected qualifier"), its validator the second.
 #[test]
 fn spec_constant_workgroup_sizes_and_write_only_buffers_translate() {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-spec-workgroup");
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    let comp = dir.join("fill.comp");
-    std::fs::write(
-        &comp,
+    let (_, wgsl) = translate_vulkan_stage(
+        "translate-spec-workgroup",
+        "fill.comp",
+        "vulkan",
         "#version 450\nlayout(local_size_x_id = 0, local_size_y = 2, local_size_z_id = 7) in;\n\
          layout(constant_id = 0) const uint WIDTH = 16u;\n\
          layout(std430, set = 0, binding = 0) writeonly buffer Out { uint values[]; };\n\
          void main() { values[gl_GlobalInvocationID.x] = gl_GlobalInvocationID.y * WIDTH; }\n",
-    )
-    .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
-        .args(["translate", "--target-env", "vulkan", "--to", "wgsl,spv", "--out"])
-        .arg(dir.join("out"))
-        .arg(&comp)
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(out.status.code(), Some(0), "{stdout}");
-    let wgsl = std::fs::read_to_string(dir.join("out/fill.wgsl")).unwrap();
+    );
     assert!(wgsl.contains("@workgroup_size(16, 2, 1)"), "{wgsl}");
     assert!(wgsl.contains("var<storage, read_write>"), "{wgsl}");
 }
@@ -332,12 +341,10 @@ fn spec_constant_workgroup_sizes_and_write_only_buffers_translate() {
 /// default), and texel buffers (storage buffers of texels at the bindings written, N0107).
 #[test]
 fn spec_constant_arrays_and_texel_buffers_translate_through_spirv() {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-spec-arrays");
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    let comp = dir.join("blur.comp");
-    std::fs::write(
-        &comp,
+    let (stdout, wgsl) = translate_vulkan_stage(
+        "translate-spec-arrays",
+        "blur.comp",
+        "vulkan1.3",
         "#version 450\nlayout(local_size_x = 32) in;\n\
          layout(constant_id = 0) const uint GROUP = 32u;\n\
          layout(constant_id = 1) const int TAPS = 3;\n\
@@ -353,19 +360,8 @@ fn spec_constant_arrays_and_texel_buffers_translate_through_spirv() {
              for (int t = 0; t < 2 * TAPS; t++) sum += row[(gl_LocalInvocationID.x + uint(t)) % GROUP];\n\
              imageStore(target, i % imageSize(target), sum * GAIN);\n\
          }\n",
-    )
-    .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
-        .args(["translate", "--target-env", "vulkan1.3", "--to", "wgsl,spv", "--out"])
-        .arg(dir.join("out"))
-        .arg(&comp)
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    );
     assert!(stdout.contains("N0107") && stdout.contains("buffer image `target`"), "{stdout}");
-    let wgsl = std::fs::read_to_string(dir.join("out/blur.wgsl")).unwrap();
     assert!(wgsl.contains("@workgroup_size(32, 1, 1)"), "{wgsl}");
     assert!(wgsl.contains("array<vec4<f32>, 38>"), "32 + 2 * 3 texels of shared row: {wgsl}");
     assert!(wgsl.contains("override GAIN"), "a lone specialization constant stays overridable: {wgsl}");
