@@ -49,11 +49,7 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
     let texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let binaries = compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?;
-    // Texel buffers and subpass inputs first: the split spaces bindings for the samplers of
-    // combined images.
-    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(|b| subpass_inputs_as_textures(texel_buffers_as_storage(b))).collect();
-    space_bindings_for_split(&mut binaries);
+    let binaries = before_split(compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?);
     let mut modules = Vec::new();
     for (words, (file, kind)) in binaries.into_iter().zip(ordered) {
         modules.push(module_of(words, *kind, files.text(*file), plan)?);
@@ -96,11 +92,7 @@ pub fn compile_rewritten(
         .collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(stages).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
-    let binaries = compiler::spirv(&sources, Dialect::Vulkan(version), &setup).map_err(no_spirv)?;
-    // Texel buffers and subpass inputs first: the split spaces bindings for the samplers of
-    // combined images.
-    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(|b| subpass_inputs_as_textures(texel_buffers_as_storage(b))).collect();
-    space_bindings_for_split(&mut binaries);
+    let binaries = before_split(compiler::spirv(&sources, Dialect::Vulkan(version), &setup).map_err(no_spirv)?);
     let mut modules = Vec::new();
     for (words, (text, kind)) in binaries.into_iter().zip(stages) {
         modules.push(module_of(words, *kind, text, plan)?);
@@ -152,6 +144,15 @@ fn extensions_enabled(text: &str) -> String {
         }
     }
     out
+}
+
+/// The program's stages as the combined-sampler split takes them: texel buffers and subpass
+/// inputs lowered (neither is a combined sampler the split should space a binding for), then
+/// bindings spaced for the samplers the split adds.
+fn before_split(binaries: Vec<Vec<u32>>) -> Vec<Vec<u32>> {
+    let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(|b| subpass_inputs_as_textures(texel_buffers_as_storage(b))).collect();
+    space_bindings_for_split(&mut binaries);
+    binaries
 }
 
 fn no_spirv(log: String) -> String {

@@ -152,35 +152,6 @@ pub fn picture(bytes: &[u8], layout: &WordLayout, size: (u32, u32)) -> Vec<f32> 
     out
 }
 
-/// Whether any function of `module` stores to (or updates atomically) the global `g`.
-pub fn stored_to(module: &Module, g: Handle<naga::GlobalVariable>) -> bool {
-    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
-    functions.into_iter().any(|f| block_stores(f, &f.body, g))
-}
-
-fn block_stores(f: &naga::Function, block: &naga::Block, g: Handle<naga::GlobalVariable>) -> bool {
-    use naga::Statement as S;
-    block.iter().any(|s| match s {
-        S::Store { pointer, .. } | S::Atomic { pointer, .. } => roots_at(f, *pointer, g),
-        S::Block(b) => block_stores(f, b, g),
-        S::If { accept, reject, .. } => block_stores(f, accept, g) || block_stores(f, reject, g),
-        S::Switch { cases, .. } => cases.iter().any(|c| block_stores(f, &c.body, g)),
-        S::Loop { body, continuing, .. } => block_stores(f, body, g) || block_stores(f, continuing, g),
-        _ => false,
-    })
-}
-
-/// Whether pointer expression `e` points into global `g`.
-fn roots_at(f: &naga::Function, mut e: Handle<naga::Expression>, g: Handle<naga::GlobalVariable>) -> bool {
-    loop {
-        match f.expressions[e] {
-            naga::Expression::GlobalVariable(h) => return h == g,
-            naga::Expression::Access { base, .. } | naga::Expression::AccessIndex { base, .. } => e = base,
-            _ => return false,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -197,8 +168,7 @@ mod tests {
              @group(0) @binding(0) var<storage, read_write> b: B;\n\
              @compute @workgroup_size(1) fn main() { b.items[0].flags = 1u; }",
         );
-        let (g, var) = m.global_variables.iter().next().expect("a global");
-        assert!(stored_to(&m, g));
+        let (_, var) = m.global_variables.iter().next().expect("a global");
         let layout = WordLayout::of(&m, var.ty);
         // count, 3 words of padding before the 16-aligned array; P: vec3 + flags, id, 3 padding.
         let kinds: Vec<WordKind> = (0..12).map(|i| layout.kind(i)).collect();
@@ -218,15 +188,5 @@ mod tests {
         assert_eq!(&px[8..12], &[1.0, 0.0, 1.0, 1.0], "NaN is magenta");
         assert_eq!(&px[12..16], &[1.0, 1.0, 1.0, 1.0], "a lone nonzero value of its kind is white");
         assert_eq!(&px[16..24], &[0.0; 8], "past the buffer: transparent");
-    }
-
-    #[test]
-    fn a_buffer_only_read_is_not_stored_to() {
-        let m = module_of(
-            "struct B { v: array<f32> }\n@group(0) @binding(0) var<storage, read_write> b: B;\n\
-             var<private> x: f32;\n@compute @workgroup_size(1) fn main() { x = b.v[0]; }",
-        );
-        let (g, _) = m.global_variables.iter().find(|(_, v)| v.name.as_deref() == Some("b")).expect("b");
-        assert!(!stored_to(&m, g));
     }
 }

@@ -53,6 +53,12 @@ enum Shown {
     Buffer(wgpu::Buffer, u64, WordLayout),
 }
 
+/// The binding a compute program's frame is read from, before the device holds it.
+enum Chosen<'r> {
+    Image(&'r BindingInfo),
+    Buffer(&'r BindingInfo, WordLayout),
+}
+
 /// Whether a translation is a compute-only program.
 pub fn is_compute_only(r: &crate::back::reflect::Reflection) -> bool {
     !r.entry_points.is_empty() && r.entry_points.iter().all(|e| e.stage == "compute")
@@ -76,15 +82,14 @@ impl ComputeScene {
         let t = input.translation;
         let r = &t.reflection;
         let file = input.program.stages[0].syntax.file;
-        let image = shown_image(r);
-        let buffer = if image.is_none() { shown_buffer(r, &t.module) } else { None };
-        if image.is_none() && buffer.is_none() {
+        let chosen = shown_image(r).map(Chosen::Image).or_else(|| shown_buffer(r, &t.module).map(|(b, l)| Chosen::Buffer(b, l)));
+        let Some(chosen) = chosen else {
             return Err(vec![Diagnostic::new(Code::Unrenderable, "the compute program stores to no 2D image and no buffer: there is no frame to show")
                 .in_file(file)
                 .with_note(
                     "`render` dispatches a compute-only program over the frame and shows the first 2D image it writes with `imageStore`, else the first storage buffer it writes",
                 )]);
-        }
+        };
         let plan::Plan { uniforms: uniform_data, textures: texture_plan, mut warnings, .. } = plan::plan(&input.plan_input())?;
         let pipeline = gpu.compute_pipeline(&t.name, input.wgsl).map_err(|e| vec![pipeline_error(file, &e)])?;
         let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -95,8 +100,8 @@ impl ComputeScene {
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(vec![pipeline_error(file, &e.to_string())]);
         }
-        let (shown, name) = match (image, buffer) {
-            (Some(image), _) => {
+        let (shown, name) = match chosen {
+            Chosen::Image(image) => {
                 let Some((_, texture, format)) = images.into_iter().find(|(at, ..)| *at == (image.group, image.binding)) else {
                     return Err(vec![Diagnostic::new(
                         Code::Unrenderable,
@@ -106,7 +111,7 @@ impl ComputeScene {
                 };
                 (Shown::Image(texture, format), format!("image `{}` ({format:?})", image.name))
             }
-            (None, Some((b, layout))) => {
+            Chosen::Buffer(b, layout) => {
                 // An unnamed block is known by its block name.
                 let name = if b.name.is_empty() { b.glsl.clone().unwrap_or_default() } else { b.name.clone() };
                 let at = storage_at.iter().position(|at| *at == (b.group, b.binding));
@@ -117,7 +122,6 @@ impl ComputeScene {
                 warnings.push(buffer_shown(file, &name, size));
                 (Shown::Buffer(buffer, bytes, layout), format!("the words of buffer `{name}`"))
             }
-            (None, None) => unreachable!("checked above"),
         };
         let local = t.module.entry_points.iter().find(|e| e.stage == naga::ShaderStage::Compute).map_or([1, 1, 1], |e| e.workgroup_size);
         let workgroups = [size.0.div_ceil(local[0].max(1)), size.1.div_ceil(local[1].max(1)), 1];
@@ -208,16 +212,19 @@ impl ComputeScene {
 }
 
 /// The buffer a compute program that stores to no image shows: the first storage buffer (by
-/// group and binding) a function stores to, with the layout of its words.
+/// group and binding) a function stores to, with the layout of its words. The translation
+/// has made every buffer no function writes read-only (`fixes::read_only_unwritten_storage`,
+/// from naga's analysis of each function's global uses).
 fn shown_buffer<'r>(r: &'r crate::back::reflect::Reflection, module: &naga::Module) -> Option<(&'r BindingInfo, WordLayout)> {
     let mut buffers: Vec<&BindingInfo> = r.bindings.iter().filter(|b| b.kind == "storage_buffer").collect();
     buffers.sort_by_key(|b| (b.group, b.binding));
     buffers.into_iter().find_map(|b| {
-        let (g, var) = module
+        let (_, var) = module
             .global_variables
             .iter()
             .find(|(_, v)| v.binding.as_ref().is_some_and(|rb| (rb.group, rb.binding) == (b.group, b.binding)))?;
-        buffer_words::stored_to(module, g).then(|| (b, WordLayout::of(module, var.ty)))
+        let written = matches!(var.space, naga::AddressSpace::Storage { access } if access.contains(naga::StorageAccess::STORE));
+        written.then(|| (b, WordLayout::of(module, var.ty)))
     })
 }
 
