@@ -22,15 +22,18 @@ use crate::front::naga_run::{self, Validated};
 use crate::front::plan::{Plan, UNIFORM_BLOCK};
 use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
 use crate::front::reference::log::{self, LineTable};
+use crate::front::spirv_absent_builtins::absent_builtins_as_constants;
 use crate::front::spirv_aggregate_varyings::split_aggregate_varyings;
 use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, split_combined_samplers, Lines};
+use crate::front::spirv_binding_arrays::binding_arrays_as_elements;
 use crate::front::spirv_float_tests::float_tests_from_bits;
 use crate::front::spirv_interface_blocks::split_interface_blocks;
-use crate::front::spirv_point_coord::point_coord_at_the_centre;
 use crate::front::spirv_signedness::signedness_naga_reads;
 use crate::front::spirv_spec_constants::spec_constants_naga_reads;
+use crate::front::spirv_subgroups::subgroups_of_one;
 use crate::front::spirv_subpass_inputs::subpass_inputs_as_textures;
 use crate::front::spirv_texel_buffers::texel_buffers_as_storage;
+use crate::front::spirv_wide_integers::wide_integers_as_pairs;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
 
@@ -151,6 +154,7 @@ fn extensions_enabled(text: &str) -> String {
 /// bindings spaced for the samplers the split adds.
 fn before_split(binaries: Vec<Vec<u32>>) -> Vec<Vec<u32>> {
     let mut binaries: Vec<Vec<u32>> = binaries.into_iter().map(|b| subpass_inputs_as_textures(texel_buffers_as_storage(b))).collect();
+    binding_arrays_as_elements(&mut binaries);
     space_bindings_for_split(&mut binaries);
     binaries
 }
@@ -166,10 +170,12 @@ fn no_spirv(log: String) -> String {
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
     dump_spirv(&words, &format!("{kind}.glslang"));
     // The passes over the words that make glslang's SPIR-V what naga reads, in order.
-    let passes: [fn(Vec<u32>) -> Vec<u32>; 7] = [
+    let passes: [fn(Vec<u32>) -> Vec<u32>; 9] = [
         readable_by_naga,
         spec_constants_naga_reads,
-        point_coord_at_the_centre,
+        wide_integers_as_pairs,
+        absent_builtins_as_constants,
+        subgroups_of_one,
         float_tests_from_bits,
         signedness_naga_reads,
         split_interface_blocks,

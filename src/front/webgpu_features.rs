@@ -79,6 +79,57 @@ pub fn float16_needed(s: &StageSyntax, validated: &Validated) -> Option<Diagnost
     })
 }
 
+/// N0113 at each array of textures, images or samplers of `s` sized at run time (bindless,
+/// `uniform sampler2D textures[];`): WGSL has no such arrays, and the translation (through
+/// SPIR-V, [`spirv_binding_arrays`](crate::front::spirv_binding_arrays)) declares
+/// [`RUNTIME_ELEMENTS`](crate::front::spirv_binding_arrays::RUNTIME_ELEMENTS) of them.
+pub fn runtime_arrays_bound(s: &StageSyntax) -> Vec<Diagnostic> {
+    let n = crate::front::spirv_binding_arrays::RUNTIME_ELEMENTS;
+    let opaque = |base: &str| {
+        let base = base.trim_start_matches(['i', 'u']);
+        ["sampler", "texture", "image", "subpassInput"].iter().any(|p| base.starts_with(p))
+    };
+    s.globals
+        .iter()
+        .filter(|g| g.storage == crate::front::syntax::Storage::Uniform && opaque(&g.ty.base) && g.ty.dims.first() == Some(&None))
+        .map(|g| {
+            Diagnostic::new(Code::RuntimeArrayBound, format!("`{}` is sized at run time: the translation binds {n} elements of it", s.original_name(&g.name)))
+                .at(s.file, g.name_span.clone(), format!("{n} bindings, one per element"))
+                .with_note(format!(
+                    "WGSL has no arrays of textures or samplers: each element is a binding of its own (the next bindings of the set move up), \
+                     a lookup at an index known at run time reads every element and keeps the indexed one, and an index past the {n}th reads the last"
+                ))
+        })
+        .collect()
+}
+
+/// N0114 in stage `s` when it computes with 64-bit integers (`uint64_t`, `int64_t`) and
+/// naga validated it: the translation holds each in two 32-bit words
+/// ([`spirv_wide_integers`](crate::front::spirv_wide_integers)). At the first such type.
+pub fn wide_integers_paired(s: &StageSyntax) -> Option<Diagnostic> {
+    let (what, span) = s.unsupported.as_ref().filter(|(what, _)| what.contains("int64_t") || what.contains("i64vec"))?;
+    Some(
+        Diagnostic::new(Code::WideIntegersPaired, format!("{what}: held as two 32-bit words"))
+            .at(s.file, span.clone(), "a 64-bit integer type")
+            .with_note("WGSL has no 64-bit integers: the translation holds each as `vec2<u32>` (low word first; buffers keep their layout) and computes comparisons, `+`, `-` and conversions from the words"),
+    )
+}
+
+/// N0115 in stage `s` at its first subgroup operation or built-in, when naga validated it:
+/// the translation computes them for subgroups of one invocation
+/// ([`spirv_subgroups`](crate::front::spirv_subgroups)).
+pub fn subgroups_of_one(s: &StageSyntax) -> Option<Diagnostic> {
+    let call = s.calls.iter().find(|c| c.name.starts_with("subgroup")).map(|c| (c.name.clone(), c.name_span.clone()));
+    let builtin = || s.uses.iter().find(|u| u.name.starts_with("gl_Subgroup")).map(|u| (u.name.clone(), u.span.clone()));
+    let (name, span) = call.or_else(builtin)?;
+    Some(
+        Diagnostic::new(Code::SubgroupOfOne, format!("`{name}` is computed for a subgroup of one invocation"))
+            .at(s.file, span, "a subgroup of one")
+            .with_note("WGSL has subgroups only behind `enable subgroups;`, which naga's WGSL front does not take: the translation computes every subgroup operation as a device whose subgroups hold one invocation does (Vulkan allows it): `gl_SubgroupSize` is 1, reductions and broadcasts are the invocation's own value, a ballot has bit 0")
+            .with_help("code that needs several invocations per subgroup (a required subgroup size) draws differently"),
+    )
+}
+
 fn at_use(d: Diagnostic, s: &StageSyntax, name: &str) -> Diagnostic {
     match s.uses.iter().find(|u| u.name == name) {
         Some(u) => d.at(s.file, u.span.clone(), "read here"),

@@ -28,9 +28,8 @@ fn a_vulkan_rewrite_keeps_its_extensions_and_vulkan_version() {
     let stages = [(subgroups, StageKind::Compute)];
     let without = compile_rewritten(&stages, &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_1), &[]).unwrap_err();
     assert!(without.contains("glslang makes no SPIR-V"), "the rewrite alone lacks the extension: {without}");
-    // glslang compiles it with the extension; naga reads it and refuses WebGPU's optional subgroups.
-    let at_1_1 = compile_rewritten(&stages, &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_1), &[original]).unwrap_err();
-    assert!(at_1_1.contains("SUBGROUP"), "{at_1_1}");
+    // glslang compiles it with the extension (the subgroup's size is that of a subgroup of one).
+    compile_rewritten(&stages, &Plan::default(), Dialect::Vulkan(VulkanVersion::V1_1), &[original]).expect("through SPIR-V");
     let samplerless = "#version 450\n\nlayout(binding = 0) uniform texture2D t;\nlayout(location = 0) out vec4 o;\n\
                        void main() { o = texelFetch(t, ivec2(gl_FragCoord.xy), 0); }\n";
     let stages = [(samplerless, StageKind::Fragment)];
@@ -375,4 +374,142 @@ fn the_point_coordinate_is_the_centre() {
         }
         assert!(matches!(m.global_expressions[c], naga::Expression::Literal(naga::Literal::F32(h)) if h == 0.5));
     }
+}
+
+/// One Vulkan GLSL stage through SPIR-V as `compile` takes a program: its module.
+fn vulkan_stage(text: &str, kind: StageKind, version: VulkanVersion) -> Module {
+    let mut files = Files::new();
+    let file = files.add("a.glsl", text);
+    let stages = compile(&files, &[(file, kind)], Dialect::Vulkan(version), &Plan::default()).expect("through SPIR-V");
+    stages.into_iter().next().expect("a stage").validated.module
+}
+
+/// Arrays of textures and samplers become one binding per element (4 for a runtime-sized
+/// one), resources above them move up, and a lookup at a run-time index reads every
+/// element (every pair for a texture and a sampler chosen apart) and keeps the indexed one.
+#[test]
+fn arrays_of_textures_become_one_binding_per_element() {
+    let text = "#version 450\n#extension GL_EXT_nonuniform_qualifier : require\n\
+                layout(location = 0) in vec2 uv;\nlayout(location = 1) flat in uint id;\nlayout(location = 0) out vec4 o;\n\
+                layout(set = 0, binding = 2) uniform sampler2D textures[];\n\
+                layout(set = 0, binding = 3) uniform texture2D planes[2];\nlayout(set = 0, binding = 4) uniform sampler samplers[2];\n\
+                layout(set = 0, binding = 5) uniform Params { vec4 tint; } params;\n\
+                void main() {\n    o = texture(textures[nonuniformEXT(id)], uv) * params.tint + texture(textures[1], uv);\n    \
+                o += texture(nonuniformEXT(sampler2D(planes[id], samplers[id + 1u])), uv);\n}\n";
+    let module = vulkan_stage(text, StageKind::Fragment, VulkanVersion::V1_2);
+    let m = &module;
+    assert!(!m.types.iter().any(|(_, t)| matches!(t.inner, TypeInner::BindingArray { .. })), "no binding arrays left");
+    let binding = |name: &str| {
+        let g = m.global_variables.iter().find(|(_, g)| g.name.as_deref() == Some(name)).map(|(_, g)| g);
+        g.and_then(|g| g.binding.as_ref()).map(|b| b.binding)
+    };
+    let textures: Vec<Option<u32>> = (0..4).map(|k| binding(&format!("textures_{k}"))).collect();
+    assert!(textures.iter().all(Option::is_some), "{textures:?}");
+    assert_eq!(binding("textures_4"), None, "a runtime-sized array has {} elements", crate::front::spirv_binding_arrays::RUNTIME_ELEMENTS);
+    let mut all: Vec<u32> = m.global_variables.iter().filter_map(|(_, g)| g.binding.as_ref().map(|b| b.binding)).collect();
+    let count = all.len();
+    all.sort_unstable();
+    all.dedup();
+    assert_eq!(all.len(), count, "every resource has a binding of its own");
+    assert!(binding("params") > binding("samplers_1"), "the block moved above the elements");
+    let functions = m.functions.iter().map(|(_, f)| f).chain(m.entry_points.iter().map(|e| &e.function));
+    let samples = functions.flat_map(|f| f.expressions.iter()).filter(|(_, e)| matches!(e, naga::Expression::ImageSample { .. })).count();
+    assert_eq!(samples, 4 + 1 + 2 * 2, "every element, the constant element once, every texture and sampler pair");
+}
+
+/// 64-bit integers in a buffer are held as two 32-bit words: compared, added, narrowed and
+/// converted from the words, and the module has no 64-bit type left.
+#[test]
+fn wide_integers_are_held_as_two_words() {
+    let text = "#version 450\n#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require\n\
+                layout(std430, binding = 0) buffer Materials { int64_t offset; uint64_t handle[]; } m;\nlayout(location = 0) out vec4 o;\n\
+                void main() {\n    uint64_t h = m.handle[1] + 5ul;\n    int64_t s = m.offset - int64_t(-3);\n    \
+                o = vec4(h < 2000ul ? float(uint(h)) : 0.0, float(h), s >= 0l ? 1.0 : 0.0, float(s));\n    m.handle[0] = uint64_t(7u);\n}\n";
+    let module = vulkan_stage(text, StageKind::Fragment, VulkanVersion::V1_0);
+    let m = &module;
+    let wide = |t: &naga::Type| matches!(t.inner, TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } if s.width == 8);
+    assert!(!m.types.iter().any(|(_, t)| wide(t)), "no 64-bit type left");
+    let block = m
+        .global_variables
+        .iter()
+        .find(|(_, g)| matches!(g.space, AddressSpace::Storage { .. }))
+        .expect("the buffer")
+        .1;
+    let TypeInner::Struct { members, .. } = &m.types[block.ty].inner else { panic!("a block") };
+    assert_eq!(members.iter().map(|x| x.offset).collect::<Vec<_>>(), [0, 8], "the layout is the 64-bit one");
+    let TypeInner::Array { stride, .. } = m.types[members[1].ty].inner else { panic!("the handles") };
+    assert_eq!(stride, 8);
+}
+
+/// `gl_BaseInstance` and `gl_DrawID` are 0 in effectc's draws, which WGSL has no built-ins
+/// for; the stage keeps the names.
+#[test]
+fn draw_parameters_are_zero() {
+    let text = "#version 460\nlayout(location = 0) in vec4 p;\nlayout(location = 0) flat out int id;\n\
+                void main() { id = gl_BaseInstance + gl_DrawID + gl_BaseVertex; gl_Position = p; }\n";
+    let module = vulkan_stage(text, StageKind::Vertex, VulkanVersion::V1_1);
+    let m = &module;
+    let arguments = &m.entry_points[0].function.arguments;
+    assert!(arguments
+        .iter()
+        .all(|a| !matches!(a.binding, Some(naga::Binding::BuiltIn(naga::BuiltIn::BaseInstance | naga::BuiltIn::DrawIndex)))));
+    for name in ["gl_BaseInstance", "gl_DrawID", "gl_BaseVertex"] {
+        let g = m.global_variables.iter().find(|(_, g)| g.name.as_deref() == Some(name)).map(|(_, g)| g).expect(name);
+        assert_eq!(g.space, AddressSpace::Private, "{name}");
+        assert!(g.init.is_some(), "{name} is initialised");
+    }
+}
+
+/// Subgroup operations are computed for a subgroup of one invocation: no subgroup
+/// operation or built-in is left for naga, and the module validates without the capability.
+#[test]
+fn subgroup_operations_are_those_of_a_subgroup_of_one() {
+    let text = "#version 450\n#extension GL_KHR_shader_subgroup_ballot : require\n#extension GL_KHR_shader_subgroup_arithmetic : require\n\
+                #extension GL_KHR_shader_subgroup_vote : require\n\
+                layout(local_size_x = 64) in;\nlayout(std430, binding = 0) buffer B { uint n[]; } b;\n\
+                void main() {\n    uint i = gl_LocalInvocationIndex;\n    uvec4 ballot = subgroupBallot(b.n[i] > 3u);\n    \
+                b.n[i] = subgroupBallotBitCount(ballot) + subgroupBallotExclusiveBitCount(ballot) + subgroupMax(i) + subgroupExclusiveAdd(i);\n    \
+                if (subgroupElect() && subgroupAny(i == 0u)) { b.n[0] = subgroupBroadcastFirst(i) + gl_SubgroupSize + gl_SubgroupInvocationID; }\n    \
+                subgroupBarrier();\n    b.n[1] = subgroupOr(i) | subgroupExclusiveMin(i);\n}\n";
+    let module = vulkan_stage(text, StageKind::Compute, VulkanVersion::V1_1);
+    let m = &module;
+    let f = &m.entry_points[0].function;
+    let subgroup = |s: &naga::Statement| {
+        matches!(
+            s,
+            naga::Statement::SubgroupBallot { .. }
+                | naga::Statement::SubgroupCollectiveOperation { .. }
+                | naga::Statement::SubgroupGather { .. }
+        )
+    };
+    fn walk<'a>(b: &'a naga::Block, out: &mut Vec<&'a naga::Statement>) {
+        for s in b.iter() {
+            out.push(s);
+            match s {
+                naga::Statement::Block(x) => walk(x, out),
+                naga::Statement::If { accept, reject, .. } => {
+                    walk(accept, out);
+                    walk(reject, out);
+                }
+                naga::Statement::Loop { body, continuing, .. } => {
+                    walk(body, out);
+                    walk(continuing, out);
+                }
+                _ => {}
+            }
+        }
+    }
+    let mut all = Vec::new();
+    walk(&f.body, &mut all);
+    assert!(!all.iter().any(|s| subgroup(s)), "no subgroup operation left");
+    assert!(!f
+        .arguments
+        .iter()
+        .any(|a| matches!(a.binding, Some(naga::Binding::BuiltIn(naga::BuiltIn::SubgroupSize | naga::BuiltIn::SubgroupInvocationId)))));
+    let size = m.global_variables.iter().find(|(_, g)| g.name.as_deref() == Some("gl_SubgroupSize")).expect("a private gl_SubgroupSize").1;
+    let mut init = size.init.expect("initialised");
+    while let naga::Expression::Constant(c) = m.global_expressions[init] {
+        init = m.constants[c].init;
+    }
+    assert!(matches!(m.global_expressions[init], naga::Expression::Literal(naga::Literal::U32(1))), "{:?}", m.global_expressions[init]);
 }
