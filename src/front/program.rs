@@ -169,13 +169,7 @@ pub fn compile(
             diags.extend(webgpu_features::optional_features_needed(s, v, folded));
         }
         for stage in &p.stages {
-            diags.extend(stage.naga.as_ref().and_then(|v| webgpu_features::float16_needed(&stage.syntax, v)));
-            diags.extend(webgpu_features::image_formats_chosen(&stage.syntax));
-            diags.extend(webgpu_features::runtime_arrays_bound(&stage.syntax));
-            if stage.naga.is_some() {
-                diags.extend(webgpu_features::wide_integers_paired(&stage.syntax));
-                diags.extend(webgpu_features::subgroups_of_one(&stage.syntax));
-            }
+            diags.extend(webgpu_features::stage_notes(&stage.syntax, stage.naga.as_ref()));
         }
     }
     program

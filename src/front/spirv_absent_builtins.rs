@@ -10,14 +10,18 @@
 //! - `gl_ViewIndex` is 0: effectc draws one view;
 //! - `gl_SubgroupSize` is 1, `gl_SubgroupInvocationID` 0, and the masks those of the one
 //!   invocation of a subgroup (`gl_SubgroupEqMask`, `…Ge…`, `…Le…` bit 0; `…Gt…`, `…Lt…`
-//!   none), as [`spirv_subgroups`](crate::front::spirv_subgroups) computes the operations.
+//!   none), `gl_NumSubgroups` the workgroup's invocations and `gl_SubgroupID` the local
+//!   invocation index, as [`spirv_subgroups`](crate::front::spirv_subgroups) computes the
+//!   operations.
 //!
 //! Each input variable decorated with one of those built-ins becomes a private variable
-//! initialised to its value: its decoration goes, and so does its place in the entry
-//! point's interface, with the extension and capability that declared it. The lengths
-//! change, so this runs before [`Lines`] is taken.
+//! initialised to its value, and every whole load of it the value itself: its decoration
+//! goes, and so does its place in the entry point's interface, with the extension and
+//! capability that declared it. The lengths change, so this runs before [`Lines`] is taken.
 //!
 //! [`Lines`]: crate::front::spirv_binary::Lines
+
+use std::collections::HashMap;
 
 use rspirv::binary::Assemble;
 use rspirv::dr::{self, Instruction, Operand};
@@ -46,7 +50,39 @@ pub(crate) fn absent_builtins_as_constants(words: Vec<u32>) -> Vec<u32> {
         return words;
     }
     let Some(mut bound) = module.header.as_ref().map(|h| h.bound) else { return words };
+    let invocations = workgroup_invocations(&module);
+    let mut absent = absent;
+    // `gl_SubgroupID` of a subgroup of one is the invocation's own index in the workgroup.
+    if let Some(&(subgroup_id, _)) = absent.iter().find(|(_, b)| *b == BuiltIn::SubgroupId) {
+        let index = decorated_builtin(&module, BuiltIn::LocalInvocationIndex);
+        match index {
+            Some(index) => {
+                for i in module.functions.iter_mut().flat_map(|f| f.blocks.iter_mut().flat_map(|b| b.instructions.iter_mut())) {
+                    for o in &mut i.operands {
+                        if *o == Operand::IdRef(subgroup_id) {
+                            *o = Operand::IdRef(index);
+                        }
+                    }
+                }
+                module.types_global_values.retain(|i| i.result_id != Some(subgroup_id));
+            }
+            None => {
+                for a in &mut module.annotations {
+                    if a.operands.first() == Some(&Operand::IdRef(subgroup_id))
+                        && a.operands.get(2) == Some(&Operand::BuiltIn(BuiltIn::SubgroupId))
+                    {
+                        a.operands[2] = Operand::BuiltIn(BuiltIn::LocalInvocationIndex);
+                    }
+                }
+                absent.retain(|(v, _)| *v != subgroup_id);
+            }
+        }
+    }
+    let mut values: HashMap<Word, Word> = HashMap::new();
     for &(variable, builtin) in &absent {
+        if builtin == BuiltIn::SubgroupId {
+            continue;
+        }
         let Some(at) = module.types_global_values.iter().position(|i| i.result_id == Some(variable)) else { return words };
         let Some(pointee) = pointee(&module, module.types_global_values[at].result_type) else { return words };
         let mut declared = Vec::new();
@@ -73,6 +109,9 @@ pub(crate) fn absent_builtins_as_constants(words: Vec<u32>) -> Vec<u32> {
                 declared.push(Instruction::new(Op::Constant, Some(pointee), Some(value), vec![Operand::LiteralBit32(1)]));
                 Some(())
             }
+            Some(Value::Invocations) => invocations.map(|n| {
+                declared.push(Instruction::new(Op::Constant, Some(pointee), Some(value), vec![Operand::LiteralBit32(n)]));
+            }),
             _ => {
                 declared.push(Instruction::new(Op::ConstantNull, Some(pointee), Some(value), vec![]));
                 Some(())
@@ -95,7 +134,9 @@ pub(crate) fn absent_builtins_as_constants(words: Vec<u32>) -> Vec<u32> {
             vec![Operand::StorageClass(StorageClass::Private), Operand::IdRef(value)],
         ));
         module.types_global_values.splice(at..=at, declared);
+        values.insert(variable, value);
     }
+    loads_as_constants(&mut module, &values);
     let is_absent = |o: Option<&Operand>| matches!(o, Some(Operand::IdRef(v)) if absent.iter().any(|(a, _)| a == v));
     module.annotations.retain(|a| !is_absent(a.operands.first()));
     for ep in &mut module.entry_points {
@@ -119,6 +160,8 @@ enum Value {
     Centre,
     /// `uvec4(1, 0, 0, 0)`: the one invocation of a subgroup of one.
     FirstBit,
+    /// The workgroup's invocations: `gl_NumSubgroups` of subgroups of one.
+    Invocations,
 }
 
 fn value_of(b: BuiltIn) -> Option<Value> {
@@ -129,7 +172,51 @@ fn value_of(b: BuiltIn) -> Option<Value> {
         BuiltIn::SubgroupSize => Value::One,
         BuiltIn::SubgroupLocalInvocationId | BuiltIn::SubgroupGtMask | BuiltIn::SubgroupLtMask => Value::Zero,
         BuiltIn::SubgroupEqMask | BuiltIn::SubgroupGeMask | BuiltIn::SubgroupLeMask => Value::FirstBit,
+        BuiltIn::NumSubgroups => Value::Invocations,
+        // The local invocation index (read from that built-in, not made constant).
+        BuiltIn::SubgroupId => Value::Zero,
         _ => return None,
+    })
+}
+
+/// Every whole load of a variable of `values` (variable → its constant value) replaced by
+/// the constant itself: a constant is uniform where tint's analysis takes every load of a
+/// private variable for a value that may differ between invocations (a barrier after a
+/// branch on `gl_SubgroupSize`). Loads through an access chain keep the variable.
+fn loads_as_constants(module: &mut dr::Module, values: &HashMap<Word, Word>) {
+    let mut same: HashMap<Word, Word> = HashMap::new();
+    for b in module.functions.iter_mut().flat_map(|f| f.blocks.iter_mut()) {
+        b.instructions.retain(|i| match (i.class.opcode, i.result_id, i.operands.first()) {
+            (Op::Load, Some(r), Some(Operand::IdRef(v))) if values.contains_key(v) => {
+                same.insert(r, values[v]);
+                false
+            }
+            _ => true,
+        });
+    }
+    for i in module.functions.iter_mut().flat_map(|f| f.blocks.iter_mut().flat_map(|b| b.instructions.iter_mut())) {
+        for o in &mut i.operands {
+            if let Some(c) = if let Operand::IdRef(x) = o { same.get(x) } else { None } {
+                *o = Operand::IdRef(*c);
+            }
+        }
+    }
+}
+
+/// The number of invocations of a workgroup (`LocalSize`'s product), for a compute stage.
+fn workgroup_invocations(module: &dr::Module) -> Option<u32> {
+    let mode = module
+        .execution_modes
+        .iter()
+        .find(|m| m.operands.get(1) == Some(&Operand::ExecutionMode(rspirv::spirv::ExecutionMode::LocalSize)))?;
+    mode.operands[2..].iter().map(|o| if let Operand::LiteralBit32(n) = o { Some(*n) } else { None }).product()
+}
+
+/// The variable decorated as built-in `b`.
+fn decorated_builtin(module: &dr::Module, b: BuiltIn) -> Option<Word> {
+    module.annotations.iter().find_map(|a| match &a.operands[..] {
+        [Operand::IdRef(v), Operand::Decoration(Decoration::BuiltIn), Operand::BuiltIn(x)] if *x == b => Some(*v),
+        _ => None,
     })
 }
 

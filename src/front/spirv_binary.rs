@@ -245,8 +245,16 @@ fn with_opcode(mut words: Vec<u32>, from: u16, to: u16) -> Vec<u32> {
 /// `OpLabel`), where glslang also puts them, and the stage's source text (`OpSource`'s
 /// text operand and `OpSourceContinued`); and a storage image without a format (naga reads
 /// it as a sampled one) given the widest of its sampled type, as the GLSL route does
-/// ([`chosen_image_format`](crate::front::syntax::chosen_image_format)).
+/// ([`chosen_image_format`](crate::front::syntax::chosen_image_format)); and the memory
+/// decorations of images (`coherent`, `volatile` storage images), which naga takes on
+/// buffers only: WGSL orders storage-texture accesses with its barriers alone.
 pub(crate) fn readable_by_naga(words: Vec<u32>) -> Vec<u32> {
+    const UNIFORM_CONSTANT: u32 = rspirv::spirv::StorageClass::UniformConstant as u32;
+    const MEMORY: [u32; 2] = [rspirv::spirv::Decoration::Coherent as u32, rspirv::spirv::Decoration::Volatile as u32];
+    let images: Vec<u32> = instructions(&words)
+        .filter(|&(at, op, count)| op == OP_VARIABLE && count >= 4 && words[at + 3] == UNIFORM_CONSTANT)
+        .map(|(at, _, _)| words[at + 2])
+        .collect();
     let mut out = words[..HEADER_WORDS.min(words.len())].to_vec();
     let mut in_body = false;
     let mut integer_types: Vec<(u32, bool)> = Vec::new();
@@ -270,6 +278,7 @@ pub(crate) fn readable_by_naga(words: Vec<u32>) -> Vec<u32> {
             OP_FUNCTION | OP_FUNCTION_END => in_body = false,
             OP_LABEL => in_body = true,
             OP_LINE | OP_NO_LINE if !in_body => continue,
+            OP_DECORATE if count == 3 && MEMORY.contains(&words[at + 2]) && images.contains(&words[at + 1]) => continue,
             OP_SOURCE_CONTINUED => continue,
             // OpSource language version [file] [text]: the text goes.
             OP_SOURCE if count > 4 => {

@@ -18,8 +18,11 @@
 //!   index past the end reads the last element (GL leaves it undefined).
 //! - A copy of an opaque value (glslang's `nonuniformEXT(sampler2D(…))`) is the value.
 //!
-//! An array used otherwise (passed to a function, an element stored to with `imageStore`,
-//! arrays of arrays) leaves every stage of the program as it was, for naga's binding arrays.
+//! - A store to an element chosen at run time (`imageStore(images[i], p, v)`) is a `switch`
+//!   on the index with one case per element.
+//!
+//! An array used otherwise (passed to a function, a store in a loop's header block, arrays
+//! of arrays) leaves every stage of the program as it was, for naga's binding arrays.
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 
@@ -262,10 +265,25 @@ impl<'b> Rewrite<'b> {
             let blocks = std::mem::take(&mut self.module.functions[f].blocks);
             let mut rewritten = Vec::new();
             let mut state = Uses { chosen: HashMap::new(), opaque: HashMap::new(), same: HashMap::new() };
-            for mut block in blocks {
-                let instructions = std::mem::take(&mut block.instructions);
-                block.instructions = self.block(instructions, &elements, &mut state)?;
-                rewritten.push(block);
+            // Blocks split at a store to an element chosen at run time: (label, last part's label).
+            let mut split: HashMap<Word, Word> = HashMap::new();
+            for block in blocks {
+                let parts = self.block(block, &elements, &mut state)?;
+                let labels = |b: &dr::Block| b.label.as_ref().and_then(|l| l.result_id);
+                if let (Some(first), Some(last)) = (parts.first().and_then(labels), parts.last().and_then(labels)) {
+                    if first != last {
+                        split.insert(first, last);
+                    }
+                }
+                rewritten.extend(parts);
+            }
+            // A φ names the predecessor its value comes from: now the split block's last part.
+            for i in rewritten.iter_mut().flat_map(|b| b.instructions.iter_mut()).filter(|i| i.class.opcode == Op::Phi) {
+                for parent in i.operands.iter_mut().skip(1).step_by(2) {
+                    if let Some(last) = id(parent).and_then(|p| split.get(&p)) {
+                        *parent = Operand::IdRef(*last);
+                    }
+                }
             }
             gone.extend(state.chosen.keys().chain(state.opaque.keys()).chain(state.same.keys()));
             for i in rewritten.iter_mut().flat_map(|b| b.instructions.iter_mut()) {
@@ -362,9 +380,12 @@ impl Uses {
 impl Rewrite<'_> {
     /// A block's instructions with element pointers resolved and every value computed from
     /// elements chosen at run time made per element and selected.
-    fn block(&mut self, instructions: Vec<Instruction>, elements: &HashMap<Word, Vec<Word>>, uses: &mut Uses) -> Option<Vec<Instruction>> {
+    fn block(&mut self, block: dr::Block, elements: &HashMap<Word, Vec<Word>>, uses: &mut Uses) -> Option<Vec<dr::Block>> {
+        let header = block.instructions.iter().any(|i| i.class.opcode == Op::LoopMerge);
+        let mut parts = Vec::new();
+        let mut label = block.label;
         let mut out = Vec::new();
-        for mut i in instructions {
+        for mut i in block.instructions {
             for o in &mut i.operands {
                 if let Some(e) = id(o).and_then(|x| uses.same.get(&x)) {
                     *o = Operand::IdRef(*e);
@@ -394,6 +415,15 @@ impl Rewrite<'_> {
                 out.push(i);
                 continue;
             }
+            if i.class.opcode == Op::ImageWrite && !header {
+                let [root] = roots[..] else { return None };
+                let chosen = uses.chosen[&root].clone();
+                let merge = self.store_per_element(&i, root, &chosen, uses, &mut out);
+                parts.push(dr::Block { label: label.take(), instructions: std::mem::take(&mut out) });
+                parts.extend(merge.1);
+                label = Some(Instruction::new(Op::Label, None, Some(merge.0), vec![]));
+                continue;
+            }
             let (Some(result), Some(ty)) = (i.result_id, i.result_type) else { return None };
             if is_opaque(&self.module, ty) {
                 uses.opaque.insert(result, i);
@@ -403,7 +433,44 @@ impl Rewrite<'_> {
             let chosen: Vec<(Word, Chosen)> = roots.iter().map(|r| (*r, uses.chosen[r].clone())).collect();
             self.chosen_value(&i, &chosen, width, Some(result), &mut HashMap::new(), uses, &mut out)?;
         }
-        Some(out)
+        parts.push(dr::Block { label, instructions: out });
+        Some(parts)
+    }
+
+    /// A store (`imageStore`) to the element of `root` chosen at run time: `out` (the
+    /// block so far) ends in a switch on the index with one case per element (an index past
+    /// the end: the last), each storing to its element; returns the label the blocks meet
+    /// at, where the rest of the block goes, and the case blocks.
+    fn store_per_element(
+        &mut self,
+        i: &Instruction,
+        root: Word,
+        chosen: &Chosen,
+        uses: &Uses,
+        out: &mut Vec<Instruction>,
+    ) -> (Word, Vec<dr::Block>) {
+        let merge = self.fresh();
+        let cases: Vec<Word> = chosen.elements.iter().map(|_| self.fresh()).collect();
+        out.push(Instruction::new(
+            Op::SelectionMerge,
+            None,
+            None,
+            vec![Operand::IdRef(merge), Operand::SelectionControl(rspirv::spirv::SelectionControl::NONE)],
+        ));
+        let last = *cases.last().expect("an array has an element");
+        let mut switch = vec![Operand::IdRef(chosen.index), Operand::IdRef(last)];
+        for (k, case) in cases.iter().enumerate().take(cases.len() - 1) {
+            switch.extend([Operand::LiteralBit32(k as u32), Operand::IdRef(*case)]);
+        }
+        out.push(Instruction::new(Op::Switch, None, None, switch));
+        let mut blocks = Vec::new();
+        for (case, element) in cases.iter().zip(&chosen.elements) {
+            let mut body = Vec::new();
+            self.remade(i, &HashMap::from([(root, *element)]), uses, &mut HashMap::new(), &mut body);
+            body.push(Instruction::new(Op::Branch, None, None, vec![Operand::IdRef(merge)]));
+            blocks.push(dr::Block { label: Some(Instruction::new(Op::Label, None, Some(*case), vec![])), instructions: body });
+        }
+        (merge, blocks)
     }
 
     /// `i` (a value computed from elements chosen at run time: `chosen`, the roots not yet
@@ -437,7 +504,7 @@ impl Rewrite<'_> {
             values.push(self.chosen_value(i, rest, width, None, fixed, uses, out)?);
         }
         fixed.remove(root);
-        let Some((&last, earlier)) = values.split_last() else { return None };
+        let (&last, earlier) = values.split_last()?;
         if earlier.is_empty() {
             return Some(match result {
                 Some(r) => {
@@ -504,8 +571,11 @@ impl Rewrite<'_> {
                 *o = Operand::IdRef(r);
             }
         }
+        // A store has no result: its id is only a placeholder the caller ignores.
         let r = self.fresh();
-        copy.result_id = Some(r);
+        if copy.result_id.is_some() {
+            copy.result_id = Some(r);
+        }
         out.push(copy);
         r
     }
@@ -538,7 +608,7 @@ mod tests {
         assert_eq!(moved.moved(0, 1), 1);
         assert_eq!(moved.moved(0, 2), 2, "the array's first element keeps its binding");
         assert_eq!(moved.moved(0, 3), 10);
-        assert_eq!(moved.moved(0, 6), 11);
+        assert_eq!(moved.moved(0, 6), 14, "past both arrays");
         assert_eq!(moved.moved(1, 1), 4);
         assert_eq!(moved.moved(2, 1), 1, "another set");
     }

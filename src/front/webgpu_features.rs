@@ -6,6 +6,19 @@ use crate::front::naga_run::Validated;
 use crate::front::rewrite;
 use crate::front::syntax::StageSyntax;
 
+/// The notes on what the translation of stage `s` does with what WebGPU lacks; `naga`: the
+/// stage's validated module, where naga took it.
+pub fn stage_notes(s: &StageSyntax, naga: Option<&Validated>) -> Vec<Diagnostic> {
+    let mut out = image_formats_chosen(s);
+    out.extend(runtime_arrays_bound(s));
+    if let Some(v) = naga {
+        out.extend(float16_needed(s, v));
+        out.extend(wide_integers_paired(s));
+        out.extend(subgroups_of_one(s));
+    }
+    out
+}
+
 /// N0111 at each image of `s` declared without a format qualifier (legal where the stage
 /// only stores to it, or reads with `EXT_shader_image_load_formatted`: GL converts to the
 /// format of the image bound): WebGPU storage textures have a format, and the translation

@@ -429,12 +429,7 @@ fn wide_integers_are_held_as_two_words() {
     let m = &module;
     let wide = |t: &naga::Type| matches!(t.inner, TypeInner::Scalar(s) | TypeInner::Vector { scalar: s, .. } if s.width == 8);
     assert!(!m.types.iter().any(|(_, t)| wide(t)), "no 64-bit type left");
-    let block = m
-        .global_variables
-        .iter()
-        .find(|(_, g)| matches!(g.space, AddressSpace::Storage { .. }))
-        .expect("the buffer")
-        .1;
+    let block = m.global_variables.iter().find(|(_, g)| matches!(g.space, AddressSpace::Storage { .. })).expect("the buffer").1;
     let TypeInner::Struct { members, .. } = &m.types[block.ty].inner else { panic!("a block") };
     assert_eq!(members.iter().map(|x| x.offset).collect::<Vec<_>>(), [0, 8], "the layout is the 64-bit one");
     let TypeInner::Array { stride, .. } = m.types[members[1].ty].inner else { panic!("the handles") };
