@@ -508,3 +508,36 @@ fn subgroup_operations_are_those_of_a_subgroup_of_one() {
     }
     assert!(matches!(m.global_expressions[init], naga::Expression::Literal(naga::Literal::U32(1))), "{:?}", m.global_expressions[init]);
 }
+
+/// A store to an image chosen at run time is a `switch` on the index, one case per element
+/// (the last one also for an index past the end).
+#[test]
+fn a_store_to_an_image_chosen_at_run_time_is_a_switch() {
+    let text = "#version 450\nlayout(local_size_x = 8) in;\nlayout(set = 0, binding = 0, r32f) writeonly uniform image2D images[3];\n\
+                layout(push_constant) uniform P { int level; } p;\n\
+                void main() {\n    float v = float(gl_LocalInvocationIndex);\n    \
+                if (v > 2.0) {\n        imageStore(images[p.level], ivec2(gl_GlobalInvocationID.xy), vec4(v));\n    }\n}\n";
+    let module = vulkan_stage(text, StageKind::Compute, VulkanVersion::V1_0);
+    let m = &module;
+    assert!(!m.types.iter().any(|(_, t)| matches!(t.inner, TypeInner::BindingArray { .. })), "no binding arrays left");
+    let images = m.global_variables.iter().filter(|(_, g)| matches!(m.types[g.ty].inner, TypeInner::Image { .. })).count();
+    assert_eq!(images, 3);
+    fn switches(b: &naga::Block) -> Vec<usize> {
+        let mut out = Vec::new();
+        for s in b.iter() {
+            match s {
+                naga::Statement::Switch { cases, .. } => out.push(cases.len()),
+                naga::Statement::Block(x) => out.extend(switches(x)),
+                naga::Statement::If { accept, reject, .. } => {
+                    out.extend(switches(accept));
+                    out.extend(switches(reject));
+                }
+                _ => {}
+            }
+        }
+        out
+    }
+    let found: Vec<usize> =
+        m.functions.iter().map(|(_, f)| f).chain(m.entry_points.iter().map(|e| &e.function)).flat_map(|f| switches(&f.body)).collect();
+    assert_eq!(found, [3], "cases 0 and 1, and the default (element 2)");
+}
