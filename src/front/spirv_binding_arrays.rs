@@ -54,12 +54,11 @@ pub(crate) fn binding_arrays_as_elements(stages: &mut [Vec<u32>]) {
     if arrays.iter().all(Vec::is_empty) {
         return;
     }
-    let mut lengths: BTreeMap<(u32, u32), u32> = BTreeMap::new();
+    let mut moved = Bindings { arrays: BTreeMap::new() };
     for a in arrays.iter().flatten() {
-        let n = lengths.entry((a.set, a.binding)).or_insert(1);
+        let n = moved.arrays.entry((a.set, a.binding)).or_default().entry(a.name.clone()).or_insert(1);
         *n = (*n).max(a.length.unwrap_or(RUNTIME_ELEMENTS)).max(1);
     }
-    let moved = Bindings { lengths };
     let mut out = Vec::new();
     for (module, arrays) in modules.into_iter().zip(&arrays) {
         match Rewrite::new(module, &moved).run(arrays) {
@@ -72,16 +71,26 @@ pub(crate) fn binding_arrays_as_elements(stages: &mut [Vec<u32>]) {
     }
 }
 
-/// The program's arrays, by (set, binding), with their element counts.
+/// The program's arrays, by (set, binding), with their element counts by name: Vulkan lets
+/// arrays of different types alias one binding (a bindless table read as 2D, 3D and cube
+/// textures), WebGPU does not, so aliases take consecutive elements, in order of name.
 struct Bindings {
-    lengths: BTreeMap<(u32, u32), u32>,
+    arrays: BTreeMap<(u32, u32), BTreeMap<String, u32>>,
 }
 
 impl Bindings {
     /// Where a resource at (`set`, `binding`) moves: up by the elements the arrays below it
     /// in its set add.
     fn moved(&self, set: u32, binding: u32) -> u32 {
-        binding + self.lengths.iter().filter(|((s, b), _)| *s == set && *b < binding).map(|(_, n)| n - 1).sum::<u32>()
+        let below = self.arrays.iter().filter(|((s, b), _)| *s == set && *b < binding);
+        binding + below.map(|(_, named)| named.values().sum::<u32>() - 1).sum::<u32>()
+    }
+
+    /// The elements of the array `name` at (`set`, `binding`): its first binding and count.
+    fn elements(&self, set: u32, binding: u32, name: &str) -> (u32, u32) {
+        let named = self.arrays.get(&(set, binding));
+        let before: u32 = named.map_or(0, |n| n.range(..name.to_string()).map(|(_, c)| c).sum());
+        (self.moved(set, binding) + before, named.and_then(|n| n.get(name)).copied().unwrap_or(1))
     }
 }
 
@@ -322,10 +331,9 @@ impl<'b> Rewrite<'b> {
 
     /// One variable per element of `a`, with its name, set and binding.
     fn element_variables(&mut self, a: &ArrayVariable) -> Vec<Word> {
-        let count = self.moved.lengths.get(&(a.set, a.binding)).copied().unwrap_or(1);
+        let (first, count) = self.moved.elements(a.set, a.binding, &a.name);
         let pointer =
             self.global(Op::TypePointer, None, vec![Operand::StorageClass(StorageClass::UniformConstant), Operand::IdRef(a.element)]);
-        let first = self.moved.moved(a.set, a.binding);
         let mut out = Vec::new();
         for k in 0..count {
             let v = self.fresh();
@@ -604,12 +612,22 @@ mod tests {
 
     #[test]
     fn resources_above_an_array_move_up_by_its_added_elements() {
-        let moved = Bindings { lengths: BTreeMap::from([((0, 2), 8), ((0, 5), 2), ((1, 0), 4)]) };
+        let named = |n: &[(&str, u32)]| n.iter().map(|(k, v)| (k.to_string(), *v)).collect::<BTreeMap<String, u32>>();
+        let moved = Bindings {
+            arrays: BTreeMap::from([
+                ((0, 2), named(&[("t", 8)])),
+                ((0, 5), named(&[("s", 2)])),
+                ((1, 0), named(&[("cube", 1), ("flat", 3)])),
+            ]),
+        };
         assert_eq!(moved.moved(0, 1), 1);
         assert_eq!(moved.moved(0, 2), 2, "the array's first element keeps its binding");
         assert_eq!(moved.moved(0, 3), 10);
         assert_eq!(moved.moved(0, 6), 14, "past both arrays");
         assert_eq!(moved.moved(1, 1), 4);
         assert_eq!(moved.moved(2, 1), 1, "another set");
+        assert_eq!(moved.elements(1, 0, "cube"), (0, 1), "aliases of one binding take consecutive elements");
+        assert_eq!(moved.elements(1, 0, "flat"), (1, 3));
+        assert_eq!(moved.elements(0, 2, "t"), (2, 8));
     }
 }
