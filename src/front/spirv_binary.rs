@@ -178,6 +178,29 @@ pub(crate) fn space_bindings_for_split(stages: &mut [Vec<u32>]) {
     }
 }
 
+/// A word pass that rewrites a module instruction by instruction (every block of every
+/// function, in order), each instruction into what `instruction` pushes in its place.
+pub(crate) trait PerInstruction {
+    fn module_mut(&mut self) -> &mut rspirv::dr::Module;
+    /// `i` rewritten into `out`; None where the pass cannot take it (the module is then
+    /// left as it was by the caller).
+    fn instruction(&mut self, i: rspirv::dr::Instruction, out: &mut Vec<rspirv::dr::Instruction>) -> Option<()>;
+
+    fn each_instruction(&mut self) -> Option<()> {
+        for f in 0..self.module_mut().functions.len() {
+            for b in 0..self.module_mut().functions[f].blocks.len() {
+                let instructions = std::mem::take(&mut self.module_mut().functions[f].blocks[b].instructions);
+                let mut out = Vec::new();
+                for i in instructions {
+                    self.instruction(i, &mut out)?;
+                }
+                self.module_mut().functions[f].blocks[b].instructions = out;
+            }
+        }
+        Some(())
+    }
+}
+
 /// A resource variable's set and binding decorations.
 struct Decoration {
     set: u32,

@@ -21,6 +21,8 @@
 use std::collections::HashMap;
 
 use rspirv::binary::Assemble;
+
+use crate::front::spirv_binary::PerInstruction;
 use rspirv::dr::{self, Instruction, Operand};
 use rspirv::spirv::{Capability, GroupOperation, Op, Scope, Word};
 
@@ -85,16 +87,7 @@ impl One {
     }
 
     fn run(mut self) -> Option<Vec<u32>> {
-        for f in 0..self.module.functions.len() {
-            for b in 0..self.module.functions[f].blocks.len() {
-                let instructions = std::mem::take(&mut self.module.functions[f].blocks[b].instructions);
-                let mut out = Vec::new();
-                for i in instructions {
-                    self.instruction(i, &mut out)?;
-                }
-                self.module.functions[f].blocks[b].instructions = out;
-            }
-        }
+        self.each_instruction()?;
         if !self.changed {
             return None;
         }
@@ -136,7 +129,7 @@ impl One {
     }
 
     /// One instruction, lowered into `out` (nothing where its result stands for another id).
-    fn instruction(&mut self, i: Instruction, out: &mut Vec<Instruction>) -> Option<()> {
+    fn lowered(&mut self, i: Instruction, out: &mut Vec<Instruction>) -> Option<()> {
         let op = i.class.opcode;
         let ids: Vec<Word> = i.operands.iter().filter_map(|o| if let Operand::IdRef(x) = o { Some(*x) } else { None }).collect();
         let group_op = i.operands.iter().find_map(|o| if let Operand::GroupOperation(g) = o { Some(*g) } else { None });
@@ -277,5 +270,15 @@ impl One {
             _ => return None,
         };
         Some(self.global(Op::Constant, Some(ty), vec![Operand::LiteralBit32(bits)]))
+    }
+}
+
+impl PerInstruction for One {
+    fn module_mut(&mut self) -> &mut dr::Module {
+        &mut self.module
+    }
+
+    fn instruction(&mut self, i: Instruction, out: &mut Vec<Instruction>) -> Option<()> {
+        self.lowered(i, out)
     }
 }

@@ -21,6 +21,8 @@
 use std::collections::HashMap;
 
 use rspirv::binary::Assemble;
+
+use crate::front::spirv_binary::PerInstruction;
 use rspirv::dr::{self, Instruction, Operand};
 use rspirv::spirv::{Capability, Op, Word};
 
@@ -143,16 +145,7 @@ impl Pairs {
     }
 
     fn run(mut self) -> Option<Vec<u32>> {
-        for f in 0..self.module.functions.len() {
-            for b in 0..self.module.functions[f].blocks.len() {
-                let instructions = std::mem::take(&mut self.module.functions[f].blocks[b].instructions);
-                let mut out = Vec::new();
-                for i in instructions {
-                    self.instruction(i, &mut out)?;
-                }
-                self.module.functions[f].blocks[b].instructions = out;
-            }
-        }
+        self.each_instruction()?;
         let new = std::mem::take(&mut self.new_globals);
         self.module.types_global_values.extend(new);
         self.module.capabilities.retain(|c| c.operands.first() != Some(&Operand::Capability(Capability::Int64)));
@@ -165,7 +158,7 @@ impl Pairs {
 
     /// One instruction of a function, lowered into `out`; None where a 64-bit value takes
     /// part in what this does not lower.
-    fn instruction(&mut self, i: Instruction, out: &mut Vec<Instruction>) -> Option<()> {
+    fn lowered(&mut self, i: Instruction, out: &mut Vec<Instruction>) -> Option<()> {
         let result_wide = i.result_type.and_then(|t| self.wide.get(&t)).copied();
         let wide_operand = i.operands.iter().find_map(|o| match o {
             Operand::IdRef(x) => self.wide_value(*x),
@@ -349,5 +342,15 @@ impl Pairs {
             .iter()
             .any(|i| i.result_id == Some(ty) && i.operands.first() == Some(&Operand::LiteralBit32(32)));
         is_f32.then(|| self.constant(ty, value.to_bits()))
+    }
+}
+
+impl PerInstruction for Pairs {
+    fn module_mut(&mut self) -> &mut dr::Module {
+        &mut self.module
+    }
+
+    fn instruction(&mut self, i: Instruction, out: &mut Vec<Instruction>) -> Option<()> {
+        self.lowered(i, out)
     }
 }
