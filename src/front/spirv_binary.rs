@@ -178,6 +178,55 @@ pub(crate) fn space_bindings_for_split(stages: &mut [Vec<u32>]) {
     }
 }
 
+/// What a pass over a [`rspirv::dr::Module`] adds to it: fresh ids past the module's bound,
+/// and global types and constants, each declared once (found among the module's own or the
+/// added ones, else added after them).
+pub(crate) struct Added {
+    bound: u32,
+    pub(crate) globals: Vec<rspirv::dr::Instruction>,
+}
+
+impl Added {
+    pub(crate) fn of(module: &rspirv::dr::Module) -> Added {
+        Added { bound: module.header.as_ref().map_or(0, |h| h.bound), globals: Vec::new() }
+    }
+
+    pub(crate) fn fresh(&mut self) -> u32 {
+        self.bound += 1;
+        self.bound - 1
+    }
+
+    /// The global `op` of type `ty` with `operands`, declared once.
+    pub(crate) fn global(&mut self, module: &rspirv::dr::Module, op: Op, ty: Option<u32>, operands: Vec<rspirv::dr::Operand>) -> u32 {
+        let same = |i: &&rspirv::dr::Instruction| i.class.opcode == op && i.result_type == ty && i.operands == operands;
+        if let Some(r) = module.types_global_values.iter().chain(&self.globals).find(same).and_then(|i| i.result_id) {
+            return r;
+        }
+        let r = self.fresh();
+        self.globals.push(rspirv::dr::Instruction::new(op, ty, Some(r), operands));
+        r
+    }
+
+    /// The global (the module's or an added one) that declares `id`.
+    pub(crate) fn def<'a>(&'a self, module: &'a rspirv::dr::Module, id: u32) -> Option<&'a rspirv::dr::Instruction> {
+        module.types_global_values.iter().chain(&self.globals).find(|i| i.result_id == Some(id))
+    }
+
+    /// The added globals put after the module's, and its bound raised past the fresh ids.
+    pub(crate) fn add_to(&mut self, module: &mut rspirv::dr::Module) -> Option<()> {
+        module.types_global_values.append(&mut self.globals);
+        module.header.as_mut()?.bound = self.bound;
+        Some(())
+    }
+}
+
+/// The result type of every id that has one (globals, function parameters, instructions).
+pub(crate) fn result_types(module: &rspirv::dr::Module) -> std::collections::HashMap<u32, u32> {
+    let globals = module.types_global_values.iter();
+    let bodies = module.functions.iter().flat_map(|f| f.parameters.iter().chain(f.blocks.iter().flat_map(|b| b.instructions.iter())));
+    globals.chain(bodies).filter_map(|i| Some((i.result_id?, i.result_type?))).collect()
+}
+
 /// A word pass that rewrites a module instruction by instruction (every block of every
 /// function, in order), each instruction into what `instruction` pushes in its place.
 pub(crate) trait PerInstruction {

@@ -30,6 +30,9 @@ use rspirv::binary::Assemble;
 use rspirv::dr::{self, Instruction, Operand};
 use rspirv::spirv::{Decoration, Op, StorageClass, Word};
 
+use crate::front::spirv_binary::{result_types, Added};
+use crate::front::spirv_interface_blocks::name_of;
+
 /// Elements given an array of textures or samplers whose length the text leaves to run time.
 pub(crate) const RUNTIME_ELEMENTS: u32 = 4;
 
@@ -159,15 +162,7 @@ fn array_variables(module: &dr::Module) -> Vec<ArrayVariable> {
         };
         let Some(&(set, binding)) = bindings.get(&variable) else { continue };
         if is_opaque(module, element) {
-            let name = module
-                .debug_names
-                .iter()
-                .find(|n| n.class.opcode == Op::Name && n.operands.first().and_then(id) == Some(variable))
-                .and_then(|n| match n.operands.get(1) {
-                    Some(Operand::LiteralString(s)) => Some(s.clone()),
-                    _ => None,
-                })
-                .unwrap_or_default();
+            let name = name_of(module, variable, None).unwrap_or_default();
             out.push(ArrayVariable { variable, set, binding, element, length, name });
         }
     }
@@ -178,8 +173,7 @@ fn array_variables(module: &dr::Module) -> Vec<ArrayVariable> {
 struct Rewrite<'b> {
     module: dr::Module,
     moved: &'b Bindings,
-    bound: Word,
-    new_globals: Vec<Instruction>,
+    added: Added,
     /// Result types of every id with one (globals, parameters, function instructions).
     types: HashMap<Word, Word>,
 }
@@ -193,32 +187,15 @@ struct Chosen {
 
 impl<'b> Rewrite<'b> {
     fn new(module: dr::Module, moved: &'b Bindings) -> Rewrite<'b> {
-        let bound = module.header.as_ref().map_or(0, |h| h.bound);
-        let mut types = HashMap::new();
-        let globals = module.types_global_values.iter();
-        let bodies = module.functions.iter().flat_map(|f| f.parameters.iter().chain(f.blocks.iter().flat_map(|b| b.instructions.iter())));
-        for i in globals.chain(bodies) {
-            if let (Some(r), Some(t)) = (i.result_id, i.result_type) {
-                types.insert(r, t);
-            }
-        }
-        Rewrite { module, moved, bound, new_globals: Vec::new(), types }
+        Rewrite { types: result_types(&module), added: Added::of(&module), module, moved }
     }
 
     fn fresh(&mut self) -> Word {
-        self.bound += 1;
-        self.bound - 1
+        self.added.fresh()
     }
 
-    /// A global type or constant as `op` with `operands` (of `ty`), declared once.
     fn global(&mut self, op: Op, ty: Option<Word>, operands: Vec<Operand>) -> Word {
-        let same = |i: &Instruction| i.class.opcode == op && i.result_type == ty && i.operands == operands;
-        if let Some(i) = self.module.types_global_values.iter().chain(&self.new_globals).find(|i| same(i)) {
-            return i.result_id.expect("types and constants have ids");
-        }
-        let r = self.fresh();
-        self.new_globals.push(Instruction::new(op, ty, Some(r), operands));
-        r
+        self.added.global(&self.module, op, ty, operands)
     }
 
     /// The words of the rewritten stage, or None where an array is used otherwise.
@@ -310,9 +287,7 @@ impl<'b> Rewrite<'b> {
             return None;
         }
         self.module.annotations.retain(|a| !a.operands.first().and_then(id).is_some_and(|t| gone.contains(&t)));
-        let new = std::mem::take(&mut self.new_globals);
-        self.module.types_global_values.extend(new);
-        self.module.header.as_mut()?.bound = self.bound;
+        self.added.add_to(&mut self.module)?;
         Some(self.module.assemble())
     }
 
@@ -337,7 +312,7 @@ impl<'b> Rewrite<'b> {
         let mut out = Vec::new();
         for k in 0..count {
             let v = self.fresh();
-            self.new_globals.push(Instruction::new(
+            self.added.globals.push(Instruction::new(
                 Op::Variable,
                 Some(pointer),
                 Some(v),

@@ -22,7 +22,7 @@ use std::collections::HashMap;
 
 use rspirv::binary::Assemble;
 
-use crate::front::spirv_binary::PerInstruction;
+use crate::front::spirv_binary::{Added, PerInstruction};
 use rspirv::dr::{self, Instruction, Operand};
 use rspirv::spirv::{Capability, GroupOperation, Op, Scope, Word};
 
@@ -44,8 +44,7 @@ pub(crate) fn subgroups_of_one(words: Vec<u32>) -> Vec<u32> {
 
 struct One {
     module: dr::Module,
-    bound: Word,
-    new_globals: Vec<Instruction>,
+    added: Added,
     /// Ids a result stands for (the invocation's own value, a constant).
     same: HashMap<Word, Word>,
     changed: bool,
@@ -53,28 +52,20 @@ struct One {
 
 impl One {
     fn new(module: dr::Module) -> Option<One> {
-        let bound = module.header.as_ref()?.bound;
-        Some(One { module, bound, new_globals: Vec::new(), same: HashMap::new(), changed: false })
+        module.header.as_ref()?;
+        Some(One { added: Added::of(&module), module, same: HashMap::new(), changed: false })
     }
 
     fn fresh(&mut self) -> Word {
-        self.bound += 1;
-        self.bound - 1
+        self.added.fresh()
     }
 
     fn def(&self, id: Word) -> Option<&Instruction> {
-        self.module.types_global_values.iter().chain(&self.new_globals).find(|i| i.result_id == Some(id))
+        self.added.def(&self.module, id)
     }
 
-    /// A global type or constant declared once.
     fn global(&mut self, op: Op, ty: Option<Word>, operands: Vec<Operand>) -> Word {
-        let same = |i: &&Instruction| i.class.opcode == op && i.result_type == ty && i.operands == operands;
-        if let Some(r) = self.module.types_global_values.iter().chain(&self.new_globals).find(same).and_then(|i| i.result_id) {
-            return r;
-        }
-        let r = self.fresh();
-        self.new_globals.push(Instruction::new(op, ty, Some(r), operands));
-        r
+        self.added.global(&self.module, op, ty, operands)
     }
 
     /// The value of a 32-bit integer constant (scopes are given as constants).
@@ -107,8 +98,7 @@ impl One {
         }
         let gone: Vec<Word> = same.keys().copied().collect();
         self.module.annotations.retain(|a| !matches!(a.operands.first(), Some(Operand::IdRef(t)) if gone.contains(t)));
-        let new = std::mem::take(&mut self.new_globals);
-        self.module.types_global_values.extend(new);
+        self.added.add_to(&mut self.module)?;
         self.module.capabilities.retain(|c| {
             !matches!(
                 c.operands.first(),
@@ -124,7 +114,6 @@ impl One {
                 ))
             )
         });
-        self.module.header.as_mut()?.bound = self.bound;
         Some(self.module.assemble())
     }
 

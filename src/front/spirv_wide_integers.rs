@@ -22,7 +22,7 @@ use std::collections::HashMap;
 
 use rspirv::binary::Assemble;
 
-use crate::front::spirv_binary::PerInstruction;
+use crate::front::spirv_binary::{result_types, Added, PerInstruction};
 use rspirv::dr::{self, Instruction, Operand};
 use rspirv::spirv::{Capability, Op, Word};
 
@@ -40,7 +40,7 @@ pub(crate) fn wide_integers_as_pairs(words: Vec<u32>) -> Vec<u32> {
 /// The lowering in progress.
 struct Pairs {
     module: dr::Module,
-    bound: Word,
+    added: Added,
     /// The 64-bit types, with their signedness.
     wide: HashMap<Word, bool>,
     /// 32-bit `uint`, `int`, `bool`, `bvec2`, `float` (declared where missing).
@@ -50,23 +50,13 @@ struct Pairs {
     bvec2: Word,
     /// Result types of every id with one.
     types: HashMap<Word, Word>,
-    new_globals: Vec<Instruction>,
 }
 
 impl Pairs {
     fn new(module: dr::Module) -> Option<Pairs> {
-        let bound = module.header.as_ref()?.bound;
-        let mut p = Pairs {
-            module,
-            bound,
-            wide: HashMap::new(),
-            uint: 0,
-            int: 0,
-            boolean: 0,
-            bvec2: 0,
-            types: HashMap::new(),
-            new_globals: Vec::new(),
-        };
+        module.header.as_ref()?;
+        let mut p =
+            Pairs { added: Added::of(&module), module, wide: HashMap::new(), uint: 0, int: 0, boolean: 0, bvec2: 0, types: HashMap::new() };
         // The 32-bit types first: the pair type is declared from them, before any use.
         let (uint, int) = (p.fresh(), p.fresh());
         let mut globals = vec![
@@ -102,41 +92,21 @@ impl Pairs {
         p.module.types_global_values = globals;
         p.boolean = p.global(Op::TypeBool, vec![]);
         p.bvec2 = p.global(Op::TypeVector, vec![Operand::IdRef(p.boolean), Operand::LiteralBit32(2)]);
-        let globals = p.module.types_global_values.iter();
-        let bodies = p.module.functions.iter().flat_map(|f| f.parameters.iter().chain(f.blocks.iter().flat_map(|b| b.instructions.iter())));
-        for i in globals.chain(bodies) {
-            if let (Some(r), Some(t)) = (i.result_id, i.result_type) {
-                p.types.insert(r, t);
-            }
-        }
+        p.types = result_types(&p.module);
         Some(p)
     }
 
     fn fresh(&mut self) -> Word {
-        self.bound += 1;
-        self.bound - 1
+        self.added.fresh()
     }
 
-    /// A type declared once (after the module's own).
+    /// A type declared once.
     fn global(&mut self, op: Op, operands: Vec<Operand>) -> Word {
-        let same = |i: &&Instruction| i.class.opcode == op && i.operands == operands;
-        if let Some(r) = self.module.types_global_values.iter().chain(&self.new_globals).find(same).and_then(|i| i.result_id) {
-            return r;
-        }
-        let r = self.fresh();
-        self.new_globals.push(Instruction::new(op, None, Some(r), operands));
-        r
+        self.added.global(&self.module, op, None, operands)
     }
 
     fn constant(&mut self, ty: Word, value: u32) -> Word {
-        let same =
-            |i: &&Instruction| i.class.opcode == Op::Constant && i.result_type == Some(ty) && i.operands == [Operand::LiteralBit32(value)];
-        if let Some(r) = self.module.types_global_values.iter().chain(&self.new_globals).find(same).and_then(|i| i.result_id) {
-            return r;
-        }
-        let r = self.fresh();
-        self.new_globals.push(Instruction::new(Op::Constant, Some(ty), Some(r), vec![Operand::LiteralBit32(value)]));
-        r
+        self.added.global(&self.module, Op::Constant, Some(ty), vec![Operand::LiteralBit32(value)])
     }
 
     /// The signedness of a 64-bit value (None: not one).
@@ -146,13 +116,11 @@ impl Pairs {
 
     fn run(mut self) -> Option<Vec<u32>> {
         self.each_instruction()?;
-        let new = std::mem::take(&mut self.new_globals);
-        self.module.types_global_values.extend(new);
+        self.added.add_to(&mut self.module)?;
         self.module.capabilities.retain(|c| c.operands.first() != Some(&Operand::Capability(Capability::Int64)));
         if self.module.capabilities.iter().any(|c| c.operands.first() == Some(&Operand::Capability(Capability::Int64Atomics))) {
             return None;
         }
-        self.module.header.as_mut()?.bound = self.bound;
         Some(self.module.assemble())
     }
 
