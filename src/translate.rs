@@ -111,8 +111,51 @@ pub fn summary(w: &Written, explain: bool) -> String {
     text
 }
 
+/// How to run a folded tessellation program: one line, or with `--explain` the whole plan.
+fn tessellation_plan(g: &crate::back::reflect::GeometryDraw, t: &crate::back::reflect::TessellationDraw, explain: bool) -> String {
+    let per = format!("{} vertices per patch of {}", g.vertices_per_primitive, g.index_buffer.stride);
+    if !explain {
+        return format!(
+            "  tessellation stages folded into the vertex stage: draw {per} as a {} (levels up to {}); --explain shows the plan\n",
+            g.topology, t.level_cap
+        );
+    }
+    let (i, v) = (&g.index_buffer, &g.vertex_buffer);
+    let mut s = String::from("  tessellation stages folded into the vertex stage (WebGPU has no tessellation stages):\n");
+    s.push_str(&format!(
+        "    indices: storage buffer `{}` (group {}, binding {}): a header (2 unused words, u32 level cap, u32 vertices per patch), then {} u32 per patch, in draw order\n",
+        i.name, i.group, i.binding, i.stride
+    ));
+    s.push_str(&format!(
+        "    vertices: storage buffer `{}` (group {}, binding {}): {} vec4<f32> per vertex ({})\n",
+        v.name,
+        v.group,
+        v.binding,
+        v.stride,
+        if g.inputs.is_empty() { "no inputs".to_string() } else { g.inputs.join(", ") }
+    ));
+    s.push_str(&format!(
+        "    draw: no vertex buffers, non-indexed, patches × {} vertices (× instances), topology {}, header level cap {}\n",
+        g.vertices_per_primitive, g.topology, t.level_cap
+    ));
+    s.push_str(&format!(
+        "    per patch: the {} domain's primitives at the levels the control stage writes (capped); slots past the last lie outside the clip volume; a smaller cap needs fewer vertices per patch\n",
+        t.domain
+    ));
+    if t.geometry_slots > 0 {
+        s.push_str(&format!(
+            "    then the geometry stage on each generated primitive: {} vertices each ({} max_vertices = {} as {} lists)\n",
+            t.geometry_slots, g.output_primitive, g.max_vertices, g.topology
+        ));
+    }
+    s
+}
+
 /// How to run a folded geometry program: one line, or with `--explain` the whole plan.
 fn geometry_plan(g: &crate::back::reflect::GeometryDraw, explain: bool) -> String {
+    if let Some(t) = &g.tessellation {
+        return tessellation_plan(g, t, explain);
+    }
     let per = format!("{} vertices per input {}", g.vertices_per_primitive, g.input_primitive.trim_end_matches('s'));
     if !explain {
         return format!("  geometry stage folded into the vertex stage: draw {per} as a {}; --explain shows the plan\n", g.topology);

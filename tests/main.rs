@@ -37,6 +37,8 @@
 //!   are clean.
 //! - [`through_spirv`]: legal programs naga's GLSL front refuses go through glslang's SPIR-V;
 //!   their hazards still point at GLSL lines; reports snapshotted under `snapshots/through_spirv/`.
+//! - [`tessellation`]: tessellation stages folded into the vertex stage validate, translate
+//!   and draw what the OpenGL driver draws (known differences listed).
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
 //! - [`verify`]: `effectc verify`: every effect and the semantics suite against the system's
@@ -83,6 +85,8 @@ mod settings;
 mod stream;
 #[path = "suite/stress.rs"]
 mod stress;
+#[path = "suite/tessellation.rs"]
+mod tessellation;
 #[path = "suite/through_spirv.rs"]
 mod through_spirv;
 #[path = "suite/translate.rs"]

@@ -13,7 +13,7 @@
 //! |-------|---------|
 //! | E0301 | two stages bind different resources at the same (group, binding) |
 //! | E0302 | a `switch` case falls through into the next case's code (WGSL cannot say it) |
-//! | E0303 | a stage naga cannot translate (tessellation, a geometry stage effectc cannot fold) |
+//! | E0303 | a stage naga cannot translate (a geometry or tessellation stage effectc cannot fold) |
 //! | E0304 | a stage did not validate, so the program cannot be translated |
 //! | E0305 | internal: the translated module failed validation or a writer failed |
 //! | E0306 | a target cannot express the program (e.g. `noperspective` in GLSL ES 3.00) |
@@ -257,7 +257,7 @@ fn stage_modules(program: &CompiledProgram, options: TranslateOptions) -> Result
         let kind = stage.syntax.stage;
         match (kind, &program.folded) {
             // Folded into the vertex stage's module (below).
-            (StageKind::Geometry, Some(Ok(_))) => continue,
+            (StageKind::Geometry | StageKind::TessControl | StageKind::TessEval, Some(Ok(_))) => continue,
             (StageKind::Vertex, Some(Ok(folded))) => {
                 let mut module = folded.naga.module.clone();
                 arguments::copy_partial_pointer_arguments(&mut module, &folded.naga.info);
@@ -275,6 +275,16 @@ fn stage_modules(program: &CompiledProgram, options: TranslateOptions) -> Result
                         .in_file(stage.syntax.file)
                         .with_note(format!(
                             "effectc runs a geometry stage on WebGPU by folding it into the vertex stage; this one it cannot fold: {why}"
+                        )),
+                );
+                continue;
+            }
+            (StageKind::TessControl | StageKind::TessEval, Some(Err(why))) => {
+                diags.push(
+                    Diagnostic::new(Code::StageNotTranslatable, format!("the {kind} stage cannot be translated"))
+                        .in_file(stage.syntax.file)
+                        .with_note(format!(
+                            "effectc runs tessellation on WebGPU by folding the stages into the vertex stage; these it cannot fold: {why}"
                         )),
                 );
                 continue;

@@ -316,7 +316,7 @@ pub fn check_stages(
             diags.extend(crate::link::check_manifest(e, &syntaxes, files));
         }
         if !diags.iter().any(Diagnostic::is_error) {
-            program::fold_geometry(p, &mut diags);
+            crate::front::folds::fold_stages(p, &mut diags);
             diags.extend(hazards::analyse(effect, p, settings));
         }
     }
@@ -404,7 +404,7 @@ fn check_passes(
                 diags.extend(crate::link::check_pass_manifest(&view, &s, files, &bound));
                 // Targets an earlier pass drew are unknown to the analysis: they raise nothing.
                 if !diags.iter().any(Diagnostic::is_error) {
-                    program::fold_geometry(p, &mut diags);
+                    crate::front::folds::fold_stages(p, &mut diags);
                     diags.extend(hazards::analyse(Some(&view), p, settings));
                 }
                 syntaxes = Some(s);

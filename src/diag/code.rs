@@ -113,7 +113,7 @@ codes! {
     // Translation (`back`).
     BindingConflict => "E0301", "stages bind different resources at one binding",
     SwitchFallThrough => "E0302", "`switch` case falls through, which WGSL cannot say",
-    StageNotTranslatable => "E0303", "stage effectc cannot translate (tessellation, a geometry stage it cannot fold)",
+    StageNotTranslatable => "E0303", "stage effectc cannot translate (a geometry or tessellation stage it cannot fold)",
     StageNotValid => "E0304", "stage did not validate, so the program cannot be translated",
     TranslateInternal => "E0305", "internal translation error",
     TargetCannotExpress => "E0306", "a target cannot express the program",
@@ -158,6 +158,7 @@ codes! {
     RuntimeArrayBound => "N0113", "an array of textures, images or samplers sized at run time (bindless) is translated as 4 elements, one binding each",
     WideIntegersPaired => "N0114", "64-bit integers are held as two 32-bit words (`vec2<u32>`): WGSL has no 64-bit integers",
     SubgroupOfOne => "N0115", "subgroup operations are computed for subgroups of one invocation (`gl_SubgroupSize` 1): WGSL has no subgroups naga and tint both take",
+    TessellationFolded => "N0116", "tessellation stages run inside the vertex stage, with a fixed number of vertices per patch (levels above the draw's cap are drawn at it)",
     AttachmentDropped => "N0241", "MRT attachment nobody reads is not attached",
     BufferShown => "N0401", "a compute program that stores to no image is shown as the words of the storage buffer it stores to",
     HazardAnalysisStopped => "N0701", "the static hazard analysis of a stage stopped at its work limit: its warnings are incomplete",

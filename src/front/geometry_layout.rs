@@ -37,6 +37,15 @@ impl InputPrimitive {
             InputPrimitive::TrianglesAdjacency => 6,
         }
     }
+    /// The list topology a stage before it must make (`point-list`, `line-list`,
+    /// `triangle-list`).
+    pub const fn list_topology(self) -> &'static str {
+        match self {
+            InputPrimitive::Points => "point-list",
+            InputPrimitive::Lines | InputPrimitive::LinesAdjacency => "line-list",
+            InputPrimitive::Triangles | InputPrimitive::TrianglesAdjacency => "triangle-list",
+        }
+    }
     fn from_name(name: &str) -> Option<InputPrimitive> {
         [
             InputPrimitive::Points,

@@ -11,8 +11,7 @@ use std::ops::Range;
 use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::aggregate_varyings;
 use crate::front::edits::OffsetMap;
-use crate::front::geometry_fold::{self, Folded, Pulling};
-use crate::front::geometry_layout;
+use crate::front::geometry_fold::{self, Folded};
 use crate::front::limits;
 use crate::front::naga_run::{self, Limitation, Outcome, Validated};
 use crate::front::plan::{self, Plan};
@@ -433,9 +432,10 @@ fn compile_own(
                     .with_note("naga and WGSL have no tessellation stages, so it is not validated by naga"),
                 );
             }
-            // A geometry stage is rewritten to 4.50 like the others (the shared uniform
-            // block, the plan's locations, sampler splits): the text the fold starts from.
-            let rewritten = (s.stage == StageKind::Geometry).then(|| {
+            // Geometry and tessellation stages are rewritten to 4.50 like the others (the
+            // shared uniform block, the plan's locations, sampler splits): the texts the
+            // folds start from.
+            let rewritten = {
                 let (mut rewritten, rdiags) = rewrite::rewrite(&s, &plan, options.strict);
                 diags.extend(rdiags);
                 // Its doubles are taken as floats too, as the other stages'.
@@ -443,8 +443,8 @@ fn compile_own(
                     diags.push(doubles_as_floats(&s, at));
                 }
                 dump_rewrite(files, &s, &rewritten);
-                rewritten
-            });
+                Some(rewritten)
+            };
             compiled.push(CompiledStage { syntax: s, rewritten, naga: None, limitation: None, through_spirv: false });
             continue;
         };
@@ -600,87 +600,6 @@ fn doubles_as_floats(s: &StageSyntax, at: Range<usize>) -> Diagnostic {
             "WebGPU (WGSL), MSL and GLSL ES have no 64-bit floats: the program is drawn and translated at f32 precision (`effectc verify` shows where that differs from GL)",
         )
         .with_help("`effectc translate --to spv,spvasm,hlsl` (only targets with 64-bit floats) keeps the doubles")
-}
-
-/// Folds a program's geometry stage into its vertex stage (when it has one), for a program
-/// the link rules found no errors in; a note says why a geometry stage does not fold.
-pub fn fold_geometry(program: &mut CompiledProgram, diags: &mut Vec<Diagnostic>) {
-    let Some(g) = program.stage(StageKind::Geometry) else { return };
-    let syntaxes: Vec<StageSyntax> = program.stages.iter().map(|s| s.syntax.clone()).collect();
-    let folded = fold(program, plan::first_free_binding(&program.plan, &syntaxes));
-    if let Ok(f) = &folded {
-        let selected: Vec<&str> = [(f.drawn.selects_layer, "`gl_Layer`"), (f.drawn.selects_viewport, "`gl_ViewportIndex`")]
-            .into_iter()
-            .filter(|(s, _)| *s)
-            .map(|(_, n)| n)
-            .collect();
-        if !selected.is_empty() {
-            diags.push(
-                Diagnostic::new(Code::LayerSelected, format!("the geometry stage writes {}: WebGPU cannot route a primitive to a layer or viewport", selected.join(" and ")))
-                    .in_file(g.syntax.file)
-                    .with_note("the translation draws the primitives of one layer and viewport per draw (named in the index buffer's header; `render` draws layer 0, viewport 0)"),
-            );
-        }
-    }
-    if let Err(why) = &folded {
-        diags.push(
-            Diagnostic::new(Code::SyntaxAndInterfaceOnly, "the geometry stage is checked for syntax and interface only")
-                .in_file(g.syntax.file)
-                .with_note(format!("effectc cannot fold it into the vertex stage (how it runs on WebGPU): {why}")),
-        );
-    }
-    program.folded = Some(folded);
-}
-
-/// Folds the geometry stage into the vertex stage, twice: the stage that is drawn (vertices
-/// pulled from storage buffers at `free_binding` and the next) and the one the static
-/// analysis reads (vertices from the vertex inputs); naga validates both.
-fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> {
-    let rewritten = |kind: StageKind| -> Result<&Rewritten, String> {
-        let s = program.stage(kind).ok_or_else(|| format!("a geometry stage without a {kind} stage"))?;
-        if s.limitation.is_some() || (kind == StageKind::Vertex && s.naga.is_none()) {
-            return Err(format!("the {kind} stage, which naga did not validate"));
-        }
-        s.rewritten.as_ref().ok_or_else(|| format!("the {kind} stage, which was not rewritten"))
-    };
-    let (vs, gs) = (rewritten(StageKind::Vertex)?, rewritten(StageKind::Geometry)?);
-    let g = program.stage(StageKind::Geometry).expect("checked above");
-    let layout = geometry_layout::geometry_layout(&g.syntax).map_err(|p| p.message)?;
-    if layout.max_vertices == 0 {
-        return Err("`max_vertices = 0`: the stage emits no vertex, so there is nothing to draw".into());
-    }
-    // Debugging aid: with `EFFECTC_DUMP_REWRITE=DIR`, each fold is written next to the
-    // stages' rewritten texts (before naga sees it).
-    let dump = std::env::var_os("EFFECTC_DUMP_REWRITE");
-    let lower = |pulling: Pulling, dump_name: &str| -> Result<geometry_fold::Lowered, String> {
-        let lowered = geometry_fold::lower(&vs.text, &gs.text, layout, pulling, Some(&g.syntax))?;
-        if let Some(dir) = &dump {
-            let _ = std::fs::write(std::path::Path::new(dir).join(dump_name), &lowered.text);
-        }
-        Ok(lowered)
-    };
-    let validate = |lowered: geometry_fold::Lowered| -> Result<(geometry_fold::Lowered, Validated), String> {
-        let as_stage = Rewritten { text: lowered.text.clone(), map: OffsetMap::identity(lowered.text.len()), limitation: None };
-        let refused = match naga_run::parse_and_validate(g.syntax.file, &as_stage, naga::ShaderStage::Vertex, &g.syntax.version) {
-            Outcome::Valid(v) if v.needs.is_empty() => return Ok((lowered, v)),
-            Outcome::Valid(v) => return Err(format!("a construct WebGPU lacks ({})", v.needs.join(", "))),
-            Outcome::Limited(limit) => format!("{}, which naga cannot take", limit.construct),
-            Outcome::Invalid(errors) => {
-                format!("naga rejects the folded stage: {}", errors.first().map(|d| d.message.as_str()).unwrap_or("no message"))
-            }
-        };
-        // What naga's GLSL front refuses in the fold, glslang may compile to SPIR-V that
-        // naga's SPIR-V front reads (spans on the fold's lines, as on the GLSL route).
-        match through_spirv::compile_rewritten(&[(&lowered.text, StageKind::Vertex)], &program.plan, reference::Dialect::OpenGl, &[]) {
-            Ok(mut v) if v[0].needs.is_empty() => Ok((lowered, v.remove(0))),
-            _ => Err(refused),
-        }
-    };
-    let drawn = lower(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 }, "folded.vert");
-    let analysed = lower(Pulling::Attributes, "folded-analysis.vert");
-    let (drawn, naga) = validate(drawn?)?;
-    let (analysed, analysis) = validate(analysed?)?;
-    Ok(Folded { drawn, naga, analysed, analysis })
 }
 
 /// Debugging aid: with `EFFECTC_DUMP_REWRITE=DIR`, the 4.50 text of each stage is written

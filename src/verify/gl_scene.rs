@@ -35,6 +35,8 @@ pub struct GlScene {
     /// name, filter).
     target_samplers: Vec<(u32, String, Filter)>,
     mode: u32,
+    /// `GL_PATCH_VERTICES` for a draw of patches.
+    patch_vertices: i32,
     indexed: bool,
     count: i32,
     instances: i32,
@@ -100,7 +102,21 @@ impl GlScene {
             }
             let (mode, count) = (primitive_mode(replay.draw.primitive), replay.draw.count as i32);
             let instances = scene.instances as i32;
-            Ok(GlScene { program, uniforms, vao, buffers, textures, target_samplers, mode, indexed, count, instances, unfed_inputs })
+            let patch_vertices = replay.draw.patch_vertices as i32;
+            Ok(GlScene {
+                program,
+                uniforms,
+                vao,
+                buffers,
+                textures,
+                target_samplers,
+                mode,
+                patch_vertices,
+                indexed,
+                count,
+                instances,
+                unfed_inputs,
+            })
         }
     }
 
@@ -148,6 +164,9 @@ impl GlScene {
             }
             set_blend(gl, r.blend);
             gl.bind_vertex_array(Some(self.vao));
+            if self.mode == glow::PATCHES {
+                gl.patch_parameter_i32(glow::PATCH_VERTICES, self.patch_vertices);
+            }
             match (self.indexed, self.instances > 1) {
                 (true, false) => gl.draw_elements(self.mode, self.count, glow::UNSIGNED_INT, 0),
                 (true, true) => gl.draw_elements_instanced(self.mode, self.count, glow::UNSIGNED_INT, 0, self.instances),
@@ -188,6 +207,7 @@ fn primitive_mode(primitive: &str) -> u32 {
         "lines" => glow::LINES,
         "lines_adjacency" => glow::LINES_ADJACENCY,
         "triangles_adjacency" => glow::TRIANGLES_ADJACENCY,
+        "patches" => glow::PATCHES,
         _ => glow::TRIANGLES,
     }
 }

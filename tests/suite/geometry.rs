@@ -10,7 +10,7 @@
 use std::path::Path;
 
 use effectc::check::Checked;
-use effectc::front::geometry_fold::{lower, Pulling};
+use effectc::front::geometry_fold::{lower, Pulling, Upstream};
 use effectc::front::geometry_layout::{geometry_layout, GeometryLayout, InputPrimitive};
 use effectc::stage::StageKind;
 
@@ -57,7 +57,8 @@ fn every_geometry_program_folds_into_a_vertex_stage_naga_validates() {
             assert_eq!(module.entry_points[0].stage, naga::ShaderStage::Vertex, "{name}");
             let got: Vec<(u32, &str, u32)> = lowered.vertex_inputs.iter().map(|(l, n, c)| (*l, n.as_str(), *c)).collect();
             assert_eq!(got, inputs, "{name}");
-            assert_eq!(lowered.layout.slots_per_primitive(), slots, "{name}");
+            let effectc::front::geometry_fold::Shape::Geometry(layout) = lowered.shape else { panic!("{name}: not a geometry fold") };
+            assert_eq!(layout.slots_per_primitive(), slots, "{name}");
         }
         // The drawn stage pulls its vertices; the analysed one reads them as vertex inputs.
         let located = |m: &naga::Module| {
@@ -71,7 +72,7 @@ fn every_geometry_program_folds_into_a_vertex_stage_naga_validates() {
 #[test]
 fn the_folded_text_maps_back_to_each_stage() {
     let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
-    let lowered = lower(&vs, &gs, layout, Pulling::Attributes, None).unwrap();
+    let lowered = lower(Upstream::Vertex(&vs), &gs, layout, Pulling::Attributes, None).unwrap();
     // The first `effectc_emit()` defines it; the second is the geometry stage's EmitVertex().
     let first = lowered.text.find("effectc_emit()").unwrap();
     let at = lowered.text[first + 1..].find("effectc_emit()").unwrap() + first + 1;
@@ -89,24 +90,24 @@ fn what_is_not_folded_is_named_and_what_folds_differently_is_marked() {
     let (vs, gs, layout) = rewritten("tests/geometry/01-explode-textured");
     // Adjacency folds: gl_in[] has the six vertices GL_TRIANGLES_ADJACENCY gives.
     let adjacency = GeometryLayout { input: InputPrimitive::TrianglesAdjacency, ..layout };
-    assert!(lower(&vs, &gs, adjacency, Pulling::Attributes, None).unwrap().text.contains("effectc_gl_in[6];"));
+    assert!(lower(Upstream::Vertex(&vs), &gs, adjacency, Pulling::Attributes, None).unwrap().text.contains("effectc_gl_in[6];"));
     // gl_PrimitiveID written by the geometry stage travels to the fragment stage as a flat
     // varying after the stage's outputs (shaded: locations 0 and 1, the fragment stage's
     // inputs being numbered first).
     let primitive_id = gs.replace("EmitVertex();", "gl_PrimitiveID = 7; EmitVertex();");
-    let folded = lower(&vs, &primitive_id, layout, Pulling::Attributes, None).unwrap();
+    let folded = lower(Upstream::Vertex(&vs), &primitive_id, layout, Pulling::Attributes, None).unwrap();
     assert_eq!(folded.primitive_location, 2);
     assert!(folded.text.contains("layout(location = 2) flat out uint effectc_out_primitive;"), "{}", folded.text);
     // In the vertex stage of a geometry program it is named.
     let in_vertex = vs.replace("void main() {", "void main() {\n    gl_Layer = 1;");
     assert_eq!(
-        lower(&in_vertex, &gs, layout, Pulling::Attributes, None).unwrap_err(),
-        "`gl_Layer` in the vertex stage of a geometry program"
+        lower(Upstream::Vertex(&in_vertex), &gs, layout, Pulling::Attributes, None).unwrap_err(),
+        "`gl_Layer` in the vertex stage of a geometry or tessellation program"
     );
     // A layer is not routed but selected: the draw keeps the primitives of one layer.
     let layered = gs.replace("EmitVertex();", "gl_Layer = 1; EmitVertex();");
     let storage = Pulling::Storage { index_binding: 8, vertex_binding: 9 };
-    let folded = lower(&vs, &layered, layout, storage, None).unwrap();
+    let folded = lower(Upstream::Vertex(&vs), &layered, layout, storage, None).unwrap();
     assert!(folded.selects_layer && !folded.selects_viewport);
     assert!(folded.text.contains("effectc_cap_Layer == effectc_keep_layer"), "{}", folded.text);
 }
@@ -117,14 +118,14 @@ fn inputs_holding_arrays_are_read_at_a_run_time_corner_through_an_accessor() {
     // (a piglit program: 98 s, 3.6 s through the accessor); a literal corner and an input
     // without arrays (`gl_in[i].gl_Position`) stay plain indexing.
     let (vs, gs, layout) = rewritten("tests/geometry/13-corner-arrays/effect.toml");
-    let text = lower(&vs, &gs, layout, Pulling::Attributes, None).unwrap().text;
+    let text = lower(Upstream::Vertex(&vs), &gs, layout, Pulling::Attributes, None).unwrap().text;
     assert!(text.contains("effectc_gs_shades_block effectc_gs_shades_at(int k) { if (k == 0) return effectc_gs_shades[0];"), "{text}");
     assert!(text.contains("float[2] effectc_gs_weight_at(int k) {"), "{text}");
     assert!(text.contains("effectc_gs_shades_at(int(next)).tint[last]"), "{text}");
     assert!(text.contains("effectc_gs_weight_at(int(next))[last - 2]"), "{text}");
     assert!(text.contains("effectc_gl_in[i].gl_Position") && !text.contains("effectc_gl_in_at"), "{text}");
     let literal = gs.replace("shades[next].tint[last]", "shades[1].tint[last]");
-    let text = lower(&vs, &literal, layout, Pulling::Attributes, None).unwrap().text;
+    let text = lower(Upstream::Vertex(&vs), &literal, layout, Pulling::Attributes, None).unwrap().text;
     assert!(text.contains("effectc_gs_shades[1].tint[last]"), "{text}");
 }
 

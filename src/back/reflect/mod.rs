@@ -73,10 +73,50 @@ pub struct GeometryDraw {
     /// The vertex stage's inputs in their `vec4` order within a vertex (the first is at
     /// `vertex * inputs.len()`); also listed in `vertex_inputs`.
     pub inputs: Vec<String>,
+    /// A program with tessellation stages folded in (no geometry stage): its patches'
+    /// tessellation; `vertices_per_primitive` then counts slots per patch at the level cap.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tessellation: Option<TessellationDraw>,
     /// `layer` and/or `viewport` when the geometry stage writes `gl_Layer` /
     /// `gl_ViewportIndex` (WebGPU cannot route a primitive: draw once per layer or viewport
     /// with the header naming it).
     pub selects: Vec<&'static str>,
+}
+
+/// How a folded tessellation program spends its draw: `vertices_per_primitive` slots per
+/// patch, enough for every level at `level_cap` (header words 2 and 3 of the index buffer
+/// hold the cap and the slots; a smaller cap draws fewer vertices, levels above it are
+/// drawn at it).
+#[derive(Debug, Clone, Serialize)]
+pub struct TessellationDraw {
+    /// `triangles`, `quads` or `isolines`.
+    pub domain: &'static str,
+    pub level_cap: u32,
+    /// A geometry stage after the tessellation: the vertices it spends on each generated
+    /// primitive (0 without one).
+    pub geometry_slots: u32,
+    #[serde(skip)]
+    pub layout: crate::front::tessellation_fold::tessellator::TessLayout,
+}
+
+impl TessellationDraw {
+    /// The draw's vertices per patch at level cap `cap`.
+    pub fn vertices_per_patch(&self, cap: u32) -> u32 {
+        match self.geometry_slots {
+            0 => self.layout.slots_per_patch(cap),
+            per => self.layout.most_primitives(cap) * per,
+        }
+    }
+
+    /// The largest even level cap (2 … 64) at which `patches` patches take at most `budget`
+    /// vertices.
+    pub fn level_cap(&self, patches: u32, budget: u64) -> u32 {
+        (1..=crate::front::tessellation_fold::tessellator::MAX_LEVEL / 2)
+            .map(|h| h * 2)
+            .take_while(|cap| u64::from(patches.max(1)) * u64::from(self.vertices_per_patch(*cap)) <= budget)
+            .last()
+            .unwrap_or(2)
+    }
 }
 
 /// A storage buffer the folded stage reads.
@@ -108,10 +148,11 @@ pub fn reflect_program(
 
 /// The draw plan of a folded geometry program, and its pulled inputs as vertex inputs.
 pub fn geometry_draw(lowered: &crate::front::geometry_fold::Lowered) -> Option<(GeometryDraw, Vec<InterfaceVar>)> {
+    use crate::front::geometry_fold::Shape;
     use crate::front::geometry_fold::{Pulling, INDEX_BUFFER, VERTEX_BUFFER};
     use crate::front::geometry_layout::OutputPrimitive;
+    use crate::front::tessellation_fold::tessellator::MAX_LEVEL;
     let Pulling::Storage { index_binding, vertex_binding } = lowered.pulling else { return None };
-    let l = lowered.layout;
     let inputs: Vec<InterfaceVar> = lowered
         .vertex_inputs
         .iter()
@@ -132,18 +173,52 @@ pub fn geometry_draw(lowered: &crate::front::geometry_fold::Lowered) -> Option<(
             }
         })
         .collect();
+    let (input_primitive, output_primitive, max_vertices, invocations, topology, vertices_per_primitive, stride, tessellation) =
+        match lowered.shape {
+            Shape::Geometry(l) => (
+                l.input.name(),
+                l.output.name(),
+                l.max_vertices,
+                l.invocations,
+                match l.output {
+                    OutputPrimitive::Points => "point-list",
+                    OutputPrimitive::LineStrip => "line-list",
+                    OutputPrimitive::TriangleStrip => "triangle-list",
+                },
+                l.slots_per_primitive(),
+                l.input.vertices(),
+                None,
+            ),
+            Shape::Tessellation { layout, patch_vertices } => {
+                let t = TessellationDraw { domain: layout.domain_name(), level_cap: MAX_LEVEL, geometry_slots: 0, layout };
+                let slots = t.vertices_per_patch(MAX_LEVEL);
+                ("patches", layout.domain_name(), slots, 1, layout.topology(), slots, patch_vertices, Some(t))
+            }
+            Shape::TessellatedGeometry { geometry: l, layout, patch_vertices } => {
+                let t = TessellationDraw {
+                    domain: layout.domain_name(),
+                    level_cap: MAX_LEVEL,
+                    geometry_slots: l.slots_per_primitive(),
+                    layout,
+                };
+                let topology = match l.output {
+                    OutputPrimitive::Points => "point-list",
+                    OutputPrimitive::LineStrip => "line-list",
+                    OutputPrimitive::TriangleStrip => "triangle-list",
+                };
+                let slots = t.vertices_per_patch(MAX_LEVEL);
+                ("patches", l.output.name(), l.max_vertices, l.invocations, topology, slots, patch_vertices, Some(t))
+            }
+        };
     let draw = GeometryDraw {
-        input_primitive: l.input.name(),
-        output_primitive: l.output.name(),
-        max_vertices: l.max_vertices,
-        invocations: l.invocations,
-        topology: match l.output {
-            OutputPrimitive::Points => "point-list",
-            OutputPrimitive::LineStrip => "line-list",
-            OutputPrimitive::TriangleStrip => "triangle-list",
-        },
-        vertices_per_primitive: l.slots_per_primitive(),
-        index_buffer: PulledBuffer { name: INDEX_BUFFER, group: 0, binding: index_binding, stride: l.input.vertices() },
+        input_primitive,
+        output_primitive,
+        max_vertices,
+        invocations,
+        topology,
+        vertices_per_primitive,
+        tessellation,
+        index_buffer: PulledBuffer { name: INDEX_BUFFER, group: 0, binding: index_binding, stride },
         vertex_buffer: PulledBuffer { name: VERTEX_BUFFER, group: 0, binding: vertex_binding, stride: inputs.len() as u32 },
         inputs: inputs.iter().map(|i| i.name.clone()).collect(),
         selects: [(lowered.selects_layer, "layer"), (lowered.selects_viewport, "viewport")]

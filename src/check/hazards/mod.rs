@@ -336,6 +336,11 @@ fn analyse_with(effect: Option<&Effect>, program: &CompiledProgram, settings: Ha
     let report = settings.report.unwrap_or(if effect.is_some() { HazardReport::Possible } else { HazardReport::Certain });
     for (stage, hazards) in stages.iter().zip(&confirmed.found) {
         for (h, witness) in hazards {
+            // The fold's own glue (pulling, the tessellator) is effectc's code: what the
+            // analysis only suspects there is not the user's to fix.
+            if witness.is_none() && in_fold_glue(stage, program, h) {
+                continue;
+            }
             let note = match witness {
                 Some(w) => format!("certain: it happens {}", w.at),
                 None if report == HazardReport::Certain => continue,
@@ -489,6 +494,14 @@ fn vertex_input_names(vertex: Option<&Stage<'_>>) -> Vec<(u32, String)> {
             _ => None,
         })
         .collect()
+}
+
+/// Whether `h` lies in the generated glue of a folded stage (no user span).
+fn in_fold_glue(stage: &Stage<'_>, program: &CompiledProgram, h: &Hazard) -> bool {
+    match stage.place {
+        Place::Folded(fd) => h.span.to_range().is_none_or(|r| program.user_span_in(&fd.analysed, r).is_none()),
+        _ => false,
+    }
 }
 
 /// The diagnostic of `h`, found in `stage`, at the user's span.

@@ -32,400 +32,112 @@
 //! other than the geometry stage's inputs, vertex inputs other than scalars and vectors,
 //! `gl_Layer`/`gl_ViewportIndex`/`gl_PrimitiveID` in the vertex stage of a geometry program.
 
-mod interface;
-
 use std::fmt::Write as _;
-use std::ops::Range;
 
 use crate::config::TargetEnv;
 use crate::diag::FileId;
-use crate::front::edits::{Edits, OffsetMap};
+use crate::front::fold_parts::interface::{self, next_location};
+use crate::front::fold_parts::part::{self, Part, Role};
+use crate::front::fold_parts::{pull_corner, pulled_declarations, run_vertex, Piece};
+pub use crate::front::fold_parts::{Folded, Lowered, Pulling, Shape, ATTRIBUTE_PREFIX, HEADER_WORDS, INDEX_BUFFER, VERTEX_BUFFER};
 use crate::front::geometry_layout::{GeometryLayout, OutputPrimitive};
-use crate::front::naga_run::Validated;
-use crate::front::syntax::{self, matrix_shape, Global, GlslType, Referent, StageSyntax, Storage};
+use crate::front::syntax::{self, StageSyntax};
 use crate::stage::StageKind;
-use interface::{next_location, private_varying, Leaf};
 
-/// Name of the storage buffer of vertex indices (three, two or one per input primitive),
-/// as the translated code names it (its block type is `EffectcIndices`).
-pub const INDEX_BUFFER: &str = "effectc_indices";
-/// Words before the indices in [`INDEX_BUFFER`]: the layer and the viewport a draw keeps
-/// (as `i32`, −1 for all), two unused.
-pub const HEADER_WORDS: u32 = 4;
-/// Name of the storage buffer of vertex inputs, `vec4` per input (in location order) per
-/// vertex, as the translated code names it (its block type is `EffectcVertices`).
-pub const VERTEX_BUFFER: &str = "effectc_vertices";
-
-/// Prefix of the vertex inputs of the [`Pulling::Attributes`] fold (the user's names could
-/// clash with the geometry stage's globals); the input is the user's input of that name.
-pub const ATTRIBUTE_PREFIX: &str = "effectc_in_";
-
-/// Where the folded stage reads its primitives' vertices.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Pulling {
-    /// From [`INDEX_BUFFER`] and [`VERTEX_BUFFER`] at these bindings of group 0: the stage
-    /// that is drawn.
-    Storage { index_binding: u32, vertex_binding: u32 },
-    /// Every corner from the vertex inputs, as declared (location and name): a stage for the
-    /// static analysis, whose facts about vertex inputs are known by location and name.
-    Attributes,
+/// What runs before the geometry stage, once per corner of its input primitive.
+pub enum Upstream<'a> {
+    /// The vertex stage's 4.50 text.
+    Vertex(&'a str),
+    /// Tessellation stages folded ahead of it: each corner is a corner of a primitive they
+    /// generate.
+    Tessellated(crate::front::tessellation_fold::Upstream),
 }
 
-/// The lowered vertex stage and what drawing it needs.
-#[derive(Debug, Clone)]
-pub struct Lowered {
-    /// GLSL 4.50 vertex-stage text.
-    pub text: String,
-    pub layout: GeometryLayout,
-    pub pulling: Pulling,
-    /// The vertex stage's inputs in the order of their `vec4`s in [`VERTEX_BUFFER`]:
-    /// (location, name as the user wrote it, components).
-    pub vertex_inputs: Vec<(u32, String, u32)>,
-    /// The GLSL type of each of `vertex_inputs` (`vec3`, `uvec2`, `int`): an integer input
-    /// travels as its bit pattern in the `vec4`.
-    pub input_types: Vec<String>,
-    /// The parts of `text` copied from the two rewritten stages, with their offset maps.
-    pieces: Vec<Piece>,
-    /// The flat `uint` output at this location carries the `gl_PrimitiveID` the geometry stage
-    /// wrote (its input primitive's number when it wrote none) to a fragment stage that reads
-    /// `gl_PrimitiveID` (WebGPU has it only as an optional feature).
-    pub primitive_location: u32,
-    /// The geometry stage writes `gl_Layer` / `gl_ViewportIndex`: the draw keeps only the
-    /// primitives of the layer and viewport named in [`INDEX_BUFFER`]'s header.
-    pub selects_layer: bool,
-    pub selects_viewport: bool,
-}
-
-/// A range of the lowered text that came from one stage's rewritten text.
-#[derive(Debug, Clone)]
-struct Piece {
-    range: Range<usize>,
-    stage: StageKind,
-    map: OffsetMap,
-}
-
-impl Lowered {
-    /// The stage and the range of its rewritten text a range of the lowered text came from
-    /// (None for the generated glue).
-    pub fn locate(&self, range: Range<usize>) -> Option<(StageKind, Range<usize>)> {
-        let p = self.pieces.iter().find(|p| p.range.start <= range.start && range.end <= p.range.end)?;
-        Some((p.stage, p.map.range_to_original(range.start - p.range.start..range.end - p.range.start)))
-    }
-}
-
-/// A folded program: the lowered text that is drawn, with its validated module, and the
-/// analysis variant (vertex inputs as attributes) with its module.
-#[derive(Debug)]
-pub struct Folded {
-    pub drawn: Lowered,
-    pub naga: Validated,
-    pub analysed: Lowered,
-    pub analysis: Validated,
-}
-
-/// Folds `gs` (a geometry stage's 4.50 text) into `vs` (the vertex stage's). `original` is
-/// the geometry stage as the user wrote it, when known: the interpolation qualifiers of its
+/// Folds `gs` (a geometry stage's 4.50 text) into the stages before it. `original` is the
+/// geometry stage as the user wrote it, when known: the interpolation qualifiers of its
 /// output block members (the 4.50 text leaves them out, as naga ignores them there).
-pub fn lower(vs: &str, gs: &str, layout: GeometryLayout, pulling: Pulling, original: Option<&StageSyntax>) -> Result<Lowered, String> {
-    let v = syntax::analyse(FileId(0), vs, StageKind::Vertex, TargetEnv::Auto)
-        .map_err(|_| "the rewritten vertex stage does not parse".to_string())?;
+pub fn lower(
+    upstream: Upstream,
+    gs: &str,
+    layout: GeometryLayout,
+    pulling: Pulling,
+    original: Option<&StageSyntax>,
+) -> Result<Lowered, String> {
     let g = syntax::analyse(FileId(0), gs, StageKind::Geometry, TargetEnv::Auto)
         .map_err(|_| "the rewritten geometry stage does not parse".to_string())?;
     let corners = layout.input.vertices();
     let mut text = String::from("#version 450\n");
-    let vs_part = Part::new(&v, "effectc_vs_", None, None)?;
-    let shared: Vec<&str> = v.globals.iter().filter(|x| is_shared(x)).map(|x| x.name.as_str()).collect();
-    let gs_part = Part::new(&g, "effectc_gs_", Some((&shared, corners)), original)?;
-    let vertex_inputs: Vec<(u32, String, u32)> = vs_part.inputs.iter().map(|(l, n, c, _)| (*l, n.clone(), *c)).collect();
-    let input_types: Vec<String> = vs_part.inputs.iter().map(|(_, _, _, t)| t.clone()).collect();
-    match pulling {
-        Pulling::Storage { index_binding, vertex_binding } => {
-            writeln!(
-                text,
-                "layout(std430, set = 0, binding = {index_binding}) readonly buffer EffectcIndices {{ uint index[]; }} {INDEX_BUFFER};"
-            )
-            .unwrap();
-            writeln!(
-                text,
-                "layout(std430, set = 0, binding = {vertex_binding}) readonly buffer EffectcVertices {{ vec4 vertex[]; }} {VERTEX_BUFFER};"
-            )
-            .unwrap();
-        }
-        Pulling::Attributes => {
-            for ((location, name, _), ty) in vertex_inputs.iter().zip(&input_types) {
-                writeln!(text, "layout(location = {location}) in {ty} {ATTRIBUTE_PREFIX}{name};").unwrap();
-            }
-        }
-    }
-    // `gl_ClipDistance[]` only where read: it is 8 × 16 bytes of private memory per corner.
-    let clip = if gs_part.reads_clip_distance { " float gl_ClipDistance[8];" } else { "" };
-    writeln!(text, "struct effectc_PerVertex {{ vec4 gl_Position; float gl_PointSize;{clip} }};").unwrap();
-    writeln!(text, "effectc_PerVertex effectc_gl_in[{corners}];").unwrap();
-    text.push_str(
-        "vec4 effectc_vs_gl_Position; float effectc_vs_gl_PointSize; vec4 effectc_gs_gl_Position; float effectc_gs_gl_PointSize;\n",
-    );
-    text.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
-    text.push_str("int effectc_gs_gl_Layer; int effectc_gs_gl_ViewportIndex; int effectc_gs_gl_PrimitiveID;\n");
-    text.push_str(&vs_part.declarations);
-    text.push_str(&gs_part.declarations);
     let mut pieces = Vec::new();
-    let mut append = |text: &mut String, part: &Part, stage: StageKind| {
-        let start = text.len();
-        text.push_str(&part.body);
-        pieces.push(Piece { range: start..text.len(), stage, map: part.map.clone() });
-        text.push('\n');
+    let v = match &upstream {
+        Upstream::Vertex(vs) => Some(
+            syntax::analyse(FileId(0), vs, StageKind::Vertex, TargetEnv::Auto)
+                .map_err(|_| "the rewritten vertex stage does not parse".to_string())?,
+        ),
+        Upstream::Tessellated(_) => None,
     };
-    append(&mut text, &vs_part, StageKind::Vertex);
+    let vs_part = v.as_ref().map(|v| Part::new(v, "effectc_vs_", Role::Vertex, None)).transpose()?;
+    let shared: Vec<&str> = match (&upstream, &v) {
+        (Upstream::Tessellated(u), _) => u.shared.iter().map(String::as_str).collect(),
+        (_, Some(v)) => part::shared_names(v),
+        (Upstream::Vertex(_), None) => unreachable!("parsed above"),
+    };
+    let gs_part = Part::new(&g, "effectc_gs_", Role::Geometry { shared: &shared, corners }, original)?;
+    let (source, (vertex_inputs, input_types), shape) = match (&upstream, &vs_part) {
+        (Upstream::Tessellated(u), _) => {
+            if u.layout.topology() != layout.input.list_topology() {
+                return Err(format!(
+                    "the geometry stage takes {} and the tessellation makes a {}",
+                    layout.input.name(),
+                    u.layout.topology()
+                ));
+            }
+            let at = text.len();
+            text.push_str(&u.text);
+            pieces.extend(u.pieces.iter().cloned().map(|p| p.shifted(at)));
+            let source = CornerSource::Tessellated { outputs: &u.outputs, per_primitive: u.layout.corners() };
+            let shape = Shape::TessellatedGeometry { geometry: layout, layout: u.layout, patch_vertices: u.patch_vertices };
+            (source, (u.vertex_inputs.clone(), u.input_types.clone()), shape)
+        }
+        (_, Some(vs)) => {
+            text.push_str(&pulled_declarations(pulling, vs));
+            // `gl_ClipDistance[]` only where read: it is 8 × 16 bytes of private memory per corner.
+            let clip = if gs_part.reads_clip_distance { " float gl_ClipDistance[8];" } else { "" };
+            writeln!(text, "struct effectc_PerVertex {{ vec4 gl_Position; float gl_PointSize;{clip} }};").unwrap();
+            (CornerSource::Vertex(vs), vs.pulled_inputs(), Shape::Geometry(layout))
+        }
+        (Upstream::Vertex(_), None) => unreachable!("parsed above"),
+    };
+    writeln!(text, "effectc_PerVertex effectc_gl_in[{corners}];").unwrap();
+    // The tessellation declares the vertex stage's globals itself.
+    if let Some(vs) = &vs_part {
+        text.push_str(
+            "vec4 effectc_vs_gl_Position; float effectc_vs_gl_PointSize; vec4 effectc_gs_gl_Position; float effectc_gs_gl_PointSize;\n",
+        );
+        text.push_str("int effectc_PrimitiveIDIn; int effectc_InvocationID; int effectc_VertexID; int effectc_InstanceID;\n");
+        text.push_str("int effectc_gs_gl_Layer; int effectc_gs_gl_ViewportIndex; int effectc_gs_gl_PrimitiveID;\n");
+        text.push_str(&vs.declarations);
+        text.push_str(&gs_part.declarations);
+        Piece::append(&mut text, vs, StageKind::Vertex, &mut pieces);
+    } else {
+        text.push_str("vec4 effectc_gs_gl_Position; float effectc_gs_gl_PointSize; int effectc_PrimitiveIDIn; int effectc_InvocationID;\n");
+        text.push_str("int effectc_gs_gl_Layer; int effectc_gs_gl_ViewportIndex; int effectc_gs_gl_PrimitiveID;\n");
+        text.push_str(&gs_part.declarations);
+    }
     text.push_str(&capture(&gs_part, layout.output));
-    append(&mut text, &gs_part, StageKind::Geometry);
-    text.push_str(&driver(&vs_part, &gs_part, layout, pulling)?);
+    Piece::append(&mut text, &gs_part, StageKind::Geometry, &mut pieces);
+    text.push_str(&driver(&source, &gs_part, layout, pulling)?);
     let (selects_layer, selects_viewport) = (gs_part.selects.contains("gl_Layer"), gs_part.selects.contains("gl_ViewportIndex"));
     let primitive_location = next_location(&gs_part.outputs);
-    Ok(Lowered { text, layout, pulling, vertex_inputs, input_types, pieces, primitive_location, selects_layer, selects_viewport })
+    Ok(Lowered { text, shape, pulling, vertex_inputs, input_types, pieces, primitive_location, selects_layer, selects_viewport })
 }
 
-/// One stage's text with its interface made private and its names prefixed.
-struct Part {
-    prefix: &'static str,
-    /// Private declarations of the interface (and struct types for its blocks).
-    declarations: String,
-    /// The stage's text after the edits (without `#version`), and its map back.
-    body: String,
-    map: OffsetMap,
-    /// Vertex stage: its inputs (location, user name, components, GLSL type).
-    inputs: Vec<(u32, String, u32, String)>,
-    /// Its outputs, made private.
-    outputs: Vec<Leaf>,
-    /// Geometry stage: its inputs, made private (arrays over the corners).
-    ins: Vec<Leaf>,
-    /// Geometry stage: which of `gl_Layer` and `gl_ViewportIndex` it uses.
-    selects: std::collections::BTreeSet<String>,
-    /// The built-in outputs the rewrite made private globals ([`PRIVATE_BUILTINS`]) that the
-    /// stage declares, with their array length (a redeclared `gl_ClipDistance[3]` has 3).
-    private_builtins: Vec<(&'static str, Option<u32>)>,
-    /// Geometry stage: it reads `gl_in[].gl_ClipDistance`.
-    reads_clip_distance: bool,
-}
-
-/// Built-in outputs WebGPU lacks that the rewrite computes in a private float global (the
-/// global's name, the `gl_in[]` member it feeds, its array length).
-const PRIVATE_BUILTINS: [(&str, &str, Option<u32>); 2] =
-    [("effectc_PointSize", "gl_PointSize", None), ("effectc_ClipDistance", "gl_ClipDistance", Some(8))];
-
-impl Part {
-    /// `geometry`: the vertex stage's shared declarations (dropped here) and `gl_in`'s length.
-    fn new(
-        s: &StageSyntax,
-        prefix: &'static str,
-        geometry: Option<(&[&str], u32)>,
-        original: Option<&StageSyntax>,
-    ) -> Result<Part, String> {
-        let text = &s.text;
-        let mut edits = Edits::new();
-        let mut part = Part {
-            prefix,
-            declarations: String::new(),
-            body: String::new(),
-            map: OffsetMap::default(),
-            selects: Default::default(),
-            inputs: Vec::new(),
-            outputs: Vec::new(),
-            ins: Vec::new(),
-            private_builtins: Vec::new(),
-            reads_clip_distance: geometry.is_some()
-                && s.uses.iter().any(|u| u.name == "gl_in" && u.field.as_ref().is_some_and(|(f, _)| f == "gl_ClipDistance")),
-        };
-        if let Some(start) = text.find("#version") {
-            let end = text[start..].find('\n').map_or(text.len(), |e| start + e);
-            edits.delete(start..end);
-        }
-        for d in &s.defaults {
-            if geometry.is_some() && matches!(d.storage, Some(Storage::In | Storage::Out)) {
-                edits.delete(d.span.clone());
-            }
-        }
-        // Geometry inputs whose corners hold arrays or matrices: user name → (private
-        // name, type at one corner); read at a run-time corner through an accessor.
-        let mut accessed: std::collections::BTreeMap<String, (String, String)> = Default::default();
-        if part.reads_clip_distance {
-            accessed.insert("gl_in".into(), ("effectc_gl_in".into(), "effectc_PerVertex".into()));
-        }
-        let mut deleted: Vec<Range<usize>> = Vec::new();
-        let mut delete = |edits: &mut Edits, span: &Range<usize>| {
-            if !deleted.iter().any(|d| d.start < span.end && span.start < d.end) {
-                edits.delete(span.clone());
-                deleted.push(span.clone());
-            }
-        };
-        for g in &s.globals {
-            let renamed = format!("{prefix}{}", g.name);
-            if let Some((name, _, _)) = PRIVATE_BUILTINS.iter().find(|(n, _, _)| *n == g.name) {
-                part.private_builtins.push((name, g.ty.dims.first().copied().flatten()));
-            }
-            match g.storage {
-                _ if is_shared(g) => {
-                    if geometry.is_some_and(|(shared, _)| shared.contains(&g.name.as_str())) {
-                        delete(&mut edits, &g.decl_span);
-                    }
-                    continue;
-                }
-                Storage::In | Storage::Attribute if geometry.is_none() => {
-                    let components = components(&g.ty).ok_or_else(|| format!("vertex input `{}` of type `{}`", g.name, g.ty.base))?;
-                    part.inputs.push((g.location.unwrap_or(u32::MAX), g.name.clone(), components, g.ty.base.clone()));
-                    writeln!(part.declarations, "{} {renamed};", g.ty.base).unwrap();
-                    delete(&mut edits, &g.decl_span);
-                }
-                Storage::In | Storage::Out | Storage::Varying => {
-                    let as_written = original.and_then(|o| o.globals.iter().find(|x| x.name == g.name && x.storage == g.storage));
-                    let leaves = private_varying(g, s, as_written, &renamed, geometry.map(|(_, n)| n), &mut part.declarations)?;
-                    if g.storage == Storage::Out || (g.storage == Storage::Varying && geometry.is_none()) {
-                        part.outputs.extend(leaves);
-                    } else {
-                        if let Some(nested) = geometry.and_then(|_| nested_corner(g, prefix)) {
-                            accessed.insert(nested.0, (nested.1, nested.2));
-                        }
-                        part.ins.extend(leaves);
-                    }
-                    delete(&mut edits, &g.decl_span);
-                }
-                _ => edits.replace(g.name_span.clone(), renamed),
-            }
-        }
-        part.inputs.sort_by_key(|(location, _, _, _)| *location);
-        part.rename_uses(s, &accessed, geometry.is_some(), &mut edits)?;
-        let user_functions: Vec<&str> = s.functions.iter().map(|f| f.name.as_str()).collect();
-        for f in s.functions.iter().filter(|f| f.is_definition || f.name != "main") {
-            let name_at = find_name(text, &f.span, &f.name).ok_or_else(|| format!("the definition of `{}`", f.name))?;
-            edits.replace(name_at..name_at + f.name.len(), format!("{prefix}{}", f.name));
-        }
-        for c in &s.calls {
-            match c.name.as_str() {
-                "EmitVertex" if geometry.is_some() => edits.replace(c.span.clone(), "effectc_emit()"),
-                "EndPrimitive" if geometry.is_some() => edits.replace(c.span.clone(), "effectc_end_primitive()"),
-                name if user_functions.contains(&name) => edits.replace(c.name_span.clone(), format!("{prefix}{name}")),
-                _ => {}
-            }
-        }
-        if let Some((_, corners)) = geometry {
-            for (private, ty) in accessed.values() {
-                part.declarations.push_str(&corner_accessor(private, ty, corners));
-            }
-        }
-        (part.body, part.map, _) = edits.apply(text);
-        Ok(part)
-    }
-
-    /// Renames the stage's uses of its globals and of the built-ins the fold replaces;
-    /// geometry inputs in `accessed` read at a run-time corner go through their accessor.
-    fn rename_uses(
-        &mut self,
-        s: &StageSyntax,
-        accessed: &std::collections::BTreeMap<String, (String, String)>,
-        geometry: bool,
-        edits: &mut Edits,
-    ) -> Result<(), String> {
-        let stage_word = if geometry { "gs" } else { "vs" };
-        for u in &s.uses {
-            if let Some((private, _)) = accessed.get(&u.name).filter(|_| matches!(u.target, Referent::Global(_)) || u.name == "gl_in") {
-                if let Some(call) = corner_call(&s.text, u) {
-                    edits.replace(u.span.clone(), format!("{private}_at"));
-                    edits.replace(call.0, "(int(");
-                    edits.replace(call.1, "))");
-                    continue;
-                }
-            }
-            match &u.target {
-                Referent::Global(i) if !is_shared(&s.globals[*i]) => edits.replace(u.span.clone(), format!("{}{}", self.prefix, u.name)),
-                Referent::Unresolved => match u.name.as_str() {
-                    "gl_Position" | "gl_PointSize" => edits.replace(u.span.clone(), format!("effectc_{stage_word}_{}", u.name)),
-                    "gl_in" => edits.replace(u.span.clone(), "effectc_gl_in"),
-                    "gl_PrimitiveIDIn" | "gl_InvocationID" => edits.replace(u.span.clone(), format!("effectc_{}", &u.name[3..])),
-                    "gl_VertexID" | "gl_VertexIndex" => edits.replace(u.span.clone(), "effectc_VertexID"),
-                    "gl_InstanceID" | "gl_InstanceIndex" => edits.replace(u.span.clone(), "effectc_InstanceID"),
-                    "gl_Layer" | "gl_ViewportIndex" if geometry => {
-                        self.selects.insert(u.name.clone());
-                        edits.replace(u.span.clone(), format!("effectc_gs_{}", u.name))
-                    }
-                    "gl_PrimitiveID" if geometry => edits.replace(u.span.clone(), "effectc_gs_gl_PrimitiveID"),
-                    "gl_Layer" | "gl_ViewportIndex" | "gl_PrimitiveID" => {
-                        return Err(format!("`{}` in the vertex stage of a geometry program", u.name))
-                    }
-                    _ => {}
-                },
-                _ => {}
-            }
-        }
-        Ok(())
-    }
-}
-
-/// A geometry input whose corners hold arrays or matrices (a block with such members, or
-/// an array of arrays): the name its uses give, its private name and its type at one corner
-/// as a GLSL return type ([`interface::private_varying`]'s names). None for the others.
-/// Indexing such an input at a run-time corner and then inside the corner makes llvmpipe's
-/// code generator (lavapipe) take minutes; the accessor ([`corner_accessor`]) picks the
-/// corner by branches instead.
-fn nested_corner(g: &Global, prefix: &str) -> Option<(String, String, String)> {
-    let nested = |ty: &GlslType| !ty.dims.is_empty() || matrix_shape(&ty.base).is_some();
-    match &g.block {
-        Some(b) => {
-            let instance = b.instance.as_ref()?;
-            let private = format!("{prefix}{instance}");
-            let ty = format!("{private}_block");
-            b.members.iter().any(|m| nested(&m.ty)).then(|| (instance.clone(), private, ty))
-        }
-        None => {
-            let ty = g.ty.element();
-            nested(&ty).then(|| (g.name.clone(), format!("{prefix}{}", g.name), format!("{}{}", ty.base, syntax::dims_text(&ty))))
-        }
-    }
-}
-
-/// `T name_at(int k)`: corner `k` of a geometry input (the last corner past the end, where
-/// GL's read is undefined).
-fn corner_accessor(private: &str, ty: &str, corners: u32) -> String {
-    let mut t = format!("{ty} {private}_at(int k) {{");
-    for k in 0..corners.saturating_sub(1) {
-        write!(t, " if (k == {k}) return {private}[{k}];").unwrap();
-    }
-    writeln!(t, " return {private}[{}]; }}", corners.saturating_sub(1)).unwrap();
-    t
-}
-
-/// Where `u` (a geometry input) is indexed at a corner that is not a literal: the ranges of
-/// the opening (`[` and what precedes the index) and the closing `]`.
-fn corner_call(text: &str, u: &syntax::Use) -> Option<(Range<usize>, Range<usize>)> {
-    let (whole, index, literal) = u.index.clone()?;
-    let closes = whole.end > index.end && text.get(whole.end - 1..whole.end) == Some("]");
-    let opens = text.get(u.span.end..index.start).is_some_and(|t| t.trim() == "[");
-    (literal.is_none() && closes && opens).then_some((u.span.end..index.start, index.end..whole.end))
-}
-
-/// Uniforms, textures and samplers: shared by the stages, kept under their names.
-fn is_shared(g: &Global) -> bool {
-    matches!(g.storage, Storage::Uniform | Storage::Buffer)
-}
-
-/// Components of a float or integer vector (`float`, `int`, `uint` 1 … `vec4`, `ivec4`,
-/// `uvec4` 4).
-fn components(ty: &GlslType) -> Option<u32> {
-    ty.vector_components().filter(|_| !ty.is_array())
-}
-
-/// Where `name` is written in the definition at `span`: the first `name` followed by `(`.
-fn find_name(text: &str, span: &Range<usize>, name: &str) -> Option<usize> {
-    let body = &text[span.clone()];
-    let mut from = 0;
-    while let Some(i) = body[from..].find(name) {
-        let at = from + i;
-        let before_ok = at == 0 || !body.as_bytes()[at - 1].is_ascii_alphanumeric() && body.as_bytes()[at - 1] != b'_';
-        let after = body[at + name.len()..].trim_start();
-        if before_ok && after.starts_with('(') {
-            return Some(span.start + at);
-        }
-        from = at + name.len();
-    }
-    None
+/// How the geometry stage's corners are made.
+enum CornerSource<'p> {
+    /// The vertex stage run on the corner's pulled vertex.
+    Vertex(&'p Part),
+    /// The tessellation's corner `k` of primitive `p`: its vertex `p × per_primitive + k`,
+    /// whose evaluation leaves these outputs.
+    Tessellated { outputs: &'p [interface::Leaf], per_primitive: u32 },
 }
 
 /// `effectc_emit()` and `effectc_end_primitive()`: the capture of the vertex this invocation
@@ -474,17 +186,8 @@ fn capture(gs: &Part, output: OutputPrimitive) -> String {
 }
 
 /// The real outputs (the geometry stage's, flattened at their locations) and `main`.
-fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Result<String, String> {
-    let mut t = String::new();
-    let mut assign = String::new();
-    for (i, o) in gs.outputs.iter().enumerate() {
-        // naga wants integer outputs `flat` (GL never interpolates them).
-        let interp = if o.interp.is_empty() && o.ty.is_integer() { "flat" } else { o.interp.as_str() };
-        for (location, ty, part) in o.locations() {
-            writeln!(t, "layout(location = {location}) {interp} out {ty} effectc_out_{location};").unwrap();
-            writeln!(assign, "        effectc_out_{location} = effectc_cap_{i}{part};").unwrap();
-        }
-    }
+fn driver(source: &CornerSource, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Result<String, String> {
+    let (mut t, mut assign) = interface::stage_outputs(&gs.outputs, |i, _| format!("effectc_cap_{i}"));
     writeln!(t, "layout(location = {}) flat out uint effectc_out_primitive;", next_location(&gs.outputs)).unwrap();
     writeln!(assign, "        effectc_out_primitive = uint(effectc_cap_PrimitiveID);").unwrap();
     let corners = layout.input.vertices();
@@ -502,49 +205,32 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
     t.push_str("    effectc_gs_gl_Layer = 0; effectc_gs_gl_ViewportIndex = 0;\n");
     t.push_str("    effectc_PrimitiveIDIn = int(primitive); effectc_InstanceID = int(gl_InstanceIndex);\n");
     t.push_str("    effectc_gs_gl_PrimitiveID = effectc_PrimitiveIDIn;\n");
-    let stride = vs.inputs.len();
     // One block per corner with constant indices (no loop): the arrays stay in registers.
+    // A tessellated corner past its patch's last primitive: nothing is drawn.
+    let mut keep = String::from("effectc_found");
+    if let CornerSource::Tessellated { .. } = source {
+        t.push_str("    bool effectc_generated_corners = true;\n");
+        keep.push_str(" && effectc_generated_corners");
+    }
     for k in 0..corners {
-        match pulling {
-            Pulling::Storage { .. } => {
+        let outputs = match source {
+            CornerSource::Vertex(vs) => {
+                t.push_str(&pull_corner(vs, k, corners, pulling));
+                t.push_str(&run_vertex(vs, &format!("effectc_gl_in[{k}]"), gs.reads_clip_distance));
+                &vs.outputs[..]
+            }
+            CornerSource::Tessellated { outputs, per_primitive } => {
                 writeln!(
                     t,
-                    "    uint index{k} = {INDEX_BUFFER}.index[{HEADER_WORDS}u + primitive * {corners}u + {k}u];\n    effectc_VertexID = int(index{k});"
+                    "    effectc_generated_corners = effectc_tess_vertex(primitive * {per_primitive}u + {k}u) && effectc_generated_corners;\n    effectc_gl_in[{k}].gl_Position = effectc_te_gl_Position;"
                 )
                 .unwrap();
-                for (i, (_, name, components, ty)) in vs.inputs.iter().enumerate() {
-                    let swizzle = ["x", "xy", "xyz", "xyzw"][*components as usize - 1];
-                    // Integers travel as their bit patterns.
-                    let bits = match ty.chars().next() {
-                        Some('i') => "floatBitsToInt",
-                        Some('u') => "floatBitsToUint",
-                        _ => "",
-                    };
-                    writeln!(t, "    {}{name} = {bits}({VERTEX_BUFFER}.vertex[index{k} * {stride}u + {i}u]).{swizzle};", vs.prefix)
-                        .unwrap();
-                }
+                outputs
             }
-            Pulling::Attributes => {
-                t.push_str("    effectc_VertexID = int(gl_VertexIndex);\n");
-                for (_, name, _, _) in &vs.inputs {
-                    writeln!(t, "    {}{name} = {ATTRIBUTE_PREFIX}{name};", vs.prefix).unwrap();
-                }
-            }
-        }
-        writeln!(t, "    {}main();", vs.prefix).unwrap();
-        writeln!(t, "    effectc_gl_in[{k}].gl_Position = effectc_vs_gl_Position;").unwrap();
-        for (private, member, length) in PRIVATE_BUILTINS {
-            let Some((_, declared)) = vs.private_builtins.iter().find(|(p, _)| *p == private) else { continue };
-            if member != "gl_ClipDistance" || gs.reads_clip_distance {
-                // gl_in[]'s array is the largest; the vertex stage's may be shorter.
-                let length = length.map(|l| declared.map_or(l, |d| d.min(l)));
-                let ty = GlslType { base: "float".into(), dims: length.into_iter().map(Some).collect() };
-                writeln!(t, "   {}", ty.copy(&format!("effectc_gl_in[{k}].{member}"), &format!("{}{private}", vs.prefix))).unwrap();
-            }
-        }
+        };
         for i in &gs.ins {
-            // An input no vertex output feeds is undefined in GL: it stays zero here.
-            let Some(statements) = interface::feed(i, k, &vs.outputs) else { continue };
+            // An input no earlier output feeds is undefined in GL: it stays zero here.
+            let Some(statements) = interface::feed(i, Some(k), outputs, None) else { continue };
             writeln!(t, "   {statements}").unwrap();
         }
     }
@@ -552,7 +238,6 @@ fn driver(vs: &Part, gs: &Part, layout: GeometryLayout, pulling: Pulling) -> Res
     // The layer and viewport the draw keeps (−1: every one), from the index buffer's header.
     // The header is the buffer's first words (naga cannot load a member beside a
     // runtime-sized array).
-    let mut keep = String::from("effectc_found");
     if let Pulling::Storage { .. } = pulling {
         for (word, (written, field, cap)) in
             [("gl_Layer", "layer", "Layer"), ("gl_ViewportIndex", "viewport", "ViewportIndex")].into_iter().enumerate()

@@ -290,7 +290,7 @@ fn replay_of(input: &SceneInput<'_>, vertices: attributes::Interleaved, textures
     replay::Replay {
         vertices,
         instances: None,
-        draw: replay::ReplayDraw { primitive: "triangles", indices: None, count: 0 },
+        draw: replay::ReplayDraw { primitive: "triangles", patch_vertices: 0, indices: None, count: 0 },
         textures: textures.replay.clone(),
         samplers: textures.replay_samplers.clone(),
         render: Default::default(),
@@ -347,17 +347,22 @@ fn declared_components(program: &CompiledProgram, name: &str, wgsl_type: &str) -
 }
 
 /// How GL draws the original program: the mesh's triangles, the program's own three
-/// vertices, or a geometry stage's input primitives made from them.
+/// vertices, or a geometry stage's input primitives or the patches made from them.
 fn replay_draw(r: &crate::back::reflect::Reflection, mesh: &Mesh, own_vertices: bool) -> replay::ReplayDraw {
     match &r.geometry {
+        Some(g) if g.tessellation.is_some() => {
+            let indices = pulled::patches(g.index_buffer.stride, mesh, own_vertices);
+            let patch_vertices = g.index_buffer.stride;
+            replay::ReplayDraw { primitive: "patches", patch_vertices, count: indices.len() as u32, indices: Some(indices) }
+        }
         Some(g) => {
             let indices = pulled::primitive_indices(g.input_primitive, mesh, own_vertices);
-            replay::ReplayDraw { primitive: g.input_primitive, count: indices.len() as u32, indices: Some(indices) }
+            replay::ReplayDraw { primitive: g.input_primitive, patch_vertices: 0, count: indices.len() as u32, indices: Some(indices) }
         }
-        None if own_vertices => replay::ReplayDraw { primitive: "triangles", indices: None, count: 3 },
+        None if own_vertices => replay::ReplayDraw { primitive: "triangles", patch_vertices: 0, indices: None, count: 3 },
         None => {
             let triangles = pulled::triangles(mesh, false);
-            replay::ReplayDraw { primitive: "triangles", count: triangles.len() as u32, indices: Some(triangles) }
+            replay::ReplayDraw { primitive: "triangles", patch_vertices: 0, count: triangles.len() as u32, indices: Some(triangles) }
         }
     }
 }

@@ -14,6 +14,7 @@ use std::collections::HashMap;
 use crate::assets::mesh::Mesh;
 use crate::back::reflect::{GeometryDraw, Reflection};
 use crate::diag::{Code, Diagnostic};
+use crate::front::tessellation_fold::{LEVEL_CAP_WORD, SLOTS_WORD};
 use crate::render::attributes::Choice;
 
 /// Bytes of the two storage buffers and the draw's vertex count.
@@ -56,7 +57,10 @@ pub(super) fn for_geometry(
 pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_vertices: bool) -> Pulled {
     use wgpu::VertexFormat as F;
     let vertex_count = if own_vertices { 3 } else { mesh.vertex_count() };
-    let indices = primitive_indices(draw.input_primitive, mesh, own_vertices);
+    let indices = match draw.tessellation {
+        Some(_) => patches(draw.index_buffer.stride, mesh, own_vertices),
+        None => primitive_indices(draw.input_primitive, mesh, own_vertices),
+    };
     let columns: Vec<Option<Vec<[f32; 4]>>> = choices.iter().map(|c| c.attribute.map(|a| mesh.attribute(a))).collect();
     let mut vertices = Vec::with_capacity(vertex_count * choices.len() * 16);
     for v in 0..vertex_count {
@@ -72,13 +76,46 @@ pub(super) fn pulled(draw: &GeometryDraw, choices: &[Choice], mesh: &Mesh, own_v
         }
     }
     let primitives = indices.len() as u32 / draw.index_buffer.stride.max(1);
-    // The header: layer 0 and viewport 0 are drawn (the frame is one 2D target).
-    let header = [0u32; 4];
+    // The header: layer 0 and viewport 0 are drawn (the frame is one 2D target); for
+    // tessellation the level cap and the slots per patch.
+    let mut header = [0u32; 4];
+    let mut per_primitive = draw.vertices_per_primitive;
+    if let Some(t) = &draw.tessellation {
+        let cap = t.level_cap(primitives, TESSELLATED_VERTICES);
+        per_primitive = t.vertices_per_patch(cap);
+        header[LEVEL_CAP_WORD as usize] = cap;
+        header[SLOTS_WORD as usize] = t.layout.slots_per_patch(cap);
+    }
     Pulled {
         indices: header.iter().chain(&indices).flat_map(|i| i.to_le_bytes()).collect(),
         vertices,
-        count: primitives * draw.vertices_per_primitive,
+        count: primitives * per_primitive,
         bindings: [draw.index_buffer.binding, draw.vertex_buffer.binding],
+    }
+}
+
+/// The most vertices a frame of a tessellation program draws: the level cap is the highest
+/// that keeps the patches' slots within it (each slot runs the vertex and control stages
+/// for the whole patch, so lavapipe draws about a million a second).
+const TESSELLATED_VERTICES: u64 = 1 << 21;
+
+/// The patches of `size` control points GL would draw from the mesh: its triangles for
+/// patches of 3, their edges for 2, its vertices for 1, and otherwise its vertices in order,
+/// `size` at a time (`glDrawArrays(GL_PATCHES, …)`; one patch, the last vertex repeated, when
+/// there are fewer).
+pub(crate) fn patches(size: u32, mesh: &Mesh, own_vertices: bool) -> Vec<u32> {
+    let vertex_count = if own_vertices { 3 } else { mesh.vertex_count() as u32 };
+    match size {
+        3 => triangles(mesh, own_vertices),
+        2 => primitive_indices("lines", mesh, own_vertices),
+        1 => (0..vertex_count).collect(),
+        _ => {
+            let whole = vertex_count / size * size;
+            match whole {
+                0 => (0..size).map(|i| i.min(vertex_count.saturating_sub(1))).collect(),
+                _ => (0..whole).collect(),
+            }
+        }
     }
 }
 
@@ -148,6 +185,7 @@ mod tests {
             index_buffer: buffer(corners),
             vertex_buffer: buffer(1),
             inputs: vec!["position".into()],
+            tessellation: None,
             selects: Vec::new(),
         }
     }
@@ -157,6 +195,33 @@ mod tests {
         let all: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
         assert_eq!(all[..4], [0, 0, 0, 0]);
         all[4..].to_vec()
+    }
+
+    #[test]
+    fn patches_carry_the_level_cap_and_their_slots() {
+        use crate::back::reflect::TessellationDraw;
+        use crate::front::tessellation_fold::tessellator::{Domain, Spacing, TessLayout};
+        let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Quad);
+        let position = Choice {
+            location: 0,
+            input: "position".into(),
+            format: wgpu::VertexFormat::Float32x3,
+            attribute: Some(MeshAttribute::Position),
+            values: None,
+            guessed: None,
+        };
+        let layout = TessLayout { domain: Domain::Quads, spacing: Spacing::Equal, clockwise: false, point_mode: false };
+        let mut d = draw("patches", 4, layout.slots_per_patch(64));
+        d.tessellation = Some(TessellationDraw { domain: "quads", level_cap: 64, geometry_slots: 0, layout });
+        let p = pulled(&d, std::slice::from_ref(&position), &mesh, false);
+        let all: Vec<u32> = p.indices.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
+        // One patch of the quad's four vertices in order; a single patch is drawn at GL's
+        // largest level.
+        assert_eq!(all[4..], [0, 1, 2, 3]);
+        assert_eq!(all[..4], [0, 0, 64, layout.slots_per_patch(64)]);
+        assert_eq!(p.count, layout.slots_per_patch(64));
+        // Patches of three are the mesh's triangles.
+        assert_eq!(patches(3, &mesh, false), mesh.indices);
     }
 
     #[test]

@@ -41,8 +41,10 @@ pub fn components(ty: &str) -> u32 {
 /// How the original program draws: GL's primitive mode and the vertices.
 pub struct ReplayDraw {
     /// `triangles`, or for a geometry stage its input primitive (`points`, `lines`,
-    /// `lines_adjacency`, `triangles`, `triangles_adjacency`).
+    /// `lines_adjacency`, `triangles`, `triangles_adjacency`), or `patches`.
     pub primitive: &'static str,
+    /// `patches`: the vertices of one patch (`GL_PATCH_VERTICES`); 0 otherwise.
+    pub patch_vertices: u32,
     /// Indexed draws: the indices; otherwise `count` vertices in order.
     pub indices: Option<Vec<u32>>,
     pub count: u32,

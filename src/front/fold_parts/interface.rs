@@ -6,11 +6,11 @@
 use std::fmt::Write as _;
 
 use crate::front::plan::location_slots;
-use crate::front::syntax::{dims_text, matrix_shape, Global, GlslType, Interp, StageSyntax, Storage};
+use crate::front::syntax::{dims_text, matrix_shape, Global, GlslType, Interp, StageSyntax};
 
 /// One varying of the folded interface: a loose varying, or one member of a block.
 #[derive(Debug, Clone)]
-pub(super) struct Leaf {
+pub(crate) struct Leaf {
     /// Its first location.
     pub location: u32,
     /// The private variable (for a geometry input: the array over the corners) …
@@ -56,27 +56,45 @@ impl Leaf {
     }
 }
 
-/// The statements feeding geometry input `input` at `corner` from the vertex stage's
-/// `outputs`: from the output at its location (element by element for an array), or piece
-/// by piece where the vertex stage passes it so (the rewrite splits matrix varyings into
-/// columns, and a block's array members into elements). None: no output feeds it
-/// (undefined in GL; it stays zero).
-pub(super) fn feed(input: &Leaf, corner: u32, outputs: &[Leaf]) -> Option<String> {
+/// The statements feeding input `input` (at `corner` of an arrayed input) from the earlier
+/// stage's `outputs` (at `from` of a tessellation control stage's arrayed outputs): from the
+/// output at its location (element by element for an array), or piece by piece where the
+/// earlier stage passes it so (the rewrite splits matrix varyings into columns, and a
+/// block's array members into elements). None: no output feeds it (undefined in GL; it
+/// stays zero).
+pub(crate) fn feed(input: &Leaf, corner: Option<u32>, outputs: &[Leaf], from: Option<u32>) -> Option<String> {
     let at = |location: u32| outputs.iter().find(|o| o.location == location);
     let first = at(input.location)?;
-    let dst = input.access(Some(corner));
+    let dst = input.access(corner);
     if first.ty == input.ty {
-        return Some(input.ty.copy(&dst, &first.access(None)));
+        return Some(input.ty.copy(&dst, &first.access(from)));
     }
     let mut statements = String::new();
     for (location, _, part) in input.locations() {
-        write!(statements, " {dst}{part} = {};", at(location)?.access(None)).unwrap();
+        write!(statements, " {dst}{part} = {};", at(location)?.access(from)).unwrap();
     }
     Some(statements)
 }
 
+/// The `out` declarations of a folded program's last stage's `outputs`, one per location,
+/// and the statements that copy each from `source(i, leaf)` (an expression of the leaf's
+/// type).
+pub(crate) fn stage_outputs(outputs: &[Leaf], source: impl Fn(usize, &Leaf) -> String) -> (String, String) {
+    let (mut declarations, mut assign) = (String::new(), String::new());
+    for (i, o) in outputs.iter().enumerate() {
+        // naga wants integer outputs `flat` (GL never interpolates them).
+        let interp = if o.interp.is_empty() && o.ty.is_integer() { "flat" } else { o.interp.as_str() };
+        let from = source(i, o);
+        for (location, ty, part) in o.locations() {
+            writeln!(declarations, "layout(location = {location}) {interp} out {ty} effectc_out_{location};").unwrap();
+            writeln!(assign, "        effectc_out_{location} = {from}{part};").unwrap();
+        }
+    }
+    (declarations, assign)
+}
+
 /// The first location after every leaf's.
-pub(super) fn next_location(leaves: &[Leaf]) -> u32 {
+pub(crate) fn next_location(leaves: &[Leaf]) -> u32 {
     leaves.iter().map(|l| l.location + l.slots).max().unwrap_or(0)
 }
 
@@ -87,7 +105,8 @@ fn passable(ty: &GlslType) -> bool {
 }
 
 /// Declares a varying as private globals in `out` (a struct for a named block, one global
-/// per member of an unnamed one; for a geometry input an array of `corners`) and returns its
+/// per member of an unnamed one; an array of `corners` for a geometry or tessellation
+/// input and a tessellation control output) and returns its
 /// leaves. `renamed` is its name with the stage's prefix; `as_written` is the declaration in
 /// the user's text (the rewritten one lacks member interpolation qualifiers).
 pub(super) fn private_varying(
@@ -99,11 +118,28 @@ pub(super) fn private_varying(
     out: &mut String,
 ) -> Result<Vec<Leaf>, String> {
     let keyword = |i: Option<Interp>| i.map(|i| i.keyword().to_string()).unwrap_or_default();
-    let per_corner = corners.filter(|_| g.storage == Storage::In);
+    let per_corner = corners;
     let corner_dims = per_corner.map(|n| format!("[{n}]")).unwrap_or_default();
     let location = g.location.ok_or_else(|| format!("the varying `{}` without a location", g.name))?;
     let Some(b) = &g.block else {
         let ty = if per_corner.is_some() { g.ty.element() } else { g.ty.clone() };
+        if let Some(def) = s.structs.iter().find(|d| d.name == ty.base).filter(|_| ty.dims.is_empty()) {
+            // A struct varying: one leaf per member, at consecutive locations (the struct
+            // is declared with the part's declarations).
+            writeln!(out, "{} {renamed}{corner_dims};", ty.base).unwrap();
+            let mut leaves = Vec::new();
+            let mut at = location;
+            for m in &def.members {
+                if !passable(&m.ty) {
+                    return Err(format!("the varying `{}` of type `{}` with member `{}` of type `{}`", g.name, ty.base, m.name, m.ty));
+                }
+                let slots = location_slots(&m.ty, s);
+                let interp = keyword(m.interp.or(g.interp));
+                leaves.push(Leaf { location: at, base: renamed.to_string(), field: Some(m.name.clone()), ty: m.ty.clone(), interp, slots });
+                at += slots;
+            }
+            return Ok(leaves);
+        }
         if !passable(&ty) {
             return Err(format!("the varying `{}` of type `{ty}`", g.name));
         }
