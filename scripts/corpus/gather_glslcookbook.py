@@ -6,7 +6,7 @@ In each chapterNN/*.cpp (with `#ifdef __APPLE__` branches resolved for Linux), t
 `P.compileShader("shader/x.vert" [, GLSLShader::STAGE])` up to `P.link()` make one program
 (ingredients/glslprogram.cpp: the file is sent verbatim; without a stage argument the stage
 follows the extension table, .vert/.vs, _vert.glsl/.vert.glsl, ...). Paths are relative to the
-chapter directory. Programs with tessellation/compute stages are left out.
+chapter directory. Programs with compute stages are left out.
 Usage: gather_glslcookbook.py MIRROR_GIT_DIR OUT_DIR
 """
 import os

@@ -6,7 +6,7 @@ reads the file verbatim into `src`; glusProgramBuildFromSource / glusProgramCrea
 (&prog, vertex, control, evaluation, geometry, fragment), each argument `&src.text` or 0, make a
 program; glusProgramBuildSeparableFromSource(&p, GL_X_SHADER, &src.text) one-stage programs
 that glusProgramPipelineBuild(&pipe, v.program, 0, 0, g, f.program) puts together. Paths are
-relative to the example's directory. Programs with tessellation stages are left out.
+relative to the example's directory.
 Usage: gather_mcnopper.py MIRROR_GIT_DIR OUT_DIR
 """
 import os

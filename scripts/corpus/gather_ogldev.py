@@ -8,7 +8,7 @@ const char* pFragmentShaderFile)) takes each string passed to `...Init("x.fs")` 
 The early tutorials read `pVSFileName`/`pFSFileName` (or `ReadFile("shader.vs", vs)`) and attach
 both. Paths are relative to the working directory: the .cpp's directory or the nearest parent
 holding the file. ReadFile() re-joins getline() lines with "\n", so that is the text sent.
-Programs with tessellation/compute stages are left out (Vulkan/ is not GL).
+Programs with compute stages are left out (Vulkan/ is not GL).
 Usage: gather_ogldev.py MIRROR_GIT_DIR OUT_DIR
 """
 import os
@@ -16,7 +16,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mirror import Mirror, write_program
+from mirror import Mirror, graphics_stages, write_program
 
 STAGES = {"VERTEX": "vertex", "FRAGMENT": "fragment", "GEOMETRY": "geometry",
           "TESS_CONTROL": "tess-control", "TESS_EVALUATION": "tess-eval", "COMPUTE": "compute"}
@@ -99,14 +99,13 @@ def main():
             names = dict(re.findall(r'(p[VFG]SFileName)\s*=\s*"([^"]+)"', src))
             reads = re.findall(r'ReadFile\(\s*("[^"]+"|\w+)\s*,', src)
             files = [names.get(r, r.strip('"')) for r in reads]
-            stage = {"vs": "VERTEX", "fs": "FRAGMENT", "gs": "GEOMETRY"}
+            stage = {"vs": "VERTEX", "fs": "FRAGMENT", "gs": "GEOMETRY", "cs": "TESS_CONTROL", "es": "TESS_EVALUATION"}
             if files and all(x.rsplit(".", 1)[-1] in stage for x in files):
                 lists.append([(stage[x.rsplit(".", 1)[-1]], f'"{x}"') for x in files])
         for shaders in lists:
             kinds = [STAGES.get(st) for st, _ in shaders]
             paths = [resolve(m, f, p.strip('"')) if p.startswith('"') else None for _, p in shaders]
-            if None in paths or not {"vertex", "fragment"} <= set(kinds) \
-                    or not set(kinds) <= {"vertex", "fragment", "geometry"}:
+            if None in paths or not graphics_stages(kinds):
                 continue
             key = tuple(zip(kinds, paths))
             name = os.path.dirname(f).replace("/", "_") + "." + \

@@ -9,15 +9,15 @@ one-stage program from the raw file, and glUseProgramStages puts one-stage progr
 into a pipeline. Shader text is what framework/compiler.cpp's parser sends: with `--version N
 --profile P` it starts with `#version N P` and drops the file's #version lines (else the file's
 #version line is moved first), `--define X` adds `#define X`, and each `#include "f"` line is
-replaced by f (from the shader's directory) verbatim. Programs with tessellation or compute
-stages are left out. Usage: gather_oglsamples.py MIRROR_GIT_DIR OUT_DIR
+replaced by f (from the shader's directory) verbatim. Programs with compute stages are left
+out. Usage: gather_oglsamples.py MIRROR_GIT_DIR OUT_DIR
 """
 import os
 import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mirror import Mirror, strip_cpp_comments, write_program
+from mirror import Mirror, graphics_stages, strip_cpp_comments, write_program
 
 STAGES = {"VERTEX": "vertex", "FRAGMENT": "fragment", "GEOMETRY": "geometry",
           "TESS_CONTROL": "tess-control", "TESS_EVALUATION": "tess-eval", "COMPUTE": "compute"}
@@ -203,7 +203,7 @@ def main():
                 skipped.append(f"{sample}:{key}")
                 continue
             kinds = {sh[0] for sh in shaders}
-            if not {"vertex", "fragment"} <= kinds or not kinds <= {"vertex", "fragment", "geometry"}:
+            if not graphics_stages(kinds):
                 continue
             stages = [(stage, os.path.basename(path).rsplit(".", 1)[0],
                        m.show("data/" + path) if args is None else preprocess(m, "data/" + path, args))

@@ -214,11 +214,21 @@ STAGE_NAMES = {"VERTEX": "vertex", "FRAGMENT": "fragment", "GEOMETRY": "geometry
                "TESS_CONTROL": "tess-control", "TESS_EVALUATION": "tess-eval", "COMPUTE": "compute"}
 
 
+GRAPHICS_STAGES = {"vertex", "fragment", "geometry", "tess-control", "tess-eval"}
+
+
+def graphics_stages(kinds):
+    """True when the stage kinds make a complete program: vertex and fragment, a geometry
+    stage, and an evaluation stage with or without a control stage."""
+    kinds = set(kinds)
+    return ({"vertex", "fragment"} <= kinds <= GRAPHICS_STAGES
+            and ("tess-control" not in kinds or "tess-eval" in kinds))
+
+
 def graphics_program(shaders):
-    """True when the (stage, text) list is a complete vertex+fragment(+geometry) program."""
+    """True when the (stage, text) list is a complete graphics program (graphics_stages)."""
     stages = [s for s, _ in shaders] if all(shaders) else [None]
-    return (None not in stages and all(t is not None for _, t in shaders)
-            and {"vertex", "fragment"} <= set(stages) <= {"vertex", "fragment", "geometry"})
+    return None not in stages and all(t is not None for _, t in shaders) and graphics_stages(stages)
 
 
 def cpp_ifdefs(src, defined=()):
