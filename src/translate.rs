@@ -111,6 +111,16 @@ pub fn summary(w: &Written, explain: bool) -> String {
     text
 }
 
+/// The plan's line on the pulled vertex buffer.
+fn vertex_buffer_line(g: &crate::back::reflect::GeometryDraw) -> String {
+    let v = &g.vertex_buffer;
+    let inputs = if g.inputs.is_empty() { "no inputs".to_string() } else { g.inputs.join(", ") };
+    format!(
+        "    vertices: storage buffer `{}` (group {}, binding {}): {} vec4<f32> per vertex ({inputs})\n",
+        v.name, v.group, v.binding, v.stride
+    )
+}
+
 /// How to run a folded tessellation program: one line, or with `--explain` the whole plan.
 fn tessellation_plan(g: &crate::back::reflect::GeometryDraw, t: &crate::back::reflect::TessellationDraw, explain: bool) -> String {
     let per = format!("{} vertices per patch of {}", g.vertices_per_primitive, g.index_buffer.stride);
@@ -120,20 +130,13 @@ fn tessellation_plan(g: &crate::back::reflect::GeometryDraw, t: &crate::back::re
             g.topology, t.level_cap
         );
     }
-    let (i, v) = (&g.index_buffer, &g.vertex_buffer);
+    let i = &g.index_buffer;
     let mut s = String::from("  tessellation stages folded into the vertex stage (WebGPU has no tessellation stages):\n");
     s.push_str(&format!(
-        "    indices: storage buffer `{}` (group {}, binding {}): a header (2 unused words, u32 level cap, u32 vertices per patch), then {} u32 per patch, in draw order\n",
+        "    indices: storage buffer `{}` (group {}, binding {}): a header (2 unused words, u32 level cap, u32 tessellated vertices per patch at that cap: 3 per triangle, 2 per line), then {} u32 per patch, in draw order\n",
         i.name, i.group, i.binding, i.stride
     ));
-    s.push_str(&format!(
-        "    vertices: storage buffer `{}` (group {}, binding {}): {} vec4<f32> per vertex ({})\n",
-        v.name,
-        v.group,
-        v.binding,
-        v.stride,
-        if g.inputs.is_empty() { "no inputs".to_string() } else { g.inputs.join(", ") }
-    ));
+    s.push_str(&vertex_buffer_line(g));
     s.push_str(&format!(
         "    draw: no vertex buffers, non-indexed, patches × {} vertices (× instances), topology {}, header level cap {}\n",
         g.vertices_per_primitive, g.topology, t.level_cap
@@ -144,7 +147,7 @@ fn tessellation_plan(g: &crate::back::reflect::GeometryDraw, t: &crate::back::re
     ));
     if t.geometry_slots > 0 {
         s.push_str(&format!(
-            "    then the geometry stage on each generated primitive: {} vertices each ({} max_vertices = {} as {} lists)\n",
+            "    then the geometry stage on each generated primitive: {} vertices each ({} max_vertices = {} as a {})\n",
             t.geometry_slots, g.output_primitive, g.max_vertices, g.topology
         ));
     }
@@ -160,7 +163,7 @@ fn geometry_plan(g: &crate::back::reflect::GeometryDraw, explain: bool) -> Strin
     if !explain {
         return format!("  geometry stage folded into the vertex stage: draw {per} as a {}; --explain shows the plan\n", g.topology);
     }
-    let (i, v) = (&g.index_buffer, &g.vertex_buffer);
+    let i = &g.index_buffer;
     let list = match g.topology {
         "point-list" => "point",
         "line-list" => "line",
@@ -172,14 +175,7 @@ fn geometry_plan(g: &crate::back::reflect::GeometryDraw, explain: bool) -> Strin
         "    indices: storage buffer `{}` (group {}, binding {}): a header (i32 layer, i32 viewport to draw, -1 for all; 2 unused words), then {} u32 per input primitive ({}), in draw order\n",
         i.name, i.group, i.binding, i.stride, g.input_primitive
     ));
-    t.push_str(&format!(
-        "    vertices: storage buffer `{}` (group {}, binding {}): {} vec4<f32> per vertex ({})\n",
-        v.name,
-        v.group,
-        v.binding,
-        v.stride,
-        if g.inputs.is_empty() { "no inputs".to_string() } else { g.inputs.join(", ") }
-    ));
+    t.push_str(&vertex_buffer_line(g));
     if !g.selects.is_empty() {
         let selected = g.selects.join(" and ");
         t.push_str(&format!(

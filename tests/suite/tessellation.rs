@@ -65,7 +65,7 @@ fn tessellation_translates_to_wgsl_with_its_draw_plan() {
         let text = stdout(&out);
         assert_eq!(code(&out), 0, "{name}: {text}");
         assert!(text.contains("tessellation stages folded into the vertex stage"), "{name}: {text}");
-        assert!(text.contains("u32 level cap, u32 vertices per patch"), "{name}: {text}");
+        assert!(text.contains("u32 level cap, u32 tessellated vertices per patch"), "{name}: {text}");
         let wgsl = std::fs::read_dir(&out_dir).unwrap().filter_map(|e| e.ok()).find(|e| e.path().extension().is_some_and(|x| x == "wgsl"));
         let wgsl = std::fs::read_to_string(wgsl.expect("a .wgsl file").path()).unwrap();
         assert_eq!(wgsl.matches("@vertex").count(), 1, "{name}");

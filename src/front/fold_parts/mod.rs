@@ -146,11 +146,17 @@ pub(crate) fn pulled_declarations(pulling: Pulling, vs: &Part) -> String {
         }
         Pulling::Attributes => {
             for (location, name, _, ty) in &vs.inputs {
-                writeln!(text, "layout(location = {location}) in {ty} {ATTRIBUTE_PREFIX}{name};").unwrap();
+                writeln!(text, "layout(location = {location}) in {ty} {ATTRIBUTE_PREFIX}{};", attribute_name(name)).unwrap();
             }
         }
     }
     text
+}
+
+/// The attribute's name for a pulled input (`Position[1]`, an element of an array input,
+/// is `Position_1`).
+pub fn attribute_name(input: &str) -> String {
+    input.replace('[', "_").replace(']', "")
 }
 
 /// The statements that load corner `k` (of `corners` per primitive, the primitive's number
@@ -179,7 +185,7 @@ pub(crate) fn pull_corner(vs: &Part, k: u32, corners: u32, pulling: Pulling) -> 
         Pulling::Attributes => {
             t.push_str("    effectc_VertexID = int(gl_VertexIndex);\n");
             for (_, name, _, _) in &vs.inputs {
-                writeln!(t, "    {}{name} = {ATTRIBUTE_PREFIX}{name};", vs.prefix).unwrap();
+                writeln!(t, "    {}{name} = {ATTRIBUTE_PREFIX}{};", vs.prefix, attribute_name(name)).unwrap();
             }
         }
     }

@@ -193,9 +193,7 @@ impl Part {
                     continue;
                 }
                 Storage::In | Storage::Attribute if role.is_vertex() => {
-                    let components = components(&g.ty).ok_or_else(|| format!("vertex input `{}` of type `{}`", g.name, g.ty.base))?;
-                    part.inputs.push((g.location.unwrap_or(u32::MAX), g.name.clone(), components, g.ty.base.clone()));
-                    writeln!(part.declarations, "{} {renamed};", g.ty.base).unwrap();
+                    part.pull_input(g, &renamed)?;
                     delete(&mut edits, &g.decl_span);
                 }
                 Storage::In | Storage::Out | Storage::Varying => {
@@ -246,6 +244,28 @@ impl Part {
         }
         (part.body, part.map, _) = edits.apply(text);
         Ok(part)
+    }
+
+    /// A vertex input the fold pulls instead: a private global, and its pulled inputs (one
+    /// per element of an array input, at consecutive locations).
+    fn pull_input(&mut self, g: &Global, renamed: &str) -> Result<(), String> {
+        let unreadable = || format!("vertex input `{}` of type `{}`", g.name, g.ty);
+        let location = g.location.unwrap_or(u32::MAX);
+        match g.ty.dims.as_slice() {
+            [] => {
+                let components = components(&g.ty).ok_or_else(unreadable)?;
+                self.inputs.push((location, g.name.clone(), components, g.ty.base.clone()));
+            }
+            [Some(n)] => {
+                let components = components(&g.ty.element()).ok_or_else(unreadable)?;
+                for i in 0..*n {
+                    self.inputs.push((location.saturating_add(i), format!("{}[{i}]", g.name), components, g.ty.base.clone()));
+                }
+            }
+            _ => return Err(unreadable()),
+        }
+        writeln!(self.declarations, "{} {renamed}{};", g.ty.base, syntax::dims_text(&g.ty)).unwrap();
+        Ok(())
     }
 
     /// Moves the stage's struct definitions up to its declarations (a varying of struct
@@ -311,7 +331,7 @@ pub(crate) fn shared_names(s: &StageSyntax) -> Vec<&str> {
 
 /// A `patch` varying (a tessellation stage's per-patch input or output): the qualifier
 /// before its storage keyword.
-fn is_patch(text: &str, g: &Global) -> bool {
+pub(crate) fn is_patch(text: &str, g: &Global) -> bool {
     let Some(storage) = &g.storage_span else { return false };
     let before = &text[g.decl_span.start.min(storage.start)..storage.start];
     before.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).any(|w| w == "patch")

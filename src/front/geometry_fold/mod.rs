@@ -25,12 +25,16 @@
 //! The `gl_PrimitiveID` the geometry stage writes reaches a fragment stage that reads it as a
 //! flat varying ([`Lowered::primitive_location`]; WebGPU has the built-in only as a feature).
 //!
-//! The varyings between the two stages become private variables ([`interface`]): arrays,
-//! matrices and blocks (named or not) pass as GL passes them, matched by location.
+//! The varyings between the two stages become private variables
+//! ([`interface`](crate::front::fold_parts::interface)): arrays, matrices, structs and blocks
+//! (named or not) pass as GL passes them, matched by location. The stages before the
+//! geometry stage are the vertex stage, or tessellation stages folded ahead of it
+//! ([`Upstream`]).
 //!
-//! Not folded (an error naming the construct): varyings of struct type, arrays of blocks
-//! other than the geometry stage's inputs, vertex inputs other than scalars and vectors,
-//! `gl_Layer`/`gl_ViewportIndex`/`gl_PrimitiveID` in the vertex stage of a geometry program.
+//! Not folded (an error naming the construct): arrays of struct varyings, arrays of blocks
+//! other than the geometry stage's inputs, vertex inputs other than scalars, vectors and
+//! arrays of them, `gl_Layer`/`gl_ViewportIndex`/`gl_PrimitiveID` in the vertex stage of a
+//! geometry program.
 
 use std::fmt::Write as _;
 

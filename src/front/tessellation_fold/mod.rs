@@ -25,7 +25,7 @@ use std::fmt::Write as _;
 use crate::config::TargetEnv;
 use crate::diag::FileId;
 use crate::front::fold_parts::interface::{self, Leaf};
-use crate::front::fold_parts::part::{shared_names, Part, Role};
+use crate::front::fold_parts::part::{is_patch, shared_names, Part, Role};
 use crate::front::fold_parts::{self, Lowered, Piece, Pulling, Shape, INDEX_BUFFER};
 use crate::front::syntax::{self, StageSyntax, Storage};
 use crate::stage::StageKind;
@@ -74,14 +74,36 @@ pub fn output_vertices(tcs: &StageSyntax) -> Result<u32, String> {
     Err("the control stage declares no `layout(vertices = N) out;`".into())
 }
 
-/// The vertices of a patch as the fold draws it: the control stage's output vertices (GL
-/// takes the patch size from the draw; programs draw the size their control stage makes),
-/// or without a control stage 3 for triangles (GL's default) and 4 for quads and isolines.
-pub fn patch_vertices(layout: TessLayout, control_vertices: Option<u32>) -> u32 {
-    control_vertices.unwrap_or(match layout.domain {
-        Domain::Triangles => 3,
-        Domain::Quads | Domain::Isolines => 4,
-    })
+/// The vertices of a patch as the fold draws it. GL takes the patch size from the draw
+/// (`GL_PATCH_VERTICES`); programs draw the size their control stage reads: one past the
+/// largest constant index it reads `gl_in[]` or a per-vertex input at, at least its output
+/// vertices where it reads them at `gl_InvocationID` (its output vertices when it reads
+/// neither way). Without a control stage: 3 for triangles (GL's default) and 4 for quads and
+/// isolines.
+pub fn patch_vertices(layout: TessLayout, control: Option<(&StageSyntax, u32)>) -> u32 {
+    let Some((tcs, vertices)) = control else {
+        return match layout.domain {
+            Domain::Triangles => 3,
+            Domain::Quads | Domain::Isolines => 4,
+        };
+    };
+    let per_vertex = |u: &syntax::Use| match u.target {
+        syntax::Referent::Global(i) => tcs.globals[i].storage == Storage::In && !is_patch(&tcs.text, &tcs.globals[i]),
+        syntax::Referent::Unresolved => u.name == "gl_in",
+        _ => false,
+    };
+    let (mut largest, mut by_invocation) = (None::<u32>, false);
+    for (index, literal) in tcs.uses.iter().filter(|u| per_vertex(u)).filter_map(|u| u.index.as_ref().map(|(_, i, l)| (i, l))) {
+        match literal {
+            Some(n) => largest = largest.max(u32::try_from(*n).ok().map(|n| n + 1)),
+            None => by_invocation |= tcs.text[index.clone()].trim() == "gl_InvocationID",
+        }
+    }
+    match largest {
+        Some(n) if by_invocation => n.max(vertices),
+        Some(n) => n.clamp(1, 32),
+        None => vertices,
+    }
 }
 
 /// The stages to fold: rewritten 4.50 texts, with the stages as the user wrote them
@@ -154,7 +176,7 @@ pub fn upstream(stages: Stages, layout: TessLayout, pulling: Pulling, clip: bool
         None => None,
     };
     let te = analyse(stages.evaluation.0, StageKind::TessEval)?;
-    let corners = patch_vertices(layout, control.as_ref().map(|c| c.2));
+    let corners = patch_vertices(layout, stages.control.map(|c| c.1).zip(control.as_ref().map(|c| c.2)));
     let mut shared = shared_names(&v);
     let vs = Part::new(&v, "effectc_vs_", Role::Vertex, None)?;
     let tc = match &control {
@@ -298,4 +320,43 @@ fn evaluate(
     writeln!(t, "    uint k = slot % {per_primitive}u;\n    effectc_TessCoord = k == 0u ? c0 : (k == 1u ? c1 : c2);").unwrap();
     writeln!(t, "    if (made) {{\n        {}main();\n    }}\n    return made;\n}}", te.prefix).unwrap();
     t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn control(text: &str) -> StageSyntax {
+        syntax::analyse(FileId(0), text, StageKind::TessControl, TargetEnv::Auto).expect("parses")
+    }
+
+    #[test]
+    fn the_patch_is_what_the_control_stage_reads() {
+        let layout = TessLayout { domain: Domain::Quads, spacing: Spacing::Equal, clockwise: false, point_mode: false };
+        // Four corners read at constant indices, nine vertices made (piglit's `quads`).
+        let corners = control(
+            "#version 450\nlayout(vertices = 9) out;\nout vec4 p[];\nvoid main() { p[gl_InvocationID] = gl_in[0].gl_Position + gl_in[3].gl_Position; }\n",
+        );
+        assert_eq!(patch_vertices(layout, Some((&corners, 9))), 4);
+        // Read at the invocation: at least the vertices made.
+        let own = control(
+            "#version 450\nlayout(vertices = 3) out;\nin vec3 q[];\nout vec3 p[];\nvoid main() { p[gl_InvocationID] = q[gl_InvocationID] + q[1]; }\n",
+        );
+        assert_eq!(patch_vertices(layout, Some((&own, 3))), 3);
+        // Neither: the vertices made; no control stage: the domain's corners.
+        let neither = control("#version 450\nlayout(vertices = 16) out;\nvoid main() { gl_TessLevelOuter[0] = 1.0; }\n");
+        assert_eq!(patch_vertices(layout, Some((&neither, 16))), 16);
+        assert_eq!(patch_vertices(layout, None), 4);
+        assert_eq!(patch_vertices(TessLayout { domain: Domain::Triangles, ..layout }, None), 3);
+    }
+
+    #[test]
+    fn barriers_cut_main_into_stretches() {
+        let s = control("#version 450\nlayout(vertices = 3) out;\nout float p[];\nvoid main() {\n    p[gl_InvocationID] = 1.0;\n    barrier();\n    p[gl_InvocationID] += p[0];\n}\n");
+        let (text, stretches) = split_at_barriers(&s).unwrap();
+        assert_eq!(stretches, 2);
+        assert!(text.contains("{ if (effectc_phase == 0) {"), "{text}");
+        assert!(text.contains("} if (effectc_phase == 1) {"), "{text}");
+        assert!(!text.contains("barrier"), "{text}");
+    }
 }

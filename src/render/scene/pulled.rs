@@ -190,6 +190,18 @@ mod tests {
         }
     }
 
+    /// The mesh's positions as the one vertex input.
+    fn position() -> Choice {
+        Choice {
+            location: 0,
+            input: "position".into(),
+            format: wgpu::VertexFormat::Float32x3,
+            attribute: Some(MeshAttribute::Position),
+            values: None,
+            guessed: None,
+        }
+    }
+
     /// The indices after the 4-word header (which must name layer 0 and viewport 0).
     fn words(bytes: &[u8]) -> Vec<u32> {
         let all: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
@@ -202,14 +214,7 @@ mod tests {
         use crate::back::reflect::TessellationDraw;
         use crate::front::tessellation_fold::tessellator::{Domain, Spacing, TessLayout};
         let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Quad);
-        let position = Choice {
-            location: 0,
-            input: "position".into(),
-            format: wgpu::VertexFormat::Float32x3,
-            attribute: Some(MeshAttribute::Position),
-            values: None,
-            guessed: None,
-        };
+        let position = position();
         let layout = TessLayout { domain: Domain::Quads, spacing: Spacing::Equal, clockwise: false, point_mode: false };
         let mut d = draw("patches", 4, layout.slots_per_patch(64));
         d.tessellation = Some(TessellationDraw { domain: "quads", level_cap: 64, geometry_slots: 0, layout });
@@ -227,14 +232,7 @@ mod tests {
     #[test]
     fn a_mesh_feeds_triangles_edges_or_points() {
         let mesh = Mesh::builtin(crate::manifest::BuiltinMesh::Quad);
-        let position = Choice {
-            location: 0,
-            input: "position".into(),
-            format: wgpu::VertexFormat::Float32x3,
-            attribute: Some(MeshAttribute::Position),
-            values: None,
-            guessed: None,
-        };
+        let position = position();
         let t = pulled(&draw("triangles", 3, 3), std::slice::from_ref(&position), &mesh, false);
         assert_eq!(words(&t.indices), mesh.indices);
         assert_eq!(t.count, mesh.indices.len() as u32);
