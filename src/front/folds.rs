@@ -51,26 +51,43 @@ pub fn fold_stages(program: &mut CompiledProgram, diags: &mut Vec<Diagnostic>) {
     program.folded = Some(folded);
 }
 
-/// Folds the geometry stage into the vertex stage, twice: the stage that is drawn (vertices
-/// pulled from storage buffers at `free_binding` and the next) and the one the static
-/// analysis reads (vertices from the vertex inputs); naga validates both.
+/// Folds the geometry stage into the vertex stage.
 fn fold(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> {
     let (vs, gs) = (rewritten(program, StageKind::Vertex)?, rewritten(program, StageKind::Geometry)?);
     let g = program.stage(StageKind::Geometry).expect("checked above");
-    let layout = geometry_layout::geometry_layout(&g.syntax).map_err(|p| p.message)?;
+    let layout = geometry_layout_of(&g.syntax)?;
+    fold_twice(program, free_binding, &g.syntax, |pulling| {
+        geometry_fold::lower(geometry_fold::Upstream::Vertex(&vs.text), &gs.text, layout, pulling, Some(&g.syntax))
+    })
+}
+
+/// A geometry stage's layout, when a fold can draw it.
+fn geometry_layout_of(g: &StageSyntax) -> Result<geometry_layout::GeometryLayout, String> {
+    let layout = geometry_layout::geometry_layout(g).map_err(|p| p.message)?;
     if layout.max_vertices == 0 {
         return Err("`max_vertices = 0`: the stage emits no vertex, so there is nothing to draw".into());
     }
+    Ok(layout)
+}
+
+/// A fold made twice by `lower`: the stage that is drawn (vertices pulled from storage
+/// buffers at `free_binding` and the next) and the one the static analysis reads (vertices
+/// from the vertex inputs); naga validates both, judged as `stage`.
+fn fold_twice(
+    program: &CompiledProgram,
+    free_binding: u32,
+    stage: &StageSyntax,
+    lower: impl Fn(Pulling) -> Result<Lowered, String>,
+) -> Result<Folded, String> {
     let lower = |pulling: Pulling, dump_name: &str| -> Result<Lowered, String> {
-        let lowered = geometry_fold::lower(geometry_fold::Upstream::Vertex(&vs.text), &gs.text, layout, pulling, Some(&g.syntax))?;
+        let lowered = lower(pulling)?;
         dump(dump_name, &lowered);
         Ok(lowered)
     };
-    let validate = |lowered: Lowered| validate(program, lowered, &g.syntax);
     let drawn = lower(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 }, "folded.vert");
     let analysed = lower(Pulling::Attributes, "folded-analysis.vert");
-    let (drawn, naga) = validate(drawn?)?;
-    let (analysed, analysis) = validate(analysed?)?;
+    let (drawn, naga) = validate(program, drawn?, stage)?;
+    let (analysed, analysis) = validate(program, analysed?, stage)?;
     Ok(Folded { drawn, naga, analysed, analysis })
 }
 
@@ -143,40 +160,29 @@ fn fold_tessellation_stages(program: &mut CompiledProgram, diags: &mut Vec<Diagn
     program.folded = Some(folded);
 }
 
-/// Folds the tessellation stages, drawn and analysed; naga validates both.
+/// Folds the tessellation stages (and a geometry stage after them).
 fn fold_tessellation(program: &CompiledProgram, free_binding: u32) -> Result<Folded, String> {
     let te = program.stage(StageKind::TessEval).expect("the caller checked");
-    let tc = program.stage(StageKind::TessControl);
     let vs = rewritten(program, StageKind::Vertex)?;
     let te_text = rewritten(program, StageKind::TessEval)?;
-    let tc_text = match tc {
-        Some(_) => Some(rewritten(program, StageKind::TessControl)?),
+    let control = match program.stage(StageKind::TessControl) {
+        Some(tc) => Some((rewritten(program, StageKind::TessControl)?.text.as_str(), &tc.syntax)),
         None => None,
     };
     let layout = tessellation_fold::tess_layout(&te.syntax)?;
-    let lower = |pulling: Pulling, dump_name: &str| -> Result<Lowered, String> {
-        let stages = Stages {
-            vertex: &vs.text,
-            control: tc_text.zip(tc).map(|(r, s)| (r.text.as_str(), &s.syntax)),
-            evaluation: (&te_text.text, &te.syntax),
-        };
-        let lowered = match program.stage(StageKind::Geometry) {
-            // The geometry stage takes the tessellation's primitives.
-            Some(g) => {
-                let gs = rewritten(program, StageKind::Geometry)?;
-                let geometry = geometry_layout::geometry_layout(&g.syntax).map_err(|p| p.message)?;
-                let clip = gs.text.contains("gl_ClipDistance");
-                let upstream = tessellation_fold::upstream(stages, layout, pulling, clip)?;
-                geometry_fold::lower(geometry_fold::Upstream::Tessellated(upstream), &gs.text, geometry, pulling, Some(&g.syntax))?
-            }
-            None => tessellation_fold::lower(stages, layout, pulling)?,
-        };
-        dump(dump_name, &lowered);
-        Ok(lowered)
+    // A geometry stage takes the tessellation's primitives.
+    let geometry = match program.stage(StageKind::Geometry) {
+        Some(g) => Some((rewritten(program, StageKind::Geometry)?, g, geometry_layout_of(&g.syntax)?)),
+        None => None,
     };
-    let drawn = lower(Pulling::Storage { index_binding: free_binding, vertex_binding: free_binding + 1 }, "folded.vert");
-    let analysed = lower(Pulling::Attributes, "folded-analysis.vert");
-    let (drawn, naga) = validate(program, drawn?, &te.syntax)?;
-    let (analysed, analysis) = validate(program, analysed?, &te.syntax)?;
-    Ok(Folded { drawn, naga, analysed, analysis })
+    fold_twice(program, free_binding, &te.syntax, |pulling| {
+        let stages = Stages { vertex: &vs.text, control, evaluation: (&te_text.text, &te.syntax) };
+        match geometry {
+            Some((gs, g, geometry)) => {
+                let upstream = tessellation_fold::upstream(stages, layout, pulling, gs.text.contains("gl_ClipDistance"))?;
+                geometry_fold::lower(geometry_fold::Upstream::Tessellated(upstream), &gs.text, geometry, pulling, Some(&g.syntax))
+            }
+            None => tessellation_fold::lower(stages, layout, pulling),
+        }
+    })
 }

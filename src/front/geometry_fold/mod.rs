@@ -209,13 +209,13 @@ fn driver(source: &CornerSource, gs: &Part, layout: GeometryLayout, pulling: Pul
     t.push_str("    effectc_gs_gl_Layer = 0; effectc_gs_gl_ViewportIndex = 0;\n");
     t.push_str("    effectc_PrimitiveIDIn = int(primitive); effectc_InstanceID = int(gl_InstanceIndex);\n");
     t.push_str("    effectc_gs_gl_PrimitiveID = effectc_PrimitiveIDIn;\n");
-    // One block per corner with constant indices (no loop): the arrays stay in registers.
     // A tessellated corner past its patch's last primitive: nothing is drawn.
     let mut keep = String::from("effectc_found");
     if let CornerSource::Tessellated { .. } = source {
         t.push_str("    bool effectc_generated_corners = true;\n");
         keep.push_str(" && effectc_generated_corners");
     }
+    // One block per corner with constant indices (no loop): the arrays stay in registers.
     for k in 0..corners {
         let outputs = match source {
             CornerSource::Vertex(vs) => {
