@@ -16,7 +16,7 @@
 # (scripts/corpus/gl_verdict.c, one program of every file) says which side a real driver
 # takes; the totals count those groups apart ("effectc sides with Mesa").
 #
-# Groups with a stage effectc cannot read (.mesh, .task, ray tracing) are skipped and listed.
+# Groups with a file effectc reads as no stage are skipped and listed.
 # In multi-unit groups effectc sees two files of one stage and checks them as separate
 # programs (grouped by file stem), not as one linked stage: those figures are indicative.
 #
@@ -47,7 +47,7 @@ for d in "$corpus"/*/; do
     files=""; unreadable=""
     for f in $names; do
         files="$files $d/$f"
-        case "${f##*.}" in vert|frag|geom|tesc|tese|comp) ;; *) unreadable="$unreadable .${f##*.}" ;; esac
+        case "${f##*.}" in vert|frag|geom|tesc|tese|comp|task|mesh|rgen|rint|rahit|rchit|rmiss|rcall) ;; *) unreadable="$unreadable .${f##*.}" ;; esac
     done
     if [ -n "$unreadable" ]; then
         skipped=$((skipped + 1)); echo "SKIP      $name: effectc cannot read$unreadable files"; continue

@@ -69,27 +69,28 @@ pub enum ColorChoice {
     Never,
 }
 
-/// Stage names accepted by `--stage`.
+/// Stage names accepted by `--stage`, in the order of [`StageKind::ALL`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum StageArg {
     Vertex,
-    Fragment,
-    Geometry,
     TessControl,
     TessEval,
+    Geometry,
+    Task,
+    Mesh,
+    Fragment,
     Compute,
+    RayGeneration,
+    Intersection,
+    AnyHit,
+    ClosestHit,
+    Miss,
+    Callable,
 }
 
 impl From<StageArg> for StageKind {
     fn from(s: StageArg) -> StageKind {
-        match s {
-            StageArg::Vertex => StageKind::Vertex,
-            StageArg::Fragment => StageKind::Fragment,
-            StageArg::Geometry => StageKind::Geometry,
-            StageArg::TessControl => StageKind::TessControl,
-            StageArg::TessEval => StageKind::TessEval,
-            StageArg::Compute => StageKind::Compute,
-        }
+        StageKind::ALL[s as usize]
     }
 }
 

@@ -11,13 +11,55 @@ pub enum StageKind {
     TessControl,
     TessEval,
     Geometry,
+    Task,
+    Mesh,
     Fragment,
     Compute,
+    RayGeneration,
+    Intersection,
+    AnyHit,
+    ClosestHit,
+    Miss,
+    Callable,
 }
 
 impl StageKind {
-    pub const ALL: [StageKind; 6] =
-        [StageKind::Vertex, StageKind::TessControl, StageKind::TessEval, StageKind::Geometry, StageKind::Fragment, StageKind::Compute];
+    pub const ALL: [StageKind; 14] = [
+        StageKind::Vertex,
+        StageKind::TessControl,
+        StageKind::TessEval,
+        StageKind::Geometry,
+        StageKind::Task,
+        StageKind::Mesh,
+        StageKind::Fragment,
+        StageKind::Compute,
+        StageKind::RayGeneration,
+        StageKind::Intersection,
+        StageKind::AnyHit,
+        StageKind::ClosestHit,
+        StageKind::Miss,
+        StageKind::Callable,
+    ];
+
+    /// How the user calls a stage in prose.
+    pub fn title(self) -> &'static str {
+        match self {
+            StageKind::Vertex => "vertex",
+            StageKind::TessControl => "tessellation control",
+            StageKind::TessEval => "tessellation evaluation",
+            StageKind::Geometry => "geometry",
+            StageKind::Fragment => "fragment",
+            StageKind::Compute => "compute",
+            StageKind::Task => "task",
+            StageKind::Mesh => "mesh",
+            StageKind::RayGeneration => "ray generation",
+            StageKind::Intersection => "intersection",
+            StageKind::AnyHit => "any-hit",
+            StageKind::ClosestHit => "closest-hit",
+            StageKind::Miss => "miss",
+            StageKind::Callable => "callable",
+        }
+    }
 
     /// The manifest key / `--stage` value.
     pub fn name(self) -> &'static str {
@@ -26,8 +68,16 @@ impl StageKind {
             StageKind::TessControl => "tess_control",
             StageKind::TessEval => "tess_eval",
             StageKind::Geometry => "geometry",
+            StageKind::Task => "task",
+            StageKind::Mesh => "mesh",
             StageKind::Fragment => "fragment",
             StageKind::Compute => "compute",
+            StageKind::RayGeneration => "ray_generation",
+            StageKind::Intersection => "intersection",
+            StageKind::AnyHit => "any_hit",
+            StageKind::ClosestHit => "closest_hit",
+            StageKind::Miss => "miss",
+            StageKind::Callable => "callable",
         }
     }
 
@@ -38,8 +88,16 @@ impl StageKind {
             StageKind::TessControl => "tesc",
             StageKind::TessEval => "tese",
             StageKind::Geometry => "geom",
+            StageKind::Task => "task",
+            StageKind::Mesh => "mesh",
             StageKind::Fragment => "frag",
             StageKind::Compute => "comp",
+            StageKind::RayGeneration => "rgen",
+            StageKind::Intersection => "rint",
+            StageKind::AnyHit => "rahit",
+            StageKind::ClosestHit => "rchit",
+            StageKind::Miss => "rmiss",
+            StageKind::Callable => "rcall",
         }
     }
 
@@ -56,8 +114,45 @@ impl StageKind {
             "tesc" => Some(StageKind::TessControl),
             "tese" => Some(StageKind::TessEval),
             "comp" | "cs" => Some(StageKind::Compute),
+            "task" => Some(StageKind::Task),
+            "mesh" => Some(StageKind::Mesh),
+            "rgen" => Some(StageKind::RayGeneration),
+            "rint" => Some(StageKind::Intersection),
+            "rahit" => Some(StageKind::AnyHit),
+            "rchit" => Some(StageKind::ClosestHit),
+            "rmiss" => Some(StageKind::Miss),
+            "rcall" => Some(StageKind::Callable),
             _ => None,
         }
+    }
+
+    /// A stage of a pipeline WebGPU has no counterpart of and effectc's own analysis does
+    /// not model (mesh shading, ray tracing): checked by the reference compiler only.
+    pub fn reference_only(self) -> bool {
+        matches!(
+            self,
+            StageKind::Task
+                | StageKind::Mesh
+                | StageKind::RayGeneration
+                | StageKind::Intersection
+                | StageKind::AnyHit
+                | StageKind::ClosestHit
+                | StageKind::Miss
+                | StageKind::Callable
+        )
+    }
+
+    /// Stages only Vulkan GLSL has (glslang compiles ray-tracing stages for SPIR-V only).
+    pub fn vulkan_only(self) -> bool {
+        matches!(
+            self,
+            StageKind::RayGeneration
+                | StageKind::Intersection
+                | StageKind::AnyHit
+                | StageKind::ClosestHit
+                | StageKind::Miss
+                | StageKind::Callable
+        )
     }
 
     /// The naga stage, for the stages naga can parse.

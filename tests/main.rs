@@ -41,6 +41,8 @@
 //!   and draw what the OpenGL driver draws (known differences listed).
 //! - [`translate`]: every effect and rewrite program translates to every target; WGSL,
 //!   `spirv-val` and a wgpu pipeline prove the output; IR/WGSL/SPIR-V snapshots.
+//! - [`vulkan_stages`]: ray-tracing and mesh stages judged by glslang alone; Vulkan GLSL
+//!   compiled for the Vulkan version its constructs need.
 //! - [`verify`]: `effectc verify`: every effect and the semantics suite against the system's
 //!   OpenGL driver; known failures listed, and failing when they start matching.
 //! - [`watch`]: `--watch` reports again after a change; `render` renders only what changed.
@@ -93,5 +95,7 @@ mod through_spirv;
 mod translate;
 #[path = "suite/verify.rs"]
 mod verify;
+#[path = "suite/vulkan_stages.rs"]
+mod vulkan_stages;
 #[path = "suite/watch.rs"]
 mod watch;

@@ -24,6 +24,14 @@ pub fn entry_name(stage: StageKind) -> &'static str {
         StageKind::Geometry => "gs_main",
         StageKind::TessControl => "tcs_main",
         StageKind::TessEval => "tes_main",
+        StageKind::Task => "ts_main",
+        StageKind::Mesh => "ms_main",
+        StageKind::RayGeneration => "rgen_main",
+        StageKind::Intersection => "rint_main",
+        StageKind::AnyHit => "rahit_main",
+        StageKind::ClosestHit => "rchit_main",
+        StageKind::Miss => "rmiss_main",
+        StageKind::Callable => "rcall_main",
     }
 }
 

@@ -240,12 +240,13 @@ fn analyse(l: load::Loaded, files: &Files, options: FrontOptions, hazards: Hazar
 
 /// Why a program checked by glslang only is not translated: E0306 where its N0106 note is.
 fn untranslatable(note: &Diagnostic) -> Diagnostic {
-    let mut d = Diagnostic::new(Code::TargetCannotExpress, "the program cannot be translated: effectc's own analysis cannot read it");
+    let mut d =
+        Diagnostic::new(Code::TargetCannotExpress, "the program cannot be translated: it is checked by the reference compiler only");
     d.file = note.file;
     d.span = note.span.clone();
     d.primary_label = "checked by the reference compiler only".into();
-    d.with_note(note.message.clone())
-        .with_note("the reference compiler (glslang) accepts the program; effectc translates through its own analysis and naga, which do not read it yet")
+    d.notes = std::iter::once(note.message.clone()).chain(note.notes.iter().cloned()).collect();
+    d
 }
 
 /// The image and mesh files an effect names.

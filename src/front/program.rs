@@ -105,6 +105,15 @@ pub fn compile(
         diags.extend(beyond);
         return None;
     }
+    // Mesh shading and ray tracing: glslang's verdict only.
+    if let Some(&(first, kind)) = ordered.iter().find(|(_, k)| k.reference_only()) {
+        let title = kind.title();
+        let note = Diagnostic::new(Code::ReferenceOnly, format!("WebGPU has no {title} stage: the program is checked by the reference compiler only"))
+            .in_file(first)
+            .with_note(format!("effectc's own analysis (interface rules, hazards, translation) models the stages WebGPU draws with; glslang compiles the {title} stage and links the program"));
+        diags.extend(verdict_or(reference::judge(files, &ordered, options.env), note));
+        return None;
+    }
     // Shader objects of one stage: effectc reads their joined text (`units`), glslang each.
     let mut own_order = ordered.clone();
     if let Some(kind) = reference::repeated_stage(&ordered) {
@@ -259,32 +268,33 @@ fn units_judged_by_glslang(
 ) -> Vec<Diagnostic> {
     let first = ordered.iter().find(|(_, k)| *k == kind).map(|(f, _)| *f).expect("a repeated stage");
     let count = ordered.iter().filter(|(_, k)| *k == kind).count();
+    let names: Vec<String> =
+        ordered.iter().filter(|(_, k)| *k == kind).map(|(f, _)| format!("`{}`", files.path(*f).rsplit('/').next().unwrap_or(""))).collect();
+    let note = Diagnostic::new(
+        Code::ReferenceOnly,
+        format!("the {kind} stage is made of {count} shader objects ({}), linked by the reference compiler", names.join(", ")),
+    )
+    .in_file(first)
+    .with_note("GL links several shader objects into one stage; effectc's own analysis (interface rules, hazards, translation) reads one file per stage, so this program is checked by glslang only")
+    .with_help("to translate or render it, join the files into one (`#include` the helpers into the file with `main`)");
+    verdict_or(judgement, note)
+}
+
+/// glslang's verdict on a program effectc's own analysis does not read: its errors (the
+/// stages', else the link's), or `note` (N0106) when it accepts; E0105 when glslang could
+/// not be set up, since nothing else judges the program.
+fn verdict_or(judgement: Option<reference::Judgement>, note: Diagnostic) -> Vec<Diagnostic> {
     let Some(judgement) = judgement else {
-        return vec![Diagnostic::new(
-            Code::ReferenceRejects,
-            format!("the {kind} stage is made of {count} files, which only the reference compiler can link, and it could not be set up"),
-        )
-        .in_file(first)];
+        let mut d = Diagnostic::new(Code::ReferenceRejects, format!("{}, and the reference compiler could not be set up", note.message));
+        d.file = note.file;
+        return vec![d];
     };
     let mut out: Vec<Diagnostic> = judgement.stages.iter().flat_map(|v| v.errors.iter().cloned()).collect();
     if out.is_empty() {
         out.extend(judgement.link_errors.iter().cloned());
     }
     if out.is_empty() {
-        let names: Vec<String> = ordered
-            .iter()
-            .filter(|(_, k)| *k == kind)
-            .map(|(f, _)| format!("`{}`", files.path(*f).rsplit('/').next().unwrap_or("")))
-            .collect();
-        out.push(
-            Diagnostic::new(
-                Code::ReferenceOnly,
-                format!("the {kind} stage is made of {count} shader objects ({}), linked by the reference compiler", names.join(", ")),
-            )
-            .in_file(first)
-            .with_note("GL links several shader objects into one stage; effectc's own analysis (interface rules, hazards, translation) reads one file per stage, so this program is checked by glslang only")
-            .with_help("to translate or render it, join the files into one (`#include` the helpers into the file with `main`)"),
-        );
+        out.push(note);
     }
     out
 }

@@ -36,6 +36,7 @@ use crate::front::spirv_texel_buffers::texel_buffers_as_storage;
 use crate::front::spirv_wide_integers::wide_integers_as_pairs;
 use crate::front::uniform_struct_padding;
 use crate::stage::StageKind;
+use respan::respan_module;
 
 /// One stage through SPIR-V: its validated module, spans indexing `text` (the stage's text
 /// as glslang compiled it, includes inlined: offsets are those of the user's stage).
@@ -630,37 +631,7 @@ fn emits_in(block: &mut Block, expressions: &naga::Arena<naga::Expression>) {
     }
 }
 
-/// Every span of `module` through `f` (naga keeps spans in its arenas and blocks).
-fn respan_module(module: &mut Module, f: &dyn Fn(Span) -> Span) {
-    respan_arena(&mut module.global_variables, f);
-    respan_arena(&mut module.global_expressions, f);
-    respan_arena(&mut module.constants, f);
-    respan_arena(&mut module.overrides, f);
-    let functions = module.functions.iter_mut().map(|(_, func)| func);
-    for func in functions.chain(module.entry_points.iter_mut().map(|ep| &mut ep.function)) {
-        respan_arena(&mut func.expressions, f);
-        respan_arena(&mut func.local_variables, f);
-        respan_block(&mut func.body, f);
-    }
-}
-
-fn respan_arena<T>(arena: &mut naga::Arena<T>, f: &dyn Fn(Span) -> Span) {
-    let items: Vec<(T, Span)> = arena.drain().map(|(_, value, span)| (value, span)).collect();
-    for (value, span) in items {
-        arena.append(value, f(span));
-    }
-}
-
-fn respan_block(block: &mut Block, f: &dyn Fn(Span) -> Span) {
-    for (statement, span) in block.span_iter_mut() {
-        if let Some(span) = span {
-            *span = f(*span);
-        }
-        for b in crate::front::statements::child_blocks(statement) {
-            respan_block(b, f);
-        }
-    }
-}
+mod respan;
 
 #[cfg(test)]
 mod tests;

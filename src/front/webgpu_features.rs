@@ -9,8 +9,13 @@ use crate::front::syntax::StageSyntax;
 /// The notes on what the translation of stage `s` does with what WebGPU lacks; `naga`: the
 /// stage's validated module, where naga took it.
 pub fn stage_notes(s: &StageSyntax, naga: Option<&Validated>) -> Vec<Diagnostic> {
-    let mut out = image_formats_chosen(s);
-    out.extend(runtime_arrays_bound(s));
+    let mut out = Vec::new();
+    // A stage naga does not take (N0102 says why) has no translation to report on, and the
+    // masked construct reads as another type (`accelerationStructureEXT` as an image).
+    if naga.is_some() || s.unsupported.is_none() {
+        out.extend(image_formats_chosen(s));
+        out.extend(runtime_arrays_bound(s));
+    }
     if let Some(v) = naga {
         out.extend(float16_needed(s, v));
         out.extend(wide_integers_paired(s));

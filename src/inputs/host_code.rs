@@ -216,7 +216,8 @@ fn in_order(sequence: &[(PathBuf, StageKind, usize)]) -> Vec<Vec<(PathBuf, Stage
     let mut after_fragment = false;
     for item in sequence {
         match item.1 {
-            StageKind::Compute => continue,
+            // Host code pairs the stages of a raster pipeline with vertices.
+            kind if kind == StageKind::Compute || kind.reference_only() => continue,
             StageKind::Fragment => {
                 for v in &vertices {
                     let mut files = vec![(*v).clone()];

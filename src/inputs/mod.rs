@@ -188,10 +188,11 @@ pub fn collect(inputs: &[PathBuf], forced: Option<StageKind>, selection: &Select
     for p in &programs {
         if let ProgramInput::Stages { files, .. } = p {
             if let [(path, kind)] = files.as_slice() {
-                if *kind != StageKind::Compute {
+                // A compute or ray-tracing stage has no stage interface to check.
+                if *kind != StageKind::Compute && !kind.vulkan_only() {
                     diags.push(
                         Diagnostic::new(Code::StageAlone, format!("`{}` is checked alone: no link rule ran", path.display()))
-                            .with_note(format!("a {kind} stage on its own is not a program; its interface with the other stages was not checked"))
+                            .with_note(format!("a {} stage on its own is not a program; its interface with the other stages was not checked", kind.title()))
                             .with_help("name its stages together (`effectc check a.vert b.frag`), give them one stem (`a.vert` + `a.frag`), or keep one vertex stage in its folder"),
                     );
                 }
@@ -389,7 +390,7 @@ fn glsl_text(path: &Path) -> Option<String> {
 /// The stage a `.glsl` file's text shows, with the note (N0003) naming the evidence.
 fn stage_from_text(path: &Path, text: &str) -> Option<(StageKind, Diagnostic)> {
     let (kind, why) = stage_names::from_text(text)?;
-    Some((kind, Diagnostic::new(Code::StageFromText, format!("`{}` is read as a {kind} stage: {why}", path.display()))))
+    Some((kind, Diagnostic::new(Code::StageFromText, format!("`{}` is read as a {} stage: {why}", path.display(), kind.title()))))
 }
 
 /// In a folder with exactly one vertex stage, each program with a fragment stage and no

@@ -44,6 +44,9 @@ pub fn from_text(text: &str) -> Option<(StageKind, &'static str)> {
     if !super::code_defines_main(&code) {
         return None;
     }
+    if let Some(kind) = pragma_stage(&code) {
+        return Some((kind, "its `#pragma shader_stage` names it"));
+    }
     let has = |word: &str| contains_word(&code, word);
     let geometry = has("EmitVertex") || has("EmitStreamVertex");
     let tess_eval = has("gl_TessCoord");
@@ -70,6 +73,32 @@ pub fn from_text(text: &str) -> Option<(StageKind, &'static str)> {
         return None;
     }
     Some((*kind, why))
+}
+
+/// The stage shaderc's `#pragma shader_stage(NAME)` names (glslc's convention for `.glsl`
+/// files).
+fn pragma_stage(code: &str) -> Option<StageKind> {
+    code.lines().find_map(|line| {
+        let d = line.trim_start().strip_prefix('#')?.trim_start().strip_prefix("pragma")?.trim_start();
+        let name = d.strip_prefix("shader_stage")?.trim_start().strip_prefix('(')?.split(')').next()?.trim();
+        Some(match name {
+            "vertex" => StageKind::Vertex,
+            "fragment" => StageKind::Fragment,
+            "geometry" => StageKind::Geometry,
+            "tesscontrol" => StageKind::TessControl,
+            "tesseval" => StageKind::TessEval,
+            "compute" => StageKind::Compute,
+            "task" => StageKind::Task,
+            "mesh" => StageKind::Mesh,
+            "raygen" => StageKind::RayGeneration,
+            "intersect" => StageKind::Intersection,
+            "anyhit" => StageKind::AnyHit,
+            "closesthit" => StageKind::ClosestHit,
+            "miss" => StageKind::Miss,
+            "callable" => StageKind::Callable,
+            _ => return None,
+        })
+    })
 }
 
 fn contains_word(text: &str, word: &str) -> bool {
@@ -129,6 +158,9 @@ mod tests {
         assert_eq!(kind("vertex.glsl"), Some((StageKind::Vertex, String::new())));
         assert_eq!(kind("common.glsl"), None);
         assert_eq!(kind("notes_vs.txt"), None);
+        assert_eq!(kind("shadow.rchit"), Some((StageKind::ClosestHit, "shadow".into())));
+        assert_eq!(kind("cull.task.glsl"), Some((StageKind::Task, "cull".into())));
+        assert_eq!(kind("cull.mesh"), Some((StageKind::Mesh, "cull".into())));
     }
 
     #[test]
@@ -145,6 +177,11 @@ mod tests {
         let both = "void main() { gl_Position = vec4(0.0); gl_FragColor = vec4(1.0); }\n";
         assert_eq!(from_text(both).map(|(k, _)| k), Some(StageKind::Vertex), "gl_Position decides");
         assert_eq!(from_text("// gl_Position = gl_FragColor;\nvoid main() { }\n"), None, "comments are no evidence");
+        let pragma = "#pragma shader_stage(compute)\nlayout(local_size_x = 8) in;\nvoid main() { gl_Position; }\n";
+        assert_eq!(from_text(pragma).map(|(k, _)| k), Some(StageKind::Compute), "shaderc's pragma decides");
+        let raygen = "#version 460\n#pragma shader_stage( raygen )\nvoid main() { }\n";
+        assert_eq!(from_text(raygen).map(|(k, _)| k), Some(StageKind::RayGeneration));
+        assert_eq!(from_text("// #pragma shader_stage(vertex)\nvoid main() { }\n"), None, "not in a comment");
     }
     #[test]
     fn two_stage_files_are_told_by_their_conditionals() {

@@ -169,14 +169,7 @@ pub fn check_pass_manifest(
 
 /// How the user calls a stage in prose.
 pub(crate) fn stage_title(kind: StageKind) -> &'static str {
-    match kind {
-        StageKind::Vertex => "vertex",
-        StageKind::TessControl => "tessellation control",
-        StageKind::TessEval => "tessellation evaluation",
-        StageKind::Geometry => "geometry",
-        StageKind::Fragment => "fragment",
-        StageKind::Compute => "compute",
-    }
+    kind.title()
 }
 
 /// Built-in variables and blocks (`gl_Position`, `gl_PerVertex`, `gl_in`).

@@ -22,7 +22,8 @@ pub fn link(gl: &glow::Context, files: &Files, stages: &[(FileId, StageKind)]) -
         let mut shaders = Vec::new();
         let mut errors = Vec::new();
         for &(file, kind) in stages {
-            let shader = match gl.create_shader(shader_type(kind)) {
+            let created = shader_type(kind).ok_or_else(|| format!("OpenGL has no {} stage", kind.title()));
+            let shader = match created.and_then(|t| gl.create_shader(t)) {
                 Ok(s) => s,
                 Err(e) => {
                     errors.push(Diagnostic::new(Code::GlRejects, e).in_file(file));
@@ -86,15 +87,20 @@ fn for_driver(text: &str) -> String {
     out
 }
 
-fn shader_type(kind: StageKind) -> u32 {
-    match kind {
+/// The GL shader type of a stage (None: a stage only Vulkan has).
+fn shader_type(kind: StageKind) -> Option<u32> {
+    Some(match kind {
         StageKind::Vertex => glow::VERTEX_SHADER,
         StageKind::TessControl => glow::TESS_CONTROL_SHADER,
         StageKind::TessEval => glow::TESS_EVALUATION_SHADER,
         StageKind::Geometry => glow::GEOMETRY_SHADER,
         StageKind::Fragment => glow::FRAGMENT_SHADER,
         StageKind::Compute => glow::COMPUTE_SHADER,
-    }
+        // GL_NV_mesh_shader's stages.
+        StageKind::Task => 0x955A,
+        StageKind::Mesh => 0x9559,
+        _ => return None,
+    })
 }
 
 /// One error of a driver's compile log: `0:12(5): error: message` (Mesa), `0(12) : error

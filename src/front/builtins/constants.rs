@@ -5,12 +5,20 @@
 
 use glslang_sys::glslang_resource_t as Limits;
 
-/// The resource limits the reference compiler is given (glslang's defaults, as
-/// glslangValidator's); `reference::compiler` passes these to glslang.
+/// The resource limits the reference compiler is given: glslang's defaults, as
+/// glslangValidator's, except where those are GL's minimum and every desktop driver offers
+/// more, so that a program the driver links is not refused for the limit alone:
+/// atomic counter buffer bindings (glslang 1, Mesa 16; `layout(binding = 1) uniform
+/// atomic_uint`). `reference::compiler` passes these to glslang.
 pub fn limits() -> &'static Limits {
-    static LIMITS: glslang::limits::ResourceLimits = glslang::limits::DEFAULT_LIMITS;
-    // SAFETY: `ResourceLimits` is `repr(transparent)` over `glslang_resource_t`.
-    unsafe { &*(&LIMITS as *const glslang::limits::ResourceLimits).cast::<Limits>() }
+    static LIMITS: std::sync::OnceLock<Limits> = std::sync::OnceLock::new();
+    LIMITS.get_or_init(|| {
+        let defaults = glslang::limits::DEFAULT_LIMITS;
+        // SAFETY: `ResourceLimits` is `repr(transparent)` over `glslang_resource_t`, plain data.
+        let mut limits: Limits = unsafe { std::ptr::read((&defaults as *const glslang::limits::ResourceLimits).cast::<Limits>()) };
+        limits.max_atomic_counter_bindings = 16;
+        limits
+    })
 }
 
 /// Reads one `int` constant's value from the limits.

@@ -62,6 +62,14 @@ fn stage_of(kind: StageKind) -> sys::glslang_stage_t {
         StageKind::Geometry => sys::glslang_stage_t::Geometry,
         StageKind::Fragment => sys::glslang_stage_t::Fragment,
         StageKind::Compute => sys::glslang_stage_t::Compute,
+        StageKind::Task => sys::glslang_stage_t::Task,
+        StageKind::Mesh => sys::glslang_stage_t::Mesh,
+        StageKind::RayGeneration => sys::glslang_stage_t::RayGeneration,
+        StageKind::Intersection => sys::glslang_stage_t::Intersect,
+        StageKind::AnyHit => sys::glslang_stage_t::AnyHit,
+        StageKind::ClosestHit => sys::glslang_stage_t::ClosestHit,
+        StageKind::Miss => sys::glslang_stage_t::Miss,
+        StageKind::Callable => sys::glslang_stage_t::Callable,
     }
 }
 

@@ -53,12 +53,16 @@ pub fn repeated_stage(stages: &[(FileId, StageKind)]) -> Option<StageKind> {
 }
 
 /// The dialect glslang compiles a program in: Vulkan GLSL when asked, or (`auto`) when the
-/// text of any stage shows it (descriptor sets, push constants, separate samplers).
+/// text of any stage shows it (descriptor sets, push constants, separate samplers) or a
+/// stage is one only Vulkan has (ray tracing).
 pub fn dialect(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> Dialect {
     let vulkan = match env {
         TargetEnv::OpenGl => None,
         TargetEnv::Vulkan(v) => Some(v),
-        TargetEnv::Auto => stages.iter().any(|(f, _)| crate::front::syntax::vulkan_source(files.text(*f))).then_some(VulkanVersion::V1_0),
+        TargetEnv::Auto => stages
+            .iter()
+            .any(|(f, k)| k.vulkan_only() || crate::front::syntax::vulkan_source(files.text(*f)))
+            .then_some(VulkanVersion::V1_0),
     };
     match vulkan {
         Some(v) => Dialect::Vulkan(v),
@@ -68,8 +72,40 @@ pub fn dialect(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) ->
 
 /// glslang's verdict on the program made of `stages` (their texts in `files`, includes
 /// inlined). None when glslang could not be set up in this process.
+///
+/// Vulkan GLSL found by `auto` is compiled for Vulkan 1.0 first; where glslang refuses it
+/// only because what it uses needs a newer SPIR-V (subgroup operations: 1.3, ray tracing
+/// and mesh shading: 1.4), it is compiled for the oldest Vulkan that has it, as the project
+/// would pass `--target-env vulkan1.x` to glslangValidator.
 pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> Option<Judgement> {
     let dialect = dialect(files, stages, env);
+    let first = judge_as(files, stages, dialect)?;
+    if env != TargetEnv::Auto || !first.needs_newer_spirv() {
+        return Some(first);
+    }
+    for version in [VulkanVersion::V1_1, VulkanVersion::V1_2, VulkanVersion::V1_3] {
+        let newer = judge_as(files, stages, Dialect::Vulkan(version))?;
+        if !newer.needs_newer_spirv() {
+            return Some(newer);
+        }
+    }
+    Some(first)
+}
+
+/// Whether glslang's message says the construct needs a newer SPIR-V than the one targeted.
+fn needs_newer_spirv(message: &str) -> bool {
+    message.contains("requires SPIR-V 1.") || message.contains("targeted SPIR-V version")
+}
+
+impl Judgement {
+    /// Some stage was refused for what a newer SPIR-V has.
+    fn needs_newer_spirv(&self) -> bool {
+        self.stages.iter().flat_map(|s| &s.errors).any(|d| needs_newer_spirv(&d.message))
+    }
+}
+
+/// glslang's verdict on the program, compiled as `dialect`.
+fn judge_as(files: &Files, stages: &[(FileId, StageKind)], dialect: Dialect) -> Option<Judgement> {
     let mut compiled = Vec::new();
     let mut verdicts = Vec::new();
     for &(file, kind) in stages {
@@ -130,7 +166,7 @@ fn place(files: &Files, file: FileId, log: &str) -> Vec<Diagnostic> {
         for detail in &m.detail {
             d = d.with_note(detail.clone());
         }
-        if m.text.contains("requires SPIR-V 1.") || m.text.contains("targeted SPIR-V version") {
+        if needs_newer_spirv(&m.text) {
             // Legal for a newer Vulkan: the run compiled for Vulkan 1.0.
             d = d.with_help("compile for the Vulkan the program targets: `--target-env vulkan1.1` (SPIR-V 1.3) … `vulkan1.3`, or `target-env` in effectc.toml");
         }

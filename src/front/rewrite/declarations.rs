@@ -63,6 +63,9 @@ impl Ctx<'_> {
             if let Some(r) = std430 {
                 self.edits.replace(r, "std140");
             }
+        } else if first.layout.iter().any(|(k, _)| k == "descriptor_heap") {
+            // Reached through a descriptor heap (GL_EXT_descriptor_heap), not bound: no set
+            // or binding (glslang's SPIR-V writer crashes on a heap block given one).
         } else if first.layout.iter().any(|(k, _)| k == "binding") {
             // The user's own binding numbers live in set 1, clear of ours (GL numbers each
             // kind apart); Vulkan GLSL's are set 0's when no set is named.
@@ -123,8 +126,10 @@ impl Ctx<'_> {
                     .with_note("WebGPU has no buffer images: `imageLoad`/`imageStore` read and write a storage buffer of texels (one 4-vector each) and `imageSize` is its length; `render` binds it zeroed"),
             );
         }
-        // Images and atomic counters stay declarations of their own.
-        if first.layout.iter().any(|(k, _)| k == "binding") {
+        // Images and atomic counters stay declarations of their own; one reached through a
+        // descriptor heap has no binding.
+        if first.layout.iter().any(|(k, _)| k == "descriptor_heap") {
+        } else if first.layout.iter().any(|(k, _)| k == "binding") {
             let base = first.ty.base.as_str();
             let set = if self.s.vulkan {
                 0

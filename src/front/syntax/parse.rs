@@ -263,7 +263,8 @@ fn compiled_include(text: &str) -> Option<Range<usize>> {
 
 /// Before parsing: does the text use what only Vulkan GLSL has (descriptor sets, push
 /// constants, specialization constants, subpass inputs, separate texture and sampler
-/// uniforms, `gl_VertexIndex`/`gl_InstanceIndex`)? Comments do not count.
+/// uniforms, `gl_VertexIndex`/`gl_InstanceIndex`, extensions glslang compiles for SPIR-V
+/// only: ray tracing and queries, mesh shading, buffer references)? Comments do not count.
 pub(crate) fn vulkan_source(text: &str) -> bool {
     // Comments say anything ("a lookup with the uniform sampler"): only code counts.
     let code = crate::front::version::blank_comments(text);
@@ -273,6 +274,8 @@ pub(crate) fn vulkan_source(text: &str) -> bool {
     squeezed.contains("push_constant")
         || squeezed.contains("input_attachment_index")
         || squeezed.contains("GL_KHR_vulkan_glsl")
+        // Extensions glslang compiles for SPIR-V only.
+        || words.iter().any(|w| matches!(*w, "GL_EXT_ray_tracing" | "GL_EXT_mesh_shader" | "GL_EXT_buffer_reference" | "GL_EXT_ray_query"))
         || words
             .iter()
             .any(|w| matches!(*w, "gl_VertexIndex" | "gl_InstanceIndex") || w.trim_start_matches(['i', 'u']).starts_with("subpassInput"))
@@ -281,7 +284,7 @@ pub(crate) fn vulkan_source(text: &str) -> bool {
             let inside = l.trim_start().strip_prefix('(').and_then(|r| r.split(')').next()).unwrap_or("");
             inside.split(',').any(|item| {
                 let key = item.trim().split(['=', ' ']).next().unwrap_or("");
-                matches!(key, "set" | "constant_id")
+                matches!(key, "set" | "constant_id" | "local_size_x_id" | "local_size_y_id" | "local_size_z_id")
             })
         })
 }
@@ -296,7 +299,9 @@ fn vulkan_only_uniform_type(ty: &str) -> bool {
     texture || matches!(ty, "sampler" | "samplerShadow")
 }
 
-/// Vulkan GLSL shows itself by what only Vulkan has.
+/// Vulkan GLSL shows itself by what only Vulkan has: in the declarations read, or in the
+/// text as the reference compiler's dialect choice reads it ([`vulkan_source`]: a
+/// specialization-constant workgroup size, an extension only SPIR-V has), so both agree.
 fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
     let layout_vulkan = s
         .globals
@@ -306,7 +311,7 @@ fn looks_like_vulkan(s: &StageSyntax, original: &str) -> bool {
     layout_vulkan
         || separate
         || s.uses.iter().any(|u| matches!(u.name.as_str(), "gl_VertexIndex" | "gl_InstanceIndex") && u.target == Referent::Unresolved)
-        || original.contains("GL_KHR_vulkan_glsl")
+        || vulkan_source(original)
 }
 
 /// A global `T name[] = T[](a, b, c)` (a uniform's initializer too) has its initializer's
