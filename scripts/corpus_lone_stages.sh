@@ -18,10 +18,12 @@ bin=$(realpath "${EFFECTC:-target/release/effectc}")
 [ -x "$bin" ] || { echo "no $bin: build it first (cargo build --release)" >&2; exit 2; }
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 git --git-dir="$git_dir" archive HEAD "$subdir" | tar -x -C "$tmp"
+# The checkout's root, as effectc finds it (the project root: includes resolve inside it).
+mkdir -p "$tmp/.git"
 declare -A legal accepted
 cd "$tmp"
 while IFS= read -r f; do
-    ext=${f##*.}
+    ext=${f%.glsl}; ext=${ext##*.}
     g=fail
     for env in vulkan1.0 vulkan1.1 vulkan1.2 vulkan1.3; do
         if glslangValidator -V --target-env $env -o /dev/null "$f" > /dev/null 2>&1; then g=ok; break; fi
@@ -31,7 +33,7 @@ while IFS= read -r f; do
     legal[$ext]=$(( ${legal[$ext]:-0} + 1 ))
     if [ "$e" = ok ]; then accepted[$ext]=$(( ${accepted[$ext]:-0} + 1 ));
     else echo "REFUSED $f: $(grep -m1 -E '^(error|warning)' out.txt)"; fi
-done < <(find "$subdir" -type f | grep -E '\.(vert|frag|geom|tesc|tese|comp|task|mesh|rgen|rint|rahit|rchit|rmiss|rcall)$' | sort)
+done < <(find "$subdir" -type f | grep -E '\.(vert|frag|geom|tesc|tese|comp|task|mesh|rgen|rint|rahit|rchit|rmiss|rcall)(\.glsl)?$' | sort)
 for ext in "${!legal[@]}"; do
     printf '%-6s legal %4d  effectc accepts %4d\n' "$ext" "${legal[$ext]}" "${accepted[$ext]:-0}"
 done | sort

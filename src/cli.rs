@@ -69,31 +69,6 @@ pub enum ColorChoice {
     Never,
 }
 
-/// Stage names accepted by `--stage`, in the order of [`StageKind::ALL`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum StageArg {
-    Vertex,
-    TessControl,
-    TessEval,
-    Geometry,
-    Task,
-    Mesh,
-    Fragment,
-    Compute,
-    RayGeneration,
-    Intersection,
-    AnyHit,
-    ClosestHit,
-    Miss,
-    Callable,
-}
-
-impl From<StageArg> for StageKind {
-    fn from(s: StageArg) -> StageKind {
-        StageKind::ALL[s as usize]
-    }
-}
-
 /// Output targets of `translate`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum TargetArg {
@@ -126,7 +101,7 @@ pub struct CommonArgs {
     pub inputs: Vec<PathBuf>,
     /// Stage of stage files whose extension does not tell it.
     #[arg(long, value_enum)]
-    pub stage: Option<StageArg>,
+    pub stage: Option<StageKind>,
     /// Diagnostic output format.
     #[arg(long, value_enum, default_value = "human")]
     pub format: Format,
@@ -524,7 +499,7 @@ impl CommonArgs {
         };
         InputSpec {
             paths: self.inputs.clone(),
-            stage: self.stage.map(Into::into),
+            stage: self.stage,
             front: FrontOptions { strict: self.strict || config.strict, env, doubles_as_floats: false, limits: config.limits },
             selection: config.selection.clone(),
             jobs: self.jobs.map(|j| j as usize),

@@ -3,8 +3,9 @@
 
 use std::fmt;
 
-/// A programmable pipeline stage, in pipeline order.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
+/// A programmable pipeline stage, in pipeline order; `--stage` takes its kebab-case name
+/// (`tess-control`, `ray-generation`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "snake_case")]
 pub enum StageKind {
     Vertex,
