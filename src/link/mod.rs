@@ -93,7 +93,10 @@ pub fn check_interface(stages: &[StageSyntax]) -> Vec<Diagnostic> {
 /// primitive and `max_vertices` (once, or the same each time); glslang refuses to link
 /// without them, and effectc's lowering needs them.
 fn geometry_layout(s: &StageSyntax, out: &mut Vec<Diagnostic>) {
-    if s.stage != StageKind::Geometry {
+    // A passthrough geometry stage (GL_NV_geometry_shader_passthrough) emits its input
+    // primitive as it is: it declares no output primitive or `max_vertices`.
+    let passthrough = s.globals.iter().any(|g| g.layout.iter().any(|(k, _)| k == "passthrough"));
+    if s.stage != StageKind::Geometry || passthrough {
         return;
     }
     let problem = match crate::front::geometry_layout::geometry_layout(s) {

@@ -1,6 +1,6 @@
 //! Stages WebGPU has no counterpart of (ray tracing, mesh shading) checked by the reference
-//! compiler alone, and Vulkan GLSL compiled for the Vulkan version its constructs need
-//! without `--target-env`.
+//! compiler alone; Vulkan GLSL compiled for the Vulkan version its constructs need without
+//! `--target-env`, and what `auto` reads as Vulkan's; NV passthrough geometry stages.
 
 use crate::common::{code, effectc, scratch, stdout};
 
@@ -136,4 +136,49 @@ fn a_stage_is_named_by_option_or_by_shadercs_pragma() {
     let out = effectc(&["check", "--color", "never", &dir]);
     assert_eq!(code(&out), 0, "{}", stdout(&out));
     assert!(stdout(&out).contains("WebGPU has no closest-hit stage"), "{}", stdout(&out));
+}
+
+#[test]
+fn auto_reads_what_only_vulkan_allows_and_names_the_option_where_only_vulkan_accepts() {
+    // `layout(scalar)` is Vulkan GLSL's only: the stage is read as Vulkan GLSL.
+    let scalar = "#version 450\n#extension GL_EXT_scalar_block_layout : require\nlayout(local_size_x = 1) in;\n\
+        layout(binding = 0, scalar) buffer Data { vec3 a; float b; } data;\nvoid main() { data.b = data.a.x; }\n";
+    let files = write("scalar", &[("pack.comp", scalar)]);
+    let out = run(&["check", "--color", "never"], &files);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    // Offsets out of order: OpenGL GLSL refuses them, Vulkan GLSL takes them. Read as GL
+    // (nothing Vulkan-only shows), the error stands with the option that says otherwise.
+    let offsets = "#version 450\nlayout(location = 0) out vec4 color;\nlayout(std140, binding = 0) uniform UBO {\n\
+        \x20   layout(offset = 16) mat4 m;\n    layout(offset = 0) vec4 v;\n};\nlayout(location = 0) in vec4 tint;\n\
+        void main() { color = m * tint + v; }\n";
+    let files = write("offsets", &[("ubo.frag", offsets)]);
+    let out = run(&["check", "--color", "never"], &files);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(
+        stdout(&out).contains("cannot lie in previous members") && stdout(&out).contains("pass `--target-env vulkan`"),
+        "{}",
+        stdout(&out)
+    );
+    let out = run(&["check", "--color", "never", "--target-env", "vulkan"], &files);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    // A GL error Vulkan GLSL has too gets no such help.
+    let files = write("offsets-wrong", &[("ubo.frag", &offsets.replace("m * tint + v", "m * tint + v.xyz"))]);
+    let out = run(&["check", "--color", "never"], &files);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
+    assert!(!stdout(&out).contains("--target-env vulkan"), "{}", stdout(&out));
+}
+
+#[test]
+fn a_passthrough_geometry_stage_declares_no_output_primitive() {
+    // GL_NV_geometry_shader_passthrough: the input primitive is emitted as it is.
+    let geom = "#version 450\n#extension GL_NV_geometry_shader_passthrough : require\nlayout(triangles) in;\n\
+        layout(passthrough) in gl_PerVertex { vec4 gl_Position; } gl_in[];\n\
+        layout(passthrough, location = 0) in vec4 color[];\nvoid main() { gl_Layer = 1; }\n";
+    let files = write("passthrough", &[("pass.geom", geom)]);
+    let out = run(&["check", "--color", "never"], &files);
+    assert_eq!(code(&out), 0, "{}", stdout(&out));
+    assert!(!stdout(&out).contains("E0214"), "{}", stdout(&out));
+    let files = write("no-output", &[("pass.geom", &geom.replace("layout(passthrough)", "").replace("passthrough, ", ""))]);
+    let out = run(&["check", "--color", "never"], &files);
+    assert_eq!(code(&out), 1, "{}", stdout(&out));
 }

@@ -79,7 +79,10 @@ pub fn dialect(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) ->
 /// would pass `--target-env vulkan1.x` to glslangValidator.
 pub fn judge(files: &Files, stages: &[(FileId, StageKind)], env: TargetEnv) -> Option<Judgement> {
     let dialect = dialect(files, stages, env);
-    let first = judge_as(files, stages, dialect)?;
+    let mut first = judge_as(files, stages, dialect)?;
+    if env == TargetEnv::Auto && dialect == Dialect::OpenGl && !first.accepted() {
+        first.offer_vulkan(files, stages);
+    }
     if env != TargetEnv::Auto || !first.needs_newer_spirv() {
         return Some(first);
     }
@@ -98,6 +101,25 @@ fn needs_newer_spirv(message: &str) -> bool {
 }
 
 impl Judgement {
+    /// Every stage compiled and the program linked.
+    fn accepted(&self) -> bool {
+        self.stages.iter().all(|s| s.accepted) && self.link_errors.is_empty()
+    }
+
+    /// A program `auto` read as OpenGL GLSL, which glslang refuses, that it accepts as
+    /// Vulkan GLSL (`layout(offset)`s out of order, Vulkan's built-ins without a Vulkan-only
+    /// declaration): the errors stand, with a help naming the option that says the program
+    /// is Vulkan's.
+    fn offer_vulkan(&mut self, files: &Files, stages: &[(FileId, StageKind)]) {
+        if !judge_as(files, stages, Dialect::Vulkan(VulkanVersion::V1_0)).is_some_and(|j| j.accepted()) {
+            return;
+        }
+        let help = "glslang accepts this program as Vulkan GLSL: if it is meant for Vulkan, pass `--target-env vulkan` (or `target-env` in effectc.toml)";
+        for d in self.stages.iter_mut().flat_map(|s| s.errors.iter_mut()).chain(self.link_errors.iter_mut()) {
+            d.help.get_or_insert_with(|| help.to_string());
+        }
+    }
+
     /// Some stage was refused for what a newer SPIR-V has.
     fn needs_newer_spirv(&self) -> bool {
         self.stages.iter().flat_map(|s| &s.errors).any(|d| needs_newer_spirv(&d.message))

@@ -284,7 +284,11 @@ pub(crate) fn vulkan_source(text: &str) -> bool {
             let inside = l.trim_start().strip_prefix('(').and_then(|r| r.split(')').next()).unwrap_or("");
             inside.split(',').any(|item| {
                 let key = item.trim().split(['=', ' ']).next().unwrap_or("");
-                matches!(key, "set" | "constant_id" | "local_size_x_id" | "local_size_y_id" | "local_size_z_id")
+                // Layouts glslang allows only in Vulkan GLSL.
+                matches!(
+                    key,
+                    "set" | "constant_id" | "local_size_x_id" | "local_size_y_id" | "local_size_z_id" | "scalar" | "buffer_reference" | "shaderRecordEXT"
+                )
             })
         })
 }
