@@ -8,7 +8,7 @@
 use std::collections::HashSet;
 use std::ops::Range;
 
-use super::{same_type, stage_title, type_text};
+use super::{same_type, type_text};
 use crate::front::syntax::{Interp, Member, StageSyntax};
 
 /// One side of a comparison: a stage and a block's (or struct's) members.
@@ -41,7 +41,7 @@ impl<'a> Side<'a> {
         m.centroid || self.block_centroid
     }
     fn title(&self) -> &'static str {
-        stage_title(self.stage.stage)
+        self.stage.stage.title()
     }
 }
 

@@ -12,7 +12,7 @@ use std::collections::HashSet;
 
 use super::declared::{parse_path, texture_path, Decl, Decls, Step};
 use super::values::Shape;
-use super::{is_opaque, is_sampler_like, list, stage_title, type_text};
+use super::{is_opaque, is_sampler_like, list, type_text};
 use crate::diag::{Code, Diagnostic, FileId, Files};
 use crate::front::syntax::{GlslType, StageSyntax, Storage};
 use crate::manifest::{did_you_mean, Effect, Semantic, TextureKind, UniformDefault};
@@ -297,7 +297,7 @@ fn unknown(mf: FileId, what: &str, u: &UniformDefault, base: &str, decls: &Decls
                 Storage::Buffer => "a buffer variable",
                 _ => "a global variable",
             };
-            let st = stage_title(s.stage);
+            let st = s.stage.title();
             return d
                 .with_label(s.file, g.name_span.clone(), format!("{what} of the {st} stage, not a uniform"))
                 .with_help(format!("only uniforms take defaults; declare `uniform {} {base};` to make it settable", type_text(s, &g.ty)));
@@ -317,7 +317,7 @@ fn unknown(mf: FileId, what: &str, u: &UniformDefault, base: &str, decls: &Decls
         if let Some(first) = here.first() {
             let names: Vec<String> = here.iter().map(|d| d.name.clone()).collect();
             let path = files.try_get(s.file).map_or("", |f| f.path.as_str());
-            d = d.with_label(s.file, first.span(), format!("the {} stage ({path}) declares {}", stage_title(s.stage), list(&names)));
+            d = d.with_label(s.file, first.span(), format!("the {} stage ({path}) declares {}", s.stage.title(), list(&names)));
         }
     }
     d
@@ -392,11 +392,7 @@ fn missing(decls: &Decls, covered: &HashSet<String>, textured: &HashSet<String>,
                 "declared here",
             );
             for (file, span, s) in decl.sites.iter().skip(1) {
-                d = d.with_label(
-                    *file,
-                    span.clone(),
-                    format!("also declared in the {} stage, not read there either", stage_title(s.stage)),
-                );
+                d = d.with_label(*file, span.clone(), format!("also declared in the {} stage, not read there either", s.stage.title()));
             }
             out.push(d.with_help("remove the declaration, or use it"));
             continue;

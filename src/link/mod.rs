@@ -170,11 +170,6 @@ pub fn check_pass_manifest(
     out
 }
 
-/// How the user calls a stage in prose.
-pub(crate) fn stage_title(kind: StageKind) -> &'static str {
-    kind.title()
-}
-
 /// Built-in variables and blocks (`gl_Position`, `gl_PerVertex`, `gl_in`).
 pub(crate) fn is_builtin(s: &StageSyntax, g: &Global) -> bool {
     s.original_name(&g.name).starts_with("gl_") || g.block.as_ref().is_some_and(|b| s.original_name(&b.block_name).starts_with("gl_"))

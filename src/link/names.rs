@@ -10,7 +10,7 @@ use std::collections::HashMap;
 use std::ops::Range;
 
 use super::interface::{direction, Dir};
-use super::{stage_title, type_text};
+use super::type_text;
 use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{BlockInfo, Global, Referent, StageSyntax, Storage};
 
@@ -121,7 +121,7 @@ fn own_block_name(s: &StageSyntax, name: &str, sites: &[(Range<usize>, Option<St
 /// `name` is declared in another stage.
 fn other_stage(stages: &[&StageSyntax], si: usize, name: &str, sites: &[(Range<usize>, Option<String>)]) -> Option<Diagnostic> {
     let s = stages[si];
-    let st = stage_title(s.stage);
+    let st = s.stage.title();
     let others = || stages.iter().enumerate().filter(move |(ti, _)| *ti != si).map(|(_, t)| *t);
     // A block's instance or block name in another stage.
     let block = others().find_map(|t| {
@@ -149,7 +149,7 @@ fn other_stage(stages: &[&StageSyntax], si: usize, name: &str, sites: &[(Range<u
         })
     });
     if let Some((t, g, b, m)) = member {
-        let tt = stage_title(t.stage);
+        let tt = t.stage.title();
         let bn = t.original_name(&b.block_name);
         let kind = storage_word(g, t);
         let keyword = if g.storage == Storage::Uniform { "uniform".to_string() } else { decl_keyword(s, t) };
@@ -163,7 +163,7 @@ fn other_stage(stages: &[&StageSyntax], si: usize, name: &str, sites: &[(Range<u
     }
     // A loose global of another stage.
     let (t, g) = others().find_map(|t| t.globals.iter().find(|g| !g.is_block() && t.original_name(&g.name) == name).map(|g| (t, g)))?;
-    let tt = stage_title(t.stage);
+    let tt = t.stage.title();
     let ty = type_text(t, &g.ty);
     let decl = |kw: &str| {
         let base = t.original_name(&g.ty.base);
@@ -216,8 +216,8 @@ impl std::fmt::Display for GlslDims<'_> {
 fn foreign_block(s: &StageSyntax, f: Found, name: &str, sites: &[(Range<usize>, Option<String>)]) -> Diagnostic {
     let (t, g) = (f.stage, f.global);
     let blk = g.block.as_ref().expect("found a block");
-    let st = stage_title(s.stage);
-    let tt = stage_title(t.stage);
+    let st = s.stage.title();
+    let tt = t.stage.title();
     let bn = t.original_name(&blk.block_name);
     let kind = storage_word(g, t);
     let is_instance = blk.instance.as_deref().map(|i| t.original_name(i)) == Some(name);

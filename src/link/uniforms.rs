@@ -7,7 +7,7 @@
 use std::collections::{BTreeSet, HashMap};
 
 use super::blocks::{self, Side};
-use super::{same_type, stage_title, type_text};
+use super::{same_type, type_text};
 use crate::diag::{Code, Diagnostic};
 use crate::front::syntax::{Global, StageSyntax, Storage};
 
@@ -33,7 +33,7 @@ fn loose(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
                 continue;
             }
             let (tf, ts) = (type_text(f, &fg.ty), type_text(s, &g.ty));
-            let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
+            let (ft, st) = (f.stage.title(), s.stage.title());
             out.push(
                 Diagnostic::new(
                     Code::UniformTypeMismatch,
@@ -71,7 +71,7 @@ fn blocks_by_name(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
             if diffs.is_empty() {
                 continue;
             }
-            let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
+            let (ft, st) = (f.stage.title(), s.stage.title());
             let kind = if g.storage == Storage::Buffer { "buffer" } else { "uniform" };
             let mut d = Diagnostic::new(
                 Code::UniformBlockMismatch,
@@ -139,7 +139,7 @@ fn structs(stages: &[&StageSyntax], out: &mut Vec<Diagnostic>) {
             if diffs.is_empty() {
                 continue;
             }
-            let (ft, st) = (stage_title(f.stage), stage_title(s.stage));
+            let (ft, st) = (f.stage.title(), s.stage.title());
             let mut d = Diagnostic::new(
                 Code::UniformStructMismatch,
                 format!("struct `{name}` is used by uniforms but defined differently in the {ft} and {st} stages"),

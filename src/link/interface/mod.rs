@@ -19,7 +19,7 @@
 
 use std::collections::HashSet;
 
-use super::{is_builtin, stage_title};
+use super::is_builtin;
 use crate::diag::Diagnostic;
 use crate::front::syntax::{Global, GlslType, StageSyntax, Storage};
 use crate::stage::StageKind;
@@ -125,8 +125,8 @@ pub fn check_pair(a: &StageSyntax, b: &StageSyntax, out: &mut Vec<Diagnostic>) {
     let mut p = Pair {
         a,
         b,
-        at: stage_title(a.stage),
-        bt: stage_title(b.stage),
+        at: a.stage.title(),
+        bt: b.stage.title(),
         outs: ports(a, Dir::Out),
         ins: ports(b, Dir::In),
         consumed: HashSet::new(),
