@@ -137,7 +137,10 @@ impl Analyzer<'_> {
         let mut known = Vec::new();
         for ind in &inductions {
             let key = (c.depth, ind.local);
-            let (Some(Val::Num(start)), Some(Val::Num(now))) = (entry.locals.get(&key), head.locals.get(&key)) else { continue };
+            let (Some(Val::Num(start)), Some(Val::Num(now))) = (entry.locals.get(&key).map(|v| &**v), head.locals.get(&key).map(|v| &**v))
+            else {
+                continue;
+            };
             let Some(step) = self.value(c, &head, ind.step).num().map(Num::iv) else { continue };
             let step = if ind.subtract { Iv::new(-step.hi, -step.lo) } else { step };
             if start.c.len() != 1 || now.c.len() != 1 || !step.is_finite() || (step.lo < 0.0 && step.hi > 0.0) || step.mag() == 0.0 {
@@ -164,7 +167,7 @@ impl Analyzer<'_> {
             let bound = start.c[0].add(travelled);
             let cut = now.c[0].meet(bound);
             if cut != now.c[0] {
-                head.locals.insert(key, Val::Num(Num::from_comps(vec![cut], 1, now.kind, now.known && start.known)));
+                head.locals.insert(key, std::rc::Rc::new(Val::Num(Num::from_comps(vec![cut], 1, now.kind, now.known && start.known))));
             }
         }
         head

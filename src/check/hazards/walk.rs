@@ -10,6 +10,7 @@
 
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
+use std::rc::Rc;
 
 use naga::{Block, Expression, Function, Handle, LocalVariable, Module, Statement};
 
@@ -54,16 +55,24 @@ pub struct Refined {
     pub gap: f64,
 }
 
+/// The maps a [`State`] holds: keyed by handles and hashes, so a fast hasher.
+pub type Map<K, V> = naga::FastHashMap<K, V>;
+
 /// Everything that flows along the control flow.
+///
+/// Variables hold shared values: a state is copied at every branch and loop round, and
+/// most variables (the fold's arrays of per-vertex structs among them) are not written
+/// between two copies, so a copy shares them and a join of two states skips the values
+/// both still share.
 #[derive(Debug, Clone, PartialEq)]
 pub struct State {
-    pub locals: HashMap<(usize, Handle<LocalVariable>), Val>,
-    pub globals: HashMap<Handle<naga::GlobalVariable>, Val>,
-    pub versions: HashMap<Root, u64>,
+    pub locals: Map<(usize, Handle<LocalVariable>), Rc<Val>>,
+    pub globals: Map<Handle<naga::GlobalVariable>, Rc<Val>>,
+    pub versions: Map<Root, u64>,
     /// The key of the value last stored whole into a variable: loading it back gives the
     /// same key, so `float len = length(v); if (len > 0.0) normalize(v)` is guarded.
-    pub stored: HashMap<Root, u64>,
-    pub refined: HashMap<u64, Refined>,
+    pub stored: Map<Root, u64>,
+    pub refined: Map<u64, Refined>,
     /// False on paths that cannot run (after `break`, `return`, `discard`).
     pub live: bool,
     /// Witness runs: every execution that reaches the function's entry reaches this point
@@ -79,11 +88,11 @@ impl State {
 
     pub fn dead() -> State {
         State {
-            locals: HashMap::new(),
-            globals: HashMap::new(),
-            versions: HashMap::new(),
-            stored: HashMap::new(),
-            refined: HashMap::new(),
+            locals: Map::default(),
+            globals: Map::default(),
+            versions: Map::default(),
+            stored: Map::default(),
+            refined: Map::default(),
             live: false,
             sure: false,
         }
@@ -105,14 +114,8 @@ impl State {
         }
         let mut out = self.clone();
         out.sure = self.sure && o.sure;
-        for (k, v) in &o.locals {
-            let j = out.locals.get(k).map_or_else(|| v.clone(), |a| a.join(v));
-            out.locals.insert(*k, j);
-        }
-        for (k, v) in &o.globals {
-            let j = out.globals.get(k).map_or_else(|| v.clone(), |a| a.join(v));
-            out.globals.insert(*k, j);
-        }
+        join_values(&mut out.locals, &o.locals);
+        join_values(&mut out.globals, &o.globals);
         for (k, v) in &o.versions {
             if out.versions.get(k) != Some(v) {
                 *fresh += 1;
@@ -132,17 +135,31 @@ impl State {
 
     fn widen(&self, old: &State) -> State {
         let mut out = self.clone();
-        for (k, v) in out.locals.iter_mut() {
-            if let Some(o) = old.locals.get(k) {
-                *v = v.widen(o);
-            }
-        }
-        for (k, v) in out.globals.iter_mut() {
-            if let Some(o) = old.globals.get(k) {
-                *v = v.widen(o);
-            }
-        }
+        widen_values(&mut out.locals, &old.locals);
+        widen_values(&mut out.globals, &old.globals);
         out
+    }
+}
+
+/// `o`'s values joined into `out`'s (a value both share is its own join).
+fn join_values<K: Hash + Eq + Copy>(out: &mut Map<K, Rc<Val>>, o: &Map<K, Rc<Val>>) {
+    for (k, v) in o {
+        match out.get_mut(k) {
+            Some(a) if Rc::ptr_eq(a, v) => {}
+            Some(a) => *a = Rc::new(a.join(v)),
+            None => {
+                out.insert(*k, v.clone());
+            }
+        }
+    }
+}
+
+/// `out`'s values widened against `old`'s (a value both share is unchanged).
+fn widen_values<K: Hash + Eq>(out: &mut Map<K, Rc<Val>>, old: &Map<K, Rc<Val>>) {
+    for (k, v) in out.iter_mut() {
+        if let Some(o) = old.get(k).filter(|o| !Rc::ptr_eq(o, v)) {
+            *v = Rc::new(v.widen(o));
+        }
     }
 }
 
@@ -219,7 +236,7 @@ pub struct Analyzer<'a> {
     pub outputs: HashMap<u32, Val>,
     /// Each global's value before the stage writes it, made once: a uniform block of
     /// thousands of members is read member by member, not rebuilt at each read.
-    initials: std::cell::RefCell<HashMap<Handle<naga::GlobalVariable>, std::rc::Rc<Val>>>,
+    initials: std::cell::RefCell<HashMap<Handle<naga::GlobalVariable>, Rc<Val>>>,
     /// Work done (statements walked, state entries joined) and the most allowed
     /// ([`WORK_LIMIT`]): nested loops iterate to a fixpoint round after round and calls are
     /// walked at every call site, so the work can grow exponentially with nesting. Past the
@@ -348,7 +365,7 @@ impl<'a> Analyzer<'a> {
                 Some(init) => self.value(&mut c, &state, init),
                 None => Val::zero(self.module, &self.module.types[local.ty].inner),
             };
-            state.locals.insert((depth, h), v);
+            state.locals.insert((depth, h), Rc::new(v));
         }
         let mut exits = Exits::default();
         let end = self.block(&mut c, &fun.body, state, &mut exits);
@@ -584,9 +601,9 @@ impl<'a> Analyzer<'a> {
     pub fn read(&self, state: &State, place: &Place) -> Val {
         let initial;
         let base = match &place.root {
-            Root::Local(d, h) => state.locals.get(&(*d, *h)),
+            Root::Local(d, h) => state.locals.get(&(*d, *h)).map(|v| &**v),
             Root::Global(g) => match state.globals.get(g) {
-                Some(v) => Some(v),
+                Some(v) => Some(&**v),
                 None => {
                     initial = self.global_initial(*g);
                     Some(&*initial)
@@ -607,10 +624,10 @@ impl<'a> Analyzer<'a> {
     pub fn write(&mut self, state: &mut State, place: &Place, v: Val) {
         let current = match &place.root {
             Root::Local(d, h) => state.locals.get(&(*d, *h)).cloned(),
-            Root::Global(g) => Some(state.globals.get(g).cloned().unwrap_or_else(|| (*self.global_initial(*g)).clone())),
+            Root::Global(g) => Some(state.globals.get(g).cloned().unwrap_or_else(|| self.global_initial(*g))),
         };
         let Some(current) = current else { return };
-        let updated = super::eval::update(&current, &place.path, v);
+        let updated = Rc::new(super::eval::update(&current, &place.path, v));
         match &place.root {
             Root::Local(d, h) => {
                 state.locals.insert((*d, *h), updated);
@@ -639,11 +656,11 @@ impl<'a> Analyzer<'a> {
     }
 
     /// The value of global `g` before the stage writes it (made once per analysis).
-    fn global_initial(&self, g: Handle<naga::GlobalVariable>) -> std::rc::Rc<Val> {
+    fn global_initial(&self, g: Handle<naga::GlobalVariable>) -> Rc<Val> {
         if let Some(v) = self.initials.borrow().get(&g) {
             return v.clone();
         }
-        let v = std::rc::Rc::new(self.make_global_initial(g));
+        let v = Rc::new(self.make_global_initial(g));
         self.initials.borrow_mut().insert(g, v.clone());
         v
     }
@@ -672,5 +689,8 @@ impl<'a> Analyzer<'a> {
 
 /// States equal in values (versions and refinements aside): the fixpoint test.
 fn same_values(a: &State, b: &State) -> bool {
-    a.live == b.live && a.locals == b.locals && a.globals == b.globals
+    fn same<K: Hash + Eq>(a: &Map<K, Rc<Val>>, b: &Map<K, Rc<Val>>) -> bool {
+        a.len() == b.len() && a.iter().all(|(k, v)| b.get(k).is_some_and(|w| Rc::ptr_eq(v, w) || v == w))
+    }
+    a.live == b.live && same(&a.locals, &b.locals) && same(&a.globals, &b.globals)
 }
