@@ -19,6 +19,9 @@ pub fn subdirs(dir: &str) -> Vec<PathBuf> {
     dirs
 }
 
+/// The legal programs of `tests/rewrite/` (every suite that walks them expects this many).
+pub const REWRITE_FIXTURES: usize = 60;
+
 /// The fixtures under `dir` (sorted subdirectories), narrowed to the names containing one
 /// of the comma-separated words of `EFFECTC_FIXTURE` when it is set (like naga's
 /// `NAGA_SNAPSHOT`): `EFFECTC_FIXTURE=33-pass cargo test --locked fail_fixtures` runs one.

@@ -185,7 +185,7 @@ fn every_rewrite_program_renders_as_bare_stage_files_with_reported_guesses() {
     }
     let mut failures = Vec::new();
     let mut guessed = 0;
-    for program in crate::common::fixtures("tests/rewrite", 59) {
+    for program in crate::common::fixtures("tests/rewrite", crate::common::REWRITE_FIXTURES) {
         let name = crate::common::name_of(&program);
         let dir = scratch("render-bare", &name);
         let out = effectc(&["render", program.to_str().unwrap(), "--size", "32x32", "--out", dir.to_str().unwrap()]);

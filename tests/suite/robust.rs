@@ -56,7 +56,7 @@ struct Program {
 }
 
 fn programs() -> Vec<Program> {
-    let mut dirs = common::fixtures("tests/rewrite", 59);
+    let mut dirs = common::fixtures("tests/rewrite", common::REWRITE_FIXTURES);
     dirs.extend(common::fixtures("effects", 21));
     dirs.into_iter()
         .map(|d| Program {

@@ -295,7 +295,7 @@ fn every_rewrite_program_matches_the_gl_driver() {
         return;
     }
     let mut wrong = Vec::new();
-    for dir in crate::common::fixtures("tests/rewrite", 59) {
+    for dir in crate::common::fixtures("tests/rewrite", crate::common::REWRITE_FIXTURES) {
         let name = name_of(&dir);
         let out = effectc(&[
             "verify",

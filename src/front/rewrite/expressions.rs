@@ -24,8 +24,10 @@ impl Ctx<'_> {
                 .unwrap_or(0);
             self.size_empty_brackets(g.name_span.end, largest + 1);
         }
-        // Block members declared `name[]`: the size GL's linker gives them (the plan's).
-        for g in &s.globals {
+        // Block members declared `name[]`: the size GL's linker gives them (the plan's). A
+        // redeclared built-in block (`out gl_PerVertex { float gl_ClipDistance[]; }`) is
+        // deleted whole ([`varying_declaration`](Self::varying_declaration)).
+        for g in s.globals.iter().filter(|g| !g.name.starts_with("gl_")) {
             let Some(b) = &g.block else { continue };
             for m in &b.members {
                 let Some((_, _, n)) = self.plan.sized_members.iter().find(|(bn, mn, _)| *bn == b.block_name && *mn == m.name) else {

@@ -244,7 +244,13 @@ fn line_end(text: &str, at: usize) -> usize {
 }
 
 /// The length of a built-in output array the stage redeclares (`out float
-/// gl_ClipDistance[3];`).
+/// gl_ClipDistance[3];`, or as a member of `out gl_PerVertex { … };`).
 pub(crate) fn redeclared_length(s: &crate::front::syntax::StageSyntax, builtin: &str) -> Option<u32> {
-    s.globals.iter().find(|g| g.name == builtin && g.storage == Storage::Out).and_then(|g| g.ty.dims.first().copied().flatten())
+    let outputs = s.globals.iter().filter(|g| g.storage == Storage::Out);
+    let alone = outputs.clone().find(|g| g.name == builtin).map(|g| &g.ty);
+    let member = || {
+        let blocks = outputs.filter(|g| g.name.starts_with("gl_")).filter_map(|g| g.block.as_ref());
+        blocks.flat_map(|b| &b.members).find(|m| m.name == builtin).map(|m| &m.ty)
+    };
+    alone.or_else(member).and_then(|ty| ty.dims.first().copied().flatten())
 }

@@ -294,13 +294,18 @@ impl Ctx<'_> {
 }
 
 /// Whether `u` names a built-in variable: one declared nowhere, or one the stage redeclares
-/// (`out float gl_ClipDistance[2];`: the rewrite drops the redeclaration).
+/// (`out float gl_ClipDistance[2];`, or a member of `out gl_PerVertex { … };` redeclared
+/// without an instance name: the rewrite drops the redeclaration).
 pub fn names_builtin(s: &StageSyntax, u: &crate::front::syntax::Use) -> bool {
     match u.target {
         Referent::Unresolved => true,
         Referent::Global(i) => {
             let g = &s.globals[i];
-            g.name.starts_with("gl_") && g.block.is_none() && matches!(g.storage, Storage::In | Storage::Out)
+            let declared = match &g.block {
+                None => true,
+                Some(b) => b.instance.is_none() && u.name.starts_with("gl_"),
+            };
+            g.name.starts_with("gl_") && declared && matches!(g.storage, Storage::In | Storage::Out)
         }
         Referent::Param(..) => false,
     }
