@@ -35,6 +35,7 @@ use crate::front::spirv_subpass_inputs::subpass_inputs_as_textures;
 use crate::front::spirv_texel_buffers::texel_buffers_as_storage;
 use crate::front::spirv_wide_integers::wide_integers_as_pairs;
 use crate::front::uniform_struct_padding;
+use crate::front::version::Profile;
 use crate::stage::StageKind;
 use respan::respan_module;
 
@@ -52,6 +53,9 @@ pub struct SpirvStage {
 pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect, plan: &Plan) -> Result<Vec<SpirvStage>, String> {
     let texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
+    if dialect == Dialect::OpenGl {
+        spirv_of_gl_as_written(&texts)?;
+    }
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
     let binaries = before_split(compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?);
     let mut modules = Vec::new();
@@ -68,6 +72,21 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
         out.push(SpirvStage { kind: *kind, validated: validate(module, immediates, *kind)?, text: files.text(*file).to_string() });
     }
     Ok(out)
+}
+
+/// Whether glslang makes SPIR-V of OpenGL GLSL stages (`texts`) as written: not of desktop
+/// GLSL below 1.40, ES GLSL below 3.10, nor the compatibility profile (a compile that is sure to fail would still
+/// build glslang's tables of built-ins for that version, under a lock every compile waits on).
+fn spirv_of_gl_as_written(texts: &[String]) -> Result<(), String> {
+    for text in texts {
+        match crate::front::version::parse_version(text) {
+            Ok(v) if matches!((v.profile, v.number), (Profile::Compatibility, _) | (Profile::Core, ..140) | (Profile::Es, ..310)) => {
+                return Err("glslang makes no SPIR-V of desktop GLSL below 1.40, ES GLSL below 3.10, or the compatibility profile".into())
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 /// Every stage of a program through SPIR-V from effectc's 4.50 rewrite of it (`stages`:
