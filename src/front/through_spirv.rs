@@ -51,11 +51,12 @@ pub struct SpirvStage {
 /// Every stage of the program (`ordered`, pipeline order) through SPIR-V, or why not (the
 /// first thing that failed).
 pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect, plan: &Plan) -> Result<Vec<SpirvStage>, String> {
-    let texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
-    let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
+    let mut texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     if dialect == Dialect::OpenGl {
         spirv_of_gl_as_written(&texts)?;
+        texts = texts.into_iter().map(atomic_counters_as_buffers).collect();
     }
+    let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
     let binaries = before_split(compiler::spirv(&sources, dialect, &setup).map_err(no_spirv)?);
     let mut modules = Vec::new();
@@ -135,18 +136,37 @@ pub fn compile_rewritten(
 fn as_vulkan_glsl(text: &str, extensions: &str) -> String {
     let quiet = crate::front::lexical::quiet_pragmas(text);
     let text = crate::front::lexical::blank_line_directives(&quiet);
-    let Some(version) = text.lines().position(|l| l.trim_start().starts_with("#version")) else { return text.into_owned() };
-    let mut out = String::with_capacity(text.len() + 64);
+    after_version(
+        &text,
+        &format!("#extension GL_EXT_spirv_intrinsics : enable\n#extension GL_EXT_samplerless_texture_functions : enable\n{extensions}"),
+    )
+}
+
+/// `text` with `directives` (whole lines) after its `#version` line, and a `#line` after
+/// them: every later line keeps its number, which the module's spans are placed by.
+fn after_version(text: &str, directives: &str) -> String {
+    let Some(version) = text.lines().position(|l| l.trim_start().starts_with("#version")) else { return text.to_string() };
+    let mut out = String::with_capacity(text.len() + directives.len() + 16);
     for (i, line) in text.split_inclusive('\n').enumerate() {
         out.push_str(line);
         if i == version {
-            out.push_str(&format!(
-                "#extension GL_EXT_spirv_intrinsics : enable\n#extension GL_EXT_samplerless_texture_functions : enable\n{extensions}#line {}\n",
-                version + 2
-            ));
+            out.push_str(&format!("{directives}#line {}\n", version + 2));
         }
     }
     out
+}
+
+/// An OpenGL GLSL stage below 4.30 with atomic counters, with SSBOs enabled: glslang's
+/// relaxed Vulkan rules turn the counters into a storage buffer and `atomicCounterIncrement`
+/// into `atomicAdd` on it, which it then refuses without `GL_ARB_shader_storage_buffer_object`
+/// (`glslangValidator -V -R` stops there too, on GLSL 4.20's own atomic counters).
+fn atomic_counters_as_buffers(text: String) -> String {
+    let old = crate::front::version::parse_version(&text).is_ok_and(|v| v.number < 430);
+    let code = crate::front::version::blank_comments(&text);
+    if !old || !String::from_utf8_lossy(&code).contains("atomic_uint") {
+        return text;
+    }
+    after_version(&text, "#extension GL_ARB_shader_storage_buffer_object : enable\n")
 }
 
 /// An `#extension NAME : enable` line for every extension `text` names in a directive

@@ -16,7 +16,7 @@ fn legal_programs_naga_refuses_go_through_spirv() {
     settings.set_snapshot_path("../../snapshots/through_spirv");
     settings.set_prepend_module_to_snapshot(false);
     settings.set_omit_expression(true);
-    for dir in common::fixtures("tests/through_spirv", 6) {
+    for dir in common::fixtures("tests/through_spirv", 7) {
         let name = common::name_of(&dir);
         assert_ne!(common::glslang_links(&dir), Some(false), "{name}: glslangValidator does not link it, so it is no legal fixture");
         let (outcome, checked) = common::check(&dir);
@@ -94,4 +94,19 @@ fn a_struct_after_a_vec3_in_a_uniform_block_is_padded_to_std140() {
     assert!(wgsl.contains("effectc_pad0_: f32,\n    at: Att"), "{wgsl}");
     // The read of `at.e` through the block still reads member 3 of the padded struct.
     assert!(wgsl.contains(".at.e"), "{wgsl}");
+}
+
+/// GL 4.20's atomic counters go through SPIR-V once effectc enables storage buffers on a
+/// line it adds after `#version` (glslang's relaxed rules need them for the counter's
+/// buffer); the hazard below that line is still placed on the user's line.
+#[test]
+fn atomic_counters_below_430_go_through_spirv_with_lines_kept() {
+    let (outcome, checked) = common::check(std::path::Path::new("tests/through_spirv/07-v420-atomic-counter"));
+    let program = &checked[0].units.first().expect("a checked program").program;
+    let fragment = program.stage(effectc::stage::StageKind::Fragment).expect("a fragment stage");
+    assert!(fragment.through_spirv && fragment.naga.is_some(), "{}", common::render(&outcome));
+    let warning = outcome.diagnostics.iter().find(|d| d.code == diag::Code::HazardLog).expect("W0713");
+    let (file, span) = (warning.file.expect("a file"), warning.span.clone().expect("a span"));
+    assert!(outcome.files.path(file).ends_with("order.frag"));
+    assert_eq!(&outcome.files.text(file)[span], "float ev = log(exposure);");
 }
