@@ -14,7 +14,7 @@
 # <= mesa, big <= 1.5 x glslangValidator. Each side runs RUNS times, alternating; medians.
 #
 # Programs: the first N program directories of CORPUS_DIR (as scripts/corpus/gather_*.py
-# write them) that both references link (GLSLANG and MESA files from
+# write them) with one file per stage that both references link (GLSLANG and MESA files from
 # scripts/corpus_verdicts.sh); each is copied as p<i>/prog.<stage> so a directory walk
 # forms exactly that program.
 #
@@ -34,6 +34,9 @@ n=0
 for d in "$corpus"/*/; do
     [ "$n" -lt "$want" ] || break
     [ "$(head -c 2 "$d/GLSLANG" 2>/dev/null)" = ok ] && [ "$(head -c 2 "$d/MESA" 2>/dev/null)" = ok ] || continue
+    # One file per stage (a stage of several shader objects would lose all but one of them).
+    exts=$(for f in "$d"/*.vert "$d"/*.frag "$d"/*.geom "$d"/*.tesc "$d"/*.tese "$d"/*.comp; do [ -e "$f" ] && echo "${f##*.}"; done)
+    [ "$(echo "$exts" | sort | uniq -d)" = "" ] || continue
     n=$((n + 1))
     mkdir -p "$work/progs/p$n"
     for f in "$d"/*; do
