@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Acceptance on a corpus of real-world programs, side by side with glslangValidator.
-# A corpus is a directory of program directories, each holding .vert/.frag(/.geom) files.
+# A corpus is a directory of program directories, each holding its stage files (.vert .tesc
+# .tese .geom .frag .comp).
 # For each program: does glslangValidator link it (-l), does effectc check it without
 # errors? Prints the programs where the two disagree and the totals.
 #
@@ -22,7 +23,7 @@ bin=target/release/effectc
 both=0; only_glslang=0; only_effectc=0; neither=0
 declare -A src_total src_linked src_ok
 for d in "$corpus"/*/; do
-    files=$(ls "$d" | grep -E '\.(vert|frag|geom)$' | sed "s|^|$d|")
+    files=$(ls "$d" | grep -E '\.(vert|tesc|tese|geom|frag|comp)$' | sed "s|^|$d|")
     [ -n "$files" ] || continue
     if [ "$env" = vulkan ]; then
         (cd "$spv" && glslangValidator -V -l $(for f in $files; do realpath "$f"; done) >/dev/null 2>&1); g=$?
