@@ -156,12 +156,12 @@ fn after_version(text: &str, directives: &str) -> String {
     out
 }
 
-/// An OpenGL GLSL stage below 4.30 with atomic counters, with SSBOs enabled: glslang's
+/// A desktop GLSL stage below 4.30 with atomic counters, with SSBOs enabled: glslang's
 /// relaxed Vulkan rules turn the counters into a storage buffer and `atomicCounterIncrement`
 /// into `atomicAdd` on it, which it then refuses without `GL_ARB_shader_storage_buffer_object`
 /// (`glslangValidator -V -R` stops there too, on GLSL 4.20's own atomic counters).
 fn atomic_counters_as_buffers(text: String) -> String {
-    let old = crate::front::version::parse_version(&text).is_ok_and(|v| v.number < 430);
+    let old = crate::front::version::parse_version(&text).is_ok_and(|v| !v.is_es() && v.number < 430);
     let code = crate::front::version::blank_comments(&text);
     if !old || !String::from_utf8_lossy(&code).contains("atomic_uint") {
         return text;
