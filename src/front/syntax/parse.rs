@@ -69,10 +69,10 @@ pub fn analyse(file: FileId, original: &str, stage: StageKind, env: TargetEnv) -
             text.replace_range(span, "400");
         }
     }
-    if opts.target_vulkan && (version.number >= 400 || version.is_es() && version.number >= 310) {
-        // glsl-lang enables Vulkan's types (`subpassInput`) from `#version 460` only;
-        // Vulkan GLSL has them from 4.50 and ES 3.10 on. Same-length digits (and the `es`
-        // profile blanked: glsl-lang reads the rest the same) keep every offset.
+    if (opts.target_vulkan && version.number >= 400) || (version.is_es() && version.number >= 310) {
+        // glsl-lang has Vulkan's types (`subpassInput`) from `#version 460` only (Vulkan GLSL
+        // from 4.50 and ES 3.10), and gates types by the number alone (ES 3.10's `atomic_uint`,
+        // `image2D`). Same-length digits and a blanked `es` keep every offset.
         if let Some(span) = version.number_span.clone() {
             text.replace_range(span, "460");
         }
@@ -379,6 +379,20 @@ mod tests {
         assert_eq!(s.version.number, 150, "the stage keeps its own version");
         let without = "#version 150\nuniform dvec4 arg0;\nvoid main() {}\n";
         assert!(analyse(FileId(0), without, StageKind::Vertex, TargetEnv::Auto).is_err(), "no extension, no doubles");
+    }
+
+    #[test]
+    fn es_310_types_are_read_in_opengl_es() {
+        // ES 3.10 has atomic counters and images (desktop GLSL's from 4.20) and memory
+        // qualifiers; glsl-lang gates them by the version number alone. (The desktop
+        // keywords it then knows, `patch`, `sample`, `subroutine`, `precise`, ES reserves.)
+        let src = "#version 310 es\nprecision highp float;\nlayout(binding = 0, offset = 0) uniform atomic_uint shaded;\n\
+                   layout(binding = 1, rgba8) uniform readonly highp image2D picture;\nlayout(location = 0) out vec4 c;\n\
+                   void main() { uint order = atomicCounterIncrement(shaded); c = imageLoad(picture, ivec2(0)) * float(order); }\n";
+        let s = analyse(FileId(0), src, StageKind::Fragment, TargetEnv::OpenGl).map_err(|d| d[0].message.clone()).expect("parses");
+        let types: Vec<&str> = s.globals.iter().map(|g| g.ty.base.as_str()).collect();
+        assert_eq!(types, ["atomic_uint", "image2D", "vec4"]);
+        assert!(s.version.is_es() && s.version.number == 310, "the stage keeps its own version");
     }
 
     #[test]
