@@ -53,8 +53,7 @@ pub struct SpirvStage {
 pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect, plan: &Plan) -> Result<Vec<SpirvStage>, String> {
     let mut texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     if dialect == Dialect::OpenGl {
-        spirv_of_gl_as_written(&texts)?;
-        texts = texts.into_iter().map(atomic_counters_as_buffers).collect();
+        texts = texts.into_iter().map(gl_as_written_for_spirv).collect::<Result<_, _>>()?;
     }
     let sources: Vec<(&str, StageKind)> = texts.iter().zip(ordered).map(|(t, (_, k))| (t.as_str(), *k)).collect();
     let setup = SpirvSetup { uniform_block: UNIFORM_BLOCK, set: 0, binding: 0 };
@@ -73,21 +72,6 @@ pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect,
         out.push(SpirvStage { kind: *kind, validated: validate(module, immediates, *kind)?, text: files.text(*file).to_string() });
     }
     Ok(out)
-}
-
-/// Whether glslang makes SPIR-V of OpenGL GLSL stages (`texts`) as written: not of desktop
-/// GLSL below 1.40, ES GLSL below 3.10, nor the compatibility profile (a compile that is sure to fail would still
-/// build glslang's tables of built-ins for that version, under a lock every compile waits on).
-fn spirv_of_gl_as_written(texts: &[String]) -> Result<(), String> {
-    for text in texts {
-        match crate::front::version::parse_version(text) {
-            Ok(v) if matches!((v.profile, v.number), (Profile::Compatibility, _) | (Profile::Core, ..140) | (Profile::Es, ..310)) => {
-                return Err("glslang makes no SPIR-V of desktop GLSL below 1.40, ES GLSL below 3.10, or the compatibility profile".into())
-            }
-            _ => {}
-        }
-    }
-    Ok(())
 }
 
 /// Every stage of a program through SPIR-V from effectc's 4.50 rewrite of it (`stages`:
@@ -156,17 +140,25 @@ fn after_version(text: &str, directives: &str) -> String {
     out
 }
 
-/// A desktop GLSL stage below 4.30 with atomic counters, with SSBOs enabled: glslang's
-/// relaxed Vulkan rules turn the counters into a storage buffer and `atomicCounterIncrement`
-/// into `atomicAdd` on it, which it then refuses without `GL_ARB_shader_storage_buffer_object`
-/// (`glslangValidator -V -R` stops there too, on GLSL 4.20's own atomic counters).
-fn atomic_counters_as_buffers(text: String) -> String {
-    let old = crate::front::version::parse_version(&text).is_ok_and(|v| !v.is_es() && v.number < 430);
-    let code = crate::front::version::blank_comments(&text);
-    if !old || !String::from_utf8_lossy(&code).contains("atomic_uint") {
-        return text;
+/// An OpenGL GLSL stage as glslang compiles it to SPIR-V as written, under relaxed Vulkan
+/// rules. Err: desktop GLSL below 1.40, ES GLSL below 3.10 and the compatibility profile,
+/// of which glslang makes no SPIR-V (a compile sure to fail would still build glslang's
+/// tables of built-ins for that version, under a lock every compile waits on). Desktop GLSL
+/// below 4.30 with atomic counters gets storage buffers enabled: the relaxed rules turn the
+/// counters into a storage buffer and `atomicCounterIncrement` into `atomicAdd` on it, which
+/// glslang then refuses without `GL_ARB_shader_storage_buffer_object` (`glslangValidator -V
+/// -R` stops there too, on GLSL 4.20's own atomic counters).
+fn gl_as_written_for_spirv(text: String) -> Result<String, String> {
+    let Ok(v) = crate::front::version::parse_version(&text) else { return Ok(text) };
+    if matches!((v.profile, v.number), (Profile::Compatibility, _) | (Profile::Core, ..140) | (Profile::Es, ..310)) {
+        return Err("glslang makes no SPIR-V of desktop GLSL below 1.40, ES GLSL below 3.10, or the compatibility profile".into());
     }
-    after_version(&text, "#extension GL_ARB_shader_storage_buffer_object : enable\n")
+    let counters =
+        !v.is_es() && v.number < 430 && String::from_utf8_lossy(&crate::front::version::blank_comments(&text)).contains("atomic_uint");
+    Ok(match counters {
+        true => after_version(&text, "#extension GL_ARB_shader_storage_buffer_object : enable\n"),
+        false => text,
+    })
 }
 
 /// An `#extension NAME : enable` line for every extension `text` names in a directive
