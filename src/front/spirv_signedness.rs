@@ -18,6 +18,11 @@
 //! `OpSMod` through floats fails on vectors (`ivec3 % 256`) and lowers scalars through 64-bit
 //! integers, which WebGPU lacks; `OpSRem` is WGSL's `%`.
 //!
+//! An atomic's value operand of the other signedness than its result (glslang writes GLSL ES
+//! 3.10's `atomicCounterIncrement` as `OpAtomicIAdd %uint %p .. %int_1`, which spirv-val
+//! refuses too: "expected Value to be of type Result Type") is bitcast to the result's type
+//! first; naga's validator refused the atomic.
+//!
 //! The lengths change, so this runs before [`Lines`] is taken.
 //!
 //! [`Lines`]: crate::front::spirv_binary::Lines
@@ -40,6 +45,20 @@ const OP_S_MOD: u16 = Op::SMod as u16;
 const OP_S_REM: u16 = Op::SRem as u16;
 const OP_TYPE_INT: u16 = Op::TypeInt as u16;
 const OP_TYPE_VECTOR: u16 = Op::TypeVector as u16;
+const OP_ATOMIC_COMPARE_EXCHANGE: u16 = Op::AtomicCompareExchange as u16;
+/// Atomics whose one value operand follows pointer, scope and semantics.
+const ATOMICS_WITH_VALUE: [Op; 10] = [
+    Op::AtomicExchange,
+    Op::AtomicIAdd,
+    Op::AtomicISub,
+    Op::AtomicSMin,
+    Op::AtomicUMin,
+    Op::AtomicSMax,
+    Op::AtomicUMax,
+    Op::AtomicAnd,
+    Op::AtomicOr,
+    Op::AtomicXor,
+];
 /// The GLSL.std.450 instructions that take an integer and return one of either signedness.
 const BIT_QUERIES: [u32; 3] = [GLOp::FindILsb as u32, GLOp::FindSMsb as u32, GLOp::FindUMsb as u32];
 
@@ -49,6 +68,8 @@ enum Fix {
     InOperandType(u32),
     /// An unsigned negation written as a subtraction from zero.
     UnsignedNegate,
+    /// An atomic whose value operands at these word offsets are bitcast to its result type.
+    AtomicValues(Vec<usize>),
 }
 
 /// `words` with the instructions of the module doc rewritten.
@@ -86,6 +107,24 @@ pub(crate) fn signedness_naga_reads(mut words: Vec<u32>) -> Vec<u32> {
         type_of.insert(words[at + 2], words[at + 1]);
         if op == OP_S_NEGATE && count == 4 && shapes.get(&words[at + 1]).is_some_and(|(_, signed)| !signed) {
             fixes.push((at, Fix::UnsignedNegate));
+            continue;
+        }
+        let values: &[usize] = match op {
+            OP_ATOMIC_COMPARE_EXCHANGE if count == 9 => &[7, 8],
+            _ if count == 7 && ATOMICS_WITH_VALUE.iter().any(|a| *a as u16 == op) => &[6],
+            _ => &[],
+        };
+        let mistyped: Vec<usize> = values
+            .iter()
+            .copied()
+            .filter(|v| {
+                let value_type = type_of.get(&words[at + v]).copied();
+                let shape = |t: u32| shapes.get(&t).map(|(shape, _)| *shape);
+                value_type.is_some_and(|t| t != words[at + 1] && shape(t).is_some() && shape(t) == shape(words[at + 1]))
+            })
+            .collect();
+        if !mistyped.is_empty() {
+            fixes.push((at, Fix::AtomicValues(mistyped)));
             continue;
         }
         let operand = match op {
@@ -131,6 +170,15 @@ pub(crate) fn signedness_naga_reads(mut words: Vec<u32>) -> Vec<u32> {
                 let (x, zero) = (instruction[3], fresh());
                 out.extend_from_slice(&[(5 << 16) | u32::from(OP_BITWISE_XOR), result_type, zero, x, x]);
                 out.extend_from_slice(&[(5 << 16) | u32::from(OP_I_SUB), result_type, result, zero, x]);
+            }
+            Fix::AtomicValues(offsets) => {
+                let mut atomic = instruction.to_vec();
+                for offset in offsets {
+                    let cast = fresh();
+                    out.extend_from_slice(&[(4 << 16) | u32::from(OP_BITCAST), result_type, cast, instruction[offset]]);
+                    atomic[offset] = cast;
+                }
+                out.extend_from_slice(&atomic);
             }
         }
     }
@@ -181,6 +229,35 @@ mod tests {
                 (OP_I_SUB, vec![2, 8, 22, 4]),
                 (OP_S_NEGATE, vec![3, 9, 5]),
                 (OP_S_REM, vec![3, 10, 9, 9]),
+            ]
+        );
+    }
+
+    #[test]
+    fn an_atomics_value_of_the_other_signedness_is_bitcast_to_its_result_type() {
+        #[rustfmt::skip]
+        let words = vec![
+            0x0723_0203, 0x0001_0000, 0, 20, 0,
+            (4 << 16) | 21, 2, 32, 0,               // %2 = OpTypeInt 32 0
+            (4 << 16) | 21, 3, 32, 1,               // %3 = OpTypeInt 32 1
+            (4 << 16) | 43, 2, 4, 1,                // %4 = OpConstant %2 1
+            (4 << 16) | 43, 3, 5, 1,                // %5 = OpConstant %3 1
+            (7 << 16) | 234, 2, 6, 9, 4, 4, 5,      // %6 = OpAtomicIAdd %2 %9 %4 %4 %5 (signed value)
+            (7 << 16) | 234, 2, 7, 9, 4, 4, 4,      // %7 = OpAtomicIAdd %2 %9 %4 %4 %4 (types agree)
+            (9 << 16) | 230, 2, 8, 9, 4, 4, 4, 5, 5, // %8 = OpAtomicCompareExchange, both signed
+        ];
+        let out = signedness_naga_reads(words);
+        assert_eq!(out[3], 23, "three fresh ids");
+        let ops: Vec<(u16, Vec<u32>)> = instructions(&out).skip(4).map(|(at, op, n)| (op, out[at + 1..at + n].to_vec())).collect();
+        assert_eq!(
+            ops,
+            [
+                (OP_BITCAST, vec![2, 20, 5]),
+                (Op::AtomicIAdd as u16, vec![2, 6, 9, 4, 4, 20]),
+                (Op::AtomicIAdd as u16, vec![2, 7, 9, 4, 4, 4]),
+                (OP_BITCAST, vec![2, 21, 5]),
+                (OP_BITCAST, vec![2, 22, 5]),
+                (Op::AtomicCompareExchange as u16, vec![2, 8, 9, 4, 4, 4, 21, 22]),
             ]
         );
     }
