@@ -28,6 +28,7 @@ mod msl;
 pub mod prune;
 pub mod reflect;
 mod spirv;
+mod uniform_loads;
 pub mod units;
 mod varying_packing;
 mod wgsl;

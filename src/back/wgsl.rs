@@ -5,10 +5,13 @@
 //! are undefined, not an error); WGSL rejects that unless told otherwise. When the module
 //! takes implicit derivatives, the output starts with `diagnostic(off, derivative_uniformity);`
 //! so it keeps GLSL's meaning and passes every WGSL compiler (tint enforces uniformity).
+//! Loads from workgroup memory right after a barrier are written `workgroupUniformLoad`
+//! ([`uniform_loads`]), so a barrier behind a branch on them passes that analysis too.
 
 use naga::valid::ModuleInfo;
 use naga::Module;
 
+use crate::back::uniform_loads;
 use crate::front::plan::UNIFORM_BLOCK;
 
 /// Writes the module as WGSL and proves the text is valid WGSL.
@@ -20,6 +23,12 @@ pub fn write(module: &Module, info: &ModuleInfo) -> Result<String, String> {
              and WGSL packs them (a `vec4` array, read as `.x` or `.xy`, has the same layout)"
         ));
     }
+    let uniform = uniform_loads::after_barriers(module).and_then(|m| {
+        // The original validated; the rewrite adds no capability need.
+        let caps = naga::valid::Capabilities::all();
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps).validate(&m).ok().map(|i| (m, i))
+    });
+    let (module, info) = uniform.as_ref().map_or((module, info), |(m, i)| (m, i));
     let mut text = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
         .map_err(|e| format!("naga's WGSL writer: {e}"))?;
     text = exact_largest_f32(text);

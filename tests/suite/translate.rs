@@ -368,3 +368,35 @@ fn spec_constant_arrays_and_texel_buffers_translate_through_spirv() {
     assert!(!wgsl.contains("texture"), "texel buffers are storage buffers: {wgsl}");
     assert!(wgsl.contains("@group(0) @binding(1) \nvar<storage, read_write> target"), "the binding written: {wgsl}");
 }
+
+/// A decision shared through workgroup memory (one invocation writes a `shared` flag or ORs
+/// bits into a `shared` atomic, `barrier()`, all branch on it, a later `barrier()` behind
+/// the branch) is written with `workgroupUniformLoad`, WGSL's uniform read, so tint's
+/// uniformity analysis takes the later barrier; a load through an index computed at run
+/// time stays a plain read (WGSL's uniform load wants a uniform pointer).
+#[test]
+fn workgroup_decisions_after_a_barrier_are_uniform_loads() {
+    let (_, wgsl) = translate_vulkan_stage(
+        "translate-uniform-loads",
+        "last.comp",
+        "vulkan",
+        "#version 450\nlayout(local_size_x = 64) in;\n\
+         layout(std430, set = 0, binding = 0) buffer Counter { uint done; uint result[]; };\n\
+         shared bool is_last;\nshared uint votes;\nshared uint scratch[64];\n\
+         void main() {\n\
+           uint i = gl_LocalInvocationIndex;\n\
+           scratch[i] = i;\n\
+           if (i == 0u) { votes = 0u; is_last = atomicAdd(done, 1u) == 63u; }\n\
+           barrier();\n\
+           if (!is_last) return;\n\
+           atomicOr(votes, scratch[63u - i] & 1u);\n\
+           barrier();\n\
+           if (votes == 0u) return;\n\
+           barrier();\n\
+           result[i] = scratch[(i + 1u) % 64u];\n\
+         }\n",
+    );
+    assert!(wgsl.contains("workgroupUniformLoad((&is_last))"), "{wgsl}");
+    assert!(wgsl.contains("workgroupUniformLoad((&votes))"), "{wgsl}");
+    assert!(!wgsl.contains("workgroupUniformLoad((&scratch"), "a load at a run-time index stays plain:\n{wgsl}");
+}
