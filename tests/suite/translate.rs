@@ -400,3 +400,24 @@ fn workgroup_decisions_after_a_barrier_are_uniform_loads() {
     assert!(wgsl.contains("workgroupUniformLoad((&votes))"), "{wgsl}");
     assert!(!wgsl.contains("workgroupUniformLoad((&scratch"), "a load at a run-time index stays plain:\n{wgsl}");
 }
+
+/// `outerProduct` on the route through SPIR-V (taken here for the subgroup operation) is
+/// built column by column: naga's WGSL, MSL and HLSL writers cannot write the `Outer` it
+/// reads from `OpOuterProduct`.
+#[test]
+fn outer_products_through_spirv_translate() {
+    let (stdout, wgsl) = translate_vulkan_stage(
+        "translate-outer-product",
+        "outer.comp",
+        "vulkan1.1",
+        "#version 450\n#extension GL_KHR_shader_subgroup_arithmetic : require\nlayout(local_size_x = 8) in;\n\
+         layout(std430, set = 0, binding = 0) buffer Out { mat3x2 m[]; };\n\
+         void main() {\n\
+           vec3 r = subgroupAdd(vec3(gl_GlobalInvocationID));\n\
+           m[gl_GlobalInvocationID.x] = outerProduct(vec2(1.0, 2.0), r);\n\
+         }\n",
+    );
+    assert!(stdout.contains(Code::SubgroupOfOne.as_str()), "{stdout}");
+    assert!(!wgsl.contains("outerProduct"), "{wgsl}");
+    assert!(wgsl.contains("mat3x2<f32>("), "{wgsl}");
+}
