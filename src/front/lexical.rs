@@ -2,8 +2,9 @@
 //!
 //! Legal GLSL that glsl-lang's grammar lacks is replaced, byte for byte, by text it takes,
 //! so every span stays the user's:
-//! - hex and octal literals above `INT_MAX` without a `u` suffix (`0xFFFFFFFF`, an `int`
-//!   with that bit pattern): zeroed for glsl-lang, put back for naga, which reads them;
+//! - hex, octal and decimal literals above `INT_MAX` without a `u` suffix (`0xFFFFFFFF`,
+//!   `2654435761`: an `int` with that bit pattern): zeroed for glsl-lang, put back for naga,
+//!   which reads them (a decimal one as the same bits in hex, same length);
 //! - the unsigned texture types (`utexture2D`; glsl-lang's grammar lacks them): the signed
 //!   ones for glsl-lang, put back for naga;
 //! - `debugPrintfEXT("…", …)` calls (GL_EXT_debug_printf; glsl-lang has no string
@@ -18,6 +19,7 @@
 //! - `buffer_reference` blocks (GL_EXT_buffer_reference), used as types: the block reads as
 //!   a struct for glsl-lang, and the stage is limited (naga has no buffer references);
 //! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited;
+//! - `nonuniformEXT` as a declaration's qualifier (GL_EXT_nonuniform_qualifier): blanked;
 //! - `precise` (GLSL 4.00), `coherent` and `restrict` (4.20; older versions have them
 //!   renamed as identifiers), which naga does not take: blanked (WGSL makes storage
 //!   accesses visible through barriers alone, and `restrict` only promises no aliasing);
@@ -79,6 +81,12 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
                 // Memory qualifiers naga does not take: `restrict` is an aliasing promise
                 // and `coherent` asks for what WGSL's barriers give every storage access.
                 blank(&mut parser, start..i);
+            } else if word == "nonuniformEXT" && clean[i..].iter().find(|b| !b.is_ascii_whitespace()) != Some(&b'(') {
+                // GL_EXT_nonuniform_qualifier's qualifier on a declaration
+                // (`nonuniformEXT uint index = …;`), which neither parser takes: it only
+                // tells the compiler a value may differ between invocations, which changes
+                // nothing WebGPU can express. The call form `nonuniformEXT(i)` is kept.
+                blank(&mut parser, start..i);
             } else if word == "precise" {
                 // GLSL 4.00's `precise` (still a keyword here: older versions had it
                 // renamed) only forbids reassociating the computation; naga has no such
@@ -134,9 +142,16 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
                 limit("64-bit integer literals (GL_ARB_gpu_shader_int64)".to_string(), start..i);
                 continue;
             }
-            if wide_int_literal(literal) {
-                let digits_from = if literal.starts_with("0x") || literal.starts_with("0X") { start + 2 } else { start + 1 };
-                restore.push((start..i, literal.to_string()));
+            if let Some(value) = wide_int_literal(literal) {
+                // A decimal one (10 digits) is put back as the same bits in hex (10
+                // characters), which naga reads; glslang takes both.
+                let decimal = !literal.starts_with('0');
+                let digits_from = match () {
+                    _ if literal.starts_with("0x") || literal.starts_with("0X") => start + 2,
+                    _ if decimal => start,
+                    _ => start + 1,
+                };
+                restore.push((start..i, if decimal { format!("0x{value:08X}") } else { literal.to_string() }));
                 for b in &mut parser[digits_from..i] {
                     *b = b'0';
                 }
@@ -311,16 +326,19 @@ fn int64_literal(literal: &str) -> Option<bool> {
         .then_some(unsigned)
 }
 
-/// Hex or octal integer literal without a `u` suffix above `INT_MAX` that still fits 32 bits.
-fn wide_int_literal(literal: &str) -> bool {
+/// The value of a hex, octal or decimal integer literal without a `u` suffix above `INT_MAX`
+/// that still fits 32 bits (an `int` of that bit pattern, which glslang and GL drivers take).
+fn wide_int_literal(literal: &str) -> Option<u64> {
     let value = if let Some(hex) = literal.strip_prefix("0x").or_else(|| literal.strip_prefix("0X")) {
         u64::from_str_radix(hex, 16).ok()
     } else if literal.len() > 1 && literal.starts_with('0') && literal.bytes().all(|b| b.is_ascii_digit()) {
         u64::from_str_radix(&literal[1..], 8).ok()
+    } else if literal.bytes().all(|b| b.is_ascii_digit()) {
+        literal.parse::<u64>().ok()
     } else {
         None
     };
-    value.is_some_and(|v| v > i32::MAX as u64 && v <= u32::MAX as u64)
+    value.filter(|v| *v > i32::MAX as u64 && *v <= u32::MAX as u64)
 }
 
 /// The end (after `)`) of the call whose name ends before `at`, skipping string literals.
@@ -591,13 +609,18 @@ mod tests {
 
     #[test]
     fn wide_hex_literals_are_zeroed_for_the_parser_only() {
-        let m = masked("uint a = 0xFFFFFFFF; int b = 0x7FFFFFFF; uint c = 0xFFFFFFFFu; int d = 037777777777;");
+        let m = masked(
+            "uint a = 0xFFFFFFFF; int b = 0x7FFFFFFF; uint c = 0xFFFFFFFFu; int d = 037777777777; uint e = i * 2654435761; int f = 2147483647;",
+        );
         assert!(m.for_parser.contains("a = 0x00000000;"));
         assert!(m.for_parser.contains("b = 0x7FFFFFFF;"), "fits int");
         assert!(m.for_parser.contains("c = 0xFFFFFFFFu;"), "suffixed");
         assert!(m.for_parser.contains("d = 000000000000;"));
+        assert!(m.for_parser.contains("e = i * 0000000000;"), "{}", m.for_parser);
+        assert!(m.for_parser.contains("f = 2147483647;"), "fits int");
         let naga = restored(&m.for_parser, &m.restore);
         assert!(naga.contains("a = 0xFFFFFFFF;") && naga.contains("d = 037777777777;"));
+        assert!(naga.contains("e = i * 0x9E3779B1;"), "the same bits in hex: {naga}");
         assert!(m.unsupported.is_none());
     }
 
@@ -605,6 +628,12 @@ mod tests {
     fn precision_qualifiers_leave_all_but_precision_statements() {
         let m = masked("precision highp float; float f(highp vec2 w); uniform B { mediump mat3 n; };");
         assert_eq!(m.for_parser, "precision highp float; float f(      vec2 w); uniform B {         mat3 n; };");
+    }
+
+    #[test]
+    fn nonuniform_qualifiers_are_blanked_and_calls_kept() {
+        let m = masked("nonuniformEXT uint i = id; vec4 c = texture(t[nonuniformEXT (i)], uv);");
+        assert_eq!(m.for_parser, "              uint i = id; vec4 c = texture(t[nonuniformEXT (i)], uv);");
     }
 
     #[test]
