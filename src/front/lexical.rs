@@ -426,16 +426,16 @@ fn buffer_reference(clean: &[u8], out: &mut [u8], at: usize) -> Option<usize> {
     }
 }
 
-/// `text` with its `#line` directives blanked (same length). Spans are byte offsets, so
-/// effectc's parser and naga need no line renumbering, and neither reads the named form
-/// (`#line 2 "file.slang"`, GL_GOOGLE_cpp_style_line_directive) that emulator packs use.
-/// glslang keeps them: its messages follow them back to the user's line.
 /// The identifiers of `text`: words of letters, digits and `_` that do not start with a
 /// digit (keywords included; comments and strings are not told apart).
 pub fn identifiers(text: &str) -> impl Iterator<Item = &str> {
     text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
 }
 
+/// `text` with its `#line` directives blanked (same length). Spans are byte offsets, so
+/// effectc's parser and naga need no line renumbering, and neither reads the named form
+/// (`#line 2 "file.slang"`, GL_GOOGLE_cpp_style_line_directive) that emulator packs use.
+/// glslang keeps them: its messages follow them back to the user's line.
 pub fn blank_line_directives(text: &str) -> std::borrow::Cow<'_, str> {
     blank_lines_where(text, |directive| directive.starts_with("line") && directive[4..].starts_with(|c: char| c.is_whitespace()))
 }

@@ -121,24 +121,10 @@ pub fn compile_rewritten(
 fn as_vulkan_glsl(text: &str, extensions: &str) -> String {
     let quiet = crate::front::lexical::quiet_pragmas(text);
     let text = crate::front::lexical::blank_line_directives(&quiet);
-    after_version(
+    crate::front::version::after_version(
         &text,
         &format!("#extension GL_EXT_spirv_intrinsics : enable\n#extension GL_EXT_samplerless_texture_functions : enable\n{extensions}"),
     )
-}
-
-/// `text` with `directives` (whole lines) after its `#version` line, and a `#line` after
-/// them: every later line keeps its number, which the module's spans are placed by.
-fn after_version(text: &str, directives: &str) -> String {
-    let Some(version) = text.lines().position(|l| l.trim_start().starts_with("#version")) else { return text.to_string() };
-    let mut out = String::with_capacity(text.len() + directives.len() + 16);
-    for (i, line) in text.split_inclusive('\n').enumerate() {
-        out.push_str(line);
-        if i == version {
-            out.push_str(&format!("{directives}#line {}\n", version + 2));
-        }
-    }
-    out
 }
 
 /// An OpenGL GLSL stage as glslang compiles it to SPIR-V as written, under relaxed Vulkan
@@ -157,7 +143,7 @@ fn gl_as_written_for_spirv(text: String) -> Result<String, String> {
     let counters =
         !v.is_es() && v.number < 430 && String::from_utf8_lossy(&crate::front::version::blank_comments(&text)).contains("atomic_uint");
     Ok(match counters {
-        true => after_version(&text, "#extension GL_ARB_shader_storage_buffer_object : enable\n"),
+        true => crate::front::version::after_version(&text, "#extension GL_ARB_shader_storage_buffer_object : enable\n"),
         false => text,
     })
 }

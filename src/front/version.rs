@@ -95,6 +95,32 @@ pub(crate) fn blank_comments(text: &str) -> Vec<u8> {
     out
 }
 
+/// `text` with `directives` (whole lines) after its `#version` line (at the start when it has
+/// none), and a `#line` after them: every later line keeps its number, which diagnostics and
+/// the module's spans are placed by. `#line N` names the next line `N` from GLSL 3.30 and ES
+/// 3.00 on, and `N + 1` before (GLSL 1.10 §3.3), as glslang and GL drivers read it.
+pub fn after_version(text: &str, directives: &str) -> String {
+    let version = text.lines().position(|l| l.trim_start().starts_with("#version"));
+    let names_next_line = parse_version(text).is_ok_and(|v| v.number >= if v.is_es() { 300 } else { 330 });
+    // 1-based number of the first line after the inserted ones.
+    let next = version.map_or(1, |v| v + 2);
+    let line = format!("{directives}#line {}\n", if names_next_line { next } else { next - 1 });
+    let mut out = String::with_capacity(text.len() + line.len());
+    if version.is_none() {
+        out.push_str(&line);
+    }
+    for (i, l) in text.split_inclusive('\n').enumerate() {
+        out.push_str(l);
+        if Some(i) == version {
+            if !l.ends_with('\n') {
+                out.push('\n');
+            }
+            out.push_str(&line);
+        }
+    }
+    out
+}
+
 /// Finds the first `#version` directive. Returns an error message with a span for a
 /// malformed directive.
 pub fn parse_version(text: &str) -> Result<Version, (String, Range<usize>)> {

@@ -9,8 +9,11 @@
 //!
 //! - [`compiler`]: glslang's C interface (compile one stage, link a program).
 //! - [`log`]: glslang's info log parsed and placed in the user's text.
+//! - [`leniency`]: the text glslang judges, where glslang is stricter than the GLSL
+//!   specifications and the GL drivers that follow them.
 
 pub mod compiler;
+pub mod leniency;
 pub mod log;
 
 use crate::config::{TargetEnv, VulkanVersion};
@@ -132,7 +135,7 @@ fn judge_as(files: &Files, stages: &[(FileId, StageKind)], dialect: Dialect) -> 
     let mut verdicts = Vec::new();
     for &(file, kind) in stages {
         let quiet = crate::front::lexical::quiet_pragmas(files.text(file));
-        let text = crate::front::lexical::lenient_float_suffixes(&quiet);
+        let text = leniency::as_drivers_read(&quiet);
         let shader = compiler::compile(&text, kind, dialect)?;
         if std::env::var_os("EFFECTC_DUMP_REFERENCE").is_some() {
             // Debugging aid: glslang's own verdict and log for each stage, on stderr.
