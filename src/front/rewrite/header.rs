@@ -211,7 +211,14 @@ impl Ctx<'_> {
         late.sort_by_key(|d| d.span.start);
         let moving: Vec<&str> = late.iter().map(|d| d.name.as_str()).collect();
         let movable = |d: &crate::front::syntax::StructDef| {
-            let names = || crate::front::lexical::identifiers(&s.text[d.span.clone()]);
+            // The names its text uses, its members' own names aside (`vec3 color;` names no
+            // global `color`).
+            let mut text = s.text[d.span.clone()].to_string();
+            for m in d.members.iter().filter(|m| m.span.start >= d.span.start && m.span.end <= d.span.end) {
+                let at = m.span.start - d.span.start..m.span.end - d.span.start;
+                text.replace_range(at.clone(), &" ".repeat(at.len()));
+            }
+            let names = || crate::front::lexical::identifiers(&text);
             let between = |at: usize| at >= point && at < d.span.start;
             // What it names must not stay behind it: a global (a constant size) or a
             // struct that does not move with it.
