@@ -25,6 +25,13 @@ for d in "$corpus"/*/; do
     total[$src]=$(( ${total[$src]:-0} + 1 ))
     if [ "$env" = vulkan ]; then
         flags="--target-env vulkan"; is_legal=$([ "$g" = ok ] && echo 1 || echo 0)
+        # The Vulkan version the project compiles for, as glslang's verdict used it (a
+        # FLAGS file's `--target-env vulkan1.2`; `spirv1.3` means Vulkan 1.1).
+        if [ -f "$d/FLAGS" ]; then
+            v=$(grep -oE -- '--target-env[ =]vulkan1\.[0-9]' "$d/FLAGS" | grep -oE 'vulkan1\.[0-9]' | head -1)
+            grep -qE -- '--target-env[ =]spirv1\.[3-9]' "$d/FLAGS" && v=${v:-vulkan1.1}
+            [ -n "$v" ] && flags="--target-env $v"
+        fi
     else
         flags="--target-env opengl"; is_legal=$([ "$g" = ok ] && [ "$m" = ok ] && echo 1 || echo 0)
     fi

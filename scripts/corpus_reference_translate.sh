@@ -37,6 +37,7 @@ for d in "$corpus"/*/; do
     penv=$env
     if [ "$env" = vulkan ] && [ -f "$d/FLAGS" ]; then
         v=$(grep -oE -- '--target-env[ =]vulkan1\.[0-9]' "$d/FLAGS" | grep -oE 'vulkan1\.[0-9]' | head -1)
+        grep -qE -- '--target-env[ =]spirv1\.[3-9]' "$d/FLAGS" && v=${v:-vulkan1.1}
         [ -n "$v" ] && penv=$v
     fi
     # shellcheck disable=SC2086
