@@ -66,6 +66,7 @@ pub mod spirv_spec_constants;
 pub mod spirv_subgroups;
 pub mod spirv_subpass_inputs;
 pub mod spirv_texel_buffers;
+pub mod spirv_two_row_matrices;
 pub mod spirv_wide_integers;
 pub mod statements;
 pub mod syntax;

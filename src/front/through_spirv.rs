@@ -34,6 +34,7 @@ use crate::front::spirv_spec_constants::spec_constants_naga_reads;
 use crate::front::spirv_subgroups::subgroups_of_one;
 use crate::front::spirv_subpass_inputs::subpass_inputs_as_textures;
 use crate::front::spirv_texel_buffers::texel_buffers_as_storage;
+use crate::front::spirv_two_row_matrices::two_row_matrices_as_columns;
 use crate::front::spirv_wide_integers::wide_integers_as_pairs;
 use crate::front::uniform_struct_padding;
 use crate::front::version::Profile;
@@ -189,7 +190,7 @@ fn no_spirv(log: String) -> String {
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
     dump_spirv(&words, &format!("{kind}.glslang"));
     // The passes over the words that make glslang's SPIR-V what naga reads, in order.
-    let passes: [fn(Vec<u32>) -> Vec<u32>; 10] = [
+    let passes: [fn(Vec<u32>) -> Vec<u32>; 11] = [
         readable_by_naga,
         spec_constants_naga_reads,
         wide_integers_as_pairs,
@@ -197,6 +198,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
         subgroups_of_one,
         float_tests_from_bits,
         outer_products_by_columns,
+        two_row_matrices_as_columns,
         signedness_naga_reads,
         split_interface_blocks,
         split_aggregate_varyings,

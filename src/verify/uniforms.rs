@@ -317,6 +317,12 @@ fn read(module: &Module, scene: &Scene, source: Source, shape: Shape) -> Vec<u32
                 .collect()
         }
         TypeInner::Vector { size, .. } => (0..size as usize).map(|i| word(base + 4 * i)).collect(),
+        // A two-row matrix of a std140 block stored as `vec4` columns (the route through
+        // SPIR-V): each column's `.xy`.
+        TypeInner::Array { stride, .. } if shape.columns > 1 && shape.rows == 2 => (0..shape.columns as usize)
+            .flat_map(|c| (0..2).map(move |r| (c, r)))
+            .map(|(c, r)| word(base + c * stride as usize + 4 * r))
+            .collect(),
         _ => vec![word(base)],
     };
     let n = (shape.columns * shape.rows) as usize;

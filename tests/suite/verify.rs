@@ -519,3 +519,20 @@ fn manifest_textures_in_float_and_integer_formats_read_as_given() {
     let fractions = with("fractions", manifest.replace("[[7, 0, 0, 0]", "[[7.5, 0, 0, 0]"));
     assert!(fractions.contains("`r32ui` holds integers; its colours must be whole numbers"), "{fractions}");
 }
+
+/// Two-row matrices in std140 blocks (a loose `mat3x2`, `mat2` and `mat3x2` arrays in a
+/// uniform block, a struct holding a `mat2` loaded whole), stored as `vec4` columns on the
+/// route through SPIR-V, draw what the GL driver draws with the manifest's values.
+#[test]
+fn std140_two_row_matrices_match_the_gl_driver() {
+    if !can_verify() {
+        return;
+    }
+    let dir = "tests/through_spirv/09-v430-std140-two-row-matrices";
+    let out =
+        effectc(&["verify", "--color", "never", dir, "--size", "64x64", "--out", scratch("verify-two-row", "columns").to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("1/1 frame match"), "{text}");
+    assert!(!text.contains("W0403"), "every uniform has the manifest's value:\n{text}");
+}

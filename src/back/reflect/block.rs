@@ -36,7 +36,8 @@ pub struct UniformMember {
     /// Bytes from the start of the block (for an array's fields: those of element 0).
     pub offset: u32,
     pub size: u32,
-    /// How the GLSL value is stored: `plain`, `bool_as_uint`, `padded_to_vec4`, `mat2_as_vec4`, `mat2_array_as_vec4_array`.
+    /// How the GLSL value is stored: `plain`, `bool_as_uint`, `padded_to_vec4`, `mat2_as_vec4`, `mat2_array_as_vec4_array`,
+    /// `columns_as_vec4` (a two-row matrix's columns each in a `vec4`'s `.xy`, 16 bytes apart).
     pub repr: &'static str,
     /// Filler effectc inserted to keep the GLSL layout: never written.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
@@ -102,7 +103,10 @@ pub(super) fn block_of(module: &Module, ty: Handle<Type>, rb: &naga::ResourceBin
             let pm = sources.plan.member(&name);
             let wgsl_name = sources.names.member(ty, i).unwrap_or_else(|| name.clone());
             let glsl_type = pm.map(|p| p.user_ty.to_string()).unwrap_or_else(|| type_name(module, m.ty));
-            let repr = pm.map(|p| repr_name(&p.repr)).unwrap_or("plain");
+            let repr = match pm.map(|p| repr_name(&p.repr)) {
+                Some("plain") | None => stored_as(&glsl_type, &type_name(module, m.ty)),
+                Some(planned) => planned,
+            };
             describe(module, &layouter, sources, (m.ty, m.offset), Named { name, wgsl_name, glsl_type, repr })
         })
         .collect();
@@ -194,11 +198,21 @@ fn stored_as(glsl: &str, wgsl: &str) -> &'static str {
         "padded_to_vec4"
     } else if glsl.starts_with("mat2") && !glsl.contains('[') && wgsl.starts_with("vec4") {
         "mat2_as_vec4"
-    } else if glsl.starts_with("mat2") && wgsl.starts_with("array<vec4") {
+    } else if glsl.starts_with("mat2") && wgsl.starts_with("array<vec4") && glsl.contains('[') {
         "mat2_array_as_vec4_array"
+    } else if two_rows(glsl) && wgsl.starts_with("array<") && wgsl.contains("vec4") {
+        // A std140 block's two-row matrix on the route through SPIR-V: each column in a
+        // `vec4`'s `.xy`, 16 bytes apart.
+        "columns_as_vec4"
     } else {
         "plain"
     }
+}
+
+/// Whether GLSL type `glsl` is a matrix of two rows (`mat2`, `mat3x2`, `mat4x2`, arrays too).
+fn two_rows(glsl: &str) -> bool {
+    let base = glsl.split('[').next().unwrap_or(glsl);
+    matches!(base, "mat2" | "mat2x2" | "mat3x2" | "mat4x2")
 }
 
 fn repr_name(r: &Repr) -> &'static str {

@@ -631,6 +631,22 @@ fn scalar_bytes(kind: ScalarKind, v: &UniformValue) -> Result<[u8; 4], String> {
     })
 }
 
+/// The scalar kind of an array of `n` (2 to 4) `vec4`s 16 bytes apart given `2n` numbers,
+/// none of them a list: a two-row matrix's value for its stored columns.
+fn two_row_matrix_columns(
+    module: &Module,
+    base: Handle<Type>,
+    stride: u32,
+    size: naga::ArraySize,
+    value: &UniformValue,
+) -> Option<ScalarKind> {
+    let naga::ArraySize::Constant(n) = size else { return None };
+    let TypeInner::Vector { size: naga::VectorSize::Quad, scalar } = module.types[base].inner else { return None };
+    let UniformValue::List(items) = value else { return None };
+    let flat = items.iter().all(|i| !matches!(i, UniformValue::List(_)));
+    (stride == 16 && (2..=4).contains(&n.get()) && flat && items.len() == 2 * n.get() as usize).then_some(scalar.kind)
+}
+
 fn write_value(module: &Module, ty: Handle<Type>, offset: usize, value: &UniformValue, buf: &mut [u8]) -> Result<(), String> {
     let put = |buf: &mut [u8], at: usize, bytes: [u8; 4]| -> Result<(), String> {
         buf.get_mut(at..at + 4).ok_or("value runs past the block")?.copy_from_slice(&bytes);
@@ -664,6 +680,15 @@ fn write_value(module: &Module, ty: Handle<Type>, offset: usize, value: &Uniform
             Ok(())
         }
         TypeInner::Array { base, stride, size } => {
+            if let Some(columns) = two_row_matrix_columns(module, *base, *stride, *size, value) {
+                // A `mat2`/`mat3x2`/`mat4x2` of a std140 block, which the route through
+                // SPIR-V stores as `vec4` columns (`spirv_two_row_matrices`): the matrix's
+                // numbers, column by column, each column in a `vec4`'s `.xy`.
+                for (i, v) in value.scalars().into_iter().enumerate() {
+                    put(buf, offset + (i / 2) * 16 + 4 * (i % 2), scalar_bytes(columns, v)?)?;
+                }
+                return Ok(());
+            }
             let UniformValue::List(items) = value else { return Err("an array needs a list".into()) };
             if let naga::ArraySize::Constant(n) = size {
                 if items.len() > n.get() as usize {
