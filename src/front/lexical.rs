@@ -131,30 +131,8 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
                 i += 1;
             }
             let literal = std::str::from_utf8(&clean[start..i]).unwrap_or("");
-            if let Some(unsigned) = int64_literal(literal) {
-                // `1693ul`, `0x0ffffffffffffff0ul`, `-1L` (GL_ARB_gpu_shader_int64): a 32-bit
-                // zero of the same signedness for glsl-lang; naga has no 64-bit integers.
-                restore.push((start..i, literal.to_string()));
-                let zero: &[u8] = if unsigned { b"0u" } else { b"0" };
-                for (k, b) in parser[start..i].iter_mut().enumerate() {
-                    *b = zero.get(k).copied().unwrap_or(b' ');
-                }
-                limit("64-bit integer literals (GL_ARB_gpu_shader_int64)".to_string(), start..i);
-                continue;
-            }
-            if let Some(value) = wide_int_literal(literal) {
-                // A decimal one (10 digits) is put back as the same bits in hex (10
-                // characters), which naga reads; glslang takes both.
-                let decimal = !literal.starts_with('0');
-                let digits_from = match () {
-                    _ if literal.starts_with("0x") || literal.starts_with("0X") => start + 2,
-                    _ if decimal => start,
-                    _ => start + 1,
-                };
-                restore.push((start..i, if decimal { format!("0x{value:08X}") } else { literal.to_string() }));
-                for b in &mut parser[digits_from..i] {
-                    *b = b'0';
-                }
+            if let Some(what) = mask_literal(literal, start, &mut parser, &mut restore) {
+                limit(what, start..i);
             }
             continue;
         }
@@ -324,6 +302,37 @@ fn int64_literal(literal: &str) -> Option<bool> {
     let digits = digits.strip_prefix("0x").unwrap_or(digits);
     (!digits.is_empty() && digits.bytes().all(|b| b.is_ascii_hexdigit()) && (hex || digits.bytes().all(|b| b.is_ascii_digit())))
         .then_some(unsigned)
+}
+
+/// Masks the integer literal `literal` at `start` for glsl-lang (what is put back for naga
+/// goes to `restore`); returns what naga has no form of, if so.
+fn mask_literal(literal: &str, start: usize, parser: &mut [u8], restore: &mut Vec<(Range<usize>, String)>) -> Option<String> {
+    let end = start + literal.len();
+    if let Some(unsigned) = int64_literal(literal) {
+        // `1693ul`, `0x0ffffffffffffff0ul`, `-1L` (GL_ARB_gpu_shader_int64): a 32-bit
+        // zero of the same signedness for glsl-lang; naga has no 64-bit integers.
+        restore.push((start..end, literal.to_string()));
+        let zero: &[u8] = if unsigned { b"0u" } else { b"0" };
+        for (k, b) in parser[start..end].iter_mut().enumerate() {
+            *b = zero.get(k).copied().unwrap_or(b' ');
+        }
+        return Some("64-bit integer literals (GL_ARB_gpu_shader_int64)".to_string());
+    }
+    if let Some(value) = wide_int_literal(literal) {
+        // A decimal one (10 digits) is put back as the same bits in hex (10 characters),
+        // which naga reads; glslang takes both.
+        let decimal = !literal.starts_with('0');
+        let digits_from = match () {
+            _ if literal.starts_with("0x") || literal.starts_with("0X") => start + 2,
+            _ if decimal => start,
+            _ => start + 1,
+        };
+        restore.push((start..end, if decimal { format!("0x{value:08X}") } else { literal.to_string() }));
+        for b in &mut parser[digits_from..end] {
+            *b = b'0';
+        }
+    }
+    None
 }
 
 /// The value of a hex, octal or decimal integer literal without a `u` suffix above `INT_MAX`

@@ -17,6 +17,7 @@ mod block;
 mod images;
 mod names;
 mod pass;
+mod values;
 use crate::back::prune::LeftOut;
 use crate::front::plan::UNIFORM_BLOCK;
 use crate::front::program::CompiledProgram;
@@ -26,6 +27,7 @@ use block::{BlockSources, GlslFields};
 use images::describe_image;
 use names::WgslNames;
 pub use pass::{pass_info, PassInfo, PassRead, PassTarget, TargetExtent};
+pub use values::write_slot;
 
 /// Version of the reflection JSON schema (documented in the README).
 pub const SCHEMA_VERSION: u32 = 1;
@@ -593,12 +595,6 @@ pub fn pack(module: &Module, block_ty: Handle<Type>, values: &[(&str, &UniformVa
     Ok(buf)
 }
 
-/// Writes one value into the slot of type `ty` at byte `offset` of `buf` (the layout rules
-/// of [`pack`]).
-pub fn write_slot(module: &Module, ty: Handle<Type>, offset: u32, value: &UniformValue, buf: &mut [u8]) -> Result<(), String> {
-    write_value(module, ty, offset as usize, value, buf)
-}
-
 /// The block's bytes filled with the manifest's default values (semantics left zero).
 pub fn pack_defaults(module: &Module, effect: &Effect) -> Result<Option<Vec<u8>>, PackError> {
     let Some(ty) = block_type(module) else { return Ok(None) };
@@ -614,92 +610,4 @@ pub fn block_type(module: &Module) -> Option<Handle<Type>> {
         .iter()
         .find(|(_, g)| g.space == AddressSpace::Uniform && module.types[g.ty].name.as_deref() == Some(UNIFORM_BLOCK))
         .map(|(_, g)| g.ty)
-}
-
-fn scalar_bytes(kind: ScalarKind, v: &UniformValue) -> Result<[u8; 4], String> {
-    let f = match v {
-        UniformValue::Bool(b) => f64::from(u8::from(*b)),
-        UniformValue::Int(i) => *i as f64,
-        UniformValue::Float(f) => *f,
-        UniformValue::List(_) => return Err("a list where a number belongs".into()),
-    };
-    Ok(match kind {
-        ScalarKind::Float => (f as f32).to_le_bytes(),
-        ScalarKind::Sint => (f as i32).to_le_bytes(),
-        ScalarKind::Uint | ScalarKind::Bool => (f.max(0.0) as u32).to_le_bytes(),
-        _ => return Err("unsupported scalar kind".into()),
-    })
-}
-
-/// The scalar kind of an array of `n` (2 to 4) `vec4`s 16 bytes apart given `2n` numbers,
-/// none of them a list: a two-row matrix's value for its stored columns.
-fn two_row_matrix_columns(
-    module: &Module,
-    base: Handle<Type>,
-    stride: u32,
-    size: naga::ArraySize,
-    value: &UniformValue,
-) -> Option<ScalarKind> {
-    let naga::ArraySize::Constant(n) = size else { return None };
-    let TypeInner::Vector { size: naga::VectorSize::Quad, scalar } = module.types[base].inner else { return None };
-    let UniformValue::List(items) = value else { return None };
-    let flat = items.iter().all(|i| !matches!(i, UniformValue::List(_)));
-    (stride == 16 && (2..=4).contains(&n.get()) && flat && items.len() == 2 * n.get() as usize).then_some(scalar.kind)
-}
-
-fn write_value(module: &Module, ty: Handle<Type>, offset: usize, value: &UniformValue, buf: &mut [u8]) -> Result<(), String> {
-    let put = |buf: &mut [u8], at: usize, bytes: [u8; 4]| -> Result<(), String> {
-        buf.get_mut(at..at + 4).ok_or("value runs past the block")?.copy_from_slice(&bytes);
-        Ok(())
-    };
-    match &module.types[ty].inner {
-        TypeInner::Scalar(s) => {
-            let v = value.scalars().into_iter().next().ok_or("empty value")?;
-            put(buf, offset, scalar_bytes(s.kind, v)?)
-        }
-        TypeInner::Vector { size, scalar } => {
-            let scalars = value.scalars();
-            if scalars.len() > *size as usize {
-                return Err(format!("{} numbers for a {}-component slot", scalars.len(), *size as u8));
-            }
-            for (i, v) in scalars.into_iter().enumerate() {
-                put(buf, offset + 4 * i, scalar_bytes(scalar.kind, v)?)?;
-            }
-            Ok(())
-        }
-        TypeInner::Matrix { columns, rows, scalar } => {
-            let (c, r) = (*columns as usize, *rows as usize);
-            let stride = if r == 2 { 8 } else { 16 };
-            let scalars = value.scalars();
-            if scalars.len() != c * r {
-                return Err(format!("{} numbers for a {c}x{r} matrix", scalars.len()));
-            }
-            for (i, v) in scalars.into_iter().enumerate() {
-                put(buf, offset + (i / r) * stride + 4 * (i % r), scalar_bytes(scalar.kind, v)?)?;
-            }
-            Ok(())
-        }
-        TypeInner::Array { base, stride, size } => {
-            if let Some(columns) = two_row_matrix_columns(module, *base, *stride, *size, value) {
-                // A `mat2`/`mat3x2`/`mat4x2` of a std140 block, which the route through
-                // SPIR-V stores as `vec4` columns (`spirv_two_row_matrices`): the matrix's
-                // numbers, column by column, each column in a `vec4`'s `.xy`.
-                for (i, v) in value.scalars().into_iter().enumerate() {
-                    put(buf, offset + (i / 2) * 16 + 4 * (i % 2), scalar_bytes(columns, v)?)?;
-                }
-                return Ok(());
-            }
-            let UniformValue::List(items) = value else { return Err("an array needs a list".into()) };
-            if let naga::ArraySize::Constant(n) = size {
-                if items.len() > n.get() as usize {
-                    return Err(format!("{} elements for an array of {n}", items.len()));
-                }
-            }
-            for (i, item) in items.iter().enumerate() {
-                write_value(module, *base, offset + i * *stride as usize, item, buf)?;
-            }
-            Ok(())
-        }
-        _ => Err("a struct value must be given member by member (`name.member`)".into()),
-    }
 }
