@@ -172,7 +172,7 @@ impl Module {
                         m.vec4 = m.vec4.or(Some(w[1]));
                     }
                 }
-                OP_TYPE_MATRIX if w.len() == 4 && m.vectors.get(&w[2]).is_some_and(|&(c, n)| Some(c) == m.float32 && n == 2) => {
+                OP_TYPE_MATRIX if w.len() == 4 && m.is_column(w[2]) => {
                     m.matrices.insert(w[1], (w[2], w[3]));
                 }
                 OP_TYPE_ARRAY if w.len() == 4 => _ = m.arrays.insert(w[1], (w[2], Some(w[3]))),
@@ -261,8 +261,7 @@ impl Module {
                 OP_ACCESS_CHAIN | OP_IN_BOUNDS_ACCESS_CHAIN if w.len() >= 4 => self.plan_chain(at, w, plan)?,
                 OP_LOAD if w.len() >= 4 => {
                     if let Some(&(_, logical)) = plan.logical.get(&w[3]) {
-                        let column = self.vectors.get(&logical).is_some_and(|&(c, n)| Some(c) == self.float32 && n == 2);
-                        if !self.matrices.contains_key(&logical) && !column {
+                        if !self.matrices.contains_key(&logical) && !self.is_column(logical) {
                             return None;
                         }
                         plan.loads.insert(at, logical);
@@ -288,29 +287,17 @@ impl Module {
             }
         };
         for &index in &w[4..] {
-            if let Some(types) = self.structs.get(&ty) {
-                let k = *self.constants.get(&index)?;
-                inside |= plan.members.contains(&(ty, k));
-                ty = *types.get(k as usize)?;
-            } else if let Some(&(element, _)) = self.arrays.get(&ty) {
-                ty = element;
-            } else if let Some(&(column, _)) = self.matrices.get(&ty) {
-                ty = column;
-            } else if let Some(&(component, _)) = self.vectors.get(&ty) {
-                ty = component;
-            } else if inside {
-                return None;
-            } else {
-                // A chain through what this pass does not follow (another matrix): it
-                // cannot reach a stored member.
-                return Some(());
+            match self.step(ty, self.constants.get(&index).copied(), plan) {
+                Some((next, enters)) => (ty, inside) = (next, inside || enters),
+                None if inside => return None,
+                // A chain through what this pass does not follow: it reaches no stored member.
+                None => return Some(()),
             }
         }
         if !inside {
             return Some(());
         }
-        let column = self.vectors.get(&ty).is_some_and(|&(c, n)| Some(c) == self.float32 && n == 2);
-        let stored = if column { Some(plan.vec4) } else { plan.stored.get(&ty).copied() };
+        let stored = if self.is_column(ty) { Some(plan.vec4) } else { plan.stored.get(&ty).copied() };
         if let Some(stored) = stored {
             let pointer = plan.pointer(storage, stored);
             plan.chains.insert(at, pointer);
@@ -324,27 +311,32 @@ impl Module {
     fn plan_extract(&self, at: usize, w: &[u32], plan: &mut Plan) -> Option<()> {
         let (mut ty, mut inside) = (*self.type_of.get(&w[3])?, false);
         for &index in &w[4..] {
-            if let Some(types) = self.structs.get(&ty) {
-                inside |= plan.members.contains(&(ty, index));
-                ty = *types.get(index as usize)?;
-            } else if let Some(&(element, _)) = self.arrays.get(&ty) {
-                ty = element;
-            } else if let Some(&(column, _)) = self.matrices.get(&ty) {
-                ty = column;
-            } else if let Some(&(component, _)) = self.vectors.get(&ty) {
-                ty = component;
-            } else {
-                return None;
-            }
+            let (next, enters) = self.step(ty, Some(index), plan)?;
+            (ty, inside) = (next, inside || enters);
         }
-        let column = self.vectors.get(&ty).is_some_and(|&(c, n)| Some(c) == self.float32 && n == 2);
-        match (inside, self.matrices.contains_key(&ty) || column) {
+        match (inside, self.matrices.contains_key(&ty) || self.is_column(ty)) {
             (true, true) => _ = plan.extracts.insert(at, ty),
             (true, false) if plan.stored.contains_key(&ty) => return None,
             (false, _) if self.holds_stored(ty, plan) => _ = plan.holding.insert(w[2]),
             _ => {}
         }
         Some(())
+    }
+
+    /// The type one index into `ty` reaches (`member`: the index's value, which a struct
+    /// needs), and whether it enters a stored member; `None` for a type not followed.
+    fn step(&self, ty: u32, member: Option<u32>, plan: &Plan) -> Option<(u32, bool)> {
+        if let Some(types) = self.structs.get(&ty) {
+            let k = member?;
+            return Some((*types.get(k as usize)?, plan.members.contains(&(ty, k))));
+        }
+        let next = self.arrays.get(&ty).map(|a| a.0).or_else(|| self.matrices.get(&ty).map(|m| m.0));
+        Some((next.or_else(|| self.vectors.get(&ty).map(|v| v.0))?, false))
+    }
+
+    /// Whether `ty` is a two-row matrix's column (a `vec2` of 32-bit floats).
+    fn is_column(&self, ty: u32) -> bool {
+        self.vectors.get(&ty).is_some_and(|&(c, n)| Some(c) == self.float32 && n == 2)
     }
 
     /// Whether a value of type `ty` holds a stored member (a struct or array loaded whole).
