@@ -24,7 +24,8 @@ use crate::front::statements::child_blocks;
 /// `module` with the loads of the module doc made `workgroupUniformLoad`s, or `None` when it
 /// has none.
 pub(crate) fn after_barriers(module: &Module) -> Option<Module> {
-    if !has_barrier(module) {
+    // Control barriers are for compute-like stages only: other modules are not copied.
+    if !module.entry_points.iter().any(|e| e.stage.compute_like()) {
         return None;
     }
     let mut out = module.clone();
@@ -38,20 +39,6 @@ pub(crate) fn after_barriers(module: &Module) -> Option<Module> {
         changed |= context.changed;
     }
     changed.then_some(out)
-}
-
-fn has_barrier(module: &Module) -> bool {
-    fn in_block(block: &Block) -> bool {
-        block.iter().any(|s| match s {
-            Statement::ControlBarrier(_) => true,
-            Statement::Block(b) => in_block(b),
-            Statement::If { accept, reject, .. } => in_block(accept) || in_block(reject),
-            Statement::Switch { cases, .. } => cases.iter().any(|c| in_block(&c.body)),
-            Statement::Loop { body, continuing, .. } => in_block(body) || in_block(continuing),
-            _ => false,
-        })
-    }
-    module.functions.iter().any(|(_, f)| in_block(&f.body)) || module.entry_points.iter().any(|e| in_block(&e.function.body))
 }
 
 struct Context<'a> {

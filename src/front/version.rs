@@ -100,8 +100,10 @@ pub(crate) fn blank_comments(text: &str) -> Vec<u8> {
 /// the module's spans are placed by. `#line N` names the next line `N` from GLSL 3.30 and ES
 /// 3.00 on, and `N + 1` before (GLSL 1.10 §3.3), as glslang and GL drivers read it.
 pub fn after_version(text: &str, directives: &str) -> String {
-    let version = text.lines().position(|l| l.trim_start().starts_with("#version"));
-    let names_next_line = parse_version(text).is_ok_and(|v| v.number >= if v.is_es() { 300 } else { 330 });
+    let parsed = parse_version(text).ok();
+    // The 0-based line of the `#version` directive (comments aside), if the text has one.
+    let version = parsed.as_ref().and_then(|v| v.directive.as_ref()).map(|d| text[..d.start].matches('\n').count());
+    let names_next_line = parsed.is_some_and(|v| v.number >= if v.is_es() { 300 } else { 330 });
     // 1-based number of the first line after the inserted ones.
     let next = version.map_or(1, |v| v + 2);
     let line = format!("{directives}#line {}\n", if names_next_line { next } else { next - 1 });

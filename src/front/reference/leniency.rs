@@ -17,6 +17,7 @@
 use std::borrow::Cow;
 
 use crate::front::lexical::{identifiers, lenient_float_suffixes};
+use crate::front::syntax::word_occurrences;
 use crate::front::version::{after_version, blank_comments, parse_version};
 
 /// GL_INTEL_shader_integer_functions2's functions, which glslang declares in every ES 3.00+
@@ -40,16 +41,17 @@ const RECTANGLE_WORDS: [&str; 6] =
 pub fn as_drivers_read(text: &str) -> Cow<'_, str> {
     let Ok(version) = parse_version(text) else { return Cow::Borrowed(text) };
     let text = lenient_float_suffixes(text);
+    let (es300, below140) = (version.is_es() && version.number >= 300, !version.is_es() && version.number < 140);
+    if !es300 && !below140 {
+        return text;
+    }
     let clean = blank_comments(&text);
     let clean = String::from_utf8_lossy(&clean);
     let names = |words: &[&str]| identifiers(&clean).any(|w| words.contains(&w));
-    let text =
-        if version.is_es() && version.number >= 300 && !clean.contains("GL_INTEL_shader_integer_functions2") && names(&INTEL_FUNCTIONS) {
-            Cow::Owned(capitalized(&text, &clean, &INTEL_FUNCTIONS))
-        } else {
-            text
-        };
-    if !version.is_es() && version.number < 140 && !clean.contains("GL_ARB_texture_rectangle") && names(&RECTANGLE_WORDS) {
+    if es300 && !clean.contains("GL_INTEL_shader_integer_functions2") && names(&INTEL_FUNCTIONS) {
+        return Cow::Owned(capitalized(&text, &clean, &INTEL_FUNCTIONS));
+    }
+    if below140 && !clean.contains("GL_ARB_texture_rectangle") && names(&RECTANGLE_WORDS) {
         return Cow::Owned(after_version(&text, "#extension GL_ARB_texture_rectangle : enable\n"));
     }
     text
@@ -59,26 +61,13 @@ pub fn as_drivers_read(text: &str) -> Cow<'_, str> {
 /// with its comments blanked) given a capital first letter.
 fn capitalized(text: &str, clean: &str, words: &[&str]) -> String {
     let mut out = text.as_bytes().to_vec();
-    let bytes = clean.as_bytes();
-    let mut i = 0;
-    while i < bytes.len() {
-        if !(bytes[i].is_ascii_alphabetic() || bytes[i] == b'_') {
-            i += if bytes[i].is_ascii_digit() { word_end(bytes, i) - i } else { 1 };
-            continue;
+    for word in words {
+        for at in word_occurrences(clean, 0..clean.len(), word) {
+            out[at.start] = out[at.start].to_ascii_uppercase();
         }
-        let end = word_end(bytes, i);
-        if words.contains(&&clean[i..end]) {
-            out[i] = out[i].to_ascii_uppercase();
-        }
-        i = end;
     }
     // Only an ASCII letter changed case: still UTF-8.
     String::from_utf8(out).unwrap_or_else(|_| text.to_string())
-}
-
-/// The end of the identifier or number starting at `at`.
-fn word_end(bytes: &[u8], at: usize) -> usize {
-    bytes[at..].iter().position(|b| !(b.is_ascii_alphanumeric() || *b == b'_')).map_or(bytes.len(), |n| at + n)
 }
 
 #[cfg(test)]
