@@ -35,7 +35,7 @@ for d in "$corpus"/*/; do
     [ "$n" -lt "$want" ] || break
     [ "$(head -c 2 "$d/GLSLANG" 2>/dev/null)" = ok ] && [ "$(head -c 2 "$d/MESA" 2>/dev/null)" = ok ] || continue
     # One file per stage (a stage of several shader objects would lose all but one of them).
-    exts=$(for f in "$d"/*.vert "$d"/*.frag "$d"/*.geom "$d"/*.tesc "$d"/*.tese "$d"/*.comp; do [ -e "$f" ] && echo "${f##*.}"; done)
+    exts=$(for f in "$d"/*.vert "$d"/*.frag "$d"/*.geom "$d"/*.tesc "$d"/*.tese "$d"/*.comp; do if [ -e "$f" ]; then echo "${f##*.}"; fi; done)
     [ "$(echo "$exts" | sort | uniq -d)" = "" ] || continue
     n=$((n + 1))
     mkdir -p "$work/progs/p$n"
