@@ -28,6 +28,7 @@ use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, spl
 use crate::front::spirv_binding_arrays::binding_arrays_as_elements;
 use crate::front::spirv_float_tests::float_tests_from_bits;
 use crate::front::spirv_interface_blocks::split_interface_blocks;
+use crate::front::spirv_non_finite_constants::non_finite_constants_at_run_time;
 use crate::front::spirv_outer_products::outer_products_by_columns;
 use crate::front::spirv_signedness::signedness_naga_reads;
 use crate::front::spirv_spec_constants::spec_constants_naga_reads;
@@ -190,12 +191,13 @@ fn no_spirv(log: String) -> String {
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
     dump_spirv(&words, &format!("{kind}.glslang"));
     // The passes over the words that make glslang's SPIR-V what naga reads, in order.
-    let passes: [fn(Vec<u32>) -> Vec<u32>; 11] = [
+    let passes: [fn(Vec<u32>) -> Vec<u32>; 12] = [
         readable_by_naga,
         spec_constants_naga_reads,
         wide_integers_as_pairs,
         absent_builtins_as_constants,
         subgroups_of_one,
+        non_finite_constants_at_run_time,
         float_tests_from_bits,
         outer_products_by_columns,
         two_row_matrices_as_columns,

@@ -22,7 +22,7 @@ use crate::common::in_ci;
 fn programs() -> Vec<PathBuf> {
     let mut dirs = common::fixtures("effects", 21);
     dirs.extend(common::fixtures("tests/rewrite", common::REWRITE_FIXTURES));
-    dirs.extend(common::fixtures("tests/through_spirv", 9));
+    dirs.extend(common::fixtures("tests/through_spirv", 10));
     dirs
 }
 

@@ -520,6 +520,21 @@ fn manifest_textures_in_float_and_integer_formats_read_as_given() {
     assert!(fractions.contains("`r32ui` holds integers; its colours must be whole numbers"), "{fractions}");
 }
 
+/// Infinite and NaN constants, made at run time from their bits on the route through SPIR-V
+/// (naga refuses them as literals), draw what the GL driver draws.
+#[test]
+fn infinite_constants_match_the_gl_driver() {
+    if !can_verify() {
+        return;
+    }
+    let dir = "tests/through_spirv/10-v330-infinite-constants";
+    let out =
+        effectc(&["verify", "--color", "never", dir, "--size", "64x64", "--out", scratch("verify-infinite", "spans").to_str().unwrap()]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("1/1 frame match"), "{text}");
+}
+
 /// Two-row matrices in std140 blocks (a loose `mat3x2`, `mat2` and `mat3x2` arrays in a
 /// uniform block, a struct holding a `mat2` loaded whole), stored as `vec4` columns on the
 /// route through SPIR-V, draw what the GL driver draws with the manifest's values.
