@@ -53,6 +53,14 @@ impl Edits {
         self.edits.is_empty()
     }
 
+    /// Whether an edit replaces any of `range` or inserts strictly inside it.
+    pub fn touches(&self, range: &Range<usize>) -> bool {
+        self.edits.iter().any(|e| match e.range.is_empty() {
+            true => range.start < e.range.start && e.range.start < range.end,
+            false => e.range.start < range.end && range.start < e.range.end,
+        })
+    }
+
     /// `original[range]` with the edits inside `range` applied: for text the rewrite
     /// writes a second time elsewhere (a loop condition moved ahead of its body).
     pub fn text_within(&self, original: &str, range: Range<usize>) -> String {

@@ -19,10 +19,10 @@
 //! - `buffer_reference` blocks (GL_EXT_buffer_reference), used as types: the block reads as
 //!   a struct for glsl-lang, and the stage is limited (naga has no buffer references);
 //! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited;
+//!   `samplerExternalOES` (GL_OES_EGL_image_external): `sampler2D` for both parsers;
 //! - `nonuniformEXT` as a declaration's qualifier (GL_EXT_nonuniform_qualifier): blanked;
-//! - `precise` (GLSL 4.00), `coherent` and `restrict` (4.20; older versions have them
-//!   renamed as identifiers), which naga does not take: blanked (WGSL makes storage
-//!   accesses visible through barriers alone, and `restrict` only promises no aliasing);
+//! - `precise` (4.00), `coherent` and `restrict` (4.20), which naga does not take: blanked
+//!   (WGSL makes storage visible through barriers alone; `restrict` promises no aliasing);
 //! - control-flow attributes (`[[unroll]]`, `[[branch]]`; GL_EXT_control_flow_attributes),
 //!   compiler hints: blanked for both parsers;
 //! - precision qualifiers outside `precision` statements (`highp vec2 w` as a parameter or
@@ -103,7 +103,7 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
                 }
             } else if let Some((mask, what)) = extension_word(word) {
                 parser[start..i].copy_from_slice(pad(mask, word.len()).as_bytes());
-                limit(what.to_string(), start..i);
+                what.into_iter().for_each(|what| limit(what.to_string(), start..i));
                 if word == "pervertexEXT" {
                     per_vertex.push(start);
                 }
@@ -162,13 +162,14 @@ pub fn restored(text: &str, restore: &[(Range<usize>, String)]) -> String {
     out
 }
 
-/// Extension types and qualifiers glsl-lang lacks: what it reads instead, and what naga
-/// cannot take.
-fn extension_word(word: &str) -> Option<(&'static str, &'static str)> {
+/// Extension types and qualifiers glsl-lang lacks: what it (and naga) reads instead, and
+/// what naga cannot take.
+fn extension_word(word: &str) -> Option<(&'static str, Option<&'static str>)> {
     Some(match word {
-        "accelerationStructureEXT" => ("image2D", "ray queries (`accelerationStructureEXT`, GL_EXT_ray_query)"),
-        "rayQueryEXT" => ("int", "ray queries (`rayQueryEXT`, GL_EXT_ray_query)"),
-        "pervertexEXT" => ("", "per-vertex fragment inputs (`pervertexEXT`, GL_EXT_fragment_shader_barycentric)"),
+        "accelerationStructureEXT" => ("image2D", Some("ray queries (`accelerationStructureEXT`, GL_EXT_ray_query)")),
+        "rayQueryEXT" => ("int", Some("ray queries (`rayQueryEXT`, GL_EXT_ray_query)")),
+        "pervertexEXT" => ("", Some("per-vertex fragment inputs (`pervertexEXT`, GL_EXT_fragment_shader_barycentric)")),
+        "samplerExternalOES" => ("sampler2D", None),
         _ => return None,
     })
 }

@@ -17,10 +17,12 @@
 //! `file_scope` (a `;` after a function body), `dynamic_samplers` (a sampler array element
 //! chosen at run time), `evaluation` (short-circuit operators with
 //! side effects, `continue` in `do … while`), `polyfills` (built-ins naga cannot write),
-//! `fixed_function` (the compatibility profile's built-ins).
+//! `fixed_function` (the compatibility profile's built-ins), `builtin_macros` (macros that
+//! rename a built-in type or function).
 
 mod block_members;
 mod blocks;
+mod builtin_macros;
 mod calls;
 mod declarations;
 mod dynamic_samplers;
@@ -157,6 +159,8 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.dynamic_lookups();
     c.lazy_logic();
     c.do_while_continue();
+    // Last: it renames only what no other edit rewrote.
+    c.builtin_renaming_macros();
     c.insert_header();
     c.insert_main_hooks();
     let Ctx { edits, mut diags, limitation, .. } = c;

@@ -24,7 +24,10 @@ impl Collector<'_> {
             ast::ExprData::Variable(id) => Some(id.0.to_string()),
             _ => None,
         });
-        if self.s.text.get(sp.clone()) != Some(n.as_str()) {
+        // A macro that renames the function (`#define texture2D texture2DRect`) written at
+        // the call: the call is the use's, arguments and all.
+        let renamed = self.s.text.get(sp.clone()).is_some_and(|used| self.renames.iter().any(|(name, body)| name == used && *body == n));
+        if self.s.text.get(sp.clone()) != Some(n.as_str()) && !renamed {
             // Written in a function-like macro's argument (`round(modf(x, i))` with
             // `#define round(X) ...`): the name is in the use's text, which the span
             // covers; each occurrence there is taken once, in order. Arguments are

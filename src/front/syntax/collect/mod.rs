@@ -32,6 +32,8 @@ pub(super) struct Collector<'a> {
     /// The body spans of the stage's `#define` lines, found once (a stage of many macro
     /// uses asked the whole text for them at each use).
     macro_bodies: Vec<std::ops::Range<usize>>,
+    /// Object-like macros that rename one identifier: (macro name, the name it gives).
+    renames: Vec<(String, String)>,
 }
 
 impl<'a> Collector<'a> {
@@ -47,7 +49,15 @@ impl<'a> Collector<'a> {
                     _ => None,
                 })
                 .collect();
-        let macro_bodies = crate::front::conditionals::define_lines(&s.text).into_iter().map(|(_, body)| body).collect();
+        let defines = crate::front::conditionals::define_lines(&s.text);
+        // Object-like macros whose body is one identifier (`#define texture2D texture2DRect`).
+        let renames = defines
+            .iter()
+            .filter(|(_, body)| !s.text[body.clone()].starts_with('('))
+            .map(|(name, body)| (name.clone(), s.text[body.clone()].trim().to_string()))
+            .filter(|(_, body)| !body.is_empty() && body.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_'))
+            .collect();
+        let macro_bodies = defines.into_iter().map(|(_, body)| body).collect();
         let mut c = Collector {
             s,
             scopes: Vec::new(),
@@ -57,6 +67,7 @@ impl<'a> Collector<'a> {
             macro_uses: HashSet::new(),
             local_consts: HashMap::new(),
             macro_bodies,
+            renames,
         };
         for decl in &tu.0 {
             c.external(decl);
