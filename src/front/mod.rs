@@ -62,6 +62,7 @@ pub mod spirv_float_tests;
 pub mod spirv_interface_blocks;
 pub mod spirv_non_finite_constants;
 pub mod spirv_outer_products;
+pub mod spirv_refusals;
 pub mod spirv_signedness;
 pub mod spirv_spec_constants;
 pub mod spirv_subgroups;

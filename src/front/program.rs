@@ -209,8 +209,16 @@ fn through_spirv_where_naga_refuses(
             eprintln!("[through SPIR-V] {why}");
         }
     };
+    let mut refused = None;
     let as_written = match ordered {
-        Some(ordered) => through_spirv::compile(files, ordered, dialect, &program.plan).inspect_err(|why| debug(why)).ok(),
+        Some(ordered) => match through_spirv::compile(files, ordered, dialect, &program.plan) {
+            Ok(stages) => Some(stages),
+            Err(why) => {
+                debug(&why.message);
+                refused = why.construct;
+                None
+            }
+        },
         None => None,
     };
     if let Some(stages) = as_written {
@@ -224,12 +232,21 @@ fn through_spirv_where_naga_refuses(
         let Some(texts) =
             program.stages.iter().map(|s| Some((s.rewritten.as_ref()?.text.as_str(), s.syntax.stage))).collect::<Option<Vec<_>>>()
         else {
-            return;
+            return name_what_stopped_the_route(program, refused, diags);
         };
         let originals: Vec<&str> = program.stages.iter().map(|s| files.text(s.syntax.file)).collect();
         let validated = match through_spirv::compile_rewritten(&texts, &program.plan, dialect, &originals) {
             Ok(v) => v,
-            Err(why) => return debug(&format!("from the rewrite: {why}")),
+            Err(why) => {
+                debug(&format!("from the rewrite: {why}"));
+                // Spans index the rewritten text: moved to the user's file.
+                let from_rewrite = why.construct.and_then(|(kind, mut limit)| {
+                    let map = &program.stages.iter().find(|s| s.syntax.stage == kind)?.rewritten.as_ref()?.map;
+                    limit.span = limit.span.map(|r| map.to_original(r.start)..map.to_original(r.end));
+                    Some((kind, limit))
+                });
+                return name_what_stopped_the_route(program, from_rewrite.or(refused), diags);
+            }
         };
         for (stage, v) in program.stages.iter_mut().zip(validated) {
             stage.naga = Some(restore_member_names(v, &program.plan.renamed_members));
@@ -241,6 +258,19 @@ fn through_spirv_where_naga_refuses(
     }
     let files_of: Vec<FileId> = program.stages.iter().map(|s| s.syntax.file).collect();
     diags.retain(|d| !(d.code == Code::NagaCannotTake && d.file.is_some_and(|f| files_of.contains(&f))));
+}
+
+/// Where naga's SPIR-V front refused a construct of a stage (the route that takes the most
+/// stopped there), that construct is what the stage's limitation (E0306 in `translate`)
+/// and its note N0102 name, not what stopped naga's GLSL front first.
+fn name_what_stopped_the_route(program: &mut CompiledProgram, refused: Option<(StageKind, Limitation)>, diags: &mut Vec<Diagnostic>) {
+    let Some((kind, limit)) = refused else { return };
+    if let Some(stage) = program.stages.iter_mut().find(|s| s.syntax.stage == kind) {
+        let file = stage.syntax.file;
+        diags.retain(|d| !(d.code == Code::NagaCannotTake && d.file == Some(file)));
+        diags.push(limit_note(&limit, &stage.syntax));
+        stage.limitation = Some(limit);
+    }
 }
 
 /// The stages with every repeated stage's files replaced by their joined text
@@ -339,7 +369,10 @@ fn accept_what_glslang_accepts(
                 // doesn't relate to a valid destination`) and gives way to glslang's words
                 // (`l-value required "u"`).
                 let same_line = line.is_some() && v.errors.iter().any(|g| line_of(g) == line);
-                if d.code == Code::BadVersion || (same_line && !matches!(d.code, Code::NagaValidation | Code::NagaCrashed)) {
+                // glsl-lang's lexer's "invalid token" (a reserved word such as `filter`)
+                // names nothing: glslang's words do (`'sample' : Reserved word`).
+                let says_what = !(d.code == Code::SyntaxError && d.message.ends_with("invalid token"));
+                if d.code == Code::BadVersion || (same_line && says_what && !matches!(d.code, Code::NagaValidation | Code::NagaCrashed)) {
                     shown_lines.extend(line);
                     out.push(d);
                 }
@@ -499,6 +532,19 @@ fn compile_own(
     Some(CompiledProgram { stages: compiled, plan, folded: None, reference: None })
 }
 
+/// Note N0102: naga cannot take `limit` in stage `s`.
+fn limit_note(limit: &Limitation, s: &StageSyntax) -> Diagnostic {
+    let d = Diagnostic::new(
+        Code::NagaCannotTake,
+        format!("naga cannot take {}, so the {} stage is checked for syntax and interface only", limit.construct, s.stage),
+    );
+    match &limit.span {
+        Some(span) => d.at(s.file, span.clone(), "legal GLSL naga does not take"),
+        None => d.in_file(s.file),
+    }
+    .with_note("`effectc translate` cannot translate this stage until naga takes it")
+}
+
 /// What naga made of a stage: its module (struct and array varyings' qualifiers back, the
 /// user's member names), or the limit it hit (N0102 said where), or its errors (`diags`).
 fn module_or_limit(outcome: Outcome, s: &StageSyntax, plan: &Plan, diags: &mut Vec<Diagnostic>) -> (Option<Validated>, Option<Limitation>) {
@@ -508,17 +554,7 @@ fn module_or_limit(outcome: Outcome, s: &StageSyntax, plan: &Plan, diags: &mut V
             (Some(restore_member_names(v, &plan.renamed_members)), None)
         }
         Outcome::Limited(limit) => {
-            let d = Diagnostic::new(
-                Code::NagaCannotTake,
-                format!("naga cannot take {}, so the {} stage is checked for syntax and interface only", limit.construct, s.stage),
-            );
-            diags.push(
-                match &limit.span {
-                    Some(span) => d.at(s.file, span.clone(), "legal GLSL naga does not take"),
-                    None => d.in_file(s.file),
-                }
-                .with_note("`effectc translate` cannot translate this stage until naga takes it"),
-            );
+            diags.push(limit_note(&limit, s));
             (None, Some(limit))
         }
         Outcome::Invalid(errs) => {

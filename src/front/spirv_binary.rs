@@ -117,7 +117,11 @@ impl Lines {
     /// The user's line (trimmed) for a span naga gave in SPIR-V bytes.
     pub(crate) fn user_span(&self, span: Span, table: &LineTable, text: &str) -> Span {
         let Some(range) = span.to_range() else { return Span::UNDEFINED };
-        let start = self.in_binary(range.start);
+        self.binary_user_span(self.in_binary(range.start), table, text)
+    }
+
+    /// The user's line (trimmed) of the instruction at byte `start` of the binary.
+    pub(crate) fn binary_user_span(&self, start: usize, table: &LineTable, text: &str) -> Span {
         let i = self.changes.partition_point(|(at, _)| *at <= start);
         let Some((string, line)) = i.checked_sub(1).and_then(|i| self.changes[i].1) else { return Span::UNDEFINED };
         match table.line_range(string, line) {

@@ -30,6 +30,7 @@ use crate::front::spirv_float_tests::float_tests_from_bits;
 use crate::front::spirv_interface_blocks::split_interface_blocks;
 use crate::front::spirv_non_finite_constants::non_finite_constants_at_run_time;
 use crate::front::spirv_outer_products::outer_products_by_columns;
+use crate::front::spirv_refusals::{self, Refusal};
 use crate::front::spirv_signedness::signedness_naga_reads;
 use crate::front::spirv_spec_constants::spec_constants_naga_reads;
 use crate::front::spirv_subgroups::subgroups_of_one;
@@ -53,7 +54,7 @@ pub struct SpirvStage {
 
 /// Every stage of the program (`ordered`, pipeline order) through SPIR-V, or why not (the
 /// first thing that failed).
-pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect, plan: &Plan) -> Result<Vec<SpirvStage>, String> {
+pub fn compile(files: &Files, ordered: &[(FileId, StageKind)], dialect: Dialect, plan: &Plan) -> Result<Vec<SpirvStage>, Refusal> {
     let mut texts: Vec<String> = ordered.iter().map(|(f, _)| crate::front::lexical::quiet_pragmas(files.text(*f)).into_owned()).collect();
     if dialect == Dialect::OpenGl {
         texts = texts.into_iter().map(gl_as_written_for_spirv).collect::<Result<_, _>>()?;
@@ -91,7 +92,7 @@ pub fn compile_rewritten(
     plan: &Plan,
     dialect: Dialect,
     originals: &[&str],
-) -> Result<Vec<Validated>, String> {
+) -> Result<Vec<Validated>, Refusal> {
     let (version, originals) = match dialect {
         Dialect::Vulkan(v) => (v, originals),
         Dialect::OpenGl => (VulkanVersion::V1_0, &[][..]),
@@ -110,7 +111,9 @@ pub fn compile_rewritten(
     }
     uniform_struct_padding::pad_uniform_structs(&mut modules);
     let immediates = uniform_buffers_for_push_constants(&mut modules);
-    modules.into_iter().zip(stages).zip(immediates).map(|((module, (_, kind)), immediates)| validate(module, immediates, *kind)).collect()
+    let validated =
+        modules.into_iter().zip(stages).zip(immediates).map(|((module, (_, kind)), immediates)| validate(module, immediates, *kind));
+    Ok(validated.collect::<Result<_, _>>()?)
 }
 
 /// A rewritten stage as glslang reads it as Vulkan GLSL: pragmas no compiler acts on and
@@ -188,7 +191,7 @@ fn no_spirv(log: String) -> String {
 /// One stage's SPIR-V as a naga module: combined samplers split, read by naga's SPIR-V
 /// front (panics contained), every span moved to the line of `text` its `OpLine` names,
 /// names as the user wrote them.
-fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, String> {
+fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, Refusal> {
     dump_spirv(&words, &format!("{kind}.glslang"));
     // The passes over the words that make glslang's SPIR-V what naga reads, in order.
     let passes: [fn(Vec<u32>) -> Vec<u32>; 12] = [
@@ -214,11 +217,11 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     let options = naga::front::spv::Options { adjust_coordinate_space: false, strict_capabilities: false, block_ctx_dump_prefix: None };
     let mut module = match catch_unwind(AssertUnwindSafe(|| naga::front::spv::parse_u8_slice(&bytes, &options))) {
         Ok(Ok(m)) => m,
-        Ok(Err(e)) => return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {e}")),
-        Err(_) => return Err(format!("naga's SPIR-V front crashed on the {kind} stage")),
+        Ok(Err(e)) => return Err(spirv_refusals::refusal(&e, &words, kind, text)),
+        Err(_) => return Err(format!("naga's SPIR-V front crashed on the {kind} stage").into()),
     };
     if let Some(construct) = naga_run::std140_two_row_matrix(&module) {
-        return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {construct}"));
+        return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {construct}").into());
     }
     let table = LineTable::new(text);
     respan_module(&mut module, &|span| lines.user_span(span, &table, text));

@@ -424,3 +424,37 @@ fn outer_products_through_spirv_translate() {
     assert!(!wgsl.contains("outerProduct"), "{wgsl}");
     assert!(wgsl.contains("mat3x2<f32>("), "{wgsl}");
 }
+
+/// Where both routes stop, `translate` names what stopped the route through SPIR-V, at the
+/// user's line: naga's GLSL front stops first at the subgroup built-in (which the route
+/// through SPIR-V takes), naga's SPIR-V front at the image atomic ("unsupported storage
+/// class %11" in naga's words).
+#[test]
+fn untranslatable_programs_name_what_stopped_the_route_through_spirv() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-image-atomics");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let stage = dir.join("count.comp");
+    std::fs::write(
+        &stage,
+        "#version 450\n#extension GL_KHR_shader_subgroup_basic : require\nlayout(local_size_x = 8) in;\n\
+         layout(r32ui, set = 0, binding = 0) uniform uimage2D counts;\n\
+         void main() {\n\
+           uint lane = gl_SubgroupInvocationID;\n\
+           imageAtomicAdd(counts, ivec2(gl_GlobalInvocationID.xy), lane + 1u);\n\
+         }\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
+        .args(["translate", "--target-env", "vulkan1.1", "--to", "wgsl", "--out"])
+        .arg(dir.join("out"))
+        .arg(&stage)
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert_eq!(out.status.code(), Some(1), "{stdout}");
+    assert!(stdout.contains("error[E0306]: the compute stage uses image atomics"), "{stdout}");
+    assert!(stdout.contains("count.comp:7:"), "at the line of `imageAtomicAdd`:\n{stdout}");
+    assert!(!stdout.contains("gl_SubgroupInvocationID`, which naga cannot translate"), "{stdout}");
+}
