@@ -90,12 +90,13 @@ impl Ctx<'_> {
 /// Whether `name` is a GLSL type keyword: a scalar, vector or matrix, or an opaque type
 /// (`sampler2D`, `isampler3D`, `image2D`, Vulkan GLSL's `texture2D` and `sampler`).
 fn is_type_name(name: &str) -> bool {
-    let opaque = name.strip_prefix(['i', 'u']).unwrap_or(name);
     let shaped = |prefixes: &[&str]| prefixes.iter().any(|p| name.strip_prefix(p).is_some_and(|n| matches!(n, "2" | "3" | "4")));
     matches!(name, "void" | "bool" | "int" | "uint" | "float" | "double" | "atomic_uint")
         || shaped(&["vec", "bvec", "ivec", "uvec", "dvec"])
         || crate::front::syntax::matrix_shape(name.strip_prefix('d').unwrap_or(name)).is_some()
-        || ["sampler", "image", "texture", "subpassInput"].iter().any(|k| opaque.strip_prefix(k).is_some_and(opaque_dimensions))
+        || std::iter::once(name).chain(name.strip_prefix(['i', 'u'])).any(|opaque| {
+            ["sampler", "image", "texture", "subpassInput"].iter().any(|k| opaque.strip_prefix(k).is_some_and(opaque_dimensions))
+        })
 }
 
 /// What follows `sampler`, `image` or `texture` in an opaque type's name: nothing, or its

@@ -37,6 +37,7 @@ mod interpolation;
 mod io_blocks;
 mod polyfills;
 mod query_lod;
+mod sampler_array_params;
 mod std140_structs;
 mod subpass;
 mod uniform_struct_arrays;
@@ -104,6 +105,8 @@ struct Ctx<'a> {
     compat_header: String,
     /// Built-in calls on a sampler array element chosen at run time ([`dynamic_samplers`]).
     dynamic_lookups: Vec<dynamic_samplers::DynamicLookup>,
+    /// Sampler-array parameters that stand for a uniform array ([`sampler_array_params`]).
+    array_params: Vec<sampler_array_params::ArrayParam>,
 }
 
 /// Rewrites `s` under the program plan. Warnings (and, with `strict`, errors) for legacy
@@ -130,6 +133,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
         polyfills: Vec::new(),
         compat_header: String::new(),
         dynamic_lookups: Vec::new(),
+        array_params: sampler_array_params::array_params(s),
     };
     c.version();
     // First: at the first declaration, the constants go before what the rewrite inserts there.
@@ -140,6 +144,7 @@ pub fn rewrite_with(s: &StageSyntax, plan: &Plan, strict: bool, scalar_swizzles:
     c.uses();
     c.shadowed_block_members();
     c.functions();
+    c.drop_array_params();
     c.calls();
     c.struct_samplers();
     c.defaults_and_layouts();
