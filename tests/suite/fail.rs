@@ -12,7 +12,7 @@ use crate::common;
 
 #[test]
 fn fail_fixtures() {
-    let dirs = common::fixtures("tests/fail", 59);
+    let dirs = common::fixtures("tests/fail", 60);
     let mut settings = insta::Settings::clone_current();
     settings.set_snapshot_path("../../snapshots/fail");
     settings.set_prepend_module_to_snapshot(false);
