@@ -39,7 +39,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mirror import Mirror, c_string, cpp_ifdefs, strip_cpp_comments, write_program  # noqa: E402
+from mirror import Mirror, c_string, cpp_ifdefs, split_commas, strip_cpp_comments, write_program  # noqa: E402
 
 DIRS = ("framework/Source/", "framework/Source/iOS/")
 EMIT = re.compile(r"programForVertexShaderString:\s*(.+?)\s+fragmentShaderString:\s*(.+?)\s*\]", re.S)
@@ -68,16 +68,6 @@ def c_macros(src):
     return out
 
 
-def split_args(text):
-    args, depth, cur = [], 0, ""
-    for ch in text:
-        depth += {"(": 1, ")": -1}.get(ch, 0)
-        if ch == "," and depth == 0:
-            args.append(cur)
-            cur = ""
-        else:
-            cur += ch
-    return args + [cur]
 
 
 def expand(text, macros, active=frozenset()):
@@ -100,7 +90,7 @@ def expand(text, macros, active=frozenset()):
         if not call:
             continue
         end = balanced(text, call.end() - 1, "(", ")")
-        args = [expand(a.strip(), macros, active) for a in split_args(text[call.end():end - 1])]
+        args = [expand(a.strip(), macros, active) for a in split_commas(text[call.end():end - 1])]
         env = dict(zip(params, args))
         sub = re.sub(r"\b\w+\b", lambda w: env.get(w.group(0), w.group(0)), body)
         out.append(text[i:m.start()])

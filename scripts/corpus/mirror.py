@@ -60,6 +60,19 @@ _CPP_TOKEN = re.compile(C_LITERAL + r"|'(?:\\.|[^'\\\n])*'|//[^\n]*|/\*.*?\*/", 
 _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", "a": "\a", "b": "\b", "f": "\f", "v": "\v", "\n": ""}
 
 
+def split_commas(text):
+    """The items of a comma-separated list, split at the commas outside parentheses."""
+    parts, depth, cur = [], 0, ""
+    for ch in text:
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if ch == "," and depth == 0:
+            parts.append(cur)
+            cur = ""
+        else:
+            cur += ch
+    return parts + [cur]
+
+
 def strip_cpp_comments(src):
     """C/C++ source with each comment replaced by a space; string and char literals kept."""
     return _CPP_TOKEN.sub(lambda m: " " if m.group(0)[0] == "/" else m.group(0), src)
@@ -129,15 +142,7 @@ class GLTrace:
             body = m.group(2)
             if not re.search(calls, body):
                 return m.group(0)
-            parts, depth, cur = [], 0, ""
-            for ch in body:
-                depth += {"(": 1, ")": -1}.get(ch, 0)
-                if ch == "," and depth == 0:
-                    parts.append(cur)
-                    cur = ""
-                else:
-                    cur += ch
-            parts.append(cur)
+            parts = split_commas(body)
             return " ".join(f"{m.group(1)}[{k}] = {p.strip()};" for k, p in enumerate(parts) if p.strip())
         return re.sub(r"(\w+)\s*\[[^\]]*\]\s*=\s*\{((?:[^{}\"]|" + C_LITERAL + r")*)\}\s*;", split, src)
 

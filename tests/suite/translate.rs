@@ -301,6 +301,16 @@ fn a_sampler_array_indexed_at_run_time_translates_with_gpu_shader5() {
 /// Writes `text` to `name` in a fresh scratch folder `folder`, translates it for Vulkan
 /// (`env`) to WGSL and SPIR-V, and returns effectc's stdout and the WGSL, asserting exit 0.
 fn translate_vulkan_stage(folder: &str, name: &str, env: &str, text: &str) -> (String, String) {
+    let (code, stdout, dir) = run_translate(folder, name, env, text);
+    assert_eq!(code, Some(0), "{stdout}");
+    let stem = name.split('.').next().unwrap_or(name);
+    let wgsl = std::fs::read_to_string(dir.join(format!("out/{stem}.wgsl"))).unwrap();
+    (stdout, wgsl)
+}
+
+/// `effectc translate --target-env ENV --to wgsl,spv` of one stage file `name` holding `text`
+/// (in a fresh `folder`): exit code, stdout, the folder.
+fn run_translate(folder: &str, name: &str, env: &str, text: &str) -> (Option<i32>, String, std::path::PathBuf) {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(folder);
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -313,11 +323,7 @@ fn translate_vulkan_stage(folder: &str, name: &str, env: &str, text: &str) -> (S
         .env("NO_COLOR", "1")
         .output()
         .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{stdout}");
-    let stem = name.split('.').next().unwrap_or(name);
-    let wgsl = std::fs::read_to_string(dir.join(format!("out/{stem}.wgsl"))).unwrap();
-    (stdout, wgsl)
+    (out.status.code(), String::from_utf8_lossy(&out.stdout).into_owned(), dir)
 }
 
 /// Vulkan GLSL compute: a workgroup size given by specialization constants
@@ -431,29 +437,18 @@ fn outer_products_through_spirv_translate() {
 /// class %11" in naga's words).
 #[test]
 fn untranslatable_programs_name_what_stopped_the_route_through_spirv() {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("translate-image-atomics");
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    let stage = dir.join("count.comp");
-    std::fs::write(
-        &stage,
+    let (code, stdout, _) = run_translate(
+        "translate-image-atomics",
+        "count.comp",
+        "vulkan1.1",
         "#version 450\n#extension GL_KHR_shader_subgroup_basic : require\nlayout(local_size_x = 8) in;\n\
          layout(r32ui, set = 0, binding = 0) uniform uimage2D counts;\n\
          void main() {\n\
            uint lane = gl_SubgroupInvocationID;\n\
            imageAtomicAdd(counts, ivec2(gl_GlobalInvocationID.xy), lane + 1u);\n\
          }\n",
-    )
-    .unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_effectc"))
-        .args(["translate", "--target-env", "vulkan1.1", "--to", "wgsl", "--out"])
-        .arg(dir.join("out"))
-        .arg(&stage)
-        .env("NO_COLOR", "1")
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert_eq!(out.status.code(), Some(1), "{stdout}");
+    );
+    assert_eq!(code, Some(1), "{stdout}");
     assert!(stdout.contains("error[E0306]: the compute stage uses image atomics"), "{stdout}");
     assert!(stdout.contains("count.comp:7:"), "at the line of `imageAtomicAdd`:\n{stdout}");
     assert!(!stdout.contains("gl_SubgroupInvocationID`, which naga cannot translate"), "{stdout}");
