@@ -21,8 +21,8 @@
 //! - ray-query types and `pervertexEXT`: a core type (or nothing) for glsl-lang; limited;
 //!   `samplerExternalOES` (GL_OES_EGL_image_external): `sampler2D` for both parsers;
 //! - `nonuniformEXT` as a declaration's qualifier (GL_EXT_nonuniform_qualifier): blanked;
-//! - `precise` (4.00), `coherent` and `restrict` (4.20), which naga does not take: blanked
-//!   (WGSL makes storage visible through barriers alone; `restrict` promises no aliasing);
+//! - `precise` (4.00), `coherent`, `restrict` (4.20), GL_KHR_memory_scope_semantics' scoped
+//!   `…coherent` and `nonprivate`: blanked (WGSL's barriers make storage visible; no aliasing);
 //! - control-flow attributes (`[[unroll]]`, `[[branch]]`; GL_EXT_control_flow_attributes),
 //!   compiler hints: blanked for both parsers;
 //! - precision qualifiers outside `precision` statements (`highp vec2 w` as a parameter or
@@ -77,9 +77,9 @@ pub fn mask(text: &str, clean: &[u8]) -> Masked {
             }
             let word = std::str::from_utf8(&clean[start..i]).unwrap_or("");
             let after_precision = std::mem::replace(&mut previous_word_precision, word == "precision");
-            if matches!(word, "coherent" | "restrict") {
-                // Memory qualifiers naga does not take: `restrict` is an aliasing promise
-                // and `coherent` asks for what WGSL's barriers give every storage access.
+            if matches!(word, "coherent" | "restrict" | "devicecoherent" | "queuefamilycoherent" | "workgroupcoherent" | "nonprivate") {
+                // Memory qualifiers naga does not take: `restrict` is an aliasing promise, `coherent`
+                // (and GL_KHR_memory_scope_semantics' scoped ones) asks for what WGSL's barriers give.
                 blank(&mut parser, start..i);
             } else if word == "nonuniformEXT" && clean[i..].iter().find(|b| !b.is_ascii_whitespace()) != Some(&b'(') {
                 // GL_EXT_nonuniform_qualifier's qualifier on a declaration

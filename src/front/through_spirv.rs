@@ -248,14 +248,29 @@ fn dump_spirv(words: &[u32], name: &str) {
 
 /// naga's validation (with desktop GL's capabilities, as for the GLSL route); push
 /// constants become a uniform buffer, or a read-only storage buffer when their layout
-/// breaks uniform alignment.
+/// breaks uniform alignment, and so does a uniform buffer whose layout WGSL's uniform rules
+/// refuse (GL_EXT_scalar_block_layout's `scalar`: a `vec2` array 8 bytes apart).
 fn validate(mut module: Module, immediates: Vec<naga::Handle<naga::GlobalVariable>>, kind: StageKind) -> Result<Validated, String> {
     let run = |m: &Module| catch_unwind(AssertUnwindSafe(|| naga_run::validate_for_gl(m)));
+    let read_only = AddressSpace::Storage { access: naga::StorageAccess::LOAD };
     let mut result = run(&module);
     if !immediates.is_empty() && matches!(result, Ok(Err(_))) {
         for g in &immediates {
-            module.global_variables[*g].space = AddressSpace::Storage { access: naga::StorageAccess::LOAD };
+            module.global_variables[*g].space = read_only;
         }
+        result = run(&module);
+    }
+    for _ in 0..module.global_variables.len() {
+        let Ok(Err(e)) = &result else { break };
+        let naga::valid::ValidationError::GlobalVariable {
+            handle,
+            source: naga::valid::GlobalVariableError::Alignment(AddressSpace::Uniform, ..),
+            ..
+        } = e.as_inner()
+        else {
+            break;
+        };
+        module.global_variables[*handle].space = read_only;
         result = run(&module);
     }
     match result {

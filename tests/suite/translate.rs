@@ -453,3 +453,48 @@ fn untranslatable_programs_name_what_stopped_the_route_through_spirv() {
     assert!(stdout.contains("count.comp:7:"), "at the line of `imageAtomicAdd`:\n{stdout}");
     assert!(!stdout.contains("gl_SubgroupInvocationID`, which naga cannot translate"), "{stdout}");
 }
+
+/// Compute idioms naga refused: `texture()` in a compute stage (no derivatives: GL samples
+/// the base level, written explicitly for naga), GL_KHR_memory_scope_semantics' scoped
+/// coherence qualifiers (blanked: WGSL's barriers make storage visible), and a
+/// `scalar`-layout uniform buffer whose `vec2` array is 8 bytes apart (WGSL's uniform rules
+/// want 16: it becomes a read-only storage buffer, the same bytes).
+#[test]
+fn compute_stage_idioms_translate() {
+    let (_, wgsl) = translate_vulkan_stage(
+        "translate-compute-implicit-lod",
+        "blit.comp",
+        "opengl",
+        "#version 430\nlayout(local_size_x = 8, local_size_y = 8) in;\n\
+         layout(binding = 0) uniform sampler2D src;\n\
+         layout(binding = 1, rgba8) writeonly uniform image2D dst;\n\
+         void main() {\n\
+           vec2 uv = (vec2(gl_GlobalInvocationID.xy) + 0.5) / vec2(textureSize(src, 0));\n\
+           imageStore(dst, ivec2(gl_GlobalInvocationID.xy), texture(src, uv));\n\
+         }\n",
+    );
+    assert!(wgsl.contains("textureSampleLevel("), "{wgsl}");
+    let (_, wgsl) = translate_vulkan_stage(
+        "translate-scoped-coherence",
+        "count.comp",
+        "vulkan1.3",
+        "#version 450\n#extension GL_KHR_memory_scope_semantics : require\nlayout(local_size_x = 64) in;\n\
+         layout(std430, set = 0, binding = 0) workgroupcoherent buffer Counts { uint n[]; };\n\
+         layout(set = 0, binding = 1, r32f) uniform queuefamilycoherent image2D img;\n\
+         void main() {\n\
+           n[gl_GlobalInvocationID.x] += 1u;\n\
+           imageStore(img, ivec2(gl_GlobalInvocationID.xy), vec4(float(n[0])));\n\
+         }\n",
+    );
+    assert!(wgsl.contains("@compute"), "{wgsl}");
+    let (_, wgsl) = translate_vulkan_stage(
+        "translate-scalar-uniforms",
+        "offsets.comp",
+        "vulkan1.2",
+        "#version 450\n#extension GL_EXT_scalar_block_layout : require\nlayout(local_size_x = 4) in;\n\
+         layout(set = 0, binding = 0, scalar) uniform Offsets { vec2 at[4]; float scale; } offsets;\n\
+         layout(std430, set = 0, binding = 1) buffer Out { vec2 v[]; };\n\
+         void main() { v[gl_LocalInvocationIndex] = offsets.at[gl_LocalInvocationIndex] * offsets.scale; }\n",
+    );
+    assert!(wgsl.contains("var<storage> offsets") || wgsl.contains("var<storage, read> offsets"), "{wgsl}");
+}

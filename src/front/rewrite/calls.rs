@@ -115,15 +115,17 @@ impl Ctx<'_> {
             }
             let implicit_lod =
                 matches!(c.name.as_str(), "texture" | "texture2D" | "textureCube" | "texture3D" | "texture1D" | "texture2DRect");
-            if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && c.name == "textureOffset" && c.args.len() == 3 {
+            let no_derivatives = matches!(s.stage, StageKind::Vertex | StageKind::Geometry | StageKind::Compute);
+            if no_derivatives && c.name == "textureOffset" && c.args.len() == 3 {
                 // textureOffset(s, P, offset) in a vertex stage: the base level, explicitly.
                 self.edits.replace(c.name_span.clone(), "textureLodOffset");
                 self.edits.insert(c.args[1].end, ", 0.0");
                 continue;
             }
-            if matches!(s.stage, StageKind::Vertex | StageKind::Geometry) && implicit_lod {
-                // Vertex and geometry shaders have no derivatives: GL samples the base level;
-                // naga wants it explicit (a geometry stage runs folded into the vertex stage).
+            if no_derivatives && implicit_lod {
+                // Vertex, geometry and compute shaders have no derivatives: GL samples the
+                // base level; naga wants it explicit (a geometry stage runs folded into the
+                // vertex stage).
                 if c.name != "texture" {
                     self.legacy(c.name_span.clone(), &c.name, "textureLod");
                 }
