@@ -33,6 +33,7 @@ use rspirv::spirv::{BuiltIn, Decoration, ExecutionMode, Op};
 use crate::front::spirv_binary::{instructions, HEADER_WORDS, OP_DECORATE, OP_EXECUTION_MODE, OP_TYPE_ARRAY, OP_TYPE_INT};
 
 const OP_TYPE_BOOL: u16 = Op::TypeBool as u16;
+const OP_TYPE_FLOAT: u16 = Op::TypeFloat as u16;
 const OP_CONSTANT: u16 = Op::Constant as u16;
 const OP_CONSTANT_TRUE: u16 = Op::ConstantTrue as u16;
 const OP_CONSTANT_FALSE: u16 = Op::ConstantFalse as u16;
@@ -50,6 +51,8 @@ const OP_EXECUTION_MODE_ID: u16 = Op::ExecutionModeId as u16;
 enum Scalar {
     Bool,
     Int,
+    /// A 32-bit float: only moved between composites (extracted, shuffled, selected).
+    Float,
 }
 
 /// A value known at translate time: an integer's 32 bits or a boolean.
@@ -70,6 +73,9 @@ enum Change {
     /// An `OpExecutionModeId` written with literals (mode, values), or an `OpExecutionMode
     /// LocalSize` given the `gl_WorkGroupSize` composite's values.
     Literal(u32, Vec<u32>),
+    /// An `OpSpecConstantOp VectorShuffle` of constant composites: the composite of the
+    /// components it picks.
+    Shuffled(Vec<u32>),
 }
 
 /// `words` with the specialization constants of the module doc folded.
@@ -125,6 +131,13 @@ pub(crate) fn spec_constants_naga_reads(words: Vec<u32>) -> Vec<u32> {
                 make_plain(w[2], &spec, &mut changes);
                 for c in &w[3..] {
                     make_plain(*c, &spec, &mut changes);
+                }
+            }
+            OP_SPEC_CONSTANT_OP if w.len() >= 7 && w[3] == Op::VectorShuffle as u32 => {
+                // (SMAA's `vec2(reverseScreenWidth, …).xy` of specialization constants.)
+                if let Some(picked) = shuffled(&w[4..], &composites) {
+                    composites.insert(w[2], picked.clone());
+                    changes.insert(at, Change::Shuffled(picked));
                 }
             }
             OP_SPEC_CONSTANT_OP if w.len() >= 5 => {
@@ -194,6 +207,11 @@ fn applied(words: &[u32], changes: &HashMap<usize, Change>) -> Vec<u32> {
                 let op = if *b { OP_CONSTANT_TRUE } else { OP_CONSTANT_FALSE };
                 out.extend_from_slice(&[(3 << 16) | u32::from(op), w[1], w[2]]);
             }
+            Some(Change::Shuffled(picked)) => {
+                out.push(((3 + picked.len() as u32) << 16) | u32::from(OP_CONSTANT_COMPOSITE));
+                out.extend_from_slice(&[w[1], w[2]]);
+                out.extend_from_slice(picked);
+            }
             Some(Change::Literal(mode, literals)) => {
                 out.push(((3 + literals.len() as u32) << 16) | u32::from(OP_EXECUTION_MODE));
                 out.extend_from_slice(&[w[1], *mode]);
@@ -213,6 +231,9 @@ fn note_value(op: u16, w: &[u32], scalars: &mut HashMap<u32, Scalar>, values: &m
         OP_TYPE_INT if w.len() >= 4 && w[2] == 32 => {
             scalars.insert(w[1], Scalar::Int);
         }
+        OP_TYPE_FLOAT if w.len() >= 3 && w[2] == 32 => {
+            scalars.insert(w[1], Scalar::Float);
+        }
         OP_CONSTANT | OP_SPEC_CONSTANT if w.len() == 4 && scalars.contains_key(&w[1]) => {
             values.insert(w[2], Value::Bits(w[3]));
         }
@@ -222,12 +243,20 @@ fn note_value(op: u16, w: &[u32], scalars: &mut HashMap<u32, Scalar>, values: &m
         OP_CONSTANT_NULL if w.len() == 3 => {
             match scalars.get(&w[1]) {
                 Some(Scalar::Bool) => values.insert(w[2], Value::Bool(false)),
-                Some(Scalar::Int) => values.insert(w[2], Value::Bits(0)),
+                Some(Scalar::Int | Scalar::Float) => values.insert(w[2], Value::Bits(0)),
                 None => None,
             };
         }
         _ => {}
     }
+}
+
+/// The components `OpVectorShuffle` `operands` (two vectors, then component indices) picks
+/// from constant composites; None where a vector is not one or an index is undefined.
+fn shuffled(operands: &[u32], composites: &HashMap<u32, Vec<u32>>) -> Option<Vec<u32>> {
+    let [a, b, picks @ ..] = operands else { return None };
+    let (a, b) = (composites.get(a)?, composites.get(b)?);
+    picks.iter().map(|&i| a.get(i as usize).or_else(|| b.get((i as usize).checked_sub(a.len())?)).copied()).collect()
 }
 
 fn bits_of(values: &HashMap<u32, Value>, id: u32) -> Option<u32> {
@@ -257,6 +286,9 @@ fn evaluate(
     composites: &HashMap<u32, Vec<u32>>,
 ) -> Option<Value> {
     let op = Op::from_u32(opcode)?;
+    if result == Scalar::Float && !matches!(op, Op::CompositeExtract | Op::Select) {
+        return None;
+    }
     if op == Op::CompositeExtract {
         let [composite, index] = operands else { return None };
         return values.get(composites.get(composite)?.get(*index as usize)?).copied();
@@ -396,5 +428,31 @@ mod tests {
         assert_eq!(at(Op::SLessThan, &[1, 2], Scalar::Bool), Some(Value::Bool(true)));
         assert_eq!(at(Op::Select, &[3, 2, 4], int), Some(Value::Bits(2)));
         assert_eq!(at(Op::FAdd, &[2, 2], int), None);
+    }
+
+    /// SMAA's `vec2(reverseScreenWidth, …)` swizzles: a `VectorShuffle` of a composite of
+    /// float specialization constants becomes the composite of the picked components, and a
+    /// component extracted from it the constant of its default.
+    #[test]
+    fn float_composites_shuffle_and_extract() {
+        #[rustfmt::skip]
+        let words = vec![
+            0x0723_0203, 0x0001_0000, 0, 20, 0,
+            (3 << 16) | 22, 1, 32,                          // %1 = OpTypeFloat 32
+            (4 << 16) | 23, 2, 1, 4,                        // %2 = OpTypeVector %1 4
+            (4 << 16) | 23, 3, 1, 2,                        // %3 = OpTypeVector %1 2
+            (4 << 16) | 50, 1, 4, 0x3f80_0000,              // %4 = OpSpecConstant %1 1.0
+            (4 << 16) | 50, 1, 5, 0x4000_0000,              // %5 = OpSpecConstant %1 2.0
+            (7 << 16) | 51, 2, 6, 4, 5, 4, 5,               // %6 = OpSpecConstantComposite %2 %4 %5 %4 %5
+            (8 << 16) | 52, 3, 7, 79, 6, 6, 1, 2,           // %7 = OpSpecConstantOp %3 VectorShuffle %6 %6 1 2
+            (6 << 16) | 52, 1, 8, 81, 7, 0,                 // %8 = OpSpecConstantOp %1 CompositeExtract %7 0
+            (6 << 16) | 52, 1, 9, 128, 4, 5,                // %9 = OpSpecConstantOp %1 FAdd %4 %5 (not folded)
+        ];
+        let out = spec_constants_naga_reads(words);
+        let ops: Vec<(u16, Vec<u32>)> = instructions(&out).skip(3).map(|(at, op, n)| (op, out[at + 1..at + n].to_vec())).collect();
+        assert_eq!(ops[2], (OP_CONSTANT_COMPOSITE, vec![2, 6, 4, 5, 4, 5]));
+        assert_eq!(ops[3], (OP_CONSTANT_COMPOSITE, vec![3, 7, 5, 4]), "components 1 and 2 of %6");
+        assert_eq!(ops[4], (OP_CONSTANT, vec![1, 8, 0x4000_0000]), "the default of %5");
+        assert_eq!(ops[5].0, OP_SPEC_CONSTANT_OP, "float arithmetic is left to naga's refusal");
     }
 }
