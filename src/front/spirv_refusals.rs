@@ -58,6 +58,9 @@ fn construct_of(error: &Error) -> Option<(String, Option<Op>)> {
             ("buffer references (GL_EXT_buffer_reference: pointers into device memory)".into(), None)
         }
         Error::UnsupportedCapability(c) => (capability(Capability::from_u32(c as u32)?), None),
+        Error::UnsupportedInstruction(_, o) if op(o as u32) == Some(Op::SpecConstantOp) => {
+            ("an expression of specialization constants (`OpSpecConstantOp`) naga does not read".into(), None)
+        }
         Error::UnsupportedInstruction(_, o) => (format!("what glslang writes as `Op{o:?}`"), op(o as u32)),
         _ => return None,
     })
