@@ -168,4 +168,5 @@ def main():
     print(len(gl_programs), "OpenGL programs,", len(vk_programs), "Vulkan programs (commit", commit + ")")
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -42,6 +42,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from granite_common import GitTree  # noqa: E402
 from mirror import write_program, strip_cpp_comments, c_string  # noqa: E402
+from gather_citra import cmake_list_split  # noqa: E402
 
 HS = "src/video_core/host_shaders/"
 GL = "src/video_core/renderer_opengl/"
@@ -51,33 +52,10 @@ INC = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"')
 VK_FLAGS = "-V --target-env spirv1.3 -l\n"
 
 
-def cmake_list_split(value):
-    """cmExpandList keeping empty elements: split at `;` outside [], `\\;` is a literal `;`."""
-    out, cur, nest, i = [], "", 0, 0
-    while i < len(value):
-        c = value[i]
-        if c == "\\" and value[i + 1:i + 2] == ";":
-            cur += ";"
-            i += 2
-            continue
-        if c == "[":
-            nest += 1
-        elif c == "]":
-            nest -= 1
-        if c == ";" and nest == 0:
-            out.append(cur)
-            cur = ""
-        else:
-            cur += c
-        i += 1
-    out.append(cur)
-    return out
-
-
 def embedded(text):
     """The string StringShaderHeader.cmake makes of a file (raw-string lines)."""
     text = text.replace(";", "{{SEMICOLON}}").replace("\n", ";")
-    return "".join(line + "\n" for line in cmake_list_split(text)).replace("{{SEMICOLON}}", ";")
+    return "".join(line + "\n" for line in cmake_list_split(text, keep_empty=True)).replace("{{SEMICOLON}}", ";")
 
 
 def replace_include(src, name, content):
