@@ -46,6 +46,14 @@ pub fn include_directives(text: &str) -> Vec<(std::ops::Range<usize>, String, st
     found
 }
 
+/// The name an object-like macro gives, when its replacement list (`after`: the text after
+/// the macro's name) is one identifier (`#define texture2D texture2DRect`).
+pub fn renamed_to(after: &str) -> Option<&str> {
+    let body = after.trim();
+    let identifier = !body.is_empty() && body.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+    (!after.starts_with('(') && identifier).then_some(body)
+}
+
 /// `(macro name, body span)` of every `#define` line (the body starts after the name, or
 /// after the parameter list's name for function-like macros).
 pub fn define_lines(text: &str) -> Vec<(String, std::ops::Range<usize>)> {

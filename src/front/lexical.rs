@@ -207,7 +207,7 @@ fn define_body_types(clean: &[u8], line: Range<usize>, parser: &mut [u8]) -> Opt
 }
 
 /// Each identifier-like word of `line` with its offset.
-fn words(line: &str) -> impl Iterator<Item = (usize, &str)> {
+pub(crate) fn words(line: &str) -> impl Iterator<Item = (usize, &str)> {
     let bytes = line.as_bytes();
     let mut i = 0;
     std::iter::from_fn(move || {

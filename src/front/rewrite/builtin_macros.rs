@@ -8,7 +8,7 @@
 //! the renaming. Macros whose body is no longer than the name are applied earlier, with
 //! the offsets kept ([`conditionals`](crate::front::conditionals)).
 
-use crate::front::builtins;
+use crate::front::{builtins, conditionals};
 
 use super::Ctx;
 
@@ -28,14 +28,10 @@ impl Ctx<'_> {
                     let rest = rest.trim_start();
                     let n = rest.find(|c: char| !c.is_ascii_alphanumeric() && c != '_').unwrap_or(rest.len());
                     let (name, after) = rest.split_at(n);
-                    let body = after.trim();
-                    let renames = !after.starts_with('(')
-                        && (is_type_name(name) || builtins::is_function(name))
-                        && !body.is_empty()
-                        && body != name
-                        && body.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+                    let body = conditionals::renamed_to(after).filter(|b| *b != name);
+                    let builtin = is_type_name(name) || builtins::is_function(name);
                     let line = range.start..range.start + code.trim_end().len();
-                    if renames && !self.edits.touches(&line) {
+                    if let Some(body) = body.filter(|_| builtin && !self.edits.touches(&line)) {
                         self.edits.delete(line);
                         applied.retain(|(n, _)| n != name);
                         applied.push((name.to_string(), body.to_string()));
@@ -61,24 +57,11 @@ impl Ctx<'_> {
         if applied.is_empty() {
             return;
         }
-        let is_word = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
-        let mut i = 0;
-        while i < code.len() {
-            if !is_word(code[i]) {
-                i += 1;
-                continue;
-            }
-            let from = i;
-            while i < code.len() && is_word(code[i]) {
-                i += 1;
-            }
-            // Numbers (`1e5`, `2u`) hold no names.
-            let word = std::str::from_utf8(&code[from..i]).unwrap_or("");
-            if code[from].is_ascii_digit() {
-                continue;
-            }
+        let code = String::from_utf8_lossy(code);
+        // Numbers (`1e5`, `2u`) hold no names.
+        for (from, word) in crate::front::lexical::words(&code).filter(|(_, w)| !w.starts_with(|c: char| c.is_ascii_digit())) {
             if let Some((_, body)) = applied.iter().find(|(n, _)| n == word) {
-                let range = at + from..at + i;
+                let range = at + from..at + from + word.len();
                 if !self.edits.touches(&range) {
                     self.edits.replace(range, body.clone());
                 }

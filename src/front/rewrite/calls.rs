@@ -83,8 +83,8 @@ impl Ctx<'_> {
                     at += w.len() + 1;
                 }
             }
-            let fi = s.functions.iter().position(|g| std::ptr::eq(g, f)).unwrap_or(0);
-            let split: Vec<_> = f.params.iter().enumerate().filter(|(pi, p)| p.ty.is_sampler() && !self.is_array_param(fi, *pi)).collect();
+            let split: Vec<_> =
+                f.params.iter().enumerate().filter(|(pi, p)| p.ty.is_sampler() && !self.is_array_param(&f.name, *pi)).collect();
             for (_, p) in split {
                 let (tex, samp) = crate::front::syntax::sampler_parts(&p.ty.base).expect("sampler");
                 let text = match &p.name {

@@ -56,10 +56,10 @@ impl Ctx<'_> {
         self.array_params.iter().find(|a| a.function == fi && a.param == pi).map(|a| a.global)
     }
 
-    /// Whether parameter `pi` of function `fi` (or of a prototype of it) stands for a uniform.
-    pub(super) fn is_array_param(&self, fi: usize, pi: usize) -> bool {
-        let name = &self.s.functions[fi].name;
-        self.array_params.iter().any(|a| a.param == pi && self.s.functions[a.function].name == *name)
+    /// Whether parameter `pi` of the function named `name` (its definition or a prototype)
+    /// stands for a uniform.
+    pub(super) fn is_array_param(&self, name: &str, pi: usize) -> bool {
+        self.array_params.iter().any(|a| a.param == pi && self.s.functions[a.function].name == name)
     }
 
     /// The parameters and arguments that stand for a uniform array, deleted with their commas.

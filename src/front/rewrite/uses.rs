@@ -60,11 +60,11 @@ impl Ctx<'_> {
                         self.member_use(u, &g.name);
                     }
                 }
-                Referent::Param(..) if self.array_param_global(&u.target).is_some() => {
-                    let g = &s.globals[self.array_param_global(&u.target).unwrap_or_default()];
-                    self.sampler_use(u, &g.name, &g.ty);
-                }
                 Referent::Param(fi, pi) => {
+                    if let Some(g) = self.array_param_global(&u.target).map(|gi| &s.globals[gi]) {
+                        self.sampler_use(u, &g.name, &g.ty);
+                        continue;
+                    }
                     let p = &s.functions[*fi].params[*pi];
                     let name = p.name.clone().unwrap_or_default();
                     let text = if u.user_call_arg {

@@ -53,9 +53,7 @@ impl<'a> Collector<'a> {
         // Object-like macros whose body is one identifier (`#define texture2D texture2DRect`).
         let renames = defines
             .iter()
-            .filter(|(_, body)| !s.text[body.clone()].starts_with('('))
-            .map(|(name, body)| (name.clone(), s.text[body.clone()].trim().to_string()))
-            .filter(|(_, body)| !body.is_empty() && body.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_'))
+            .filter_map(|(name, body)| Some((name.clone(), crate::front::conditionals::renamed_to(&s.text[body.clone()])?.to_string())))
             .collect();
         let macro_bodies = defines.into_iter().map(|(_, body)| body).collect();
         let mut c = Collector {
