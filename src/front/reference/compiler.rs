@@ -203,9 +203,13 @@ fn create(text: &str, kind: StageKind, dialect: Dialect, spirv: Option<&SpirvSet
             sys::glslang_shader_set_default_uniform_block_set_and_binding(handle.as_ptr(), setup.set, setup.binding);
         }
     }
-    // SAFETY: a live shader and its own input.
+    // The C interface's parse reads the text its preprocess wrote; given the text itself, it
+    // parses as glslangValidator does (the full parse preprocesses too), once instead of
+    // twice, and its messages keep the user's columns.
+    // SAFETY: a live shader and its own input; glslang copies the text.
     let ok = unsafe {
-        sys::glslang_shader_preprocess(handle.as_ptr(), &*input) != 0 && sys::glslang_shader_parse(handle.as_ptr(), &*input) != 0
+        sys::glslang_shader_set_preprocessed_code(handle.as_ptr(), code.as_ptr());
+        sys::glslang_shader_parse(handle.as_ptr(), &*input) != 0
     };
     // SAFETY: a live shader.
     let log = log_of(unsafe { sys::glslang_shader_get_info_log(handle.as_ptr()) });
