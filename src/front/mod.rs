@@ -26,7 +26,8 @@
 //!   naga, where naga's GLSL front cannot take a stage glslang accepts (as written, or from
 //!   the rewrite), on the SPIR-V words as [`spirv_binary`] reads and edits them
 //!   ([`spirv_interface_blocks`]: blocks between stages as one variable per member;
-//!   [`spirv_signedness`]: integer signedness as naga reads it);
+//!   [`spirv_signedness`]: integer signedness as naga reads it; [`spirv_array_sizes`]: the
+//!   layer count of an arrayed image's size, which naga's SPIR-V front leaves out);
 //!   [`program`]: all of it per program.
 
 pub mod aggregate_varyings;
@@ -56,6 +57,7 @@ pub mod rewrite;
 pub mod source_text;
 pub mod spirv_absent_builtins;
 pub mod spirv_aggregate_varyings;
+pub mod spirv_array_sizes;
 pub mod spirv_binary;
 pub mod spirv_binding_arrays;
 pub mod spirv_float_tests;

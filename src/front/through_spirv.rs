@@ -24,6 +24,7 @@ use crate::front::reference::compiler::{self, Dialect, SpirvSetup};
 use crate::front::reference::log::{self, LineTable};
 use crate::front::spirv_absent_builtins::absent_builtins_as_constants;
 use crate::front::spirv_aggregate_varyings::split_aggregate_varyings;
+use crate::front::spirv_array_sizes::{array_sizes_by_parts, layers_queried};
 use crate::front::spirv_binary::{readable_by_naga, space_bindings_for_split, split_combined_samplers, Lines};
 use crate::front::spirv_binding_arrays::binding_arrays_as_elements;
 use crate::front::spirv_float_tests::float_tests_from_bits;
@@ -194,7 +195,7 @@ fn no_spirv(log: String) -> String {
 fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Result<Module, Refusal> {
     dump_spirv(&words, &format!("{kind}.glslang"));
     // The passes over the words that make glslang's SPIR-V what naga reads, in order.
-    let passes: [fn(Vec<u32>) -> Vec<u32>; 12] = [
+    let passes: [fn(Vec<u32>) -> Vec<u32>; 13] = [
         readable_by_naga,
         spec_constants_naga_reads,
         wide_integers_as_pairs,
@@ -207,6 +208,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
         signedness_naga_reads,
         split_interface_blocks,
         split_aggregate_varyings,
+        array_sizes_by_parts,
     ];
     let words = passes.iter().fold(split_combined_samplers(words)?, |words, pass| pass(words));
     dump_spirv(&words, &kind.to_string());
@@ -223,6 +225,7 @@ fn module_of(words: Vec<u32>, kind: StageKind, text: &str, plan: &Plan) -> Resul
     if let Some(construct) = naga_run::std140_two_row_matrix(&module) {
         return Err(format!("naga's SPIR-V front cannot read the {kind} stage: {construct}").into());
     }
+    layers_queried(&mut module);
     let table = LineTable::new(text);
     respan_module(&mut module, &|span| lines.user_span(span, &table, text));
     user_names(&mut module);

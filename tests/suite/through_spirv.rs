@@ -16,7 +16,7 @@ fn legal_programs_naga_refuses_go_through_spirv() {
     settings.set_snapshot_path("../../snapshots/through_spirv");
     settings.set_prepend_module_to_snapshot(false);
     settings.set_omit_expression(true);
-    for dir in common::fixtures("tests/through_spirv", 10) {
+    for dir in common::fixtures("tests/through_spirv", 11) {
         let name = common::name_of(&dir);
         assert_ne!(common::glslang_links(&dir), Some(false), "{name}: glslangValidator does not link it, so it is no legal fixture");
         let (outcome, checked) = common::check(&dir);

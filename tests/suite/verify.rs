@@ -538,6 +538,29 @@ fn infinite_constants_match_the_gl_driver() {
     assert!(text.contains("1/1 frame match"), "{text}");
 }
 
+/// The size of array textures on the route through SPIR-V (`textureSize` of a
+/// `sampler2DArray` and a `samplerCubeArray`, layers included) draws what the GL driver draws.
+#[test]
+fn array_texture_sizes_match_the_gl_driver() {
+    if !can_verify() {
+        return;
+    }
+    let dir = "tests/through_spirv/11-v400-array-texture-size";
+    let out = effectc(&[
+        "verify",
+        "--color",
+        "never",
+        dir,
+        "--size",
+        "64x64",
+        "--out",
+        scratch("verify-array-sizes", "layers").to_str().unwrap(),
+    ]);
+    let text = stdout(&out);
+    assert_eq!(code(&out), 0, "{text}");
+    assert!(text.contains("1/1 frame match"), "{text}");
+}
+
 /// Two-row matrices in std140 blocks (a loose `mat3x2`, `mat2` and `mat3x2` arrays in a
 /// uniform block, a struct holding a `mat2` loaded whole), stored as `vec4` columns on the
 /// route through SPIR-V, draw what the GL driver draws with the manifest's values.
