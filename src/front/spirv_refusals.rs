@@ -58,12 +58,33 @@ fn construct_of(error: &Error) -> Option<(String, Option<Op>)> {
             ("buffer references (GL_EXT_buffer_reference: pointers into device memory)".into(), None)
         }
         Error::UnsupportedCapability(c) => (capability(Capability::from_u32(c as u32)?), None),
+        Error::UnsupportedExtension(ref name) => (extension(name), None),
+        // A constant of an integer type naga has no literal for (the width in bytes).
+        Error::InvalidTypeWidth(1) => (capability(Capability::Int8), None),
+        Error::InvalidTypeWidth(2) => {
+            ("16-bit integers (`uint16_t`, `int16_t`, GL_EXT_shader_explicit_arithmetic_types: WGSL has none)".into(), None)
+        }
         Error::UnsupportedInstruction(_, o) if op(o as u32) == Some(Op::SpecConstantOp) => {
             ("an expression of specialization constants (`OpSpecConstantOp`) naga does not read".into(), None)
         }
         Error::UnsupportedInstruction(_, o) => (format!("what glslang writes as `Op{o:?}`"), op(o as u32)),
         _ => return None,
     })
+}
+
+/// A SPIR-V extension naga does not read, as the GLSL feature that makes glslang declare it.
+fn extension(name: &str) -> String {
+    let c = match name {
+        "SPV_KHR_physical_storage_buffer" | "SPV_EXT_physical_storage_buffer" => {
+            return "buffer references (GL_EXT_buffer_reference: pointers into device memory)".into()
+        }
+        "SPV_KHR_8bit_storage" => Capability::StorageBuffer8BitAccess,
+        "SPV_KHR_16bit_storage" => Capability::StorageBuffer16BitAccess,
+        "SPV_KHR_ray_query" => Capability::RayQueryKHR,
+        "SPV_EXT_shader_stencil_export" => Capability::StencilExportEXT,
+        other => return format!("what needs the SPIR-V extension `{other}`"),
+    };
+    capability(c)
 }
 
 fn capability(c: Capability) -> String {
@@ -103,6 +124,12 @@ mod tests {
             .unwrap()
             .0
             .starts_with("8-bit integers"));
+        let extension = |name: &str| construct_of(&Error::UnsupportedExtension(name.into())).unwrap().0;
+        assert!(extension("SPV_KHR_physical_storage_buffer").starts_with("buffer references"));
+        assert!(extension("SPV_KHR_8bit_storage").starts_with("8-bit integers"));
+        assert!(extension("SPV_KHR_16bit_storage").starts_with("16-bit types"));
+        assert_eq!(extension("SPV_NV_made_up"), "what needs the SPIR-V extension `SPV_NV_made_up`");
+        assert!(construct_of(&Error::InvalidTypeWidth(2)).unwrap().0.starts_with("16-bit integers"));
         assert!(construct_of(&Error::InvalidHeader).is_none());
         let r = refusal(
             &Error::UnsupportedCapability(naga::back::spv::Capability::RayQueryKHR),
