@@ -40,9 +40,14 @@ fn main_name(stage: StageKind) -> String {
     format!("{}_glsl_main", stage.short_name())
 }
 
-/// Why two stages cannot share one module.
+/// Why the stages cannot share one module: what is in conflict, in the stage `stage`; with
+/// `within_stage`, both resources are that stage's own.
 #[derive(Debug, Clone, PartialEq)]
-pub struct MergeConflict(pub String);
+pub struct MergeConflict {
+    pub message: String,
+    pub stage: StageKind,
+    pub within_stage: bool,
+}
 
 /// Merges the stage modules (pipeline order) into one module.
 pub fn merge(stages: &[(StageKind, &Module)]) -> Result<Module, MergeConflict> {
@@ -63,10 +68,13 @@ struct Importer<'a> {
     global_exprs: HashMap<Handle<Expression>, Handle<Expression>>,
     globals: HashMap<Handle<GlobalVariable>, Handle<GlobalVariable>>,
     functions: HashMap<Handle<Function>, Handle<Function>>,
+    /// Globals of `dst` from this index on were added by this stage.
+    first_own_global: usize,
 }
 
 impl<'a> Importer<'a> {
     fn new(dst: &'a mut Module, src: &'a Module, stage: StageKind) -> Self {
+        let first_own_global = dst.global_variables.len();
         Importer {
             dst,
             src,
@@ -75,6 +83,7 @@ impl<'a> Importer<'a> {
             constants: HashMap::new(),
             overrides: HashMap::new(),
             global_exprs: HashMap::new(),
+            first_own_global,
             globals: HashMap::new(),
             functions: HashMap::new(),
         }
@@ -249,14 +258,18 @@ impl<'a> Importer<'a> {
                     }
                 }
                 let d = &self.dst.global_variables[existing];
-                return Err(MergeConflict(format!(
-                    "group {} binding {} holds `{}` in one stage and `{}` in the {} stage",
-                    binding.group,
-                    binding.binding,
+                let (a, b) = (
                     d.name.as_deref().or(self.dst.types[d.ty].name.as_deref()).unwrap_or("?"),
                     g.name.as_deref().or(self.src.types[g.ty].name.as_deref()).unwrap_or("?"),
-                    self.stage
-                )));
+                );
+                let (group, index, stage) = (binding.group, binding.binding, self.stage);
+                let within_stage = existing.index() >= self.first_own_global;
+                let message = if within_stage {
+                    format!("group {group} binding {index} holds both `{a}` and `{b}` in the {stage} stage")
+                } else {
+                    format!("group {group} binding {index} holds `{a}` in one stage and `{b}` in the {stage} stage")
+                };
+                return Err(MergeConflict { message, stage, within_stage });
             }
         }
         let span = self.src.global_variables.get_span(h);
@@ -473,6 +486,18 @@ mod tests {
         let v = module(VERT, naga::ShaderStage::Vertex);
         let f = module(&FRAG.replace("mat4 mvp; float k;", "vec4 other; float k;"), naga::ShaderStage::Fragment);
         let err = merge(&[(StageKind::Vertex, &v), (StageKind::Fragment, &f)]).unwrap_err();
-        assert!(err.0.contains("group 0 binding 0"), "{}", err.0);
+        assert!(err.message.contains("group 0 binding 0 holds `U` in one stage and `U` in the fragment stage"), "{}", err.message);
+        assert_eq!((err.stage, err.within_stage), (StageKind::Fragment, false));
+    }
+
+    #[test]
+    fn two_resources_of_one_stage_at_one_binding_are_named_in_that_stage() {
+        let v = module(VERT, naga::ShaderStage::Vertex);
+        let both = "layout(set=0,binding=1) uniform A { vec4 a; };\nlayout(set=0,binding=1) uniform B { vec2 b; };\nlayout(location=0) in vec2 uv;";
+        let f =
+            module(&FRAG.replace("layout(location=0) in vec2 uv;", both).replace("vec4(uv", "vec4(a.xy + b"), naga::ShaderStage::Fragment);
+        let err = merge(&[(StageKind::Vertex, &v), (StageKind::Fragment, &f)]).unwrap_err();
+        assert!(err.message.contains("group 0 binding 1 holds both `A` and `B` in the fragment stage"), "{}", err.message);
+        assert_eq!((err.stage, err.within_stage), (StageKind::Fragment, true));
     }
 }

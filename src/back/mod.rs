@@ -160,9 +160,18 @@ pub fn translate(
     let modules = stage_modules(program, options)?;
     let refs: Vec<(StageKind, &Module)> = modules.iter().map(|(k, m)| (*k, m)).collect();
     let mut module = merge::merge(&refs).map_err(|c| {
-        vec![Diagnostic::new(Code::BindingConflict, format!("the stages cannot share one module: {}", c.0))
-            .in_file(file)
-            .with_help("give each resource its own binding in every stage")]
+        let file = program.stage(c.stage).map_or(file, |s| s.syntax.file);
+        let d = Diagnostic::new(Code::BindingConflict, format!("the stages cannot share one module: {}", c.message)).in_file(file);
+        vec![if c.within_stage {
+            // Vulkan lets resources alias a binding (a branch picks the one it reads); a
+            // WebGPU shader declares one resource per binding.
+            d.with_note(
+                "WGSL declares one resource per binding; the stage reads both (a branch on a specialization constant still reads both)",
+            )
+            .with_help("give each resource its own binding, or declare the one this variant uses")
+        } else {
+            d.with_help("give each resource its own binding in every stage")
+        }]
     })?;
     fixes::normalize_interpolation(&mut module);
     fixes::name_uniform_block(&mut module, UNIFORM_BLOCK);
