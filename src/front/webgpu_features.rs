@@ -103,9 +103,10 @@ pub fn float16_needed(s: &StageSyntax, validated: &Validated) -> Option<Diagnost
 /// [`RUNTIME_ELEMENTS`](crate::front::spirv_binding_arrays::RUNTIME_ELEMENTS) of them.
 pub fn runtime_arrays_bound(s: &StageSyntax) -> Vec<Diagnostic> {
     let n = crate::front::spirv_binding_arrays::RUNTIME_ELEMENTS;
+    // `isampler2D`, `uimage2D`: one prefix (trimming every `i` would eat `image`'s).
     let opaque = |base: &str| {
-        let base = base.trim_start_matches(['i', 'u']);
-        ["sampler", "texture", "image", "subpassInput"].iter().any(|p| base.starts_with(p))
+        let unprefixed = base.strip_prefix(['i', 'u']).unwrap_or(base);
+        ["sampler", "texture", "image", "subpassInput"].iter().any(|p| base.starts_with(p) || unprefixed.starts_with(p))
     };
     s.globals
         .iter()

@@ -500,3 +500,46 @@ fn compute_stage_idioms_translate() {
     );
     assert!(wgsl.contains("var<storage> offsets") || wgsl.contains("var<storage, read> offsets"), "{wgsl}");
 }
+
+/// Arrays of textures and of storage images sized at run time (bindless) each get N0113,
+/// which says how many elements the translation binds; naga's SPIR-V route takes both.
+#[test]
+fn runtime_sized_texture_and_image_arrays_are_noted() {
+    let (code, stdout, _) = run_translate(
+        "translate-bindless",
+        "bindless.comp",
+        "vulkan1.1",
+        "#version 450\n#extension GL_EXT_nonuniform_qualifier : require\nlayout(local_size_x = 8, local_size_y = 8) in;\n\
+         layout(set = 0, binding = 0) uniform sampler2D textures[];\n\
+         layout(set = 1, binding = 0, rgba8) uniform writeonly image2D targets[];\n\
+         layout(push_constant) uniform Pick { uint source; uint target; } pick;\n\
+         void main() {\n\
+           ivec2 p = ivec2(gl_GlobalInvocationID.xy);\n\
+           imageStore(targets[nonuniformEXT(pick.target)], p, texelFetch(textures[nonuniformEXT(pick.source)], p, 0));\n\
+         }\n",
+    );
+    assert_eq!(code, Some(0), "{stdout}");
+    assert!(stdout.contains("note[N0113]: `textures` is sized at run time"), "{stdout}");
+    assert!(stdout.contains("note[N0113]: `targets` is sized at run time"), "{stdout}");
+}
+
+/// A multisampled storage image (`image2DMSArray`; WGSL has none) is named as such where
+/// translation stops, not as what naga's GLSL parser made of the unknown type name.
+#[test]
+fn multisampled_storage_images_are_named() {
+    let (code, stdout, _) = run_translate(
+        "translate-msaa-image",
+        "resolve.comp",
+        "vulkan1.1",
+        "#version 450\nlayout(local_size_x = 8, local_size_y = 8) in;\n\
+         layout(binding = 0, rgba8) uniform readonly image2DMSArray msaa_in;\n\
+         layout(binding = 1, rgba8) uniform writeonly image2DArray resolved;\n\
+         void main() {\n\
+           ivec3 p = ivec3(gl_GlobalInvocationID);\n\
+           imageStore(resolved, p, imageLoad(msaa_in, p, 0));\n\
+         }\n",
+    );
+    assert_eq!(code, Some(1), "{stdout}");
+    assert!(stdout.contains("error[E0306]: the compute stage uses multisampled storage images"), "{stdout}");
+    assert!(stdout.contains("resolve.comp:3:"), "at the declaration:\n{stdout}");
+}
