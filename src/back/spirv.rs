@@ -21,12 +21,54 @@ fn options() -> naga::back::spv::Options<'static> {
 /// defaults first (WGSL keeps them as `override`s).
 pub fn write(module: &Module, info: &ModuleInfo, stage: ShaderStage, entry: &str) -> Result<Vec<u32>, String> {
     let pipeline = naga::back::spv::PipelineOptions { shader_stage: stage, entry_point: entry.to_string() };
-    if module.overrides.is_empty() {
-        return naga::back::spv::write_vec(module, info, &options(), Some(&pipeline)).map_err(|e| format!("naga's SPIR-V writer: {e}"));
+    let written = if module.overrides.is_empty() {
+        naga::back::spv::write_vec(module, info, &options(), Some(&pipeline))
+    } else {
+        let (module, info) = naga::back::pipeline_constants::process_overrides(module, info, Some((stage, entry)), &Default::default())
+            .map_err(|e| format!("specialization constants cannot take their defaults: {e}"))?;
+        naga::back::spv::write_vec(&module, &info, &options(), Some(&pipeline))
+    };
+    written.map(image_sizes_without_levels).map_err(|e| format!("naga's SPIR-V writer: {e}"))
+}
+
+/// naga's SPIR-V writer (30) asks every arrayed image's layer count with
+/// `OpImageQuerySizeLod`, which only sampled, single-sampled images take
+/// (VUID-StandaloneSpirv-OpImageQuerySizeLod-04659): `imageSize` of an `image2DArray` gave
+/// SPIR-V that spirv-val refuses. For storage and multisampled images the query becomes
+/// `OpImageQuerySize`, the same result without a level.
+fn image_sizes_without_levels(words: Vec<u32>) -> Vec<u32> {
+    use crate::front::spirv_binary::{instructions, HEADER_WORDS, OP_TYPE_IMAGE};
+    use rspirv::spirv::Op;
+    const SIZE_LOD: u16 = Op::ImageQuerySizeLod as u16;
+    const SIZE: u16 = Op::ImageQuerySize as u16;
+    if !instructions(&words).any(|(_, op, _)| op == SIZE_LOD) {
+        return words;
     }
-    let (module, info) = naga::back::pipeline_constants::process_overrides(module, info, Some((stage, entry)), &Default::default())
-        .map_err(|e| format!("specialization constants cannot take their defaults: {e}"))?;
-    naga::back::spv::write_vec(&module, &info, &options(), Some(&pipeline)).map_err(|e| format!("naga's SPIR-V writer: {e}"))
+    // OpTypeImage %id %sampled-type Dim Depth Arrayed MS Sampled Format: MS = 1 or Sampled = 2.
+    let mut levelless: Vec<u32> = Vec::new();
+    let mut type_of: std::collections::HashMap<u32, u32> = std::collections::HashMap::new();
+    for (at, op, count) in instructions(&words) {
+        let w = &words[at..(at + count.max(1)).min(words.len())];
+        match op {
+            OP_TYPE_IMAGE if w.len() >= 9 && (w[6] == 1 || w[7] == 2) => levelless.push(w[1]),
+            // Loads of image variables: the ids the queries take.
+            _ if op == Op::Load as u16 && w.len() >= 4 => {
+                type_of.insert(w[2], w[1]);
+            }
+            _ => {}
+        }
+    }
+    let mut out = Vec::with_capacity(words.len());
+    out.extend_from_slice(&words[..HEADER_WORDS]);
+    for (at, op, count) in instructions(&words) {
+        let w = &words[at..(at + count.max(1)).min(words.len())];
+        if op == SIZE_LOD && w.len() == 5 && type_of.get(&w[3]).is_some_and(|t| levelless.contains(t)) {
+            out.extend_from_slice(&[(4 << 16) | u32::from(SIZE), w[1], w[2], w[3]]);
+        } else {
+            out.extend_from_slice(w);
+        }
+    }
+    out
 }
 
 /// Little-endian bytes of SPIR-V words (the `.spv` file).

@@ -543,3 +543,36 @@ fn multisampled_storage_images_are_named() {
     assert!(stdout.contains("error[E0306]: the compute stage uses multisampled storage images"), "{stdout}");
     assert!(stdout.contains("resolve.comp:3:"), "at the declaration:\n{stdout}");
 }
+
+/// The layer count of an arrayed storage image (`imageSize` of an `image2DArray`) is valid
+/// SPIR-V: naga's writer asks it with `OpImageQuerySizeLod`, which storage images do not take.
+#[test]
+fn storage_image_layer_counts_are_valid_spirv() {
+    let (code, stdout, dir) = run_translate(
+        "translate-storage-layers",
+        "layers.comp",
+        "opengl",
+        "#version 430\nlayout(local_size_x = 8, local_size_y = 8) in;\n\
+         layout(binding = 0, rgba8) uniform writeonly image2DArray dst;\n\
+         void main() {\n\
+           ivec3 size = imageSize(dst);\n\
+           imageStore(dst, ivec3(gl_GlobalInvocationID.xy, size.z - 1), vec4(float(size.z) / 8.0));\n\
+         }\n",
+    );
+    assert_eq!(code, Some(0), "{stdout}");
+    let bytes = std::fs::read(dir.join("out").join("layers.comp.spv")).unwrap();
+    let words: Vec<u32> = bytes.chunks(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
+    // The opcodes, instruction by instruction after the 5-word header.
+    let mut ops = Vec::new();
+    let mut i = 5;
+    while i < words.len() {
+        ops.push(words[i] & 0xffff);
+        i += (words[i] >> 16).max(1) as usize;
+    }
+    const QUERY_SIZE_LOD: u32 = 103;
+    const QUERY_SIZE: u32 = 104;
+    assert!(ops.contains(&QUERY_SIZE) && !ops.contains(&QUERY_SIZE_LOD), "{ops:?}");
+    if spirv_val_available() {
+        spirv_val(&words, &dir.join("layers.spv")).unwrap();
+    }
+}
