@@ -168,19 +168,24 @@ fn query_under_cast(
 mod tests {
     use super::*;
 
-    #[test]
-    fn an_arrayed_size_is_built_from_its_dimensions_and_layers() {
+    /// A size query of a 2D image, arrayed or not, whose result has `components` ints.
+    fn size_query(arrayed: u32, components: u32) -> Vec<u32> {
         #[rustfmt::skip]
         let words = vec![
             0x0723_0203, 0x0001_0000, 0, 20, 0,
-            (4 << 16) | 21, 2, 32, 1,              // %2 = OpTypeInt 32 1
-            (4 << 16) | 23, 3, 2, 3,               // %3 = OpTypeVector %2 3
-            (3 << 16) | 22, 4, 32,                 // %4 = OpTypeFloat 32
-            (9 << 16) | 25, 5, 4, 1, 0, 1, 0, 1, 0, // %5 = OpTypeImage %4 2D 0 Arrayed 0 1 Unknown
-            (3 << 16) | 1, 5, 6,                   // %6 = OpUndef %5
-            (4 << 16) | 104, 3, 7, 6,              // %7 = OpImageQuerySize %3 %6
+            (4 << 16) | 21, 2, 32, 1,                      // %2 = OpTypeInt 32 1
+            (4 << 16) | 23, 3, 2, components,              // %3 = OpTypeVector %2 N
+            (3 << 16) | 22, 4, 32,                         // %4 = OpTypeFloat 32
+            (9 << 16) | 25, 5, 4, 1, 0, arrayed, 0, 1, 0,  // %5 = OpTypeImage %4 2D 0 Arrayed 0 1 Unknown
+            (3 << 16) | 1, 5, 6,                           // %6 = OpUndef %5
+            (4 << 16) | 104, 3, 7, 6,                      // %7 = OpImageQuerySize %3 %6
         ];
-        let out = array_sizes_by_parts(words);
+        words
+    }
+
+    #[test]
+    fn an_arrayed_size_is_built_from_its_dimensions_and_layers() {
+        let out = array_sizes_by_parts(size_query(1, 3));
         assert_eq!(out[3], 23, "a vector type and two results");
         let ops: Vec<(u16, Vec<u32>)> = instructions(&out).map(|(at, op, n)| (op, out[at + 1..at + n].to_vec())).collect();
         assert_eq!(ops[2], (OP_TYPE_VECTOR, vec![20, 2, 2]), "ivec2, declared after ivec3");
@@ -192,16 +197,7 @@ mod tests {
 
     #[test]
     fn a_size_of_an_image_that_is_no_array_stays() {
-        #[rustfmt::skip]
-        let words = vec![
-            0x0723_0203, 0x0001_0000, 0, 20, 0,
-            (4 << 16) | 21, 2, 32, 1,              // %2 = OpTypeInt 32 1
-            (4 << 16) | 23, 3, 2, 2,               // %3 = OpTypeVector %2 2
-            (3 << 16) | 22, 4, 32,                 // %4 = OpTypeFloat 32
-            (9 << 16) | 25, 5, 4, 1, 0, 0, 0, 1, 0, // %5 = OpTypeImage %4 2D 0 0 0 1 Unknown
-            (3 << 16) | 1, 5, 6,                   // %6 = OpUndef %5
-            (4 << 16) | 104, 3, 7, 6,              // %7 = OpImageQuerySize %3 %6
-        ];
+        let words = size_query(0, 2);
         assert_eq!(array_sizes_by_parts(words.clone()), words);
     }
 }
