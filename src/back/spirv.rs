@@ -37,7 +37,7 @@ pub fn write(module: &Module, info: &ModuleInfo, stage: ShaderStage, entry: &str
 /// SPIR-V that spirv-val refuses. For storage and multisampled images the query becomes
 /// `OpImageQuerySize`, the same result without a level.
 fn image_sizes_without_levels(words: Vec<u32>) -> Vec<u32> {
-    use crate::front::spirv_binary::{instructions, HEADER_WORDS, OP_TYPE_IMAGE};
+    use crate::front::spirv_binary::{has_result_type, instructions, HEADER_WORDS, OP_TYPE_IMAGE};
     use rspirv::spirv::Op;
     const SIZE_LOD: u16 = Op::ImageQuerySizeLod as u16;
     const SIZE: u16 = Op::ImageQuerySize as u16;
@@ -51,8 +51,7 @@ fn image_sizes_without_levels(words: Vec<u32>) -> Vec<u32> {
         let w = &words[at..(at + count.max(1)).min(words.len())];
         match op {
             OP_TYPE_IMAGE if w.len() >= 9 && (w[6] == 1 || w[7] == 2) => levelless.push(w[1]),
-            // Loads of image variables: the ids the queries take.
-            _ if op == Op::Load as u16 && w.len() >= 4 => {
+            _ if has_result_type(op) && w.len() >= 3 => {
                 type_of.insert(w[2], w[1]);
             }
             _ => {}

@@ -17,7 +17,7 @@ use std::collections::HashMap;
 use naga::{Expression, Handle, ImageQuery, Module, TypeInner};
 use rspirv::spirv::Op;
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS, OP_TYPE_IMAGE};
+use crate::front::spirv_binary::{has_result_type, instructions, HEADER_WORDS, OP_TYPE_IMAGE};
 
 const OP_TYPE_VECTOR: u16 = Op::TypeVector as u16;
 const OP_IMAGE_QUERY_SIZE: u16 = Op::ImageQuerySize as u16;
@@ -107,12 +107,6 @@ pub(crate) fn array_sizes_by_parts(words: Vec<u32>) -> Vec<u32> {
     }
     out[3] = bound;
     out
-}
-
-/// Whether instructions of `op` start with a result type and a result id.
-fn has_result_type(op: u16) -> bool {
-    use rspirv::grammar::{CoreInstructionTable, OperandKind};
-    CoreInstructionTable::lookup_opcode(op).is_some_and(|i| i.operands.first().is_some_and(|o| o.kind == OperandKind::IdResultType))
 }
 
 /// The layer count of each size split by [`array_sizes_by_parts`], as the module doc says.

@@ -45,6 +45,12 @@ pub(crate) fn instruction(op: u16, operands: &[u32]) -> Vec<u32> {
     out
 }
 
+/// Whether instructions of `op` start with a result type and a result id (rspirv's grammar).
+pub(crate) fn has_result_type(op: u16) -> bool {
+    use rspirv::grammar::{CoreInstructionTable, OperandKind};
+    CoreInstructionTable::lookup_opcode(op).is_some_and(|i| i.operands.first().is_some_and(|o| o.kind == OperandKind::IdResultType))
+}
+
 /// Each instruction of a SPIR-V binary: its first word's index, opcode and word count.
 pub(crate) fn instructions(words: &[u32]) -> impl Iterator<Item = (usize, u16, usize)> + '_ {
     let mut i = HEADER_WORDS;

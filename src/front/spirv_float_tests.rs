@@ -10,10 +10,9 @@
 
 use std::collections::HashMap;
 
-use rspirv::grammar::{CoreInstructionTable, OperandKind};
 use rspirv::spirv::Op;
 
-use crate::front::spirv_binary::{instruction, instructions, HEADER_WORDS, OP_FUNCTION, OP_TYPE_INT};
+use crate::front::spirv_binary::{has_result_type, instruction, instructions, HEADER_WORDS, OP_FUNCTION, OP_TYPE_INT};
 
 const OP_IS_NAN: u16 = Op::IsNan as u16;
 const OP_IS_INF: u16 = Op::IsInf as u16;
@@ -57,8 +56,7 @@ pub(crate) fn float_tests_from_bits(words: Vec<u32>) -> Vec<u32> {
             }
             _ => {}
         }
-        let typed = CoreInstructionTable::lookup_opcode(op)
-            .is_some_and(|i| i.operands.first().is_some_and(|o| o.kind == OperandKind::IdResultType));
+        let typed = has_result_type(op);
         if typed && w.len() >= 3 {
             type_of.insert(w[2], w[1]);
         }

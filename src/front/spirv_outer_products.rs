@@ -9,10 +9,9 @@
 
 use std::collections::HashMap;
 
-use rspirv::grammar::{CoreInstructionTable, OperandKind};
 use rspirv::spirv::Op;
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{has_result_type, instructions, HEADER_WORDS};
 
 const OP_OUTER_PRODUCT: u16 = Op::OuterProduct as u16;
 const OP_TYPE_VECTOR: u16 = Op::TypeVector as u16;
@@ -43,8 +42,7 @@ pub(crate) fn outer_products_by_columns(words: Vec<u32>) -> Vec<u32> {
             }
             _ => {}
         }
-        let typed = CoreInstructionTable::lookup_opcode(op)
-            .is_some_and(|i| i.operands.first().is_some_and(|o| o.kind == OperandKind::IdResultType));
+        let typed = has_result_type(op);
         if typed && w.len() >= 3 {
             type_of.insert(w[2], w[1]);
         }

@@ -29,10 +29,9 @@
 
 use std::collections::HashMap;
 
-use rspirv::grammar::{CoreInstructionTable, OperandKind};
 use rspirv::spirv::{GLOp, Op};
 
-use crate::front::spirv_binary::{instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{has_result_type, instructions, HEADER_WORDS};
 
 const OP_EXT_INST_IMPORT: u16 = Op::ExtInstImport as u16;
 const OP_EXT_INST: u16 = Op::ExtInst as u16;
@@ -84,7 +83,7 @@ pub(crate) fn signedness_naga_reads(mut words: Vec<u32>) -> Vec<u32> {
     // Integer scalar and vector types, by id: (component width, component count), signed.
     let mut shapes: HashMap<u32, ((u32, u32), bool)> = HashMap::new();
     let mut type_of: HashMap<u32, u32> = HashMap::new();
-    let mut has_result_type: HashMap<u16, bool> = HashMap::new();
+    let mut typed_ops: HashMap<u16, bool> = HashMap::new();
     let mut fixes = Vec::new();
     for (at, op, count) in instructions(&words) {
         match op {
@@ -98,9 +97,7 @@ pub(crate) fn signedness_naga_reads(mut words: Vec<u32>) -> Vec<u32> {
             }
             _ => {}
         }
-        let typed = *has_result_type.entry(op).or_insert_with(|| {
-            CoreInstructionTable::lookup_opcode(op).is_some_and(|i| i.operands.first().is_some_and(|o| o.kind == OperandKind::IdResultType))
-        });
+        let typed = *typed_ops.entry(op).or_insert_with(|| has_result_type(op));
         if !typed || count < 3 {
             continue;
         }

@@ -19,10 +19,9 @@
 
 use std::collections::{HashMap, HashSet};
 
-use rspirv::grammar::{CoreInstructionTable, OperandKind};
 use rspirv::spirv::{Decoration, Op};
 
-use crate::front::spirv_binary::{instruction, instructions, HEADER_WORDS};
+use crate::front::spirv_binary::{has_result_type, instruction, instructions, HEADER_WORDS};
 
 const OP_TYPE_INT: u16 = Op::TypeInt as u16;
 const OP_TYPE_FLOAT: u16 = Op::TypeFloat as u16;
@@ -185,8 +184,7 @@ impl Module {
                 OP_DECORATE if w.len() == 4 && w[2] == ARRAY_STRIDE => _ = m.array_stride.insert(w[1], w[3]),
                 _ => {}
             }
-            let typed = CoreInstructionTable::lookup_opcode(op)
-                .is_some_and(|i| i.operands.first().is_some_and(|o| o.kind == OperandKind::IdResultType));
+            let typed = has_result_type(op);
             if typed && w.len() >= 3 {
                 m.type_of.insert(w[2], w[1]);
             }
